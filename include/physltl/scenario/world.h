@@ -1,0 +1,106 @@
+#pragma once
+// The World: everything a scenario file describes, in SI units, with the file:line of each element.
+// Built by load_scenario(); read-only for every layer above.
+
+#include "physltl/geometry/shapes.h"
+#include "physltl/scenario/diagnostic.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace physltl::scenario {
+
+using geometry::Vec2;
+
+struct Workspace {
+  geometry::Rect bounds;
+  double floor_friction = 0.5;
+  Location where;
+};
+
+// A sphere pushed by a planar force: the paper's mobile robot.
+struct Robot {
+  double radius = 0.25;     // m
+  double mass = 1.0;        // kg
+  double max_force = 20.0;  // N, bound on each component of the planar force control
+  double friction = 0.5;
+  Vec2 start = Vec2::Zero();
+  Location where;
+};
+
+// One side of a box in its own frame: the robot stands on this side to push towards the opposite one.
+enum class Side { kMinusX, kPlusX, kMinusY, kPlusY };
+const char* side_name(Side side);  // "-x", "+x", "-y", "+y"
+
+struct FixedBody {
+  std::string name;
+  geometry::OrientedBox footprint;
+  double height = 0.5;
+  std::string mesh;  // optional OBJ file, drawn instead of the box
+  Location where;
+};
+
+struct MovableBody {
+  std::string name;
+  geometry::OrientedBox footprint;
+  double height = 0.5;
+  double mass = 0.5;
+  double friction = 0.5;
+  // Authored manipulation constraints; empty push_from means every side (the knowledge layer decides).
+  std::vector<Side> push_from;
+  std::optional<double> mregion_depth;  // m; default derived from the robot's size
+  Location where;
+};
+
+struct Region {
+  std::string name;  // the proposition, used in the formula
+  geometry::Polygon polygon;
+  Location where;
+};
+
+struct Task {
+  std::string formula;
+  Location where;
+};
+
+struct PlannerSettings {
+  double time_limit = 60.0;  // s of planning
+  double step_size = 0.05;   // s per physics step
+  int min_steps = 2;         // physics steps per control
+  int max_steps = 30;
+  std::uint64_t seed = 1;
+  Location where;
+};
+
+struct Camera {
+  Vec2 target = Vec2::Zero();
+  double distance = 0.0;  // 0: fit the workspace
+  double elevation_deg = 55.0;
+  double azimuth_deg = -90.0;
+  double fov_deg = 45.0;
+};
+
+struct RenderSettings {
+  int width = 640;
+  int height = 480;
+  int fps = 30;
+  Camera camera;
+  Location where;
+};
+
+struct World {
+  std::string name;  // file stem, names the output folder
+  std::string source_file;
+  Workspace workspace;
+  Robot robot;
+  std::vector<FixedBody> fixed_bodies;
+  std::vector<MovableBody> movable_bodies;
+  std::vector<Region> regions;
+  Task task;
+  PlannerSettings planner;
+  RenderSettings render;
+};
+
+}  // namespace physltl::scenario

@@ -1,0 +1,69 @@
+#include "command.h"
+#include "physltl/scenario/diagnostic.h"
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <map>
+#include <memory>
+
+namespace {
+
+using namespace physltl::app;
+
+struct Command {
+  std::unique_ptr<CLI::App> app;
+  CommandRunner run;
+};
+
+Command make_command(const std::string& name, const std::string& description,
+                     CommandRunner (*add)(CLI::App&)) {
+  auto app = std::make_unique<CLI::App>(description, name);
+  CommandRunner run = add(*app);
+  return {std::move(app), std::move(run)};
+}
+
+int parse_and_run(Command& command, int argc, char** argv) {
+  try {
+    command.app->parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return command.app->exit(e) == 0 ? kExitOk : kExitBadInput;
+  }
+  try {
+    return command.run();
+  } catch (const physltl::scenario::ScenarioError& e) {
+    for (const auto& d : e.diagnostics()) std::cerr << d.str() << "\n";
+  } catch (const BadInput& e) {
+    std::cerr << "physltl-studio: " << e.what() << "\n";
+  }
+  return kExitBadInput;
+}
+
+}  // namespace
+
+// The main job takes a scenario as its first argument, so subcommands are told apart by that first word
+// (CLI11 2.1 mixes up a top-level positional and subcommand positionals).
+int main(int argc, char** argv) {
+  std::map<std::string, Command> subcommands;
+  subcommands.emplace("check", make_command("physltl-studio check",
+                                            "Load a scenario, validate it and report what it contains.",
+                                            add_check_command));
+  subcommands.emplace("ltl", make_command("physltl-studio ltl",
+                                          "Parse a co-safe LTL formula, simplify it, translate it to a minimal DFA.",
+                                          add_ltl_command));
+  if (argc > 1) {
+    auto it = subcommands.find(argv[1]);
+    if (it != subcommands.end()) return parse_and_run(it->second, argc - 1, argv + 1);
+  }
+  Command main_job = make_command(
+      "physltl-studio",
+      "physltl-studio: physics-based motion planning with co-safe LTL tasks.\n"
+      "Plans (and with --render draws) the task of a scenario file; outputs go to <out>/<scenario>/.",
+      add_run_command);
+  std::string footer = "\nCommands (each has --help):\n";
+  for (const auto& [name, command] : subcommands) footer += fmt::format("  {:<7}{}\n", name, command.app->get_description());
+  footer += "\nExit codes: 0 ok, 1 no plan found (or task infeasible), 2 bad input or usage.";
+  main_job.app->footer(footer);
+  main_job.app->set_version_flag("--version", "physltl-studio 0.1.0");
+  return parse_and_run(main_job, argc, argv);
+}

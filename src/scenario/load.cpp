@@ -1,0 +1,43 @@
+#include "physltl/scenario/load.h"
+
+#include "lua_sandbox.h"
+#include "read_world.h"
+
+#include <filesystem>
+#include <fstream>
+
+namespace physltl::scenario {
+
+ScenarioError::ScenarioError(std::vector<Diagnostic> diagnostics)
+    : std::runtime_error([&] {
+        std::string text;
+        for (const auto& d : diagnostics) text += (text.empty() ? "" : "\n") + d.str();
+        return text;
+      }()),
+      diagnostics_(std::move(diagnostics)) {}
+
+const char* side_name(Side side) {
+  switch (side) {
+    case Side::kMinusX: return "-x";
+    case Side::kPlusX: return "+x";
+    case Side::kMinusY: return "-y";
+    case Side::kPlusY: return "+y";
+  }
+  return "?";
+}
+
+std::string LoadOptions::default_lua_dir() { return PHYSLTL_LUA_DIR; }
+
+World load_scenario(const std::string& path, const LoadOptions& options) {
+  if (!std::filesystem::is_regular_file(path) || !std::ifstream(path)) {
+    throw ScenarioError({{{path, 0}, "cannot read the scenario file (missing, a folder, or not readable)"}});
+  }
+  const std::vector<Element> elements = run_scenario_script(path, options);
+  std::vector<Diagnostic> diagnostics;
+  World world = read_world(elements, path, diagnostics);
+  if (diagnostics.empty()) diagnostics = validate(world);
+  if (!diagnostics.empty()) throw ScenarioError(std::move(diagnostics));
+  return world;
+}
+
+}  // namespace physltl::scenario

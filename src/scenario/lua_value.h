@@ -1,0 +1,34 @@
+#pragma once
+// A Lua value copied out of the interpreter: the scenario reader never touches the Lua state.
+
+#include "physltl/scenario/diagnostic.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace physltl::scenario {
+
+struct LuaValue {
+  enum class Kind { kNil, kBoolean, kNumber, kString, kTable };
+
+  Kind kind = Kind::kNil;
+  bool boolean = false;
+  double number = 0.0;
+  bool is_integer = false;
+  std::string string;
+  std::vector<LuaValue> array;                            // keys 1..n
+  std::vector<std::pair<std::string, LuaValue>> fields;  // string keys, sorted
+
+  const LuaValue* field(const std::string& key) const;
+  static const char* kind_name(Kind kind);
+};
+
+// One call of a constructor such as `movable { ... }` in a script.
+struct Element {
+  std::string kind;  // "workspace", "robot", "fixed", "movable", "region", "task", "planner", "render"
+  LuaValue table;
+  Location where;
+};
+
+}  // namespace physltl::scenario

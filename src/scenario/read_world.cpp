@@ -1,0 +1,193 @@
+#include "read_world.h"
+
+#include "table_reader.h"
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <numbers>
+
+namespace physltl::scenario {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+std::optional<Side> parse_side(const std::string& text) {
+  static const std::map<std::string, Side> sides = {
+      {"-x", Side::kMinusX}, {"+x", Side::kPlusX}, {"-y", Side::kMinusY}, {"+y", Side::kPlusY}};
+  auto it = sides.find(text);
+  return it == sides.end() ? std::nullopt : std::optional<Side>(it->second);
+}
+
+bool is_singleton(const std::string& kind) { return kind != "fixed" && kind != "movable" && kind != "region"; }
+
+std::string element_label(const Element& e, int index_of_kind) {
+  if (is_singleton(e.kind)) return e.kind;
+  const LuaValue* name = e.table.field("name");
+  if (name && name->kind == LuaValue::Kind::kString) return e.kind + " '" + name->string + "'";
+  return e.kind + " #" + std::to_string(index_of_kind);
+}
+
+geometry::OrientedBox read_footprint(TableReader& r) {
+  geometry::OrientedBox box;
+  box.pose.position = r.point("center");
+  box.half_extents = 0.5 * r.point("size");
+  box.pose.yaw = r.number("yaw_deg", 0.0) * kDegree;
+  return box;
+}
+
+void read_workspace(TableReader& r, Workspace& w) {
+  const auto corners = r.points("bounds");
+  if (corners.size() == 2) {
+    w.bounds = {corners[0], corners[1]};
+  } else {
+    r.error("'bounds' must be two corners {{min_x, min_y}, {max_x, max_y}}");
+  }
+  w.floor_friction = r.number("floor_friction", w.floor_friction);
+}
+
+void read_robot(TableReader& r, Robot& robot) {
+  robot.radius = r.number("radius", robot.radius);
+  robot.mass = r.number("mass", robot.mass);
+  robot.max_force = r.number("max_force", robot.max_force);
+  robot.friction = r.number("friction", robot.friction);
+  robot.start = r.point("start");
+}
+
+FixedBody read_fixed(TableReader& r, const std::string& default_name, const std::string& script_dir) {
+  FixedBody body;
+  body.name = r.string("name", default_name);
+  body.footprint = read_footprint(r);
+  body.height = r.number("height", body.height);
+  body.mesh = r.string("mesh", "");
+  if (!body.mesh.empty() && std::filesystem::path(body.mesh).is_relative()) {
+    body.mesh = (std::filesystem::path(script_dir) / body.mesh).lexically_normal().string();
+  }
+  return body;
+}
+
+MovableBody read_movable(TableReader& r, const std::string& default_name) {
+  MovableBody body;
+  body.name = r.string("name", default_name);
+  body.footprint = read_footprint(r);
+  body.height = r.number("height", body.height);
+  body.mass = r.number("mass", body.mass);
+  body.friction = r.number("friction", body.friction);
+  for (const auto& text : r.strings("push_from")) {
+    if (auto side = parse_side(text)) {
+      body.push_from.push_back(*side);
+    } else {
+      r.error("'push_from' sides are \"-x\", \"+x\", \"-y\" or \"+y\" (in the body's frame), got \"" + text + "\"");
+    }
+  }
+  body.mregion_depth = r.optional_number("mregion_depth");
+  return body;
+}
+
+Region read_region(TableReader& r) {
+  Region region;
+  region.name = r.string("name");
+  const bool has_rect = r.has("rect"), has_polygon = r.has("polygon");
+  if (has_rect == has_polygon) {
+    r.error("give exactly one of 'rect' = {{min_x, min_y}, {max_x, max_y}} or 'polygon' = {{x, y}, ...}");
+  }
+  if (has_rect) {
+    const auto corners = r.points("rect");
+    if (corners.size() == 2) {
+      region.polygon = geometry::Polygon::from_rect({corners[0], corners[1]});
+    } else {
+      r.error("'rect' must be two corners {{min_x, min_y}, {max_x, max_y}}");
+    }
+  }
+  if (has_polygon) region.polygon.vertices = r.points("polygon");
+  return region;
+}
+
+void read_planner(TableReader& r, PlannerSettings& p) {
+  p.time_limit = r.number("time_limit", p.time_limit);
+  p.step_size = r.number("step_size", p.step_size);
+  p.min_steps = r.integer("min_steps", p.min_steps);
+  p.max_steps = r.integer("max_steps", p.max_steps);
+  const double seed = r.number("seed", static_cast<double>(p.seed));
+  if (seed < 0 || seed != std::floor(seed) || seed > 9.0e15) {
+    r.error("'seed' must be a whole number from 0 to 9e15");
+  } else {
+    p.seed = static_cast<std::uint64_t>(seed);
+  }
+}
+
+void read_render(TableReader& r, RenderSettings& s) {
+  s.width = r.integer("width", s.width);
+  s.height = r.integer("height", s.height);
+  s.fps = r.integer("fps", s.fps);
+  if (auto c = r.nested("camera")) {
+    s.camera.target = c->point("target", s.camera.target);
+    s.camera.distance = c->number("distance", s.camera.distance);
+    s.camera.elevation_deg = c->number("elevation_deg", s.camera.elevation_deg);
+    s.camera.azimuth_deg = c->number("azimuth_deg", s.camera.azimuth_deg);
+    s.camera.fov_deg = c->number("fov_deg", s.camera.fov_deg);
+    c->finish();
+  }
+}
+
+void read_task(TableReader& r, Task& task) { task.formula = r.string("formula"); }
+
+}  // namespace
+
+World read_world(const std::vector<Element>& elements, const std::string& path, std::vector<Diagnostic>& diagnostics) {
+  World world;
+  world.source_file = path;
+  world.name = std::filesystem::path(path).stem().string();
+  const std::string script_dir = std::filesystem::path(path).parent_path().string();
+
+  // Singletons: exactly once (workspace, robot, task) or at most once (planner, render).
+  std::map<std::string, const Element*> first_of;
+  std::map<std::string, int> count_of;
+  for (const Element& e : elements) {
+    const int index = ++count_of[e.kind];
+    if (is_singleton(e.kind) && index > 1) {
+      diagnostics.push_back({e.where, e.kind + " is given twice (first at " + first_of[e.kind]->where.str() + ")"});
+      continue;
+    }
+    first_of.emplace(e.kind, &e);
+    TableReader r(e.table, element_label(e, index), e.where, diagnostics);
+    if (e.kind == "workspace") {
+      read_workspace(r, world.workspace);
+      world.workspace.where = e.where;
+    } else if (e.kind == "robot") {
+      read_robot(r, world.robot);
+      world.robot.where = e.where;
+    } else if (e.kind == "fixed") {
+      world.fixed_bodies.push_back(read_fixed(r, "fixed_" + std::to_string(index), script_dir));
+      world.fixed_bodies.back().where = e.where;
+    } else if (e.kind == "movable") {
+      world.movable_bodies.push_back(read_movable(r, "movable_" + std::to_string(index)));
+      world.movable_bodies.back().where = e.where;
+    } else if (e.kind == "region") {
+      world.regions.push_back(read_region(r));
+      world.regions.back().where = e.where;
+    } else if (e.kind == "task") {
+      read_task(r, world.task);
+      world.task.where = e.where;
+    } else if (e.kind == "planner") {
+      read_planner(r, world.planner);
+      world.planner.where = e.where;
+    } else if (e.kind == "render") {
+      read_render(r, world.render);
+      world.render.where = e.where;
+    }
+    r.finish();
+  }
+  for (const char* required : {"workspace", "robot", "task"}) {
+    if (!count_of.count(required)) {
+      diagnostics.push_back({{path, 1}, std::string("the scenario has no ") + required + " { ... }"});
+    }
+  }
+  // Elements that were not given point at the top of the file, where an author would add them.
+  for (Location* where : {&world.planner.where, &world.render.where}) {
+    if (where->file.empty()) *where = {path, 1};
+  }
+  return world;
+}
+
+}  // namespace physltl::scenario

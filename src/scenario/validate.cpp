@@ -1,0 +1,216 @@
+#include "physltl/scenario/load.h"
+
+#include <cmath>
+#include <filesystem>
+#include <regex>
+#include <set>
+
+namespace physltl::scenario {
+namespace {
+
+// Beyond these a scenario is a typo, not a world: SI units for a mobile robot in rooms.
+constexpr double kMaxLength = 1e4;  // m
+constexpr double kMaxMass = 1e6;    // kg
+constexpr double kMaxForce = 1e6;   // N
+constexpr double kMaxFriction = 100.0;
+
+class Validator {
+ public:
+  explicit Validator(const World& world) : world_(world) {}
+
+  std::vector<Diagnostic> run() {
+    check_workspace();
+    check_robot();
+    for (const auto& b : world_.fixed_bodies) check_body_shape("fixed '" + b.name + "'", b.footprint, b.height, b.where);
+    for (const auto& b : world_.movable_bodies) check_movable(b);
+    check_body_overlaps();
+    check_regions();
+    check_planner();
+    check_render();
+    return std::move(out_);
+  }
+
+ private:
+  void error(const Location& where, const std::string& message) { out_.push_back({where, message}); }
+
+  // One range check for every scalar: finite, inside [lo, hi], with `lo` itself allowed or not.
+  void check_range(const Location& where, const std::string& what, double value, double lo, double hi,
+                   bool lo_allowed = false) {
+    if (!std::isfinite(value)) {
+      error(where, what + " must be finite");
+    } else if (value < lo || (value == lo && !lo_allowed)) {
+      error(where, what + " must be " + (lo_allowed ? "at least " : "greater than ") + fmt(lo) + ", got " + fmt(value));
+    } else if (value > hi) {
+      error(where, what + " is too large (" + fmt(value) + " > " + fmt(hi) + ")");
+    }
+  }
+
+  static std::string fmt(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+  }
+
+  bool workspace_ok() const {
+    const auto& b = world_.workspace.bounds;
+    return b.min.allFinite() && b.max.allFinite() && (b.max - b.min).minCoeff() > 0;
+  }
+
+  void check_workspace() {
+    const auto& w = world_.workspace;
+    if (w.where.file.empty()) return;  // missing: reported by the reader
+    const geometry::Vec2 size = w.bounds.max - w.bounds.min;
+    if (!workspace_ok()) {
+      error(w.where, "workspace: 'bounds' must go from the smaller corner to the larger one");
+    } else if (size.maxCoeff() > kMaxLength || w.bounds.min.cwiseAbs().maxCoeff() > kMaxLength ||
+               w.bounds.max.cwiseAbs().maxCoeff() > kMaxLength) {
+      error(w.where, "workspace: 'bounds' reach beyond " + fmt(kMaxLength) + " m");
+    }
+    check_range(w.where, "workspace: 'floor_friction'", w.floor_friction, 0.0, kMaxFriction, true);
+  }
+
+  void check_robot() {
+    const auto& r = world_.robot;
+    if (r.where.file.empty()) return;
+    check_range(r.where, "robot: 'radius'", r.radius, 0.0, kMaxLength);
+    check_range(r.where, "robot: 'mass'", r.mass, 0.0, kMaxMass);
+    check_range(r.where, "robot: 'max_force'", r.max_force, 0.0, kMaxForce);
+    check_range(r.where, "robot: 'friction'", r.friction, 0.0, kMaxFriction, true);
+    if (!workspace_ok() || !(r.radius > 0)) return;
+    const auto& b = world_.workspace.bounds;
+    if ((r.start - b.min).minCoeff() < r.radius || (b.max - r.start).minCoeff() < r.radius) {
+      error(r.where, "robot: 'start' must keep the robot (radius " + fmt(r.radius) + ") inside the workspace");
+    }
+    for (const auto& f : world_.fixed_bodies) {
+      if (geometry::overlap(f.footprint, r.start, r.radius)) {
+        error(r.where, "robot: 'start' is inside fixed '" + f.name + "' (" + f.where.str() + ")");
+      }
+    }
+    for (const auto& m : world_.movable_bodies) {
+      if (geometry::overlap(m.footprint, r.start, r.radius)) {
+        error(r.where, "robot: 'start' is inside movable '" + m.name + "' (" + m.where.str() + ")");
+      }
+    }
+  }
+
+  void check_body_shape(const std::string& what, const geometry::OrientedBox& box, double height, const Location& where) {
+    check_range(where, what + ": 'size' x", 2 * box.half_extents.x(), 0.0, kMaxLength);
+    check_range(where, what + ": 'size' y", 2 * box.half_extents.y(), 0.0, kMaxLength);
+    check_range(where, what + ": 'height'", height, 0.0, kMaxLength);
+    if (box.pose.position.cwiseAbs().maxCoeff() > kMaxLength) error(where, what + ": 'center' is too far away");
+    if (workspace_ok() && !geometry::inside(box, world_.workspace.bounds, 1e-6)) {
+      error(where, what + " reaches outside the workspace");
+    }
+  }
+
+  void check_movable(const MovableBody& b) {
+    const std::string what = "movable '" + b.name + "'";
+    check_body_shape(what, b.footprint, b.height, b.where);
+    check_range(b.where, what + ": 'mass'", b.mass, 0.0, kMaxMass);
+    check_range(b.where, what + ": 'friction'", b.friction, 0.0, kMaxFriction, true);
+    if (b.mregion_depth) check_range(b.where, what + ": 'mregion_depth'", *b.mregion_depth, 0.0, kMaxLength);
+    std::set<Side> seen;
+    for (Side s : b.push_from) {
+      if (!seen.insert(s).second) error(b.where, what + ": 'push_from' lists " + side_name(s) + " twice");
+    }
+  }
+
+  void check_body_overlaps() {
+    std::map<std::string, Location> names;
+    auto check_name = [&](const std::string& name, const Location& where) {
+      auto [it, fresh] = names.emplace(name, where);
+      if (!fresh) error(where, "body name '" + name + "' is used twice (also at " + it->second.str() + ")");
+    };
+    const auto& fixed = world_.fixed_bodies;
+    const auto& movable = world_.movable_bodies;
+    for (size_t i = 0; i < fixed.size(); ++i) {
+      check_name(fixed[i].name, fixed[i].where);
+      if (!fixed[i].mesh.empty() && !std::filesystem::is_regular_file(fixed[i].mesh)) {
+        error(fixed[i].where, "fixed '" + fixed[i].name + "': mesh file '" + fixed[i].mesh + "' does not exist");
+      }
+      for (size_t j = 0; j < i; ++j) {
+        if (geometry::overlap(fixed[i].footprint, fixed[j].footprint, 1e-6)) {
+          error(fixed[i].where, "fixed '" + fixed[i].name + "' overlaps fixed '" + fixed[j].name + "' (" +
+                                    fixed[j].where.str() + ")");
+        }
+      }
+    }
+    for (size_t i = 0; i < movable.size(); ++i) {
+      check_name(movable[i].name, movable[i].where);
+      for (const auto& f : fixed) {
+        if (geometry::overlap(movable[i].footprint, f.footprint, 1e-6)) {
+          error(movable[i].where, "movable '" + movable[i].name + "' overlaps fixed '" + f.name + "' (" + f.where.str() + ")");
+        }
+      }
+      for (size_t j = 0; j < i; ++j) {
+        if (geometry::overlap(movable[i].footprint, movable[j].footprint, 1e-6)) {
+          error(movable[i].where, "movable '" + movable[i].name + "' overlaps movable '" + movable[j].name + "' (" +
+                                      movable[j].where.str() + ")");
+        }
+      }
+    }
+  }
+
+  void check_regions() {
+    static const std::regex identifier("[a-z_][a-zA-Z0-9_]*");
+    static const std::set<std::string> reserved = {"p0", "true", "false", "X", "F", "G", "U", "R", "W", "M"};
+    std::map<std::string, Location> names;
+    const auto& regions = world_.regions;
+    for (size_t i = 0; i < regions.size(); ++i) {
+      const auto& r = regions[i];
+      const std::string what = "region '" + r.name + "'";
+      if (!std::regex_match(r.name, identifier)) {
+        error(r.where, what + ": a region name must start with a lower-case letter or '_' and hold only letters, "
+                              "digits and '_' (it is a proposition in the formula)");
+      } else if (reserved.count(r.name)) {
+        error(r.where, what + ": the name is reserved (p0 means 'outside every region')");
+      }
+      auto [it, fresh] = names.emplace(r.name, r.where);
+      if (!fresh) error(r.where, "region name '" + r.name + "' is used twice (also at " + it->second.str() + ")");
+      if (r.polygon.vertices.size() < 3 || !r.polygon.is_simple()) {
+        error(r.where, what + ": the polygon must have at least 3 corners, a positive area and no crossing edges");
+        continue;
+      }
+      if (r.polygon.bounds().min.cwiseAbs().maxCoeff() > kMaxLength || r.polygon.bounds().max.cwiseAbs().maxCoeff() > kMaxLength) {
+        error(r.where, what + " is too far away");
+      } else if (workspace_ok() && !geometry::inside(r.polygon, world_.workspace.bounds, 1e-6)) {
+        error(r.where, what + " reaches outside the workspace");
+      }
+      for (size_t j = 0; j < i; ++j) {
+        if (regions[j].polygon.vertices.size() >= 3 && geometry::overlap(r.polygon, regions[j].polygon)) {
+          error(r.where, what + " overlaps region '" + regions[j].name + "' (" + regions[j].where.str() +
+                             "): regions must be disjoint");
+        }
+      }
+    }
+  }
+
+  void check_planner() {
+    const auto& p = world_.planner;
+    check_range(p.where, "planner: 'time_limit'", p.time_limit, 0.0, 1e6);
+    check_range(p.where, "planner: 'step_size'", p.step_size, 0.0, 1.0);
+    check_range(p.where, "planner: 'min_steps'", p.min_steps, 1.0, 1e4, true);
+    check_range(p.where, "planner: 'max_steps'", p.max_steps, 1.0, 1e4, true);
+    if (p.min_steps > p.max_steps) error(p.where, "planner: 'min_steps' must not exceed 'max_steps'");
+  }
+
+  void check_render() {
+    const auto& r = world_.render;
+    check_range(r.where, "render: 'width'", r.width, 16.0, 8192.0, true);
+    check_range(r.where, "render: 'height'", r.height, 16.0, 8192.0, true);
+    check_range(r.where, "render: 'fps'", r.fps, 1.0, 240.0, true);
+    check_range(r.where, "render: camera 'distance'", r.camera.distance, 0.0, kMaxLength, true);
+    check_range(r.where, "render: camera 'elevation_deg'", r.camera.elevation_deg, 0.0, 90.0, true);
+    check_range(r.where, "render: camera 'azimuth_deg'", r.camera.azimuth_deg, -360.0, 360.0, true);
+    check_range(r.where, "render: camera 'fov_deg'", r.camera.fov_deg, 1.0, 170.0, true);
+  }
+
+  const World& world_;
+  std::vector<Diagnostic> out_;
+};
+
+}  // namespace
+
+std::vector<Diagnostic> validate(const World& world) { return Validator(world).run(); }
+
+}  // namespace physltl::scenario

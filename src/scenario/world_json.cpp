@@ -1,0 +1,88 @@
+#include "physltl/scenario/world_json.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace physltl::scenario {
+namespace {
+
+nlohmann::ordered_json point(const Vec2& p) { return {p.x(), p.y()}; }
+
+nlohmann::ordered_json footprint(const geometry::OrientedBox& box) {
+  return {{"center", point(box.pose.position)},
+          {"size", point(2.0 * box.half_extents)},
+          {"yaw_deg", box.pose.yaw * 180.0 / std::numbers::pi}};
+}
+
+}  // namespace
+
+nlohmann::ordered_json to_json(const World& world) {
+  using json = nlohmann::ordered_json;
+  json bodies = json::array();
+  for (const auto& b : world.fixed_bodies) {
+    json j = footprint(b.footprint);
+    j["name"] = b.name;
+    j["kind"] = "fixed";
+    j["height"] = b.height;
+    if (!b.mesh.empty()) j["mesh"] = b.mesh;
+    j["defined_at"] = b.where.str();
+    bodies.push_back(std::move(j));
+  }
+  for (const auto& b : world.movable_bodies) {
+    json j = footprint(b.footprint);
+    j["name"] = b.name;
+    j["kind"] = "movable";
+    j["height"] = b.height;
+    j["mass"] = b.mass;
+    j["friction"] = b.friction;
+    json sides = json::array();
+    for (Side s : b.push_from) sides.push_back(side_name(s));
+    j["push_from"] = sides;
+    j["mregion_depth"] = b.mregion_depth ? json(*b.mregion_depth) : json(nullptr);
+    j["defined_at"] = b.where.str();
+    bodies.push_back(std::move(j));
+  }
+  json regions = json::array();
+  for (const auto& r : world.regions) {
+    json polygon = json::array();
+    for (const auto& v : r.polygon.vertices) polygon.push_back(point(v));
+    regions.push_back({{"name", r.name}, {"polygon", polygon}, {"defined_at", r.where.str()}});
+  }
+  const auto& p = world.planner;
+  const auto& rs = world.render;
+  return {
+      {"scenario", world.source_file},
+      {"name", world.name},
+      {"workspace",
+       {{"min", point(world.workspace.bounds.min)},
+        {"max", point(world.workspace.bounds.max)},
+        {"floor_friction", world.workspace.floor_friction}}},
+      {"robot",
+       {{"radius", world.robot.radius},
+        {"mass", world.robot.mass},
+        {"max_force", world.robot.max_force},
+        {"friction", world.robot.friction},
+        {"start", point(world.robot.start)}}},
+      {"bodies", bodies},
+      {"regions", regions},
+      {"formula", world.task.formula},
+      {"planner",
+       {{"time_limit", p.time_limit},
+        {"step_size", p.step_size},
+        {"min_steps", p.min_steps},
+        {"max_steps", p.max_steps},
+        {"seed", p.seed}}},
+      {"render",
+       {{"width", rs.width},
+        {"height", rs.height},
+        {"fps", rs.fps},
+        {"camera",
+         {{"target", point(rs.camera.target)},
+          {"distance", rs.camera.distance},
+          {"elevation_deg", rs.camera.elevation_deg},
+          {"azimuth_deg", rs.camera.azimuth_deg},
+          {"fov_deg", rs.camera.fov_deg}}}}},
+  };
+}
+
+}  // namespace physltl::scenario
