@@ -1,0 +1,34 @@
+#pragma once
+// Everything the `physltl-studio ltl` command shows about a formula, computed by one pure function so
+// that the command stays a thin shell and its behaviour is testable.
+
+#include "physltl/ltl/dfa.h"
+#include "physltl/ltl/formula.h"
+#include "physltl/ltl/simplify.h"
+
+#include <iosfwd>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace physltl::ltl {
+
+struct Analysis {
+  Formula input;
+  Formula normal_form;                     // positive normal form, co-safe
+  std::vector<std::string> invalid;        // as given
+  std::optional<Simplification> by_lists;  // the paper's Simplify, when `invalid` is not empty
+  std::optional<Simplification> semantic;  // the planner's, when `invalid` is not empty
+  std::optional<Dfa> dfa;                  // of the task the planner gets; empty when infeasible
+
+  bool feasible() const { return !semantic || semantic->feasible(); }
+};
+
+// Throws ParseError for a syntax error and NotCoSafeError for a formula outside the class.
+Analysis analyse(std::string_view text, std::span<const std::string> invalid);
+
+// Human-readable lines: input, normal form, class, simplifications, automaton size.
+void write_summary(std::ostream& out, const Analysis& analysis);
+
+}  // namespace physltl::ltl

@@ -1,0 +1,421 @@
+#include "physltl/ltl/translate.h"
+
+#include "decision_diagram.h"
+#include "physltl/ltl/co_safety.h"
+#include "physltl/ltl/normal_form.h"
+
+#include <algorithm>
+#include <deque>
+#include <iterator>
+#include <optional>
+#include <map>
+#include <unordered_map>
+
+namespace physltl::ltl {
+
+namespace {
+
+using detail::DecisionDiagram;
+using Node = DecisionDiagram::Node;
+
+// A state of the progression automaton is a positive Boolean combination of "atoms" (literals and the
+// temporal subformulas X, F, U, M), kept as its minimal DNF: a set of terms, each a sorted set of atom
+// ids, no term containing another. For a monotone function that form is unique, so equal states are
+// found by comparing DNFs, and finitely many exist.
+using Term = std::vector<int>;
+using Dnf = std::vector<Term>;
+
+struct VectorHash {
+  std::size_t operator()(const Term& t) const {
+    std::size_t h = t.size();
+    for (int x : t) h = h * 0x100000001B3ULL ^ static_cast<std::size_t>(x);
+    return h;
+  }
+  std::size_t operator()(const Dnf& d) const {
+    std::size_t h = d.size();
+    for (const Term& t : d) h = h * 0x9E3779B97F4A7C15ULL ^ (*this)(t);
+    return h;
+  }
+};
+
+constexpr int kFalse = 0;  // DNF ids of the constants
+constexpr int kTrue = 1;
+
+void normalise(Dnf& d) {
+  std::ranges::sort(d, [](const Term& a, const Term& b) {
+    return a.size() != b.size() ? a.size() < b.size() : a < b;
+  });
+  d.erase(std::unique(d.begin(), d.end()), d.end());
+  Dnf kept;
+  for (Term& t : d) {
+    const bool absorbed = std::ranges::any_of(kept, [&](const Term& k) { return std::ranges::includes(t, k); });
+    if (!absorbed) kept.push_back(std::move(t));
+  }
+  d = std::move(kept);
+}
+
+class Translator {
+ public:
+  explicit Translator(std::vector<std::string> props) : props_(std::move(props)) {
+    intern_dnf(Dnf{});        // kFalse: no term
+    intern_dnf(Dnf{Term{}});  // kTrue: the empty term
+  }
+
+  Dfa run(const Formula& pnf) {
+    explore(dnf_of(pnf));
+    const std::vector<bool> good = good_states();
+    return minimise(good);
+  }
+
+ private:
+  // ---- atoms and DNFs ----
+
+  int intern_atom(const Formula& f) {
+    auto [it, inserted] = atom_ids_.try_emplace(f, static_cast<int>(atoms_.size()));
+    if (inserted) {
+      atoms_.push_back(f);
+      atom_progress_.push_back(std::nullopt);
+    }
+    return it->second;
+  }
+
+  int intern_dnf(Dnf d) {
+    auto [it, inserted] = dnf_ids_.try_emplace(std::move(d), static_cast<int>(dnfs_.size()));
+    if (inserted) dnfs_.push_back(&it->first);
+    return it->second;
+  }
+
+  int and_dnf(int a, int b) {
+    if (a == kFalse || b == kFalse) return kFalse;
+    if (a == kTrue || a == b) return b;
+    if (b == kTrue) return a;
+    auto [it, inserted] = and_memo_.try_emplace(pair_key(std::min(a, b), std::max(a, b)), 0);
+    if (!inserted) return it->second;
+    Dnf out;
+    for (const Term& x : *dnfs_[a])
+      for (const Term& y : *dnfs_[b]) {
+        Term t;
+        std::ranges::set_union(x, y, std::back_inserter(t));
+        out.push_back(std::move(t));
+      }
+    normalise(out);
+    return it->second = intern_dnf(std::move(out));
+  }
+
+  int or_dnf(int a, int b) {
+    if (a == kTrue || b == kTrue) return kTrue;
+    if (a == kFalse || a == b) return b;
+    if (b == kFalse) return a;
+    auto [it, inserted] = or_memo_.try_emplace(pair_key(std::min(a, b), std::max(a, b)), 0);
+    if (!inserted) return it->second;
+    Dnf out = *dnfs_[a];
+    out.insert(out.end(), dnfs_[b]->begin(), dnfs_[b]->end());
+    normalise(out);
+    return it->second = intern_dnf(std::move(out));
+  }
+
+  // The DNF of a PNF formula over its atoms; <-> and ^ unfold into & and | of both polarities.
+  int dnf_of(const Formula& f) {
+    switch (f.op()) {
+      case Op::True: return kTrue;
+      case Op::False: return kFalse;
+      case Op::And:
+      case Op::Or: {
+        int acc = f.op() == Op::And ? kTrue : kFalse;
+        for (const Formula& c : f.children())
+          acc = f.op() == Op::And ? and_dnf(acc, dnf_of(c)) : or_dnf(acc, dnf_of(c));
+        return acc;
+      }
+      case Op::Equiv:
+      case Op::Xor: {
+        const bool exclusive = f.op() == Op::Xor;
+        const Formula& a = f.child(0);
+        const Formula& b = f.child(1);
+        const Formula na = negated_normal_form(a);
+        const Formula nb = negated_normal_form(b);
+        return or_dnf(and_dnf(dnf_of(a), dnf_of(exclusive ? nb : b)),
+                      and_dnf(dnf_of(na), dnf_of(exclusive ? b : nb)));
+      }
+      default: return intern_dnf(Dnf{Term{intern_atom(f)}});
+    }
+  }
+
+  // ---- symbolic progression: for all letters at once, the formula that must hold from the next step ----
+
+  static std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) { return (std::uint64_t{a} << 32) | b; }
+
+  Node apply(bool conjunction, Node a, Node b) {
+    auto& memo = conjunction ? and_nodes_ : or_nodes_;
+    const int absorbing = conjunction ? kFalse : kTrue;
+    if (dd_.is_leaf(a) && dd_.value(a) == absorbing) return a;
+    if (dd_.is_leaf(b) && dd_.value(b) == absorbing) return b;
+    if (dd_.is_leaf(a) && dd_.is_leaf(b))
+      return dd_.leaf(conjunction ? and_dnf(dd_.value(a), dd_.value(b)) : or_dnf(dd_.value(a), dd_.value(b)));
+    const std::uint64_t key = pair_key(std::min(a, b), std::max(a, b));
+    if (auto it = memo.find(key); it != memo.end()) return it->second;
+    const int v = std::min(dd_.var(a), dd_.var(b));
+    const Node low = apply(conjunction, dd_.low_for(a, v), dd_.low_for(b, v));
+    const Node high = apply(conjunction, dd_.high_for(a, v), dd_.high_for(b, v));
+    const Node result = dd_.branch(v, low, high);
+    memo.emplace(key, result);
+    return result;
+  }
+
+  Node progress_formula(const Formula& f) {
+    switch (f.op()) {
+      case Op::True: return dd_.leaf(kTrue);
+      case Op::False: return dd_.leaf(kFalse);
+      case Op::And:
+      case Op::Or: {
+        const bool conjunction = f.op() == Op::And;
+        Node acc = dd_.leaf(conjunction ? kTrue : kFalse);
+        for (const Formula& c : f.children()) acc = apply(conjunction, acc, progress_formula(c));
+        return acc;
+      }
+      case Op::Equiv:
+      case Op::Xor: {
+        const bool exclusive = f.op() == Op::Xor;
+        const Node a = progress_formula(f.child(0));
+        const Node b = progress_formula(f.child(1));
+        const Node na = progress_formula(negated_normal_form(f.child(0)));
+        const Node nb = progress_formula(negated_normal_form(f.child(1)));
+        return apply(false, apply(true, a, exclusive ? nb : b), apply(true, na, exclusive ? b : nb));
+      }
+      default: return progress_atom(intern_atom(f));
+    }
+  }
+
+  Node progress_atom(int id) {
+    if (atom_progress_[id]) return *atom_progress_[id];
+    const Formula f = atoms_[id];
+    const Node self = dd_.leaf(intern_dnf(Dnf{Term{id}}));  // "the atom itself, from the next step on"
+    Node result;
+    switch (f.op()) {
+      case Op::Atom:
+      case Op::Not: {
+        const bool positive = f.op() == Op::Atom;
+        const std::string& name = positive ? f.name() : f.child(0).name();
+        const int var = static_cast<int>(std::ranges::find(props_, name) - props_.begin());
+        result = dd_.branch(var, dd_.leaf(positive ? kFalse : kTrue), dd_.leaf(positive ? kTrue : kFalse));
+        break;
+      }
+      case Op::Next: result = dd_.leaf(dnf_of(f.child(0))); break;
+      case Op::Finally:  // F a = a | X F a
+        result = apply(false, progress_formula(f.child(0)), self);
+        break;
+      case Op::Until:  // a U b = b | (a & X(a U b))
+        result = apply(false, progress_formula(f.child(1)), apply(true, progress_formula(f.child(0)), self));
+        break;
+      case Op::StrongRelease:  // a M b = b & (a | X(a M b))
+        result = apply(true, progress_formula(f.child(1)), apply(false, progress_formula(f.child(0)), self));
+        break;
+      default: throw std::logic_error("translate: operator outside the co-safe class");
+    }
+    atom_progress_[id] = result;
+    return result;
+  }
+
+  Node progress_state(int dnf) {
+    Node acc = dd_.leaf(kFalse);
+    for (const Term& t : *dnfs_[dnf]) {
+      Node term = dd_.leaf(kTrue);
+      for (int atom : t) term = apply(true, term, progress_atom(atom));
+      acc = apply(false, acc, term);
+    }
+    return acc;
+  }
+
+  // ---- the automaton ----
+
+  void explore(int initial) {
+    state_of_dnf_.emplace(initial, 0);
+    state_dnfs_.push_back(initial);
+    for (std::size_t s = 0; s < state_dnfs_.size(); ++s) {
+      const Node root = progress_state(state_dnfs_[s]);
+      roots_.push_back(root);
+      for (int dnf : dd_.leaf_values(root)) {
+        if (state_of_dnf_.try_emplace(dnf, static_cast<int>(state_dnfs_.size())).second)
+          state_dnfs_.push_back(dnf);
+      }
+    }
+  }
+
+  // A state is good (its formula holds on every infinite word) iff every infinite path from it reaches
+  // the state `true`: for co-safe formulas a word is a model exactly when some finite prefix of it
+  // progresses the formula to true. Least fixpoint: `true`, then states all of whose successors are good.
+  std::vector<bool> good_states() const {
+    const std::size_t n = state_dnfs_.size();
+    std::vector<std::vector<int>> predecessors(n);
+    std::vector<int> pending(n, 0);  // successors not yet known to be good
+    for (std::size_t s = 0; s < n; ++s) {
+      for (int dnf : dd_.leaf_values(roots_[s])) {
+        const int t = state_of_dnf_.at(dnf);
+        predecessors[t].push_back(static_cast<int>(s));
+        ++pending[s];
+      }
+    }
+    std::vector<bool> good(n, false);
+    std::deque<int> queue;
+    if (auto it = state_of_dnf_.find(kTrue); it != state_of_dnf_.end()) {
+      good[it->second] = true;
+      queue.push_back(it->second);
+    }
+    while (!queue.empty()) {
+      const int t = queue.front();
+      queue.pop_front();
+      for (int s : predecessors[t])
+        if (!good[s] && --pending[s] == 0) {
+          good[s] = true;
+          queue.push_back(s);
+        }
+    }
+    return good;
+  }
+
+  // Moore partition refinement on the symbolic transition functions: two states stay together while
+  // they are in the same class and their diagrams, with leaves replaced by classes, are the same node.
+  Dfa minimise(const std::vector<bool>& good) {
+    const std::size_t n = state_dnfs_.size();
+    std::vector<int> cls(n);
+    std::size_t classes = 0;
+    {
+      int id_of[2] = {-1, -1};  // dense class ids, in order of first appearance
+      for (std::size_t s = 0; s < n; ++s) {
+        int& id = id_of[good[s] ? 1 : 0];
+        if (id < 0) id = static_cast<int>(classes++);
+        cls[s] = id;
+      }
+    }
+    DecisionDiagram sig_dd;
+    std::vector<Node> sig(n);
+    while (true) {
+      sig_dd = DecisionDiagram();
+      std::unordered_map<Node, Node> memo;
+      for (std::size_t s = 0; s < n; ++s) sig[s] = relabel(roots_[s], cls, sig_dd, memo);
+      std::map<std::pair<int, Node>, int> ids;
+      std::vector<int> next(n);
+      for (std::size_t s = 0; s < n; ++s)
+        next[s] = ids.try_emplace({cls[s], sig[s]}, static_cast<int>(ids.size())).first->second;
+      // No class split: the partition is stable, and `sig` is written in the numbering of `cls`.
+      if (ids.size() == classes) break;
+      cls = std::move(next);
+      classes = ids.size();
+    }
+    // `sig` now maps each state to its class's transitions over the stable classes.
+    return build(cls, classes, good, sig_dd, sig);
+  }
+
+  Node relabel(Node n, const std::vector<int>& cls, DecisionDiagram& out, std::unordered_map<Node, Node>& memo) {
+    if (auto it = memo.find(n); it != memo.end()) return it->second;
+    const Node r = dd_.is_leaf(n) ? out.leaf(cls[state_of_dnf_.at(dd_.value(n))])
+                                  : out.branch(dd_.var(n), relabel(dd_.low(n), cls, out, memo),
+                                               relabel(dd_.high(n), cls, out, memo));
+    memo.emplace(n, r);
+    return r;
+  }
+
+  Dfa build(const std::vector<int>& cls, std::size_t classes, const std::vector<bool>& good,
+            const DecisionDiagram& dd, const std::vector<Node>& sig) const {
+    // One representative per class; number classes breadth-first from the start, targets in edge order.
+    std::vector<int> representative(classes, -1);
+    for (std::size_t s = 0; s < cls.size(); ++s)
+      if (representative[cls[s]] < 0) representative[cls[s]] = static_cast<int>(s);
+    std::vector<int> number(classes, -1);
+    std::vector<int> order{cls[0]};
+    number[cls[0]] = 0;
+    Dfa dfa;
+    dfa.propositions = props_;
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const Node root = sig[representative[order[i]]];
+      std::vector<int> targets = dd.leaf_values(root);
+      for (int c : targets)
+        if (number[c] < 0) {
+          number[c] = static_cast<int>(order.size());
+          order.push_back(c);
+        }
+      std::vector<Edge> edges;
+      for (int c : targets) edges.push_back(Edge{number[c], condition_for(dd, root, c)});
+      std::ranges::sort(edges, {}, &Edge::target);
+      dfa.edges.push_back(std::move(edges));
+      dfa.accepting.push_back(good[representative[order[i]]]);
+    }
+    return dfa;
+  }
+
+  // The letters on which `root` leads to `target`, as a short cover of cubes: the diagram's paths to
+  // the leaf, each widened by dropping the literals it does not need.
+  Condition condition_for(const DecisionDiagram& dd, Node root, int target) const {
+    std::vector<Cube> paths;
+    Cube path;
+    collect_paths(dd, root, target, path, paths);
+    std::vector<signed char> assignment(props_.size(), -1);
+    Condition condition;
+    for (Cube& cube : paths) {
+      for (const Literal& l : cube) assignment[l.proposition] = l.positive;
+      for (std::size_t i = 0; i < cube.size();) {
+        assignment[cube[i].proposition] = -1;
+        if (only_leads_to(dd, root, assignment, target)) {
+          cube.erase(cube.begin() + static_cast<std::ptrdiff_t>(i));
+        } else {
+          assignment[cube[i].proposition] = cube[i].positive;
+          ++i;
+        }
+      }
+      for (const Literal& l : cube) assignment[l.proposition] = -1;
+      const bool subsumed = std::ranges::any_of(condition.cubes, [&](const Cube& c) {
+        return std::ranges::all_of(c, [&](const Literal& l) { return std::ranges::find(cube, l) != cube.end(); });
+      });
+      if (!subsumed) condition.cubes.push_back(std::move(cube));
+    }
+    // In proposition order, for people reading the labels.
+    std::ranges::sort(condition.cubes, [](const Cube& a, const Cube& b) {
+      return std::ranges::lexicographical_compare(a, b, [](const Literal& x, const Literal& y) {
+        return x.proposition != y.proposition ? x.proposition < y.proposition : x.positive > y.positive;
+      });
+    });
+    return condition;
+  }
+
+  static void collect_paths(const DecisionDiagram& dd, Node n, int target, Cube& path, std::vector<Cube>& out) {
+    if (dd.is_leaf(n)) {
+      if (dd.value(n) == target) out.push_back(path);
+      return;
+    }
+    path.push_back(Literal{dd.var(n), false});
+    collect_paths(dd, dd.low(n), target, path, out);
+    path.back().positive = true;
+    collect_paths(dd, dd.high(n), target, path, out);
+    path.pop_back();
+  }
+
+  static bool only_leads_to(const DecisionDiagram& dd, Node n, const std::vector<signed char>& assignment, int target) {
+    if (dd.is_leaf(n)) return dd.value(n) == target;
+    const signed char a = assignment[dd.var(n)];
+    if (a >= 0) return only_leads_to(dd, a ? dd.high(n) : dd.low(n), assignment, target);
+    return only_leads_to(dd, dd.low(n), assignment, target) && only_leads_to(dd, dd.high(n), assignment, target);
+  }
+
+  std::vector<std::string> props_;
+  std::vector<Formula> atoms_;
+  std::unordered_map<Formula, int> atom_ids_;
+  std::vector<std::optional<Node>> atom_progress_;
+  std::unordered_map<Dnf, int, VectorHash> dnf_ids_;
+  std::vector<const Dnf*> dnfs_;  // by id; node-based map keys do not move
+  std::unordered_map<std::uint64_t, int> and_memo_;
+  std::unordered_map<std::uint64_t, int> or_memo_;
+  DecisionDiagram dd_;
+  std::unordered_map<std::uint64_t, Node> and_nodes_;
+  std::unordered_map<std::uint64_t, Node> or_nodes_;
+  std::unordered_map<int, int> state_of_dnf_;
+  std::vector<int> state_dnfs_;
+  std::vector<Node> roots_;
+};
+
+}  // namespace
+
+Dfa translate(const Formula& f) {
+  const Formula pnf = require_co_safe(f);
+  return Translator(propositions(f)).run(pnf);
+}
+
+}  // namespace physltl::ltl

@@ -1,0 +1,106 @@
+#include "physltl/ltl/co_safety.h"
+#include "physltl/ltl/parser.h"
+#include "physltl/ltl/translate.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace physltl::ltl {
+namespace {
+
+std::string sequencing(int n) {
+  std::string f = "F p" + std::to_string(n);
+  for (int i = n - 1; i >= 1; --i) f = "F(p" + std::to_string(i) + " & " + f + ")";
+  return f;
+}
+
+std::string joined(int n, const char* op) {
+  std::string f;
+  for (int i = 1; i <= n; ++i) f += (i > 1 ? op : "") + std::string("F p") + std::to_string(i);
+  return f;
+}
+
+Dfa dfa_of(const std::string& text) { return translate(parse(text)); }
+
+TEST(Translate, SequencingOfNRegionsHasNPlusOneStates) {
+  for (int n = 1; n <= 10; ++n) EXPECT_EQ(dfa_of(sequencing(n)).size(), static_cast<std::size_t>(n + 1)) << n;
+}
+
+TEST(Translate, CoverageOfNRegionsHasTwoToTheNStates) {
+  for (int n = 1; n <= 10; ++n) EXPECT_EQ(dfa_of(joined(n, " & ")).size(), std::size_t{1} << n) << n;
+}
+
+TEST(Translate, DisjunctionOfNRegionsHasTwoStates) {
+  for (int n = 1; n <= 10; ++n) {
+    const Dfa dfa = dfa_of(joined(n, " | "));
+    EXPECT_EQ(dfa.size(), 2u) << n;
+    // Two edges: the self-loop while no region is visited, and "any region" to the accepting sink.
+    EXPECT_EQ(dfa.edges[0].size(), 2u);
+    EXPECT_EQ(dfa.edges[0][1].condition.cubes.size(), static_cast<std::size_t>(n));
+  }
+}
+
+TEST(Translate, AcceptsTheEmptyPrefixOfAFormulaTrueOnEveryWord) {
+  const Dfa dfa = dfa_of("F a | X F !a");
+  EXPECT_EQ(dfa.size(), 1u);
+  EXPECT_TRUE(dfa.accepting[0]);
+}
+
+TEST(Translate, AcceptsOnlyOnceTheGoodPrefixIsComplete) {
+  const Dfa dfa = dfa_of("F(p1 & F p2)");
+  const int p1 = dfa.proposition_index("p1");
+  const int p2 = dfa.proposition_index("p2");
+  using Trace = std::vector<std::vector<int>>;
+  EXPECT_FALSE(dfa.accepts(Trace{}));
+  EXPECT_FALSE(dfa.accepts(Trace{{p2}, {p1}}));
+  EXPECT_TRUE(dfa.accepts(Trace{{p2}, {p1}, {}, {p2}}));
+  EXPECT_TRUE(dfa.accepts(Trace{{p1}, {p2}, {}}));  // the accepting sink stays accepting
+}
+
+TEST(Translate, HasARejectingSinkWhenTheTaskCanFail) {
+  const Dfa dfa = dfa_of("!p3 U p1");
+  EXPECT_EQ(dfa.size(), 3u);
+  const int p3 = dfa.proposition_index("p3");
+  const int dead = dfa.step(dfa.start, std::vector<int>{p3});
+  EXPECT_FALSE(dfa.accepting[dead]);
+  EXPECT_EQ(dfa.step(dead, std::vector<int>{dfa.proposition_index("p1")}), dead);
+}
+
+TEST(Translate, IsCompleteAndDeterministicOnEveryLetter) {
+  const Dfa dfa = dfa_of("(a U b) & X(c M a) | F(b & X !c)");
+  const std::size_t n = dfa.propositions.size();
+  for (std::size_t s = 0; s < dfa.size(); ++s) {
+    for (unsigned letter = 0; letter < (1u << n); ++letter) {
+      bool truth[8];
+      for (std::size_t i = 0; i < n; ++i) truth[i] = (letter >> i) & 1;
+      int matching = 0;
+      for (const Edge& e : dfa.edges[s]) matching += e.condition.holds(std::span<const bool>(truth, n));
+      EXPECT_EQ(matching, 1) << "state " << s << " letter " << letter;
+    }
+  }
+}
+
+TEST(Translate, MatchesTheMinimalSizesOfSmallKnownAutomata) {
+  EXPECT_EQ(dfa_of("true").size(), 1u);
+  EXPECT_EQ(dfa_of("false").size(), 1u);
+  EXPECT_FALSE(dfa_of("false").accepting[0]);
+  EXPECT_EQ(dfa_of("a").size(), 3u);          // start, accept, reject
+  EXPECT_EQ(dfa_of("X a").size(), 4u);        // start, wait-for-a, accept, reject
+  EXPECT_EQ(dfa_of("a U b").size(), 3u);
+  EXPECT_EQ(dfa_of("a M b").size(), 3u);      // b U (a & b)
+  EXPECT_EQ(dfa_of("F a & F a").size(), 2u);
+  EXPECT_EQ(dfa_of("F(a | !a)").size(), 1u);  // valid once the first letter is read... and before
+  EXPECT_EQ(dfa_of("X(a ^ b)").size(), 4u);
+}
+
+TEST(Translate, UsesTheFormulasPropositionsAsAlphabetInOrder) {
+  EXPECT_EQ(dfa_of("F(kitchen & F(hall | kitchen))").propositions, (std::vector<std::string>{"kitchen", "hall"}));
+}
+
+TEST(Translate, RefusesAFormulaOutsideTheCoSafeClass) {
+  EXPECT_THROW(dfa_of("G a"), NotCoSafeError);
+}
+
+}  // namespace
+}  // namespace physltl::ltl
