@@ -1,0 +1,33 @@
+#pragma once
+// A snapshot of the environment E = X x S of the paper: where the robot and every movable body are.
+// Physics produces these; knowledge, planning and rendering read them.
+
+#include "physltl/geometry/shapes.h"
+#include "physltl/scenario/world.h"
+
+#include <vector>
+
+namespace physltl::scenario {
+
+struct EnvironmentState {
+  Vec2 robot_position = Vec2::Zero();
+  Vec2 robot_velocity = Vec2::Zero();
+  std::vector<geometry::Pose2> movable_poses;  // same order as World::movable_bodies
+  std::vector<Vec2> movable_velocities;        // linear, same order
+
+  // The state a World starts in: robot at its start, bodies where the script put them, all at rest.
+  static EnvironmentState initial(const World& world);
+};
+
+// A contact of the robot with a body during one physics step.
+struct RobotContact {
+  enum class Body { kFixed, kMovable };
+  Body body = Body::kFixed;
+  int index = 0;            // into World::fixed_bodies or World::movable_bodies
+  Vec2 point = Vec2::Zero();  // world frame, on the floor plane
+};
+
+// A movable body's footprint at a given pose.
+geometry::OrientedBox footprint_at(const MovableBody& body, const geometry::Pose2& pose);
+
+}  // namespace physltl::scenario

@@ -1,0 +1,19 @@
+#include "physltl/scenario/state.h"
+
+namespace physltl::scenario {
+
+EnvironmentState EnvironmentState::initial(const World& world) {
+  EnvironmentState s;
+  s.robot_position = world.robot.start;
+  for (const auto& b : world.movable_bodies) {
+    s.movable_poses.push_back(b.footprint.pose);
+    s.movable_velocities.push_back(Vec2::Zero());
+  }
+  return s;
+}
+
+geometry::OrientedBox footprint_at(const MovableBody& body, const geometry::Pose2& pose) {
+  return {pose, body.footprint.half_extents};
+}
+
+}  // namespace physltl::scenario
