@@ -1,11 +1,58 @@
 #include "command.h"
 
+#include "physltl/ltl/analysis.h"
+#include "physltl/ltl/co_safety.h"
+#include "physltl/ltl/hoa.h"
+#include "physltl/ltl/parser.h"
+
+#include <iostream>
+#include <memory>
+
 namespace physltl::app {
 
+namespace {
+
+// The formula with a caret under the offending column, so the error is found at a glance.
+std::string pointing_at(const std::string& formula, std::uint32_t column) {
+  if (column == 0 || formula.find('\n') != std::string::npos) return "";
+  return "\n  " + formula + "\n  " + std::string(column - 1, ' ') + "^";
+}
+
+}  // namespace
+
 CommandRunner add_ltl_command(CLI::App& app) {
-  auto formula = std::make_shared<std::string>();
-  app.add_option("formula", *formula, "The formula, e.g. 'F(p1 & F p2)'")->required();
-  return [formula]() -> int { throw BadInput("the ltl command is not implemented yet"); };
+  struct Options {
+    std::string formula;
+    bool hoa = false;
+    std::vector<std::string> invalid;
+  };
+  auto o = std::make_shared<Options>();
+  app.add_option("formula", o->formula, "The co-safe task, e.g. 'F(p1 & F p2)'")->required();
+  app.add_flag("--hoa", o->hoa, "Print only the automaton, in HOA v1 (as Spot writes it)");
+  app.add_option("--invalid", o->invalid, "Propositions the robot can never make true, e.g. p3,p5")
+      ->delimiter(',');
+
+  return [o]() -> int {
+    ltl::Analysis analysis = [&] {
+      try {
+        return ltl::analyse(o->formula, o->invalid);
+      } catch (const ltl::ParseError& e) {
+        throw BadInput(std::string("bad formula: ") + e.what() + pointing_at(o->formula, e.column()));
+      } catch (const ltl::NotCoSafeError& e) {
+        throw BadInput(e.what() + pointing_at(o->formula, e.violation().origin.column));
+      }
+    }();
+    if (o->hoa) {
+      if (!analysis.dfa) {
+        std::cerr << "physltl-studio: the task is infeasible: " << analysis.semantic->explanation << "\n";
+        return kExitNoPlan;
+      }
+      ltl::write_hoa(std::cout, *analysis.dfa);
+      return kExitOk;
+    }
+    ltl::write_summary(std::cout, analysis);
+    return analysis.feasible() ? kExitOk : kExitNoPlan;
+  };
 }
 
 }  // namespace physltl::app
