@@ -35,11 +35,14 @@ class DecisionDiagram {
   std::vector<int> leaf_values(Node n) const {
     std::vector<int> out;
     std::vector<Node> stack{n};
-    std::unordered_map<Node, bool> seen;
+    // Visited marks stamped with a fresh epoch per call: no clearing, no hashing.
+    mark_.resize(nodes_.size(), 0);
+    const std::uint32_t epoch = ++epoch_;
     while (!stack.empty()) {
       Node m = stack.back();
       stack.pop_back();
-      if (!seen.emplace(m, true).second) continue;
+      if (mark_[m] == epoch) continue;
+      mark_[m] = epoch;
       if (is_leaf(m)) {
         out.push_back(value(m));
       } else {
@@ -60,9 +63,8 @@ class DecisionDiagram {
     std::size_t operator()(std::uint64_t k) const { return k * 0x9E3779B97F4A7C15ULL >> 7; }
   };
 
+  // One node per (var, low, high): a map per variable, keyed by the two children.
   Node intern(const Entry& e) {
-    // var, low and high fit in 96 bits; two maps keyed by 64 bits keep it simple: leaves by value,
-    // branches by (var, low, high) packed with var in the high bits of a second level.
     auto& by_children = unique_[static_cast<std::uint64_t>(static_cast<std::uint32_t>(e.var))];
     const std::uint64_t key = (static_cast<std::uint64_t>(e.low) << 32) | e.high;
     auto [it, inserted] = by_children.try_emplace(key, static_cast<Node>(nodes_.size()));
@@ -71,6 +73,8 @@ class DecisionDiagram {
   }
 
   std::vector<Entry> nodes_;
+  mutable std::vector<std::uint32_t> mark_;  // scratch space of leaf_values
+  mutable std::uint32_t epoch_ = 0;
   std::unordered_map<std::uint64_t, std::unordered_map<std::uint64_t, Node, KeyHash>> unique_;
 };
 

@@ -233,10 +233,13 @@ class Translator {
     for (std::size_t s = 0; s < state_dnfs_.size(); ++s) {
       const Node root = progress_state(state_dnfs_[s]);
       roots_.push_back(root);
+      std::vector<int> successors;
       for (int dnf : dd_.leaf_values(root)) {
-        if (state_of_dnf_.try_emplace(dnf, static_cast<int>(state_dnfs_.size())).second)
-          state_dnfs_.push_back(dnf);
+        auto [it, inserted] = state_of_dnf_.try_emplace(dnf, static_cast<int>(state_dnfs_.size()));
+        if (inserted) state_dnfs_.push_back(dnf);
+        successors.push_back(it->second);
       }
+      successors_.push_back(std::move(successors));
     }
   }
 
@@ -248,8 +251,7 @@ class Translator {
     std::vector<std::vector<int>> predecessors(n);
     std::vector<int> pending(n, 0);  // successors not yet known to be good
     for (std::size_t s = 0; s < n; ++s) {
-      for (int dnf : dd_.leaf_values(roots_[s])) {
-        const int t = state_of_dnf_.at(dnf);
+      for (int t : successors_[s]) {
         predecessors[t].push_back(static_cast<int>(s));
         ++pending[s];
       }
@@ -327,14 +329,14 @@ class Translator {
     dfa.propositions = props_;
     for (std::size_t i = 0; i < order.size(); ++i) {
       const Node root = sig[representative[order[i]]];
-      std::vector<int> targets = dd.leaf_values(root);
-      for (int c : targets)
+      std::vector<Edge> edges;
+      for (auto& [c, condition] : conditions(dd, root)) {
         if (number[c] < 0) {
           number[c] = static_cast<int>(order.size());
           order.push_back(c);
         }
-      std::vector<Edge> edges;
-      for (int c : targets) edges.push_back(Edge{number[c], condition_for(dd, root, c)});
+        edges.push_back(Edge{number[c], std::move(condition)});
+      }
       std::ranges::sort(edges, {}, &Edge::target);
       dfa.edges.push_back(std::move(edges));
       dfa.accepting.push_back(good[representative[order[i]]]);
@@ -342,17 +344,24 @@ class Translator {
     return dfa;
   }
 
-  // The letters on which `root` leads to `target`, as a short cover of cubes: the diagram's paths to
-  // the leaf, each widened by dropping the literals it does not need.
-  Condition condition_for(const DecisionDiagram& dd, Node root, int target) const {
-    std::vector<Cube> paths;
+  // For each leaf of `root` (in order of first appearance), the letters that lead to it, as a short
+  // cover of cubes: the diagram's paths to the leaf, each widened by dropping the literals it does not
+  // need.
+  std::vector<std::pair<int, Condition>> conditions(const DecisionDiagram& dd, Node root) const {
+    std::vector<std::pair<int, Cube>> paths;
     Cube path;
-    collect_paths(dd, root, target, path, paths);
+    collect_paths(dd, root, path, paths);
+    std::vector<std::pair<int, Condition>> out;
+    std::unordered_map<int, std::size_t> slot;  // target -> index in `out`
+    std::unordered_map<int, int> path_count;
+    for (const auto& p : paths) ++path_count[p.first];
     std::vector<signed char> assignment(props_.size(), -1);
-    Condition condition;
-    for (Cube& cube : paths) {
+    for (auto& [target, cube] : paths) {
+      // Dropping a literal would let the path continue into the other branch of its test, which then
+      // has to reach this target by another path; with only one path to the target, nothing to widen.
+      const bool widen = path_count[target] > 1;
       for (const Literal& l : cube) assignment[l.proposition] = l.positive;
-      for (std::size_t i = 0; i < cube.size();) {
+      for (std::size_t i = 0; widen && i < cube.size();) {
         assignment[cube[i].proposition] = -1;
         if (only_leads_to(dd, root, assignment, target)) {
           cube.erase(cube.begin() + static_cast<std::ptrdiff_t>(i));
@@ -362,29 +371,33 @@ class Translator {
         }
       }
       for (const Literal& l : cube) assignment[l.proposition] = -1;
-      const bool subsumed = std::ranges::any_of(condition.cubes, [&](const Cube& c) {
+      auto [it, inserted] = slot.try_emplace(target, out.size());
+      if (inserted) out.emplace_back(target, Condition{});
+      std::vector<Cube>& cubes = out[it->second].second.cubes;
+      const bool subsumed = std::ranges::any_of(cubes, [&](const Cube& c) {
         return std::ranges::all_of(c, [&](const Literal& l) { return std::ranges::find(cube, l) != cube.end(); });
       });
-      if (!subsumed) condition.cubes.push_back(std::move(cube));
+      if (!subsumed) cubes.push_back(std::move(cube));
     }
     // In proposition order, for people reading the labels.
-    std::ranges::sort(condition.cubes, [](const Cube& a, const Cube& b) {
-      return std::ranges::lexicographical_compare(a, b, [](const Literal& x, const Literal& y) {
-        return x.proposition != y.proposition ? x.proposition < y.proposition : x.positive > y.positive;
+    for (auto& [target, condition] : out)
+      std::ranges::sort(condition.cubes, [](const Cube& a, const Cube& b) {
+        return std::ranges::lexicographical_compare(a, b, [](const Literal& x, const Literal& y) {
+          return x.proposition != y.proposition ? x.proposition < y.proposition : x.positive > y.positive;
+        });
       });
-    });
-    return condition;
+    return out;
   }
 
-  static void collect_paths(const DecisionDiagram& dd, Node n, int target, Cube& path, std::vector<Cube>& out) {
+  static void collect_paths(const DecisionDiagram& dd, Node n, Cube& path, std::vector<std::pair<int, Cube>>& out) {
     if (dd.is_leaf(n)) {
-      if (dd.value(n) == target) out.push_back(path);
+      out.emplace_back(dd.value(n), path);
       return;
     }
     path.push_back(Literal{dd.var(n), false});
-    collect_paths(dd, dd.low(n), target, path, out);
+    collect_paths(dd, dd.low(n), path, out);
     path.back().positive = true;
-    collect_paths(dd, dd.high(n), target, path, out);
+    collect_paths(dd, dd.high(n), path, out);
     path.pop_back();
   }
 
@@ -408,7 +421,8 @@ class Translator {
   std::unordered_map<std::uint64_t, Node> or_nodes_;
   std::unordered_map<int, int> state_of_dnf_;
   std::vector<int> state_dnfs_;
-  std::vector<Node> roots_;
+  std::vector<Node> roots_;                   // per state: its successor by letter, as a diagram
+  std::vector<std::vector<int>> successors_;  // per state: its distinct successors
 };
 
 }  // namespace
