@@ -50,6 +50,7 @@ void read_robot(TableReader& r, Robot& robot) {
   robot.radius = r.number("radius", robot.radius);
   robot.mass = r.number("mass", robot.mass);
   robot.max_force = r.number("max_force", robot.max_force);
+  robot.max_speed = r.number("max_speed", robot.max_speed);
   robot.friction = r.number("friction", robot.friction);
   robot.start = r.point("start");
 }

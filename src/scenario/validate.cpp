@@ -13,6 +13,7 @@ constexpr double kMaxLength = 1e4;  // m
 constexpr double kMaxMass = 1e6;    // kg
 constexpr double kMaxForce = 1e6;   // N
 constexpr double kMaxFriction = 100.0;
+constexpr double kMaxSpeed = 20.0;  // m/s: a mobile robot among boxes, and a bound on tunnelling per step
 
 class Validator {
  public:
@@ -75,6 +76,7 @@ class Validator {
     check_range(r.where, "robot: 'radius'", r.radius, 0.0, kMaxLength);
     check_range(r.where, "robot: 'mass'", r.mass, 0.0, kMaxMass);
     check_range(r.where, "robot: 'max_force'", r.max_force, 0.0, kMaxForce);
+    check_range(r.where, "robot: 'max_speed'", r.max_speed, 0.0, kMaxSpeed);
     check_range(r.where, "robot: 'friction'", r.friction, 0.0, kMaxFriction, true);
     if (!workspace_ok() || !(r.radius > 0)) return;
     const auto& b = world_.workspace.bounds;

@@ -61,6 +61,7 @@ nlohmann::ordered_json to_json(const World& world) {
        {{"radius", world.robot.radius},
         {"mass", world.robot.mass},
         {"max_force", world.robot.max_force},
+        {"max_speed", world.robot.max_speed},
         {"friction", world.robot.friction},
         {"start", point(world.robot.start)}}},
       {"bodies", bodies},

@@ -25,6 +25,7 @@ struct Robot {
   double radius = 0.25;     // m
   double mass = 1.0;        // kg
   double max_force = 20.0;  // N, bound on each component of the planar force control
+  double max_speed = 1.0;   // m/s; the drive saturates here, which also keeps contacts from tunnelling
   double friction = 0.5;
   Vec2 start = Vec2::Zero();
   Location where;

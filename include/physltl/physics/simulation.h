@@ -1,0 +1,46 @@
+#pragma once
+// The physics of a World, on ODE: the paper's PROPAGATOR. Planar motion: the robot sphere and the boxes
+// slide on the floor (plane-2D joints), floor friction acts as Coulomb friction inside the solver, and
+// contacts are found in a fixed order, so the same state and control give bit-identical results.
+// One Simulation per thread; it is the only code that mutates physical state.
+
+#include "physltl/scenario/state.h"
+#include "physltl/scenario/world.h"
+
+#include <memory>
+#include <vector>
+
+namespace physltl::physics {
+
+// Everything ODE integrates, for every dynamic body (robot first, then movables in World order).
+// Restoring it is exact: a restored run continues bit for bit as the original one.
+struct PhysicsState {
+  std::vector<double> values;
+  bool operator==(const PhysicsState&) const = default;
+};
+
+class Simulation {
+ public:
+  explicit Simulation(const scenario::World& world);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  void reset();  // the World's initial state
+  PhysicsState save() const;
+  void restore(const PhysicsState& state);
+
+  // Pushes the robot with `force` (each component clamped to the robot's max_force) for one step of the
+  // World's step_size. `contacts` receives the robot's contacts during the step.
+  void step(const scenario::Vec2& force, std::vector<scenario::RobotContact>& contacts);
+
+  void read_environment(scenario::EnvironmentState& out) const;  // reuses out's storage
+  scenario::EnvironmentState environment() const;
+  double step_size() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace physltl::physics

@@ -1,0 +1,9 @@
+#pragma once
+
+namespace physltl::physics {
+
+// ODE needs one library initialisation per process and its own data per thread; call this before
+// touching ODE on any thread.
+void ensure_ode_ready_on_this_thread();
+
+}  // namespace physltl::physics

@@ -1,0 +1,260 @@
+#include "physltl/physics/simulation.h"
+
+#include "ode_runtime.h"
+
+#include <ode/ode.h>
+#include <ode/threading_impl.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace physltl::physics {
+namespace {
+
+constexpr double kGravity = 9.81;           // m/s^2, for floor friction only: motion is planar
+constexpr double kCollisionHeight = 1.0;    // m; every body spans z = ±0.5 so contact normals stay horizontal
+constexpr int kMaxContactsPerPair = 4;
+constexpr int kValuesPerBody = 13;          // position 3, quaternion 4, linear velocity 3, angular velocity 3
+constexpr double kBoxSpeedFactor = 2.0;     // pushed boxes may not outrun the robot by more than this
+
+// Coulomb friction of two materials, as Box2D and most engines combine it.
+double mix_friction(double a, double b) { return std::sqrt(a * b); }
+
+struct Geom {
+  dGeomID id = nullptr;
+  dBodyID body = nullptr;  // null for fixed bodies
+  scenario::RobotContact::Body kind = scenario::RobotContact::Body::kFixed;
+  int index = 0;           // into the World's list of its kind; -1 for the robot
+  double friction = 0.5;
+  double bound_radius = 0.0;  // of the footprint, for a cheap test before dCollide
+};
+
+}  // namespace
+
+struct Simulation::Impl {
+  const scenario::World& world;
+  dWorldID ode_world = nullptr;
+  dThreadingImplementationID threading = nullptr;
+  dJointGroupID contact_group = nullptr;
+  std::vector<Geom> dynamic;  // robot first, then movables in World order
+  std::vector<Geom> fixed;
+  std::vector<dJointID> planar_joints;
+  double max_force;
+  double max_speed;
+  dContactGeom contact_buffer[kMaxContactsPerPair];
+
+  explicit Impl(const scenario::World& w) : world(w), max_force(w.robot.max_force), max_speed(w.robot.max_speed) {
+    ensure_ode_ready_on_this_thread();
+    ode_world = dWorldCreate();
+    // ODE's default stepping implementation is one object shared by all worlds; with a planner per
+    // thread each world needs its own (Debian's ODE asserts otherwise).
+    threading = dThreadingAllocateSelfThreadedImplementation();
+    dWorldSetStepThreadingImplementation(ode_world, dThreadingImplementationGetFunctions(threading), threading);
+    dWorldSetGravity(ode_world, 0, 0, 0);
+    dWorldSetERP(ode_world, 0.2);
+    dWorldSetCFM(ode_world, 1e-6);
+    dWorldSetContactSurfaceLayer(ode_world, 0.001);
+    dWorldSetContactMaxCorrectingVel(ode_world, 1.0);
+    dWorldSetAutoDisableFlag(ode_world, 0);  // no hidden sleep counters: the state is all in PhysicsState
+    contact_group = dJointGroupCreate(0);
+
+    const double floor = w.workspace.floor_friction;
+    const auto& r = w.robot;
+    dMass mass;
+    dMassSetSphereTotal(&mass, r.mass, r.radius);
+    add_dynamic(dCreateSphere(nullptr, r.radius), mass, r.friction, r.radius, -1,
+                mix_friction(floor, r.friction) * r.mass * kGravity, 0.0);
+
+    for (size_t i = 0; i < w.movable_bodies.size(); ++i) {
+      const auto& b = w.movable_bodies[i];
+      const scenario::Vec2 size = 2.0 * b.footprint.half_extents;
+      dMassSetBoxTotal(&mass, b.mass, size.x(), size.y(), kCollisionHeight);
+      const double floor_force = mix_friction(floor, b.friction) * b.mass * kGravity;
+      // Turning a box on the floor resists like friction acting at two thirds of its half-size.
+      const double floor_torque = floor_force * (2.0 / 3.0) * b.footprint.half_extents.mean();
+      add_dynamic(dCreateBox(nullptr, size.x(), size.y(), kCollisionHeight), mass, b.friction,
+                  b.footprint.half_extents.norm(), static_cast<int>(i), floor_force, floor_torque);
+    }
+    for (size_t i = 0; i < w.fixed_bodies.size(); ++i) {
+      const auto& f = w.fixed_bodies[i];
+      const scenario::Vec2 size = 2.0 * f.footprint.half_extents;
+      Geom g;
+      g.id = dCreateBox(nullptr, size.x(), size.y(), kCollisionHeight);
+      g.index = static_cast<int>(i);
+      g.friction = 0.5;
+      g.bound_radius = f.footprint.half_extents.norm();
+      place(g.id, f.footprint.pose);
+      fixed.push_back(g);
+    }
+    reset();
+  }
+
+  ~Impl() {
+    for (auto& g : dynamic) dGeomDestroy(g.id);
+    for (auto& g : fixed) dGeomDestroy(g.id);
+    dJointGroupDestroy(contact_group);
+    dWorldDestroy(ode_world);  // also destroys bodies and joints
+    dThreadingFreeImplementation(threading);
+  }
+
+  static void place(dGeomID geom, const geometry::Pose2& pose) {
+    dGeomSetPosition(geom, pose.position.x(), pose.position.y(), 0.0);
+    dMatrix3 rotation;
+    dRFromAxisAndAngle(rotation, 0, 0, 1, pose.yaw);
+    dGeomSetRotation(geom, rotation);
+  }
+
+  void add_dynamic(dGeomID geom, const dMass& mass, double friction, double bound_radius, int index,
+                   double floor_force, double floor_torque) {
+    Geom g;
+    g.id = geom;
+    g.body = dBodyCreate(ode_world);
+    dBodySetMass(g.body, &mass);
+    dGeomSetBody(geom, g.body);
+    g.kind = scenario::RobotContact::Body::kMovable;
+    g.index = index;
+    g.friction = friction;
+    g.bound_radius = bound_radius;
+    // The plane-2D joint keeps the body on the floor; its motors, driven to zero velocity with a force
+    // bound, are the floor's Coulomb friction (static and kinetic) solved together with the contacts.
+    dJointID joint = dJointCreatePlane2D(ode_world, nullptr);
+    dJointAttach(joint, g.body, nullptr);
+    dJointSetPlane2DXParam(joint, dParamFMax, floor_force);
+    dJointSetPlane2DYParam(joint, dParamFMax, floor_force);
+    dJointSetPlane2DAngleParam(joint, dParamFMax, index < 0 ? 1e3 : floor_torque);  // the robot does not spin
+    planar_joints.push_back(joint);
+    dynamic.push_back(g);
+  }
+
+  void set_pose(dBodyID body, const geometry::Pose2& pose, const scenario::Vec2& velocity) {
+    dBodySetPosition(body, pose.position.x(), pose.position.y(), 0.0);
+    const dQuaternion q = {std::cos(pose.yaw / 2), 0, 0, std::sin(pose.yaw / 2)};
+    dBodySetQuaternion(body, q);
+    dBodySetLinearVel(body, velocity.x(), velocity.y(), 0.0);
+    dBodySetAngularVel(body, 0, 0, 0);
+  }
+
+  void reset() {
+    set_pose(dynamic[0].body, {world.robot.start, 0.0}, scenario::Vec2::Zero());
+    for (size_t i = 0; i < world.movable_bodies.size(); ++i) {
+      set_pose(dynamic[i + 1].body, world.movable_bodies[i].footprint.pose, scenario::Vec2::Zero());
+    }
+  }
+
+  void collide(const Geom& a, const Geom& b, std::vector<scenario::RobotContact>& robot_contacts) {
+    const dReal* pa = dGeomGetPosition(a.id);
+    const dReal* pb = dGeomGetPosition(b.id);
+    const double reach = a.bound_radius + b.bound_radius;
+    if ((pa[0] - pb[0]) * (pa[0] - pb[0]) + (pa[1] - pb[1]) * (pa[1] - pb[1]) > reach * reach) return;
+    const int n = dCollide(a.id, b.id, kMaxContactsPerPair, contact_buffer, sizeof(dContactGeom));
+    for (int i = 0; i < n; ++i) {
+      dContact contact{};
+      contact.geom = contact_buffer[i];
+      contact.surface.mode = dContactApprox1 | dContactSoftCFM | dContactSoftERP;
+      contact.surface.mu = mix_friction(a.friction, b.friction);
+      contact.surface.soft_cfm = 1e-5;
+      contact.surface.soft_erp = 0.2;
+      dJointID joint = dJointCreateContact(ode_world, contact_group, &contact);
+      dJointAttach(joint, a.body, b.body);
+    }
+    if (n > 0 && a.index < 0) {  // `a` is the robot: it is always the first of a pair
+      const dReal* p = contact_buffer[0].pos;
+      robot_contacts.push_back({b.kind, b.index, {p[0], p[1]}});
+    }
+  }
+
+  // After each step: remove the solver's drift out of the plane, and saturate speeds.
+  void settle(const Geom& g, double speed_limit) {
+    const dReal* q = dBodyGetQuaternion(g.body);
+    const double yaw = 2.0 * std::atan2(q[3], q[0]);
+    const dReal* p = dBodyGetPosition(g.body);
+    const dReal* v = dBodyGetLinearVel(g.body);
+    const dReal* w = dBodyGetAngularVel(g.body);
+    const double speed = std::hypot(v[0], v[1]);
+    const double scale = speed > speed_limit ? speed_limit / speed : 1.0;
+    const double vx = v[0] * scale, vy = v[1] * scale, wz = w[2];
+    dBodySetPosition(g.body, p[0], p[1], 0.0);
+    const dQuaternion planar = {std::cos(yaw / 2), 0, 0, std::sin(yaw / 2)};
+    dBodySetQuaternion(g.body, planar);
+    dBodySetLinearVel(g.body, vx, vy, 0.0);
+    dBodySetAngularVel(g.body, 0, 0, wz);
+  }
+
+  void step(const scenario::Vec2& force, std::vector<scenario::RobotContact>& robot_contacts) {
+    robot_contacts.clear();
+    const double fx = std::clamp(force.x(), -max_force, max_force);
+    const double fy = std::clamp(force.y(), -max_force, max_force);
+    dBodyAddForce(dynamic[0].body, fx, fy, 0.0);
+    // Fixed pair order, no collision space: contact order never depends on history.
+    for (size_t i = 0; i < dynamic.size(); ++i) {
+      for (size_t j = i + 1; j < dynamic.size(); ++j) collide(dynamic[i], dynamic[j], robot_contacts);
+      for (const Geom& f : fixed) collide(dynamic[i], f, robot_contacts);
+    }
+    dWorldStep(ode_world, world.planner.step_size);
+    dJointGroupEmpty(contact_group);
+    settle(dynamic[0], max_speed);
+    for (size_t i = 1; i < dynamic.size(); ++i) settle(dynamic[i], kBoxSpeedFactor * max_speed);
+  }
+};
+
+Simulation::Simulation(const scenario::World& world) : impl_(std::make_unique<Impl>(world)) {}
+Simulation::~Simulation() = default;
+
+void Simulation::reset() { impl_->reset(); }
+
+double Simulation::step_size() const { return impl_->world.planner.step_size; }
+
+PhysicsState Simulation::save() const {
+  PhysicsState s;
+  s.values.reserve(impl_->dynamic.size() * kValuesPerBody);
+  auto append = [&s](const dReal* values, int count) { s.values.insert(s.values.end(), values, values + count); };
+  for (const Geom& g : impl_->dynamic) {
+    append(dBodyGetPosition(g.body), 3);
+    append(dBodyGetQuaternion(g.body), 4);
+    append(dBodyGetLinearVel(g.body), 3);
+    append(dBodyGetAngularVel(g.body), 3);
+  }
+  return s;
+}
+
+void Simulation::restore(const PhysicsState& s) {
+  const double* v = s.values.data();
+  for (const Geom& g : impl_->dynamic) {
+    dBodySetPosition(g.body, v[0], v[1], v[2]);
+    const dQuaternion q = {v[3], v[4], v[5], v[6]};
+    dBodySetQuaternion(g.body, q);
+    dBodySetLinearVel(g.body, v[7], v[8], v[9]);
+    dBodySetAngularVel(g.body, v[10], v[11], v[12]);
+    v += kValuesPerBody;
+  }
+}
+
+void Simulation::step(const scenario::Vec2& force, std::vector<scenario::RobotContact>& contacts) {
+  impl_->step(force, contacts);
+}
+
+void Simulation::read_environment(scenario::EnvironmentState& out) const {
+  const auto& dyn = impl_->dynamic;
+  auto planar = [](dBodyID body, scenario::Vec2& position, scenario::Vec2& velocity) {
+    const dReal* p = dBodyGetPosition(body);
+    const dReal* v = dBodyGetLinearVel(body);
+    position = {p[0], p[1]};
+    velocity = {v[0], v[1]};
+  };
+  planar(dyn[0].body, out.robot_position, out.robot_velocity);
+  out.movable_poses.resize(dyn.size() - 1);
+  out.movable_velocities.resize(dyn.size() - 1);
+  for (size_t i = 1; i < dyn.size(); ++i) {
+    planar(dyn[i].body, out.movable_poses[i - 1].position, out.movable_velocities[i - 1]);
+    const dReal* q = dBodyGetQuaternion(dyn[i].body);
+    out.movable_poses[i - 1].yaw = 2.0 * std::atan2(q[3], q[0]);
+  }
+}
+
+scenario::EnvironmentState Simulation::environment() const {
+  scenario::EnvironmentState s;
+  read_environment(s);
+  return s;
+}
+
+}  // namespace physltl::physics
