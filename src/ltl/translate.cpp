@@ -356,7 +356,9 @@ class Translator {
     std::unordered_map<int, int> path_count;
     for (const auto& p : paths) ++path_count[p.first];
     std::vector<signed char> assignment(props_.size(), -1);
-    for (auto& [target, cube] : paths) {
+    for (auto& path_to_target : paths) {
+      const int target = path_to_target.first;
+      Cube& cube = path_to_target.second;  // a reference, not a structured binding: the lambdas capture it
       // Dropping a literal would let the path continue into the other branch of its test, which then
       // has to reach this target by another path; with only one path to the target, nothing to widen.
       const bool widen = path_count[target] > 1;
