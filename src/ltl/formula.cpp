@@ -111,10 +111,6 @@ Origin Formula::origin() const { return node_->origin; }
 std::size_t Formula::hash() const { return node_->hash; }
 std::size_t Formula::depth() const { return node_->depth; }
 
-bool Formula::is_literal() const {
-  return op() == Op::Atom || (op() == Op::Not && child(0).op() == Op::Atom);
-}
-
 bool operator==(const Formula& a, const Formula& b) {
   if (a.node_ == b.node_) return true;
   if (a.hash() != b.hash() || a.op() != b.op() || a.name() != b.name()) return false;

@@ -65,7 +65,6 @@ class Formula {
   const Formula& child(std::size_t i) const { return children()[i]; }
   Origin origin() const;
   bool is_constant() const { return op() == Op::True || op() == Op::False; }
-  bool is_literal() const;  // an atom or a negated atom
   std::size_t hash() const;
   std::size_t depth() const;  // 1 for a leaf
 
