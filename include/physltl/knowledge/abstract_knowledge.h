@@ -1,0 +1,81 @@
+#pragma once
+// Abstract knowledge K of the paper: what stays true while planning. Body classes and properties, the
+// robot's capabilities, manipulation-region (mRegion) templates and the propositional regions.
+// formulate() is the paper's OntologyFormulation, from the World instead of an OWL file.
+
+#include "physltl/geometry/shapes.h"
+#include "physltl/knowledge/side_set.h"
+#include "physltl/scenario/world.h"
+
+#include <string>
+#include <vector>
+
+namespace physltl::knowledge {
+
+enum class BodyClass { kFixed, kFreelyMovable, kConstraintOriented };
+const char* class_name(BodyClass body_class);  // "fixed", "freely-movable", "constraint-oriented"
+
+struct RobotCapabilities {
+  double radius = 0.0;
+  double mass = 0.0;
+  double max_force = 0.0;             // N, per axis of the force control
+  double floor_friction_force = 0.0;  // N the robot spends dragging itself along the floor
+  double push_force = 0.0;            // N left over for a body: max_force - floor_friction_force
+  geometry::Vec2 start = geometry::Vec2::Zero();
+};
+
+// One side the robot may push from. Both shapes are in the body's frame (body centre at the origin).
+struct MRegionTemplate {
+  Side side = Side::kPlusX;
+  // The mRegion: a strip along the whole side, as deep as the robot's footprint while it pushes. The
+  // robot's centre must be inside it for a contact with a constraint-oriented body to count as a push.
+  geometry::OrientedBox strip;
+  // Where the robot's centre is when it touches the side: the segment at one robot radius from the side,
+  // as long as the side. The mRegion is active while some stretch of it is free for the robot.
+  geometry::Vec2 contact_from = geometry::Vec2::Zero();
+  geometry::Vec2 contact_to = geometry::Vec2::Zero();
+};
+
+struct FixedBodyKnowledge {
+  std::string name;
+  geometry::OrientedBox footprint;
+  double bound_radius = 0.0;  // of the footprint about its centre, for cheap rejection tests
+};
+
+struct MovableBodyKnowledge {
+  std::string name;
+  // kFixed when the robot cannot overcome the body's floor friction: it is then an obstacle like a wall.
+  BodyClass body_class = BodyClass::kFreelyMovable;
+  std::string class_reason;
+  geometry::OrientedBox footprint;  // where the world puts it; stays there when it is too heavy to push
+  double bound_radius = 0.0;
+  double mass = 0.0;
+  double friction = 0.0;            // the body's own coefficient
+  double floor_friction_force = 0.0;  // N needed to start it sliding
+  std::vector<MRegionTemplate> mregions;  // the pushable sides; empty for class kFixed
+};
+
+struct Proposition {
+  std::string name;
+  geometry::Polygon region;
+};
+
+struct AbstractKnowledge {
+  geometry::Rect workspace;
+  RobotCapabilities robot;
+  std::vector<FixedBodyKnowledge> fixed_bodies;      // World::fixed_bodies order
+  std::vector<MovableBodyKnowledge> movable_bodies;  // World::movable_bodies order
+  std::vector<Proposition> propositions;             // World::regions order
+};
+
+struct FormulationSettings {
+  double gravity = 9.81;          // m/s^2, as the physics module uses
+  double mregion_margin = 0.05;   // m added to the robot's diameter for the default mRegion depth
+};
+
+// Coulomb friction coefficient of two touching materials; the physics module combines them the same way.
+double combined_friction(double a, double b);
+
+AbstractKnowledge formulate(const scenario::World& world, const FormulationSettings& settings = {});
+
+}  // namespace physltl::knowledge

@@ -1,0 +1,40 @@
+#pragma once
+// Instantiated knowledge kappa and the paper's INFERENCE: which mRegions of each movable body are usable
+// in a given environment state, and so the body's current type. A pure function of (K, E).
+
+#include "physltl/knowledge/abstract_knowledge.h"
+#include "physltl/knowledge/side_set.h"
+#include "physltl/scenario/state.h"
+
+#include <vector>
+
+namespace physltl::knowledge {
+
+// free: pushable from every side; constraint-oriented: from some sides only; immovable: from none (or too
+// heavy to push at all).
+enum class BodyType { kFree, kConstraintOriented, kImmovable };
+const char* type_name(BodyType type);  // "free", "constraint-oriented", "immovable"
+
+struct BodyKappa {
+  BodyType type = BodyType::kFree;
+  SideSet active_sides;  // sides (body frame) whose mRegion the robot can stand in right now
+  bool operator==(const BodyKappa&) const = default;
+};
+
+struct Kappa {
+  std::vector<BodyKappa> bodies;  // World::movable_bodies order
+  bool operator==(const Kappa&) const = default;
+};
+
+// kappa for state `state`. An mRegion is inactive while the robot, touching that side with its centre
+// anywhere along it, would overlap a fixed body, another movable body or leave the workspace.
+Kappa infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state);
+
+// INFERENCE: E x kappa -> kappa'. Rewrites `kappa` in place for `state`, reusing its storage so the
+// planner's call after every propagation step does not allocate. The result equals infer(knowledge, state).
+void infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, Kappa& kappa);
+
+// mRegion strip of a template placed at a body pose, in the world frame.
+geometry::OrientedBox mregion_at(const MRegionTemplate& mregion, const geometry::Pose2& body_pose);
+
+}  // namespace physltl::knowledge

@@ -1,0 +1,49 @@
+#pragma once
+// The paper's VALIDITYCHECKER rules as a function of (state, contacts, kappa), so the planner and the
+// tests call the same code, with or without physics.
+
+#include "physltl/knowledge/abstract_knowledge.h"
+#include "physltl/knowledge/kappa.h"
+#include "physltl/scenario/state.h"
+
+#include <span>
+
+namespace physltl::knowledge {
+
+enum class ValidityMode {
+  kKnowledge,  // every rule below
+  kBaseline,   // plain physics-based planning (--baseline): only fixed-body contacts and leaving the
+               // workspace count, and kappa is not read (an empty Kappa will do)
+};
+
+enum class Violation {
+  kNone,
+  kLeftWorkspace,               // the robot or a movable body is (partly) outside the workspace
+  kTouchesFixedBody,            // a wall or other fixed body
+  kTouchesImmovableBody,        // a movable body kappa types immovable (blocked on all sides, or too heavy)
+  kPushesFromForbiddenSide,     // a constraint-oriented body, robot centre outside its active mRegions
+};
+const char* violation_name(Violation violation);
+
+struct Validity {
+  Violation violation = Violation::kNone;
+  // The body at fault: index into World::fixed_bodies for kTouchesFixedBody, into World::movable_bodies
+  // otherwise; -1 for none or for the robot leaving the workspace.
+  int body_index = -1;
+
+  bool valid() const { return violation == Violation::kNone; }
+};
+
+// How far a body may poke out of the workspace before it counts as having left (contact solvers let
+// bodies sink into walls by a fraction of a millimetre).
+inline constexpr double kWorkspaceTolerance = 1e-3;  // m
+
+Validity check_validity(const AbstractKnowledge& knowledge, const Kappa& kappa,
+                        const scenario::EnvironmentState& state,
+                        std::span<const scenario::RobotContact> contacts,
+                        ValidityMode mode = ValidityMode::kKnowledge);
+
+bool is_valid(const AbstractKnowledge& knowledge, const Kappa& kappa, const scenario::EnvironmentState& state,
+              std::span<const scenario::RobotContact> contacts, ValidityMode mode = ValidityMode::kKnowledge);
+
+}  // namespace physltl::knowledge

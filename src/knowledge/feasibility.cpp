@@ -1,0 +1,243 @@
+#include "physltl/knowledge/feasibility.h"
+
+#include "obstacle.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+
+namespace physltl::knowledge {
+namespace {
+
+using geometry::Vec2;
+
+// Square cells covering the workspace; a cell stands for its centre.
+class Grid {
+ public:
+  Grid(const geometry::Rect& bounds, double cell_size)
+      : origin_(bounds.min),
+        cell_(cell_size),
+        nx_(std::max(1, static_cast<int>(std::ceil(bounds.size().x() / cell_size)))),
+        ny_(std::max(1, static_cast<int>(std::ceil(bounds.size().y() / cell_size)))) {}
+
+  int nx() const { return nx_; }
+  int ny() const { return ny_; }
+  size_t cells() const { return static_cast<size_t>(nx_) * static_cast<size_t>(ny_); }
+  size_t index(int ix, int iy) const { return static_cast<size_t>(iy) * static_cast<size_t>(nx_) + static_cast<size_t>(ix); }
+  Vec2 center(int ix, int iy) const { return origin_ + cell_ * Vec2(ix + 0.5, iy + 0.5); }
+  int column(double x) const { return std::clamp(static_cast<int>(std::floor((x - origin_.x()) / cell_)), 0, nx_ - 1); }
+  int row(double y) const { return std::clamp(static_cast<int>(std::floor((y - origin_.y()) / cell_)), 0, ny_ - 1); }
+  size_t index_of(const Vec2& p) const { return index(column(p.x()), row(p.y())); }
+
+ private:
+  Vec2 origin_;
+  double cell_;
+  int nx_;
+  int ny_;
+};
+
+// The footprints that block the robot: fixed bodies, and optionally the movable ones too heavy to push.
+std::vector<geometry::OrientedBox> blocking_footprints(const AbstractKnowledge& k, bool with_unpushable_bodies) {
+  std::vector<geometry::OrientedBox> boxes;
+  for (const auto& f : k.fixed_bodies) boxes.push_back(f.footprint);
+  if (with_unpushable_bodies) {
+    for (const auto& m : k.movable_bodies) {
+      if (m.body_class == BodyClass::kFixed) boxes.push_back(m.footprint);
+    }
+  }
+  return boxes;
+}
+
+// Where a disc of `radius` can have its centre (cell centres tested exactly), and which of those cells
+// it reaches from the robot's start by 4-connected steps.
+class ConfigurationSpace {
+ public:
+  ConfigurationSpace(const AbstractKnowledge& k, const Grid& grid, double radius,
+                     const std::vector<geometry::OrientedBox>& footprints)
+      : grid_(grid),
+        radius_(radius),
+        inner_workspace_{k.workspace.min + Vec2::Constant(radius), k.workspace.max - Vec2::Constant(radius)},
+        blocked_(grid.cells(), 0),
+        reached_(grid.cells(), 0) {
+    for (const auto& box : footprints) obstacles_.emplace_back(box);
+    for (int iy = 0; iy < grid.ny(); ++iy) {
+      for (int ix = 0; ix < grid.nx(); ++ix) blocked_[grid.index(ix, iy)] = !inner_workspace_.contains(grid.center(ix, iy));
+    }
+    for (size_t i = 0; i < footprints.size(); ++i) mark_blocked(footprints[i], obstacles_[i]);
+    flood_fill(grid.index_of(k.robot.start));
+  }
+
+  bool reached(size_t cell) const { return reached_[cell] != 0; }
+  bool free_cell(size_t cell) const { return blocked_[cell] == 0; }
+
+  bool free_point(const Vec2& p) const {
+    return inner_workspace_.contains(p) &&
+           std::none_of(obstacles_.begin(), obstacles_.end(), [&](const Obstacle& o) { return o.distance(p) < radius_; });
+  }
+
+ private:
+  void mark_blocked(const geometry::OrientedBox& box, const Obstacle& obstacle) {
+    const geometry::Rect reach = geometry::Polygon::from_box(box).bounds();
+    for (int iy = grid_.row(reach.min.y() - radius_); iy <= grid_.row(reach.max.y() + radius_); ++iy) {
+      for (int ix = grid_.column(reach.min.x() - radius_); ix <= grid_.column(reach.max.x() + radius_); ++ix) {
+        if (obstacle.distance(grid_.center(ix, iy)) < radius_) blocked_[grid_.index(ix, iy)] = 1;
+      }
+    }
+  }
+
+  // Seeded at the start even if its cell centre is blocked: the robot is there, only its neighbours must
+  // be free for it to move on.
+  void flood_fill(size_t start) {
+    std::vector<size_t> frontier{start};
+    reached_[start] = 1;
+    const auto nx = static_cast<size_t>(grid_.nx());
+    while (!frontier.empty()) {
+      const size_t cell = frontier.back();
+      frontier.pop_back();
+      const size_t ix = cell % nx;
+      auto visit = [&](size_t next) {
+        if (blocked_[next] || reached_[next]) return;
+        reached_[next] = 1;
+        frontier.push_back(next);
+      };
+      if (ix > 0) visit(cell - 1);
+      if (ix + 1 < nx) visit(cell + 1);
+      if (cell >= nx) visit(cell - nx);
+      if (cell + nx < grid_.cells()) visit(cell + nx);
+    }
+  }
+
+  const Grid& grid_;
+  double radius_;
+  geometry::Rect inner_workspace_;
+  std::vector<Obstacle> obstacles_;
+  std::vector<std::uint8_t> blocked_;
+  std::vector<std::uint8_t> reached_;
+};
+
+// Calls accept(point, cell) for the points that stand for a region on the grid until it returns true: the
+// centres of the cells inside the region, then its centroid and vertices, so that a region smaller than a
+// cell still has points. Returns whether some point was accepted.
+template <class Accept>
+bool any_region_point(const Grid& grid, const geometry::Polygon& region, Accept&& accept) {
+  const geometry::Rect b = region.bounds();
+  for (int iy = grid.row(b.min.y()); iy <= grid.row(b.max.y()); ++iy) {
+    for (int ix = grid.column(b.min.x()); ix <= grid.column(b.max.x()); ++ix) {
+      const Vec2 c = grid.center(ix, iy);
+      if (region.contains(c) && accept(c, grid.index(ix, iy), true)) return true;
+    }
+  }
+  const Vec2 centroid = region.centroid();
+  if (region.contains(centroid) && accept(centroid, grid.index_of(centroid), false)) return true;
+  return std::any_of(region.vertices.begin(), region.vertices.end(),
+                     [&](const Vec2& v) { return accept(v, grid.index_of(v), false); });
+}
+
+bool has_room(const Grid& grid, const ConfigurationSpace& space, const geometry::Polygon& region) {
+  return any_region_point(grid, region, [&](const Vec2& p, size_t cell, bool is_center) {
+    return is_center ? space.free_cell(cell) : space.free_point(p);
+  });
+}
+
+// A point off the cell centres counts when it is free and its cell was reached: the two are at most
+// 0.71 cell apart, below the robot's radius.
+bool reaches(const Grid& grid, const ConfigurationSpace& space, const geometry::Polygon& region) {
+  return any_region_point(grid, region, [&](const Vec2& p, size_t cell, bool is_center) {
+    return space.reached(cell) && (is_center ? space.free_cell(cell) : space.free_point(p));
+  });
+}
+
+std::string unpushable_names(const AbstractKnowledge& k) {
+  std::string names;
+  for (const auto& m : k.movable_bodies) {
+    if (m.body_class == BodyClass::kFixed) names += (names.empty() ? "" : ", ") + m.name;
+  }
+  return names;
+}
+
+// Why `region` is out of reach, cheapest explanation that holds. The extra configuration spaces are
+// built only when some proposition is invalid.
+class Explainer {
+ public:
+  Explainer(const AbstractKnowledge& k, const Grid& grid, double cell_size, const ConfigurationSpace& robot_space)
+      : k_(k), grid_(grid), cell_size_(cell_size), robot_space_(robot_space) {}
+
+  InvalidProposition explain(const Proposition& p) {
+    if (!unpushable_names(k_).empty() && reaches(grid_, without_unpushable_bodies(), p.region)) {
+      return {p.name, Unreachability::kBlockedByUnpushableBodies,
+              fmt::format("{}: cut off by bodies too heavy to push ({})", p.name, unpushable_names(k_))};
+    }
+    if (!reaches(grid_, probe(), p.region)) {
+      return {p.name, Unreachability::kEnclosed, fmt::format("{}: region enclosed by fixed walls", p.name)};
+    }
+    if (!has_room(grid_, robot_space_, p.region)) {
+      return {p.name, Unreachability::kNoRoomForRobot,
+              fmt::format("{}: no room inside the region for the robot (radius {:.2f} m)", p.name, k_.robot.radius)};
+    }
+    return {p.name, Unreachability::kGapNarrowerThanRobot,
+            fmt::format("{}: only reachable through a gap narrower than the robot (diameter {:.2f} m)", p.name,
+                        2.0 * k_.robot.radius)};
+  }
+
+ private:
+  const ConfigurationSpace& without_unpushable_bodies() {
+    if (!without_unpushable_) {
+      without_unpushable_.emplace(k_, grid_, k_.robot.radius, blocking_footprints(k_, false));
+    }
+    return *without_unpushable_;
+  }
+
+  // A near-point robot. Its radius of 0.75 cell keeps every grown obstacle wider than one grid step, so
+  // the flood fill cannot step over a thin wall.
+  const ConfigurationSpace& probe() {
+    if (!probe_) probe_.emplace(k_, grid_, 0.75 * cell_size_, blocking_footprints(k_, true));
+    return *probe_;
+  }
+
+  const AbstractKnowledge& k_;
+  const Grid& grid_;
+  double cell_size_;
+  const ConfigurationSpace& robot_space_;
+  std::optional<ConfigurationSpace> without_unpushable_;
+  std::optional<ConfigurationSpace> probe_;
+};
+
+}  // namespace
+
+std::vector<std::string> Feasibility::invalid_names() const {
+  std::vector<std::string> names;
+  for (const auto& p : invalid) names.push_back(p.name);
+  return names;
+}
+
+const InvalidProposition* Feasibility::find(const std::string& proposition) const {
+  auto it = std::find_if(invalid.begin(), invalid.end(), [&](const auto& p) { return p.name == proposition; });
+  return it == invalid.end() ? nullptr : &*it;
+}
+
+double grid_cell_size(const AbstractKnowledge& knowledge) {
+  // Not above the robot's radius: grown obstacles are then wider than a grid step and cannot be leaked
+  // through; not below 2 cm unless the robot is smaller, to keep the grid small.
+  const double r = knowledge.robot.radius;
+  const double preferred = std::min(std::clamp(r / 10.0, 0.02, 0.05), r);
+  const Vec2 size = knowledge.workspace.size();
+  const double needed_for_cap = std::sqrt(size.x() * size.y() / static_cast<double>(kMaxGridCells));
+  return std::max(preferred, needed_for_cap);
+}
+
+Feasibility evaluate_feasibility(const AbstractKnowledge& knowledge) {
+  Feasibility result;
+  result.cell_size = grid_cell_size(knowledge);
+  const Grid grid(knowledge.workspace, result.cell_size);
+  const ConfigurationSpace robot_space(knowledge, grid, knowledge.robot.radius, blocking_footprints(knowledge, true));
+  Explainer explainer(knowledge, grid, result.cell_size, robot_space);
+  for (const Proposition& p : knowledge.propositions) {
+    if (!reaches(grid, robot_space, p.region)) result.invalid.push_back(explainer.explain(p));
+  }
+  return result;
+}
+
+}  // namespace physltl::knowledge

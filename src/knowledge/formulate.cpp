@@ -1,0 +1,106 @@
+#include "physltl/knowledge/abstract_knowledge.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace physltl::knowledge {
+namespace {
+
+bool is_x_side(Side side) { return side == Side::kMinusX || side == Side::kPlusX; }
+
+MRegionTemplate mregion_template(Side side, const geometry::Vec2& half_extents, double depth, double robot_radius) {
+  const geometry::Vec2 normal = outward_normal(side);
+  const geometry::Vec2 tangent(-normal.y(), normal.x());
+  const double to_side = is_x_side(side) ? half_extents.x() : half_extents.y();
+  const double half_length = is_x_side(side) ? half_extents.y() : half_extents.x();
+  MRegionTemplate m;
+  m.side = side;
+  m.strip.pose.position = normal * (to_side + 0.5 * depth);
+  m.strip.half_extents = is_x_side(side) ? geometry::Vec2(0.5 * depth, half_length)
+                                         : geometry::Vec2(half_length, 0.5 * depth);
+  const geometry::Vec2 touching = normal * (to_side + robot_radius);
+  m.contact_from = touching - tangent * half_length;
+  m.contact_to = touching + tangent * half_length;
+  return m;
+}
+
+std::string side_list(const std::vector<Side>& sides) {
+  std::string out;
+  for (Side s : sides) out += (out.empty() ? "" : ", ") + std::string(scenario::side_name(s));
+  return out;
+}
+
+MovableBodyKnowledge movable_knowledge(const scenario::MovableBody& body, const scenario::World& world,
+                                       const RobotCapabilities& robot, const FormulationSettings& settings) {
+  MovableBodyKnowledge k;
+  k.name = body.name;
+  k.footprint = body.footprint;
+  k.bound_radius = body.footprint.half_extents.norm();
+  k.mass = body.mass;
+  k.friction = body.friction;
+  k.floor_friction_force =
+      combined_friction(body.friction, world.workspace.floor_friction) * body.mass * settings.gravity;
+  if (k.floor_friction_force >= robot.push_force) {
+    k.body_class = BodyClass::kFixed;
+    k.class_reason = fmt::format(
+        "too heavy to push: its floor friction holds it with {:.1f} N, the robot has {:.1f} N to spare "
+        "({:.1f} N force bound minus {:.1f} N of its own floor friction)",
+        k.floor_friction_force, robot.push_force, robot.max_force, robot.floor_friction_force);
+    return k;
+  }
+  const std::vector<Side> sides =
+      body.push_from.empty() ? std::vector<Side>(kAllSides.begin(), kAllSides.end()) : body.push_from;
+  const SideSet side_set = [&] {
+    SideSet s;
+    for (Side side : sides) s.insert(side);
+    return s;
+  }();
+  if (side_set.is_all()) {
+    k.body_class = BodyClass::kFreelyMovable;
+    k.class_reason = "pushable from every side";
+  } else {
+    k.body_class = BodyClass::kConstraintOriented;
+    k.class_reason = "pushable only from the authored sides " + side_list(sides);
+  }
+  const double depth = body.mregion_depth.value_or(2.0 * robot.radius + settings.mregion_margin);
+  for (Side side : kAllSides) {
+    if (side_set.contains(side)) k.mregions.push_back(mregion_template(side, k.footprint.half_extents, depth, robot.radius));
+  }
+  return k;
+}
+
+}  // namespace
+
+const char* class_name(BodyClass body_class) {
+  switch (body_class) {
+    case BodyClass::kFixed: return "fixed";
+    case BodyClass::kFreelyMovable: return "freely-movable";
+    case BodyClass::kConstraintOriented: return "constraint-oriented";
+  }
+  return "?";
+}
+
+double combined_friction(double a, double b) { return std::sqrt(a * b); }
+
+AbstractKnowledge formulate(const scenario::World& world, const FormulationSettings& settings) {
+  AbstractKnowledge k;
+  k.workspace = world.workspace.bounds;
+
+  const auto& r = world.robot;
+  k.robot.radius = r.radius;
+  k.robot.mass = r.mass;
+  k.robot.max_force = r.max_force;
+  k.robot.floor_friction_force = combined_friction(r.friction, world.workspace.floor_friction) * r.mass * settings.gravity;
+  k.robot.push_force = r.max_force - k.robot.floor_friction_force;
+  k.robot.start = r.start;
+
+  for (const auto& f : world.fixed_bodies) {
+    k.fixed_bodies.push_back({f.name, f.footprint, f.footprint.half_extents.norm()});
+  }
+  for (const auto& m : world.movable_bodies) k.movable_bodies.push_back(movable_knowledge(m, world, k.robot, settings));
+  for (const auto& region : world.regions) k.propositions.push_back({region.name, region.polygon});
+  return k;
+}
+
+}  // namespace physltl::knowledge

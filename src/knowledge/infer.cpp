@@ -1,0 +1,127 @@
+#include "physltl/knowledge/kappa.h"
+
+#include "obstacle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace physltl::knowledge {
+namespace {
+
+using geometry::Vec2;
+
+// The robot needs this much of a side's contact segment free to push: a gap that admits it at a single
+// point only is a numerical accident, not a place to stand.
+constexpr double kMinFreeStretch = 1e-3;  // m
+
+// The robot's centre sliding along one side of a body, at one robot radius from it.
+struct ContactSegment {
+  Vec2 from;
+  Vec2 direction;  // unit
+  double length;
+
+  double distance_to(const Vec2& p) const {
+    const double t = std::clamp((p - from).dot(direction), 0.0, length);
+    return (from + t * direction - p).norm();
+  }
+};
+
+// Calls visit(interval) for every obstacle near the segment, with the stretch of the segment on which the
+// robot would overlap that obstacle. Obstacles: fixed bodies and every other movable body.
+template <class Visit>
+void for_each_blocked_stretch(const AbstractKnowledge& k, const scenario::EnvironmentState& state, size_t pushed,
+                              const ContactSegment& segment, Visit&& visit) {
+  const double r = k.robot.radius;
+  for (const auto& f : k.fixed_bodies) {
+    if (segment.distance_to(f.footprint.pose.position) >= f.bound_radius + r) continue;
+    visit(Obstacle(f.footprint).closer_than(segment.from, segment.direction, r));
+  }
+  for (size_t j = 0; j < k.movable_bodies.size(); ++j) {
+    const auto& other = k.movable_bodies[j];
+    const geometry::Pose2& pose = state.movable_poses[j];
+    if (j == pushed || segment.distance_to(pose.position) >= other.bound_radius + r) continue;
+    visit(Obstacle({pose, other.footprint.half_extents}).closer_than(segment.from, segment.direction, r));
+  }
+}
+
+// Whether the robot can stand somewhere along the segment: inside the workspace and clear of obstacles.
+bool has_free_stretch(const AbstractKnowledge& k, const scenario::EnvironmentState& state, size_t pushed,
+                      const ContactSegment& segment) {
+  const Vec2 workspace_center = 0.5 * (k.workspace.min + k.workspace.max);
+  const Vec2 room_for_centre = 0.5 * k.workspace.size() - Vec2::Constant(k.robot.radius);
+  if (room_for_centre.minCoeff() <= 0.0) return false;
+  const Interval in_workspace =
+      inside_rectangle(segment.from - workspace_center, segment.direction, room_for_centre);
+  const double end = std::min(segment.length, in_workspace.hi);
+  // Sweep t forward past every blocked stretch that covers [t, t + kMinFreeStretch); when a full pass
+  // moves nothing, that window is free. t only grows, to some stretch's end, so this terminates.
+  double t = std::max(0.0, in_workspace.lo);
+  for (bool moved = true; moved && t + kMinFreeStretch <= end;) {
+    moved = false;
+    for_each_blocked_stretch(k, state, pushed, segment, [&](const Interval& blocked) {
+      if (blocked.lo < t + kMinFreeStretch && blocked.hi > t) {
+        t = blocked.hi;
+        moved = true;
+      }
+    });
+  }
+  return t + kMinFreeStretch <= end;
+}
+
+Vec2 to_world(const geometry::Pose2& pose, double cos_yaw, double sin_yaw, const Vec2& local) {
+  return pose.position + Vec2(cos_yaw * local.x() - sin_yaw * local.y(), sin_yaw * local.x() + cos_yaw * local.y());
+}
+
+BodyType type_of(const MovableBodyKnowledge& body, SideSet active) {
+  if (body.body_class == BodyClass::kFixed || active.empty()) return BodyType::kImmovable;
+  return active.is_all() ? BodyType::kFree : BodyType::kConstraintOriented;
+}
+
+}  // namespace
+
+const char* type_name(BodyType type) {
+  switch (type) {
+    case BodyType::kFree: return "free";
+    case BodyType::kConstraintOriented: return "constraint-oriented";
+    case BodyType::kImmovable: return "immovable";
+  }
+  return "?";
+}
+
+void infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, Kappa& kappa) {
+  const size_t n = knowledge.movable_bodies.size();
+  if (state.movable_poses.size() != n) {
+    throw std::invalid_argument("infer: the state has a different number of movable bodies than the knowledge");
+  }
+  kappa.bodies.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    const MovableBodyKnowledge& body = knowledge.movable_bodies[i];
+    const geometry::Pose2& pose = state.movable_poses[i];
+    const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
+    SideSet active;
+    for (const MRegionTemplate& m : body.mregions) {
+      const Vec2 from = to_world(pose, c, s, m.contact_from);
+      const Vec2 along = to_world(pose, c, s, m.contact_to) - from;
+      const double length = along.norm();
+      if (has_free_stretch(knowledge, state, i, {from, along / length, length})) active.insert(m.side);
+    }
+    kappa.bodies[i] = {type_of(body, active), active};
+  }
+}
+
+Kappa infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state) {
+  Kappa kappa;
+  infer(knowledge, state, kappa);
+  return kappa;
+}
+
+geometry::OrientedBox mregion_at(const MRegionTemplate& mregion, const geometry::Pose2& body_pose) {
+  const double c = std::cos(body_pose.yaw), s = std::sin(body_pose.yaw);
+  geometry::OrientedBox strip = mregion.strip;
+  strip.pose.position = to_world(body_pose, c, s, mregion.strip.pose.position);
+  strip.pose.yaw = body_pose.yaw + mregion.strip.pose.yaw;
+  return strip;
+}
+
+}  // namespace physltl::knowledge

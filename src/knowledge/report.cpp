@@ -1,0 +1,102 @@
+#include "physltl/knowledge/report.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace physltl::knowledge {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json point(const geometry::Vec2& p) { return {p.x(), p.y()}; }
+
+// "+x", "-y" for directions along a world axis (within half a degree), else "[0.71, 0.71]".
+std::string direction_name(const geometry::Vec2& d) {
+  constexpr double kAligned = 0.99996;  // cos(0.5 deg)
+  if (d.x() > kAligned) return "+x";
+  if (d.x() < -kAligned) return "-x";
+  if (d.y() > kAligned) return "+y";
+  if (d.y() < -kAligned) return "-y";
+  return fmt::format("[{:.2f}, {:.2f}]", d.x(), d.y());
+}
+
+json mregion_json(const MRegionTemplate& m) {
+  return {{"side", scenario::side_name(m.side)},
+          {"center", point(m.strip.pose.position)},
+          {"size", point(2.0 * m.strip.half_extents)}};
+}
+
+json movable_report(const MovableBodyKnowledge& body, const BodyKappa& kappa, const geometry::Pose2& pose) {
+  json active = json::array(), inactive = json::array(), directions = json::array();
+  for (const MRegionTemplate& m : body.mregions) {
+    const bool usable = kappa.active_sides.contains(m.side);
+    (usable ? active : inactive).push_back(scenario::side_name(m.side));
+    if (usable) directions.push_back(direction_name(push_direction(m.side, pose)));
+  }
+  return {{"name", body.name},
+          {"class", class_name(body.body_class)},
+          {"class_reason", body.class_reason},
+          {"type", type_name(kappa.type)},
+          {"active_mregions", active},
+          {"inactive_mregions", inactive},
+          {"allowed_push_directions", directions}};
+}
+
+}  // namespace
+
+json to_json(const AbstractKnowledge& k) {
+  json bodies = json::array();
+  for (const auto& f : k.fixed_bodies) {
+    bodies.push_back({{"name", f.name}, {"class", class_name(BodyClass::kFixed)}});
+  }
+  for (const auto& m : k.movable_bodies) {
+    json mregions = json::array();
+    for (const auto& t : m.mregions) mregions.push_back(mregion_json(t));
+    bodies.push_back({{"name", m.name},
+                      {"class", class_name(m.body_class)},
+                      {"class_reason", m.class_reason},
+                      {"size", point(2.0 * m.footprint.half_extents)},
+                      {"mass", m.mass},
+                      {"friction", m.friction},
+                      {"floor_friction_force", m.floor_friction_force},
+                      {"mregions", mregions}});
+  }
+  json propositions = json::array();
+  for (const auto& p : k.propositions) propositions.push_back(p.name);
+  const RobotCapabilities& r = k.robot;
+  return {{"workspace", {{"min", point(k.workspace.min)}, {"max", point(k.workspace.max)}}},
+          {"robot",
+           {{"radius", r.radius},
+            {"mass", r.mass},
+            {"max_force", r.max_force},
+            {"floor_friction_force", r.floor_friction_force},
+            {"push_force", r.push_force},
+            {"start", point(r.start)}}},
+          {"bodies", bodies},
+          {"propositions", propositions}};
+}
+
+json knowledge_report(const AbstractKnowledge& k, const scenario::EnvironmentState& state, const Kappa& kappa,
+                      const Feasibility& feasibility) {
+  json bodies = json::array();
+  for (const auto& f : k.fixed_bodies) {
+    bodies.push_back({{"name", f.name}, {"class", class_name(BodyClass::kFixed)}, {"type", "fixed"}});
+  }
+  for (size_t i = 0; i < k.movable_bodies.size(); ++i) {
+    bodies.push_back(movable_report(k.movable_bodies[i], kappa.bodies.at(i), state.movable_poses.at(i)));
+  }
+  json regions = json::array();
+  for (const auto& p : k.propositions) {
+    const InvalidProposition* invalid = feasibility.find(p.name);
+    regions.push_back({{"name", p.name},
+                       {"reachable", invalid == nullptr},
+                       {"reason", invalid ? json(invalid->reason) : json(nullptr)}});
+  }
+  return {{"bodies", bodies},
+          {"regions", regions},
+          {"invalid_propositions", feasibility.invalid_names()},
+          {"reachability_cell_size", feasibility.cell_size}};
+}
+
+}  // namespace physltl::knowledge

@@ -1,0 +1,70 @@
+#include "physltl/knowledge/validity.h"
+
+#include <stdexcept>
+
+namespace physltl::knowledge {
+namespace {
+
+bool robot_inside_workspace(const AbstractKnowledge& k, const geometry::Vec2& centre) {
+  const geometry::Vec2 margin = geometry::Vec2::Constant(k.robot.radius - kWorkspaceTolerance);
+  return geometry::Rect{k.workspace.min + margin, k.workspace.max - margin}.contains(centre);
+}
+
+// The robot's centre, not the contact point, decides the side: the contact point lies on the body's
+// outline, where the strips of two sides meet at every corner.
+bool pushes_from_active_mregion(const MovableBodyKnowledge& body, const BodyKappa& kappa,
+                                const geometry::Pose2& pose, const geometry::Vec2& robot_centre) {
+  for (const MRegionTemplate& m : body.mregions) {
+    if (kappa.active_sides.contains(m.side) && mregion_at(m, pose).contains(robot_centre)) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+const char* violation_name(Violation violation) {
+  switch (violation) {
+    case Violation::kNone: return "none";
+    case Violation::kLeftWorkspace: return "left the workspace";
+    case Violation::kTouchesFixedBody: return "robot touches a fixed body";
+    case Violation::kTouchesImmovableBody: return "robot touches an immovable body";
+    case Violation::kPushesFromForbiddenSide: return "robot pushes a constraint-oriented body from a forbidden side";
+  }
+  return "?";
+}
+
+Validity check_validity(const AbstractKnowledge& knowledge, const Kappa& kappa, const scenario::EnvironmentState& state,
+                        std::span<const scenario::RobotContact> contacts, ValidityMode mode) {
+  const size_t n = knowledge.movable_bodies.size();
+  const bool uses_kappa = mode == ValidityMode::kKnowledge;
+  if (state.movable_poses.size() != n || (uses_kappa && kappa.bodies.size() != n)) {
+    throw std::invalid_argument("check_validity: state, kappa and knowledge disagree on the movable bodies");
+  }
+  if (!robot_inside_workspace(knowledge, state.robot_position)) return {Violation::kLeftWorkspace, -1};
+  for (size_t i = 0; i < n; ++i) {
+    const geometry::OrientedBox footprint{state.movable_poses[i], knowledge.movable_bodies[i].footprint.half_extents};
+    if (!geometry::inside(footprint, knowledge.workspace, kWorkspaceTolerance)) {
+      return {Violation::kLeftWorkspace, static_cast<int>(i)};
+    }
+  }
+  for (const scenario::RobotContact& contact : contacts) {
+    if (contact.body == scenario::RobotContact::Body::kFixed) return {Violation::kTouchesFixedBody, contact.index};
+    if (!uses_kappa) continue;
+    const auto i = static_cast<size_t>(contact.index);
+    const BodyKappa& body_kappa = kappa.bodies.at(i);
+    if (body_kappa.type == BodyType::kImmovable) return {Violation::kTouchesImmovableBody, contact.index};
+    if (body_kappa.type == BodyType::kConstraintOriented &&
+        !pushes_from_active_mregion(knowledge.movable_bodies[i], body_kappa, state.movable_poses[i],
+                                    state.robot_position)) {
+      return {Violation::kPushesFromForbiddenSide, contact.index};
+    }
+  }
+  return {};
+}
+
+bool is_valid(const AbstractKnowledge& knowledge, const Kappa& kappa, const scenario::EnvironmentState& state,
+              std::span<const scenario::RobotContact> contacts, ValidityMode mode) {
+  return check_validity(knowledge, kappa, state, contacts, mode).valid();
+}
+
+}  // namespace physltl::knowledge

@@ -1,0 +1,165 @@
+// INFERENCE: which mRegions are usable in a state, and the body types that follow.
+
+#include "physltl/knowledge/kappa.h"
+#include "test_worlds.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+namespace physltl::knowledge {
+namespace {
+
+using geometry::Vec2;
+
+using testing::add_box;
+using testing::add_wall;
+using testing::open_world;
+using testing::sides;
+
+Kappa initial_kappa(const scenario::World& w) {
+  return infer(formulate(w), scenario::EnvironmentState::initial(w));
+}
+
+TEST(Infer, BoxInTheOpenIsFreeWithEveryMRegionActive) {
+  auto w = open_world();
+  add_box(w, "B", {0, 0}, {0.5, 0.5});
+  const Kappa kappa = initial_kappa(w);
+  ASSERT_EQ(kappa.bodies.size(), 1u);
+  EXPECT_EQ(kappa.bodies[0].type, BodyType::kFree);
+  EXPECT_EQ(sides(kappa.bodies[0].active_sides), "-x +x -y +y");
+}
+
+TEST(Infer, WallsCloserThanTheRobotsDiameterDeactivateTheSidesFacingThem) {
+  auto w = open_world();
+  add_box(w, "B", {0, 0}, {0.5, 1.0});
+  add_wall(w, "west", {-0.65, -1.5}, {-0.45, 1.5});  // 0.2 m gap: the robot (0.5 m) cannot stand there
+  add_wall(w, "east", {0.45, -1.5}, {0.65, 1.5});
+  const Kappa kappa = initial_kappa(w);
+  EXPECT_EQ(kappa.bodies[0].type, BodyType::kConstraintOriented);
+  EXPECT_EQ(sides(kappa.bodies[0].active_sides), "-y +y");
+}
+
+TEST(Infer, WallFartherThanTheRobotsDiameterLeavesTheSideActive) {
+  auto w = open_world();
+  add_box(w, "B", {0, 0}, {0.5, 0.5});
+  add_wall(w, "east", {0.76, -1.0}, {0.96, 1.0});  // 0.51 m gap
+  EXPECT_EQ(initial_kappa(w).bodies[0].type, BodyType::kFree);
+}
+
+TEST(Infer, SideStaysActiveWhileTheRobotFitsAlongPartOfIt) {
+  auto w = open_world();
+  add_box(w, "B", {0, 0}, {0.5, 2.0});
+  // The wall faces only the upper half of the +x side; the robot can still push at the lower end.
+  add_wall(w, "east", {0.35, 0.2}, {0.55, 1.5});
+  EXPECT_TRUE(initial_kappa(w).bodies[0].active_sides.contains(Side::kPlusX));
+  w.fixed_bodies[0].footprint.half_extents.y() = 1.2;  // now it faces the whole side
+  w.fixed_bodies[0].footprint.pose.position.y() = 0.0;
+  EXPECT_FALSE(initial_kappa(w).bodies[0].active_sides.contains(Side::kPlusX));
+}
+
+TEST(Infer, AnotherBoxBlocksTheSideItSitsAgainstAndTheTypeIsRestoredWhenItLeaves) {
+  auto w = open_world();
+  add_box(w, "A", {0, 0}, {0.5, 0.5});
+  add_box(w, "B", {0, 2}, {0.5, 0.5});
+  const auto k = formulate(w);
+  auto state = scenario::EnvironmentState::initial(w);
+  EXPECT_EQ(infer(k, state).bodies[0].type, BodyType::kFree);
+
+  state.movable_poses[1].position = {0.1, 0.6};  // B's lower side 0.1 m above A's upper side
+  const Kappa blocked = infer(k, state);
+  EXPECT_EQ(sides(blocked.bodies[0].active_sides), "-x +x -y");
+  EXPECT_EQ(sides(blocked.bodies[1].active_sides), "-x +x +y");
+  EXPECT_EQ(blocked.bodies[0].type, BodyType::kConstraintOriented);
+
+  state.movable_poses[1].position = {0, 2};
+  EXPECT_EQ(infer(k, state).bodies[0].type, BodyType::kFree);
+}
+
+TEST(Infer, WorkspaceBoundaryBlocksTheSideFacingItEvenWithoutWalls) {
+  auto w = open_world(/*half=*/3.0);
+  add_box(w, "B", {2.6, 0}, {0.5, 0.5});  // 0.15 m from the east bound
+  EXPECT_EQ(sides(initial_kappa(w).bodies[0].active_sides), "-x -y +y");
+}
+
+TEST(Infer, BoxBlockedOnEverySideIsImmovable) {
+  auto w = open_world();
+  add_box(w, "B", {0, 0}, {0.5, 0.5});
+  add_wall(w, "west", {-0.55, -0.55}, {-0.35, 0.55});
+  add_wall(w, "east", {0.35, -0.55}, {0.55, 0.55});
+  add_wall(w, "south", {-0.35, -0.55}, {0.35, -0.35});
+  add_wall(w, "north", {-0.35, 0.35}, {0.35, 0.55});
+  const Kappa kappa = initial_kappa(w);
+  EXPECT_EQ(kappa.bodies[0].type, BodyType::kImmovable);
+  EXPECT_TRUE(kappa.bodies[0].active_sides.empty());
+}
+
+TEST(Infer, BodyTooHeavyToPushIsImmovableEvenInTheOpen) {
+  auto w = open_world();
+  add_box(w, "Safe", {0, 0}, {0.5, 0.5}, /*mass=*/10.0);
+  EXPECT_EQ(initial_kappa(w).bodies[0].type, BodyType::kImmovable);
+}
+
+TEST(Infer, HeavyBodyStillBlocksTheSidesOfItsNeighbours) {
+  auto w = open_world();
+  add_box(w, "B", {0, 0}, {0.5, 0.5});
+  add_box(w, "Safe", {0.6, 0}, {0.5, 0.5}, /*mass=*/10.0);
+  EXPECT_EQ(sides(initial_kappa(w).bodies[0].active_sides), "-x -y +y");
+}
+
+TEST(Infer, AuthoredConstraintOrientedBodyNeverBecomesFree) {
+  auto w = open_world();
+  add_box(w, "Car", {0, 0}, {1.0, 0.5}).push_from = {Side::kMinusX, Side::kPlusX};
+  const Kappa kappa = initial_kappa(w);
+  EXPECT_EQ(kappa.bodies[0].type, BodyType::kConstraintOriented);
+  EXPECT_EQ(sides(kappa.bodies[0].active_sides), "-x +x");
+}
+
+TEST(Infer, SidesFollowTheBodysRotation) {
+  auto w = open_world();
+  add_box(w, "B", {0, 0}, {0.5, 1.0});
+  add_wall(w, "south", {-1.5, -0.65}, {1.5, -0.45});  // a corridor along world x
+  add_wall(w, "north", {-1.5, 0.45}, {1.5, 0.65});
+  const auto k = formulate(w);
+  auto state = scenario::EnvironmentState::initial(w);
+  state.movable_poses[0].yaw = std::numbers::pi / 2;  // the long body axis now lies along world x
+  const Kappa kappa = infer(k, state);
+  // The body's ±x sides face the walls (world ±y) and are blocked; its ±y sides face along the corridor.
+  EXPECT_EQ(sides(kappa.bodies[0].active_sides), "-y +y");
+  EXPECT_TRUE(push_direction(Side::kMinusY, state.movable_poses[0]).isApprox(Vec2(-1, 0)));
+}
+
+TEST(Infer, InPlaceInferenceEqualsFreshInferenceWhateverThePreviousKappa) {
+  auto w = open_world();
+  add_box(w, "A", {0, 0}, {0.5, 0.5});
+  add_box(w, "B", {0.1, 0.6}, {0.5, 0.5});
+  const auto k = formulate(w);
+  const auto state = scenario::EnvironmentState::initial(w);
+  Kappa previous{{{BodyType::kImmovable, {}}, {BodyType::kFree, SideSet::all()}}};
+  infer(k, state, previous);
+  EXPECT_EQ(previous, infer(k, state));
+  EXPECT_EQ(infer(k, state), infer(k, state));
+}
+
+TEST(Infer, RejectsAStateWithADifferentNumberOfBodies) {
+  auto w = open_world();
+  add_box(w, "B", {0, 0}, {0.5, 0.5});
+  scenario::EnvironmentState state;
+  EXPECT_THROW(infer(formulate(w), state), std::invalid_argument);
+}
+
+TEST(MRegionAt, PlacesTheStripInTheWorldFrame) {
+  auto w = open_world();
+  add_box(w, "B", {1, 2}, {0.5, 1.0});
+  const auto knowledge = formulate(w);
+  const auto& body = knowledge.movable_bodies[0];
+  const geometry::Pose2 pose{{1, 2}, std::numbers::pi / 2};
+  const auto strip = mregion_at(body.mregions[1], pose);  // +x side, now facing world +y
+  ASSERT_EQ(body.mregions[1].side, Side::kPlusX);
+  EXPECT_TRUE(strip.pose.position.isApprox(Vec2(1, 2 + 0.25 + 0.275)));
+  EXPECT_TRUE(strip.contains({1, 2.5}));
+  EXPECT_FALSE(strip.contains({1, 1.5}));
+}
+
+}  // namespace
+}  // namespace physltl::knowledge

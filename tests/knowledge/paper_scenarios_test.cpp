@@ -1,0 +1,135 @@
+// The paper's two worlds (scenarios/rooms.lua and scenarios/ordered.lua) reasoned about as the paper's
+// Results section describes.
+
+#include "physltl/knowledge/feasibility.h"
+#include "physltl/knowledge/kappa.h"
+#include "test_worlds.h"
+
+#include <gtest/gtest.h>
+
+namespace physltl::knowledge {
+namespace {
+
+using geometry::Vec2;
+
+using testing::movable_index;
+using testing::shipped_scenario;
+using testing::sides;
+
+std::string push_directions(const BodyKappa& kappa, const MovableBodyKnowledge& body, const geometry::Pose2& pose) {
+  std::string out;
+  for (const auto& m : body.mregions) {
+    if (!kappa.active_sides.contains(m.side)) continue;
+    const Vec2 d = push_direction(m.side, pose);
+    const std::string axis = std::abs(d.x()) > 0.999 ? (d.x() > 0 ? "+x" : "-x") : (d.y() > 0 ? "+y" : "-y");
+    out += (out.empty() ? "" : " ") + axis;
+  }
+  return out;
+}
+
+class Rooms : public ::testing::Test {
+ protected:
+  Rooms()
+      : world_(shipped_scenario("rooms.lua")),
+        knowledge_(formulate(world_)),
+        state_(scenario::EnvironmentState::initial(world_)),
+        kappa_(infer(knowledge_, state_)) {}
+
+  const BodyKappa& body(const std::string& name) const { return kappa_.bodies[movable_index(world_, name)]; }
+
+  scenario::World world_;
+  AbstractKnowledge knowledge_;
+  scenario::EnvironmentState state_;
+  Kappa kappa_;
+};
+
+TEST_F(Rooms, OnlyP3IsInvalidBecauseRoom3IsEnclosed) {
+  const Feasibility f = evaluate_feasibility(knowledge_);
+  ASSERT_EQ(f.invalid_names(), std::vector<std::string>{"p3"});
+  EXPECT_EQ(f.invalid[0].reason, "p3: region enclosed by fixed walls");
+}
+
+TEST_F(Rooms, EveryBoxIsFreelyMovableInK) {
+  for (const auto& b : knowledge_.movable_bodies) EXPECT_EQ(b.body_class, BodyClass::kFreelyMovable) << b.name;
+}
+
+TEST_F(Rooms, B1InItsCorridorIsConstraintOrientedAndPushableOnlyAlongTheCorridor) {
+  const size_t b1 = movable_index(world_, "B1");
+  EXPECT_EQ(kappa_.bodies[b1].type, BodyType::kConstraintOriented);
+  EXPECT_EQ(sides(kappa_.bodies[b1].active_sides), "-y +y");
+  EXPECT_EQ(push_directions(kappa_.bodies[b1], knowledge_.movable_bodies[b1], state_.movable_poses[b1]), "+y -y");
+}
+
+TEST_F(Rooms, DoorwayBoxesLoseTheSidesFacingTheDoorJambs) {
+  for (const char* name : {"B2", "B4"}) {
+    EXPECT_EQ(body(name).type, BodyType::kConstraintOriented) << name;
+    EXPECT_EQ(sides(body(name).active_sides), "-y +y") << name;
+  }
+}
+
+TEST_F(Rooms, B1PushedIntoRoom1IsFreeAgain) {
+  const size_t b1 = movable_index(world_, "B1");
+  state_.movable_poses[b1].position = {-3.0, 3.0};
+  EXPECT_EQ(infer(knowledge_, state_).bodies[b1].type, BodyType::kFree);
+}
+
+TEST_F(Rooms, B1HalfWayOutOfTheCorridorCanBePushedSidewaysAgain) {
+  const size_t b1 = movable_index(world_, "B1");
+  state_.movable_poses[b1].position = {-3.0, 2.6};  // its upper 0.7 m are past the corridor walls
+  EXPECT_EQ(infer(knowledge_, state_).bodies[b1].type, BodyType::kFree);
+}
+
+class Ordered : public ::testing::Test {
+ protected:
+  Ordered() : world_(shipped_scenario("ordered.lua")), b1_(movable_index(world_, "B1")), b2_(movable_index(world_, "B2")) {}
+
+  Kappa with_b1_at(const Vec2& position) const {
+    auto state = scenario::EnvironmentState::initial(world_);
+    state.movable_poses[b1_].position = position;
+    return infer(formulate(world_), state);
+  }
+
+  scenario::World world_;
+  size_t b1_;
+  size_t b2_;
+};
+
+TEST_F(Ordered, BothBoxesStartFree) {
+  const Kappa kappa = infer(formulate(world_), scenario::EnvironmentState::initial(world_));
+  EXPECT_EQ(kappa.bodies[b1_].type, BodyType::kFree);
+  EXPECT_EQ(kappa.bodies[b2_].type, BodyType::kFree);
+}
+
+TEST_F(Ordered, B1PushedAlongXBlocksB2sMinusYMRegionAndMakesBothConstraintOriented) {
+  const Kappa kappa = with_b1_at({0.9, 0.0});  // just below B2 at (1.0, 0.75), a 0.25 m gap between them
+  EXPECT_EQ(kappa.bodies[b2_].type, BodyType::kConstraintOriented);
+  EXPECT_EQ(sides(kappa.bodies[b2_].active_sides), "-x +x +y");
+  EXPECT_EQ(kappa.bodies[b1_].type, BodyType::kConstraintOriented);
+  EXPECT_EQ(sides(kappa.bodies[b1_].active_sides), "-x +x -y");
+}
+
+TEST_F(Ordered, MovingB1AwayRestoresBothTypes) {
+  const Kappa kappa = with_b1_at({0.9, -1.0});
+  EXPECT_EQ(kappa.bodies[b1_].type, BodyType::kFree);
+  EXPECT_EQ(kappa.bodies[b2_].type, BodyType::kFree);
+}
+
+// The paper pushes its B1 "along x or -y" and ends with B2 "pushable only along -x": read as authored
+// two-sided boxes, that is B1 pushed from -x and +y, B2 from -y and +x.
+TEST_F(Ordered, WithThePapersTwoSidedBoxesB2IsPushableOnlyAlongMinusXOnceB1Arrives) {
+  world_.movable_bodies[b1_].push_from = {Side::kMinusX, Side::kPlusY};
+  world_.movable_bodies[b2_].push_from = {Side::kMinusY, Side::kPlusX};
+  const auto k = formulate(world_);
+  auto state = scenario::EnvironmentState::initial(world_);
+  state.movable_poses[b1_].position = {0.9, 0.0};
+  const Kappa kappa = infer(k, state);
+  EXPECT_EQ(kappa.bodies[b2_].type, BodyType::kConstraintOriented);
+  EXPECT_EQ(push_directions(kappa.bodies[b2_], k.movable_bodies[b2_], state.movable_poses[b2_]), "-x");
+}
+
+TEST_F(Ordered, EveryRegionIsReachable) {
+  EXPECT_TRUE(evaluate_feasibility(formulate(world_)).invalid.empty());
+}
+
+}  // namespace
+}  // namespace physltl::knowledge

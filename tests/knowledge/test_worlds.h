@@ -1,0 +1,73 @@
+#pragma once
+// Small worlds built in code, so each test shows the geometry it relies on.
+
+#include "physltl/knowledge/abstract_knowledge.h"
+#include "physltl/knowledge/kappa.h"
+#include "physltl/scenario/load.h"
+#include "physltl/scenario/state.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace physltl::knowledge::testing {
+
+using geometry::Vec2;
+
+// A square workspace [-half, half]^2 with no walls; robot of radius 0.25, 20 N, at `start`.
+inline scenario::World open_world(double half = 3.0, Vec2 start = Vec2(-2.0, -2.0)) {
+  scenario::World w;
+  w.name = "test";
+  w.workspace.bounds = {Vec2(-half, -half), Vec2(half, half)};
+  w.workspace.floor_friction = 0.5;
+  w.robot.radius = 0.25;
+  w.robot.mass = 1.0;
+  w.robot.max_force = 20.0;
+  w.robot.friction = 0.5;
+  w.robot.start = start;
+  return w;
+}
+
+inline void add_wall(scenario::World& w, const std::string& name, Vec2 min, Vec2 max) {
+  scenario::FixedBody f;
+  f.name = name;
+  f.footprint.pose.position = 0.5 * (min + max);
+  f.footprint.half_extents = 0.5 * (max - min);
+  w.fixed_bodies.push_back(f);
+}
+
+inline scenario::MovableBody& add_box(scenario::World& w, const std::string& name, Vec2 center, Vec2 size,
+                                      double mass = 0.5) {
+  scenario::MovableBody b;
+  b.name = name;
+  b.footprint.pose.position = center;
+  b.footprint.half_extents = 0.5 * size;
+  b.mass = mass;
+  w.movable_bodies.push_back(b);
+  return w.movable_bodies.back();
+}
+
+inline void add_region(scenario::World& w, const std::string& name, Vec2 min, Vec2 max) {
+  w.regions.push_back({name, geometry::Polygon::from_rect({min, max}), {}});
+}
+
+inline scenario::World shipped_scenario(const std::string& file) {
+  return scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/scenarios/" + file);
+}
+
+inline size_t movable_index(const scenario::World& w, const std::string& name) {
+  auto it = std::find_if(w.movable_bodies.begin(), w.movable_bodies.end(), [&](auto& b) { return b.name == name; });
+  if (it == w.movable_bodies.end()) throw std::runtime_error("no movable body " + name);
+  return static_cast<size_t>(it - w.movable_bodies.begin());
+}
+
+// "-x +y": the active sides, in kAllSides order, for readable expectations.
+inline std::string sides(SideSet set) {
+  std::string out;
+  for (Side s : kAllSides) {
+    if (set.contains(s)) out += (out.empty() ? "" : " ") + std::string(scenario::side_name(s));
+  }
+  return out;
+}
+
+}  // namespace physltl::knowledge::testing
