@@ -96,7 +96,7 @@ AbstractKnowledge formulate(const scenario::World& world, const FormulationSetti
   k.robot.start = r.start;
 
   for (const auto& f : world.fixed_bodies) {
-    k.fixed_bodies.push_back({f.name, f.footprint, f.footprint.half_extents.norm()});
+    k.fixed_bodies.push_back({f.name, f.footprint, geometry::Polygon::from_box(f.footprint).bounds()});
   }
   for (const auto& m : world.movable_bodies) k.movable_bodies.push_back(movable_knowledge(m, world, k.robot, settings));
   for (const auto& region : world.regions) k.propositions.push_back({region.name, region.polygon});

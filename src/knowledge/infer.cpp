@@ -25,6 +25,14 @@ struct ContactSegment {
     const double t = std::clamp((p - from).dot(direction), 0.0, length);
     return (from + t * direction - p).norm();
   }
+
+  // Whether the robot anywhere on the segment could reach into `box`, judged by bounding rectangles.
+  bool may_reach(const geometry::Rect& box, double radius) const {
+    const Vec2 to = from + length * direction;
+    const Vec2 lo = from.cwiseMin(to) - Vec2::Constant(radius);
+    const Vec2 hi = from.cwiseMax(to) + Vec2::Constant(radius);
+    return (lo.array() < box.max.array()).all() && (hi.array() > box.min.array()).all();
+  }
 };
 
 // Calls visit(interval) for every obstacle near the segment, with the stretch of the segment on which the
@@ -34,7 +42,7 @@ void for_each_blocked_stretch(const AbstractKnowledge& k, const scenario::Enviro
                               const ContactSegment& segment, Visit&& visit) {
   const double r = k.robot.radius;
   for (const auto& f : k.fixed_bodies) {
-    if (segment.distance_to(f.footprint.pose.position) >= f.bound_radius + r) continue;
+    if (!segment.may_reach(f.bounds, r)) continue;
     visit(Obstacle(f.footprint).closer_than(segment.from, segment.direction, r));
   }
   for (size_t j = 0; j < k.movable_bodies.size(); ++j) {

@@ -39,7 +39,7 @@ struct MRegionTemplate {
 struct FixedBodyKnowledge {
   std::string name;
   geometry::OrientedBox footprint;
-  double bound_radius = 0.0;  // of the footprint about its centre, for cheap rejection tests
+  geometry::Rect bounds;  // axis-aligned bounds of the footprint, for cheap rejection tests (walls are long)
 };
 
 struct MovableBodyKnowledge {
@@ -48,7 +48,7 @@ struct MovableBodyKnowledge {
   BodyClass body_class = BodyClass::kFreelyMovable;
   std::string class_reason;
   geometry::OrientedBox footprint;  // where the world puts it; stays there when it is too heavy to push
-  double bound_radius = 0.0;
+  double bound_radius = 0.0;  // of the footprint about its centre, for cheap rejection tests
   double mass = 0.0;
   double friction = 0.0;            // the body's own coefficient
   double floor_friction_force = 0.0;  // N needed to start it sliding
