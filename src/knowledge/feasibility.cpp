@@ -163,12 +163,12 @@ std::string unpushable_names(const AbstractKnowledge& k) {
 class Explainer {
  public:
   Explainer(const AbstractKnowledge& k, const Grid& grid, double cell_size, const ConfigurationSpace& robot_space)
-      : k_(k), grid_(grid), cell_size_(cell_size), robot_space_(robot_space) {}
+      : k_(k), grid_(grid), cell_size_(cell_size), robot_space_(robot_space), unpushable_(unpushable_names(k)) {}
 
   InvalidProposition explain(const Proposition& p) {
-    if (!unpushable_names(k_).empty() && reaches(grid_, without_unpushable_bodies(), p.region)) {
+    if (!unpushable_.empty() && reaches(grid_, without_unpushable_bodies(), p.region)) {
       return {p.name, Unreachability::kBlockedByUnpushableBodies,
-              fmt::format("{}: cut off by bodies too heavy to push ({})", p.name, unpushable_names(k_))};
+              fmt::format("{}: cut off by bodies too heavy to push ({})", p.name, unpushable_)};
     }
     if (!reaches(grid_, probe(), p.region)) {
       return {p.name, Unreachability::kEnclosed, fmt::format("{}: region enclosed by fixed walls", p.name)};
@@ -201,6 +201,7 @@ class Explainer {
   const Grid& grid_;
   double cell_size_;
   const ConfigurationSpace& robot_space_;
+  std::string unpushable_;  // names, comma-separated
   std::optional<ConfigurationSpace> without_unpushable_;
   std::optional<ConfigurationSpace> probe_;
 };

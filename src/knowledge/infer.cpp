@@ -124,6 +124,15 @@ Kappa infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState
   return kappa;
 }
 
+std::vector<geometry::Vec2> allowed_push_directions(const MovableBodyKnowledge& body, const BodyKappa& kappa,
+                                                    const geometry::Pose2& pose) {
+  std::vector<geometry::Vec2> directions;
+  for (const MRegionTemplate& m : body.mregions) {
+    if (kappa.active_sides.contains(m.side)) directions.push_back(push_direction(m.side, pose));
+  }
+  return directions;
+}
+
 geometry::OrientedBox mregion_at(const MRegionTemplate& mregion, const geometry::Pose2& body_pose) {
   const double c = std::cos(body_pose.yaw), s = std::sin(body_pose.yaw);
   geometry::OrientedBox strip = mregion.strip;

@@ -11,16 +11,6 @@ using json = nlohmann::ordered_json;
 
 json point(const geometry::Vec2& p) { return {p.x(), p.y()}; }
 
-// "+x", "-y" for directions along a world axis (within half a degree), else "[0.71, 0.71]".
-std::string direction_name(const geometry::Vec2& d) {
-  constexpr double kAligned = 0.99996;  // cos(0.5 deg)
-  if (d.x() > kAligned) return "+x";
-  if (d.x() < -kAligned) return "-x";
-  if (d.y() > kAligned) return "+y";
-  if (d.y() < -kAligned) return "-y";
-  return fmt::format("[{:.2f}, {:.2f}]", d.x(), d.y());
-}
-
 json mregion_json(const MRegionTemplate& m) {
   return {{"side", scenario::side_name(m.side)},
           {"center", point(m.strip.pose.position)},
@@ -30,10 +20,9 @@ json mregion_json(const MRegionTemplate& m) {
 json movable_report(const MovableBodyKnowledge& body, const BodyKappa& kappa, const geometry::Pose2& pose) {
   json active = json::array(), inactive = json::array(), directions = json::array();
   for (const MRegionTemplate& m : body.mregions) {
-    const bool usable = kappa.active_sides.contains(m.side);
-    (usable ? active : inactive).push_back(scenario::side_name(m.side));
-    if (usable) directions.push_back(direction_name(push_direction(m.side, pose)));
+    (kappa.active_sides.contains(m.side) ? active : inactive).push_back(scenario::side_name(m.side));
   }
+  for (const geometry::Vec2& d : allowed_push_directions(body, kappa, pose)) directions.push_back(direction_name(d));
   return {{"name", body.name},
           {"class", class_name(body.body_class)},
           {"class_reason", body.class_reason},
@@ -44,6 +33,15 @@ json movable_report(const MovableBodyKnowledge& body, const BodyKappa& kappa, co
 }
 
 }  // namespace
+
+std::string direction_name(const geometry::Vec2& d) {
+  constexpr double kAligned = 0.99996;  // cos(0.5 deg)
+  if (d.x() > kAligned) return "+x";
+  if (d.x() < -kAligned) return "-x";
+  if (d.y() > kAligned) return "+y";
+  if (d.y() < -kAligned) return "-y";
+  return fmt::format("[{:.2f}, {:.2f}]", d.x(), d.y());
+}
 
 json to_json(const AbstractKnowledge& k) {
   json bodies = json::array();

@@ -3,6 +3,7 @@
 
 #include "physltl/knowledge/feasibility.h"
 #include "physltl/knowledge/kappa.h"
+#include "physltl/knowledge/report.h"
 #include "test_worlds.h"
 
 #include <gtest/gtest.h>
@@ -18,12 +19,7 @@ using testing::sides;
 
 std::string push_directions(const BodyKappa& kappa, const MovableBodyKnowledge& body, const geometry::Pose2& pose) {
   std::string out;
-  for (const auto& m : body.mregions) {
-    if (!kappa.active_sides.contains(m.side)) continue;
-    const Vec2 d = push_direction(m.side, pose);
-    const std::string axis = std::abs(d.x()) > 0.999 ? (d.x() > 0 ? "+x" : "-x") : (d.y() > 0 ? "+y" : "-y");
-    out += (out.empty() ? "" : " ") + axis;
-  }
+  for (const Vec2& d : allowed_push_directions(body, kappa, pose)) out += (out.empty() ? "" : " ") + direction_name(d);
   return out;
 }
 

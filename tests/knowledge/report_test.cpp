@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace physltl::knowledge {
 namespace {
 
@@ -78,6 +80,14 @@ TEST(KnowledgeReport, NamesAPushDirectionOffTheWorldAxesByItsComponents) {
   state.movable_poses[0].yaw = 0.7853981633974483;  // 45 degrees
   const json r = knowledge_report(k, state, infer(k, state), evaluate_feasibility(k));
   EXPECT_EQ(entry(r["bodies"], "B")["allowed_push_directions"][0], "[0.71, 0.71]");
+}
+
+TEST(DirectionName, NamesWorldAxesWithinHalfADegree) {
+  const double a = 0.3 * 3.141592653589793 / 180;
+  EXPECT_EQ(direction_name({std::cos(a), std::sin(a)}), "+x");
+  EXPECT_EQ(direction_name({0.0, -1.0}), "-y");
+  const double b = 0.7 * 3.141592653589793 / 180;
+  EXPECT_EQ(direction_name({-std::sin(b), std::cos(b)}), "[-0.01, 1.00]");
 }
 
 }  // namespace

@@ -34,6 +34,10 @@ Kappa infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState
 // planner's call after every propagation step does not allocate. The result equals infer(knowledge, state).
 void infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, Kappa& kappa);
 
+// The world-frame directions a body at `pose` can be pushed in now, one per active side.
+std::vector<geometry::Vec2> allowed_push_directions(const MovableBodyKnowledge& body, const BodyKappa& kappa,
+                                                    const geometry::Pose2& pose);
+
 // mRegion strip of a template placed at a body pose, in the world frame.
 geometry::OrientedBox mregion_at(const MRegionTemplate& mregion, const geometry::Pose2& body_pose);
 

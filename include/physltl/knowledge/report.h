@@ -9,7 +9,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include <string>
+
 namespace physltl::knowledge {
+
+// "+x", "-y"... for a direction within half a degree of a world axis, else its components: "[0.71, 0.71]".
+std::string direction_name(const geometry::Vec2& direction);
 
 // K itself: workspace, robot capabilities, body classes with their properties and mRegion templates,
 // proposition names.
