@@ -1,0 +1,48 @@
+#pragma once
+// What a picture shows beyond the World and its state, as plain data filled in by the caller: the knowledge
+// layer computes mRegions, the planner its tree and path, the app the legend. The renderer draws, nothing more.
+
+#include "physltl/geometry/shapes.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace physltl::render {
+
+using geometry::Vec2;
+
+struct Color {
+  float r = 0, g = 0, b = 0, a = 1;  // 0..1, not premultiplied
+};
+
+// A manipulation region of a movable body; active ones are those the robot may push from now.
+struct MRegionOverlay {
+  geometry::Polygon polygon;
+  bool active = false;
+};
+
+struct SegmentOverlay {
+  Vec2 from = Vec2::Zero();
+  Vec2 to = Vec2::Zero();
+  Color color;
+};
+
+struct Overlay {
+  std::vector<MRegionOverlay> mregions;
+  // Cells of the workspace decomposition, drawn as faint outlines beneath everything else.
+  std::vector<std::array<Vec2, 3>> decomposition;
+  // Search-tree edges, on the floor.
+  std::vector<SegmentOverlay> segments;
+  // The solution path, drawn last, above the bodies.
+  std::vector<Vec2> path;
+  // Lines of text in the top-left corner: formula, automaton state, time, ...
+  std::vector<std::string> legend;
+};
+
+enum class View {
+  kPerspective,  // the 3/4 view of World::render.camera
+  kTop,          // orthographic from above, fitted to the workspace
+};
+
+}  // namespace physltl::render

@@ -1,0 +1,368 @@
+// Draw order (depth testing only for the bodies, everything else is painted in layers):
+//   floor, grid, decomposition, regions, mRegions -> drop shadows -> tree segments -> bodies (depth tested)
+//   -> solution path -> label and legend panels -> text.
+// Straight into the context's framebuffer: on llvmpipe a multisampled framebuffer object made every pass
+// several times slower (20 ms instead of 5 ms per 640x480 frame, with the resolve), so edges are not
+// multisampled; text is anti-aliased by its glyph coverage.
+
+#include "physltl/render/renderer.h"
+
+#include "camera.h"
+#include "flat_geometry.h"
+#include "gl_objects.h"
+#include "meshes.h"
+#include "palette.h"
+#include "shaders.h"
+#include "text.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace physltl::render {
+namespace {
+
+using Eigen::Matrix4f;
+using Eigen::Vector3f;
+using geometry::Pose2;
+
+// Line widths in pixels at the camera target, converted to metres with the view's scale. Without
+// multisampling a line thinner than a pixel breaks up, and perspective thins far lines by up to a third.
+constexpr double kGridWidth = 1.5;
+constexpr double kDecompositionWidth = 1.5;
+constexpr double kEdgeWidth = 1.5;
+constexpr double kSegmentWidth = 1.5;
+constexpr double kPathWidth = 3.0;
+constexpr double kPathHaloWidth = 6.0;
+constexpr float kPanelPadding = 3.0f;
+constexpr float kShadowStrength = 0.5f;  // alpha of black at the shadow's centre
+
+Vector3f towards_light() { return Vector3f(-0.35f, -0.5f, 0.8f).normalized(); }
+
+Matrix4f body_transform(const Pose2& pose, float z, const Vector3f& scale) {
+  Eigen::Affine3f t = Eigen::Translation3f(static_cast<float>(pose.position.x()),
+                                           static_cast<float>(pose.position.y()), z) *
+                      Eigen::AngleAxisf(static_cast<float>(pose.yaw), Vector3f::UnitZ()) * Eigen::Scaling(scale);
+  return t.matrix();
+}
+
+// Appends `mesh` placed by `model` (x y z nx ny nz r g b a per vertex). Bodies are placed here on the CPU
+// (a few thousand vertices) so that all of them take two draw calls, not one per body. `model` scales boxes along their own axes only and box normals lie on those axes, so rotating the normals
+// is enough (no inverse transpose).
+void add_mesh(std::vector<float>& out, const TriangleMesh& mesh, const Matrix4f& model, const Color& color) {
+  const Eigen::Matrix3f rotation = model.topLeftCorner<3, 3>().colwise().normalized();
+  for (std::size_t i = 0; i + 5 < mesh.size(); i += 6) {
+    const Vector3f p = (model * Eigen::Vector4f(mesh[i], mesh[i + 1], mesh[i + 2], 1)).head<3>();
+    const Vector3f n = rotation * Vector3f(mesh[i + 3], mesh[i + 4], mesh[i + 5]);
+    out.insert(out.end(), {p.x(), p.y(), p.z(), n.x(), n.y(), n.z(), color.r, color.g, color.b, color.a});
+  }
+}
+
+// Maps pixels (origin top left, y down) to clip space.
+Matrix4f pixel_transform(int width, int height) {
+  Matrix4f m = Matrix4f::Identity();
+  m(0, 0) = 2.0f / width;
+  m(0, 3) = -1;
+  m(1, 1) = -2.0f / height;
+  m(1, 3) = 1;
+  return m;
+}
+
+void set_color(GLint location, const Color& c) { glUniform4f(location, c.r, c.g, c.b, c.a); }
+
+// Rounded-rectangle shadows under the bodies, shifted away from the light by their height.
+class ShadowGeometry {
+ public:
+  void add(const Pose2& pose, const Vec2& half_extents, double corner_radius, double height) {
+    const Vector3f light = towards_light();
+    const Vec2 shift = Vec2(-light.x(), -light.y()) / light.z() * (0.5 * height);
+    const double softness = 0.04 + 0.12 * height;
+    const Vec2 reach = half_extents + Vec2::Constant(corner_radius + 1.5 * softness);
+    const Eigen::Rotation2Dd rotation(pose.yaw);
+    const Vec2 corners[4] = {{-reach.x(), -reach.y()}, {reach.x(), -reach.y()}, {reach.x(), reach.y()},
+                             {-reach.x(), reach.y()}};
+    for (int i : {0, 1, 2, 0, 2, 3}) {
+      const Vec2 world = pose.position + shift + rotation * corners[i];
+      floats_.insert(floats_.end(),
+                     {static_cast<float>(world.x()), static_cast<float>(world.y()), 0.0f,
+                      static_cast<float>(corners[i].x()), static_cast<float>(corners[i].y()),
+                      static_cast<float>(half_extents.x()), static_cast<float>(half_extents.y()),
+                      static_cast<float>(corner_radius), static_cast<float>(softness), kShadowStrength});
+    }
+  }
+  const std::vector<float>& floats() const { return floats_; }
+
+ private:
+  std::vector<float> floats_;
+};
+
+// The GL objects below are created as members, so the context must be current before any of them.
+std::unique_ptr<OffscreenContext> made_current(std::unique_ptr<OffscreenContext> context) {
+  context->make_current();
+  return context;
+}
+
+}  // namespace
+
+struct Renderer::Impl {
+  scenario::World world;
+  std::unique_ptr<OffscreenContext> context;
+  int width, height;
+  double top_height = 0;  // of the tallest body
+
+  GlProgram lit{shaders::kLitVertex, shaders::kLitFragment};
+  GlProgram flat{shaders::kFlatVertex, shaders::kFlatFragment};
+  GlProgram shadow{shaders::kShadowVertex, shaders::kShadowFragment};
+  GlProgram text{shaders::kTextVertex, shaders::kTextFragment};
+
+  const TriangleMesh cube = unit_cube_mesh();
+  const TriangleMesh sphere = unit_sphere_mesh(32, 16);
+  GlMesh fixed_layer{3, 3, 4};  // the fixed bodies never move: built once
+  // One buffer per layer, all filled before the first draw call of a frame: refilling a buffer that queued
+  // draw calls still read would make the driver finish those first.
+  GlMesh floor_layer{3, 4};
+  GlMesh moving_layer{3, 3, 4};  // movable boxes and the robot
+  GlMesh shadow_layer{3, 2, 4, 1};
+  GlMesh segment_layer{3, 4};
+  GlMesh path_layer{3, 4};
+  GlMesh panel_layer{3, 4};
+  GlMesh glyph_layer{2, 2};
+
+  FontAtlas font;
+  GLuint font_texture = 0;
+
+  Impl(const scenario::World& w, std::unique_ptr<OffscreenContext> c)
+      : world(w),
+        context(made_current(std::move(c))),
+        width(context->width()),
+        height(context->height()),
+        font(PHYSLTL_FONT_FILE, std::max(11.0f, std::round(height / 26.0f))) {
+    upload_fixed_bodies();
+    upload_font();
+  }
+
+  ~Impl() {
+    context->make_current();
+    glDeleteTextures(1, &font_texture);
+  }
+
+  void upload_fixed_bodies() {
+    std::vector<float> vertices;
+    for (const scenario::FixedBody& body : world.fixed_bodies) {
+      top_height = std::max(top_height, body.height);
+      if (body.mesh.empty()) {
+        add_box(vertices, body.footprint, body.height, palette::kFixedBody);
+      } else {
+        add_mesh(vertices, load_obj_mesh(body.mesh), body_transform(body.footprint.pose, 0, Vector3f::Ones()),
+                 palette::kFixedBody);
+      }
+    }
+    fixed_layer.upload(vertices.data(), vertices.size(), GL_STATIC_DRAW);
+    for (const scenario::MovableBody& body : world.movable_bodies) top_height = std::max(top_height, body.height);
+    top_height = std::max(top_height, 2 * world.robot.radius);
+  }
+
+  void add_box(std::vector<float>& vertices, const geometry::OrientedBox& footprint, double height,
+               const Color& color) const {
+    const Vector3f size(2 * footprint.half_extents.x(), 2 * footprint.half_extents.y(), height);
+    add_mesh(vertices, cube, body_transform(footprint.pose, size.z() / 2, size), color);
+  }
+
+  std::vector<float> moving_bodies(const scenario::EnvironmentState& state) const {
+    std::vector<float> vertices;
+    for (std::size_t i = 0; i < world.movable_bodies.size(); ++i) {
+      const scenario::MovableBody& body = world.movable_bodies[i];
+      add_box(vertices, scenario::footprint_at(body, state.movable_poses[i]), body.height, palette::kMovableBody);
+    }
+    const float r = static_cast<float>(world.robot.radius);
+    add_mesh(vertices, sphere, body_transform({state.robot_position, 0.0}, r, Vector3f::Constant(r)),
+             palette::kRobot);
+    return vertices;
+  }
+
+  void upload_font() {
+    glGenTextures(1, &font_texture);
+    glBindTexture(GL_TEXTURE_2D, font_texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, font.atlas_size(), font.atlas_size(), 0, GL_RED, GL_UNSIGNED_BYTE,
+                 font.coverage().data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+
+  void draw_flat(const GlMesh& layer, const Matrix4f& transform) {
+    flat.use();
+    glUniformMatrix4fv(flat.uniform("transform"), 1, GL_FALSE, transform.data());
+    layer.draw(GL_TRIANGLES);
+  }
+
+  FlatGeometry floor_paint(const Overlay& overlay, double metres_per_pixel) const {
+    const geometry::Rect& bounds = world.workspace.bounds;
+    FlatGeometry paint;
+    paint.rectangle(bounds.min, bounds.max, palette::kFloor);
+    for (double x = std::ceil(bounds.min.x()); x <= bounds.max.x(); x += 1.0) {
+      paint.line({x, bounds.min.y()}, {x, bounds.max.y()}, kGridWidth * metres_per_pixel, palette::kGrid);
+    }
+    for (double y = std::ceil(bounds.min.y()); y <= bounds.max.y(); y += 1.0) {
+      paint.line({bounds.min.x(), y}, {bounds.max.x(), y}, kGridWidth * metres_per_pixel, palette::kGrid);
+    }
+    for (const auto& cell : overlay.decomposition) {
+      paint.outline(geometry::Polygon{{cell.begin(), cell.end()}}, kDecompositionWidth * metres_per_pixel,
+                    palette::kDecomposition);
+    }
+    for (const scenario::Region& region : world.regions) {
+      paint.polygon(region.polygon, palette::kRegion);
+      paint.outline(region.polygon, kEdgeWidth * metres_per_pixel, palette::kRegionEdge);
+    }
+    for (const MRegionOverlay& m : overlay.mregions) {
+      paint.polygon(m.polygon, m.active ? palette::kActiveMRegion : palette::kInactiveMRegion);
+      paint.outline(m.polygon, kEdgeWidth * metres_per_pixel,
+                    m.active ? palette::kActiveMRegionEdge : palette::kInactiveMRegionEdge);
+    }
+    return paint;
+  }
+
+  ShadowGeometry shadows(const scenario::EnvironmentState& state) const {
+    ShadowGeometry result;
+    for (const scenario::FixedBody& body : world.fixed_bodies) {
+      result.add(body.footprint.pose, body.footprint.half_extents, 0.0, body.height);
+    }
+    for (std::size_t i = 0; i < world.movable_bodies.size(); ++i) {
+      const geometry::OrientedBox footprint = scenario::footprint_at(world.movable_bodies[i], state.movable_poses[i]);
+      result.add(footprint.pose, footprint.half_extents, 0.0, world.movable_bodies[i].height);
+    }
+    result.add({state.robot_position, 0.0}, Vec2::Zero(), 0.8 * world.robot.radius, world.robot.radius);
+    return result;
+  }
+
+  // Glyph quads (x y u v per vertex) of one line with its top-left corner at (x, y) in pixels.
+  void add_text(const std::string& line, float x, float y, std::vector<float>& glyphs) const {
+    for (const GlyphQuad& q : font.layout(line, x, y)) {
+      for (int corner : {0, 1, 2, 0, 2, 3}) {
+        const bool right = corner == 1 || corner == 2, bottom = corner >= 2;
+        glyphs.insert(glyphs.end(), {right ? q.x1 : q.x0, bottom ? q.y1 : q.y0, right ? q.u1 : q.u0,
+                                     bottom ? q.v1 : q.v0});
+      }
+    }
+  }
+
+  // Region labels and the legend: light panels into panel_layer, glyph quads into glyph_layer.
+  void upload_text(const CameraView& view, const Overlay& overlay) {
+    FlatGeometry panels;
+    std::vector<float> glyphs;
+    auto label = [&](const std::string& line, float x, float y) {
+      const float w = font.width(line), h = font.line_height();
+      panels.rectangle({x - kPanelPadding, y - kPanelPadding / 2}, {x + w + kPanelPadding, y + h + kPanelPadding / 2},
+                       palette::kPanel);
+      add_text(line, x, y, glyphs);
+    };
+    // Below the region rather than on it: a box standing on a region must stay visible.
+    for (const scenario::Region& region : world.regions) {
+      const Vec2 below(region.polygon.centroid().x(), region.polygon.bounds().min.y());
+      const Eigen::Vector2f at =
+          view.to_pixels(Vector3f(static_cast<float>(below.x()), static_cast<float>(below.y()), 0));
+      label(region.name, at.x() - font.width(region.name) / 2, at.y() + kPanelPadding);
+    }
+    if (!overlay.legend.empty()) {
+      float widest = 0;
+      for (const std::string& line : overlay.legend) widest = std::max(widest, font.width(line));
+      const float margin = 2 * kPanelPadding, h = font.line_height();
+      panels.rectangle({margin, margin},
+                       {margin + widest + 2 * kPanelPadding, margin + h * overlay.legend.size() + 2 * kPanelPadding},
+                       palette::kPanel);
+      for (std::size_t i = 0; i < overlay.legend.size(); ++i) {
+        add_text(overlay.legend[i], margin + kPanelPadding, margin + kPanelPadding + h * i, glyphs);
+      }
+    }
+    upload(panel_layer, panels);
+    glyph_layer.upload(glyphs.data(), glyphs.size());
+  }
+
+  static void upload(GlMesh& layer, const FlatGeometry& geometry) {
+    layer.upload(geometry.floats().data(), geometry.floats().size());
+  }
+
+  void upload_layers(const scenario::EnvironmentState& state, const Overlay& overlay, const CameraView& view) {
+    const double metres_per_pixel = view.metres_per_pixel;
+    upload(floor_layer, floor_paint(overlay, metres_per_pixel));
+    const std::vector<float> bodies = moving_bodies(state);
+    moving_layer.upload(bodies.data(), bodies.size());
+    const ShadowGeometry shadow_geometry = shadows(state);
+    shadow_layer.upload(shadow_geometry.floats().data(), shadow_geometry.floats().size());
+    FlatGeometry segments;
+    for (const SegmentOverlay& s : overlay.segments) segments.line(s.from, s.to, kSegmentWidth * metres_per_pixel, s.color);
+    upload(segment_layer, segments);
+    FlatGeometry path;
+    path.polyline(overlay.path, kPathHaloWidth * metres_per_pixel, palette::kPathHalo);
+    path.polyline(overlay.path, kPathWidth * metres_per_pixel, palette::kPath);
+    upload(path_layer, path);
+    upload_text(view, overlay);
+  }
+
+  Image draw(const scenario::EnvironmentState& state, const Overlay& overlay, View view_kind) {
+    if (state.movable_poses.size() != world.movable_bodies.size()) {
+      throw std::invalid_argument("render: the state has " + std::to_string(state.movable_poses.size()) +
+                                  " movable poses, the world " + std::to_string(world.movable_bodies.size()) +
+                                  " movable bodies");
+    }
+    context->make_current();
+    const CameraView view = make_camera_view(world, top_height, view_kind, width, height);
+    upload_layers(state, overlay, view);
+
+    glBindFramebuffer(GL_FRAMEBUFFER, context->framebuffer());
+    glViewport(0, 0, width, height);
+    const Color& bg = palette::kBackground;
+    glClearColor(bg.r, bg.g, bg.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDisable(GL_DEPTH_TEST);
+
+    draw_flat(floor_layer, view.view_projection);
+    shadow.use();
+    glUniformMatrix4fv(shadow.uniform("transform"), 1, GL_FALSE, view.view_projection.data());
+    shadow_layer.draw(GL_TRIANGLES);
+    draw_flat(segment_layer, view.view_projection);
+
+    glEnable(GL_DEPTH_TEST);
+    lit.use();
+    glUniformMatrix4fv(lit.uniform("view_projection"), 1, GL_FALSE, view.view_projection.data());
+    const Vector3f light = towards_light();
+    glUniform3f(lit.uniform("towards_light"), light.x(), light.y(), light.z());
+    fixed_layer.draw(GL_TRIANGLES);
+    moving_layer.draw(GL_TRIANGLES);
+    glDisable(GL_DEPTH_TEST);
+
+    draw_flat(path_layer, view.view_projection);
+    const Matrix4f pixels = pixel_transform(width, height);
+    draw_flat(panel_layer, pixels);
+    text.use();
+    glUniformMatrix4fv(text.uniform("transform"), 1, GL_FALSE, pixels.data());
+    set_color(text.uniform("color"), palette::kText);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, font_texture);
+    glUniform1i(text.uniform("atlas"), 0);
+    glyph_layer.draw(GL_TRIANGLES);
+
+    Image image;
+    context->read(image);
+    return image;
+  }
+};
+
+Renderer::Renderer(const scenario::World& world, std::unique_ptr<OffscreenContext> context)
+    : impl_(std::make_unique<Impl>(world, std::move(context))) {}
+
+Renderer::Renderer(const scenario::World& world, int width, int height)
+    : Renderer(world, make_osmesa_context(width, height)) {}
+
+Renderer::~Renderer() = default;
+
+Image Renderer::draw(const scenario::EnvironmentState& state, const Overlay& overlay, View view) {
+  return impl_->draw(state, overlay, view);
+}
+
+}  // namespace physltl::render
