@@ -6,7 +6,10 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <vector>
 
 namespace physltl::render {
 namespace {
@@ -35,14 +38,21 @@ class ScopedPath {
   std::string saved_;
 };
 
-TEST(Video, EncodesOddSizedFramesIntoAnMp4) {
+std::vector<char> file_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(Video, EncodesOddSizedFramesIntoTheSameMp4BytesEveryTime) {
   const std::filesystem::path folder = folder_with_frames("video_frames", 5);
-  const std::filesystem::path video = folder.parent_path() / "plan.mp4";
-  std::filesystem::remove(video);
-  const VideoResult result = encode_video(folder, 30, video);
+  const std::filesystem::path first = folder.parent_path() / "plan.mp4", second = folder.parent_path() / "again.mp4";
+  std::filesystem::remove(first);
+  const VideoResult result = encode_video(folder, 30, first);
   if (!result.written && result.message.find("not on PATH") != std::string::npos) GTEST_SKIP() << result.message;
   ASSERT_TRUE(result.written) << result.message;
-  EXPECT_GT(std::filesystem::file_size(video), 0u);
+  EXPECT_GT(std::filesystem::file_size(first), 0u);
+  ASSERT_TRUE(encode_video(folder, 30, second).written);
+  EXPECT_EQ(file_bytes(first), file_bytes(second));
 }
 
 TEST(Video, SaysFfmpegIsMissingAndKeepsTheFrames) {
