@@ -1,0 +1,47 @@
+#pragma once
+// The triangular decomposition of the workspace minus the fixed bodies (paper Sec. 4.3, after Bhatia et
+// al.): a conforming Delaunay mesh whose edges follow every region boundary, so each triangle lies in
+// exactly one propositional region or in none (p0). Movable bodies are ignored: the robot can push them.
+
+#include "physltl/scenario/world.h"
+
+#include <array>
+#include <vector>
+
+namespace physltl::decomposition {
+
+using scenario::Vec2;
+
+struct Triangle {
+  std::array<Vec2, 3> corners;
+  Vec2 centroid;
+  double area = 0.0;
+  int region = -1;             // index into World::regions; -1 outside every region (p0)
+  std::vector<int> neighbors;  // triangles sharing an edge
+};
+
+struct DecompositionOptions {
+  // Longest edge of a triangle, in metres; 0 derives it from the workspace (about 1/20 of its diagonal).
+  double max_edge = 0.0;
+};
+
+class Decomposition {
+ public:
+  static Decomposition build(const scenario::World& world, const DecompositionOptions& options = {});
+
+  const std::vector<Triangle>& triangles() const { return triangles_; }
+  int size() const { return static_cast<int>(triangles_.size()); }
+  // The triangle containing `p`, or the nearest one when `p` lies on no triangle (inside a fixed body
+  // or out of the workspace, up to rounding).
+  int locate(const Vec2& p) const;
+
+ private:
+  std::vector<Triangle> triangles_;
+  // A uniform grid of buckets listing the triangles overlapping each cell, for locate().
+  scenario::Vec2 grid_origin_ = Vec2::Zero();
+  double cell_ = 1.0;
+  int columns_ = 0, rows_ = 0;
+  std::vector<std::vector<int>> buckets_;
+};
+
+}  // namespace physltl::decomposition

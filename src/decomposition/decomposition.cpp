@@ -1,0 +1,145 @@
+#include "physltl/decomposition/decomposition.h"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace physltl::decomposition {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+// Walls touch and overlap each other's edges and region edges may cross walls: exact constructions
+// keep the constraint intersections exact.
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, CGAL::Default, CGAL::Exact_intersections_tag>;
+using Point = Kernel::Point_2;
+
+Point point(const Vec2& v) { return {v.x(), v.y()}; }
+Vec2 vec(const Point& p) { return {CGAL::to_double(p.x()), CGAL::to_double(p.y())}; }
+
+// Each edge goes in as pieces no longer than `max_piece`, so no triangle along a wall gets longer edges.
+void insert_polygon(Cdt& cdt, const std::vector<Vec2>& vertices, double max_piece) {
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    const Vec2 a = vertices[i], b = vertices[(i + 1) % vertices.size()];
+    const int pieces = std::max(1, static_cast<int>(std::ceil((b - a).norm() / max_piece)));
+    for (int k = 0; k < pieces; ++k) {
+      cdt.insert_constraint(point(a + (b - a) * (double(k) / pieces)), point(a + (b - a) * (double(k + 1) / pieces)));
+    }
+  }
+}
+
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+bool triangle_contains(const Triangle& t, const Vec2& p) {
+  const auto& c = t.corners;
+  const double d0 = cross(c[1] - c[0], p - c[0]);
+  const double d1 = cross(c[2] - c[1], p - c[1]);
+  const double d2 = cross(c[0] - c[2], p - c[2]);
+  const double eps = -1e-12;
+  return (d0 >= eps && d1 >= eps && d2 >= eps) || (d0 <= -eps && d1 <= -eps && d2 <= -eps);
+}
+
+}  // namespace
+
+Decomposition Decomposition::build(const scenario::World& world, const DecompositionOptions& options) {
+  const auto& bounds = world.workspace.bounds;
+  const double max_edge = options.max_edge > 0 ? options.max_edge : bounds.size().norm() / 20.0;
+
+  Cdt cdt;
+  insert_polygon(cdt, geometry::Polygon::from_rect(bounds).vertices, max_edge);
+  for (const auto& f : world.fixed_bodies) {
+    insert_polygon(cdt, geometry::Polygon::from_box(f.footprint).vertices, max_edge);
+  }
+  for (const auto& r : world.regions) insert_polygon(cdt, r.polygon.vertices, max_edge);
+  // Steiner points on a staggered grid bound the triangle size away from the constraints. (CGAL's
+  // Delaunay mesher would be the textbook tool, but it does not terminate on walls that touch the
+  // workspace border in Debian's CGAL 5.5; the grid gives the same kind of mesh, deterministically.)
+  const int columns = static_cast<int>(std::ceil(bounds.size().x() / max_edge));
+  const int rows = static_cast<int>(std::ceil(bounds.size().y() / max_edge));
+  const Vec2 step(bounds.size().x() / columns, bounds.size().y() / rows);
+  std::vector<Point> steiner;
+  for (int r = 0; r <= rows; ++r) {
+    for (int c = 0; c <= columns; ++c) {
+      const double shift = (r % 2) * 0.5;
+      const Vec2 p = bounds.min + Vec2((c + shift) * step.x(), r * step.y());
+      if (!bounds.contains(p)) continue;
+      // Points hugging a wall would only make slivers against the wall's own subdivision points.
+      const bool near_fixed = std::any_of(world.fixed_bodies.begin(), world.fixed_bodies.end(), [&](const auto& f) {
+        return f.footprint.distance_to(p) < 0.3 * max_edge;
+      });
+      if (!near_fixed) steiner.push_back(point(p));
+    }
+  }
+  cdt.insert(steiner.begin(), steiner.end());
+
+  Decomposition d;
+  std::map<Cdt::Face_handle, int> index_of;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    Triangle t;
+    for (int i = 0; i < 3; ++i) t.corners[i] = vec(f->vertex(i)->point());
+    t.centroid = (t.corners[0] + t.corners[1] + t.corners[2]) / 3.0;
+    // Fixed-body edges are constraints, so a triangle is wholly inside a body or wholly outside.
+    if (std::any_of(world.fixed_bodies.begin(), world.fixed_bodies.end(),
+                    [&](const scenario::FixedBody& b) { return b.footprint.contains(t.centroid); })) {
+      continue;
+    }
+    t.area = 0.5 * std::abs(cross(t.corners[1] - t.corners[0], t.corners[2] - t.corners[0]));
+    for (size_t r = 0; r < world.regions.size(); ++r) {
+      if (world.regions[r].polygon.contains(t.centroid)) t.region = static_cast<int>(r);
+    }
+    index_of[f] = static_cast<int>(d.triangles_.size());
+    d.triangles_.push_back(std::move(t));
+  }
+  for (const auto& [face, index] : index_of) {
+    for (int i = 0; i < 3; ++i) {
+      auto it = index_of.find(face->neighbor(i));
+      if (it != index_of.end()) d.triangles_[index].neighbors.push_back(it->second);
+    }
+    std::sort(d.triangles_[index].neighbors.begin(), d.triangles_[index].neighbors.end());
+  }
+
+  // Buckets about one triangle edge wide.
+  d.cell_ = max_edge;
+  d.grid_origin_ = bounds.min;
+  d.columns_ = std::max(1, static_cast<int>(std::ceil(bounds.size().x() / d.cell_)));
+  d.rows_ = std::max(1, static_cast<int>(std::ceil(bounds.size().y() / d.cell_)));
+  d.buckets_.assign(static_cast<size_t>(d.columns_) * d.rows_, {});
+  for (int i = 0; i < d.size(); ++i) {
+    Vec2 lo = d.triangles_[i].corners[0], hi = lo;
+    for (const auto& c : d.triangles_[i].corners) {
+      lo = lo.cwiseMin(c);
+      hi = hi.cwiseMax(c);
+    }
+    const int c0 = std::clamp(static_cast<int>((lo.x() - d.grid_origin_.x()) / d.cell_), 0, d.columns_ - 1);
+    const int c1 = std::clamp(static_cast<int>((hi.x() - d.grid_origin_.x()) / d.cell_), 0, d.columns_ - 1);
+    const int r0 = std::clamp(static_cast<int>((lo.y() - d.grid_origin_.y()) / d.cell_), 0, d.rows_ - 1);
+    const int r1 = std::clamp(static_cast<int>((hi.y() - d.grid_origin_.y()) / d.cell_), 0, d.rows_ - 1);
+    for (int r = r0; r <= r1; ++r) {
+      for (int c = c0; c <= c1; ++c) d.buckets_[static_cast<size_t>(r) * d.columns_ + c].push_back(i);
+    }
+  }
+  return d;
+}
+
+int Decomposition::locate(const Vec2& p) const {
+  const int c = std::clamp(static_cast<int>((p.x() - grid_origin_.x()) / cell_), 0, columns_ - 1);
+  const int r = std::clamp(static_cast<int>((p.y() - grid_origin_.y()) / cell_), 0, rows_ - 1);
+  for (int i : buckets_[static_cast<size_t>(r) * columns_ + c]) {
+    if (triangle_contains(triangles_[i], p)) return i;
+  }
+  int nearest = -1;
+  double best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < size(); ++i) {
+    const double d = (triangles_[i].centroid - p).squaredNorm();
+    if (d < best) {
+      best = d;
+      nearest = i;
+    }
+  }
+  return nearest;
+}
+
+}  // namespace physltl::decomposition
