@@ -1,7 +1,12 @@
 #include "physltl/scenario/load.h"
 
+#include "physltl/ltl/co_safety.h"
+#include "physltl/ltl/parser.h"
+
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <regex>
 #include <set>
 
@@ -26,6 +31,7 @@ class Validator {
     for (const auto& b : world_.movable_bodies) check_movable(b);
     check_body_overlaps();
     check_regions();
+    check_task();
     check_planner();
     check_render();
     return std::move(out_);
@@ -184,6 +190,35 @@ class Validator {
                              "): regions must be disjoint");
         }
       }
+    }
+  }
+
+  // The formula must parse, name only regions of this scenario and be one the planner can take.
+  void check_task() {
+    const auto& t = world_.task;
+    if (t.where.file.empty()) return;  // missing: reported by the reader
+    const std::string what = "task: formula '" + t.formula + "'";
+    std::optional<ltl::Formula> formula;
+    try {
+      formula = ltl::parse(t.formula);
+    } catch (const ltl::ParseError& e) {
+      error(t.where, what + ": " + e.what());
+      return;
+    }
+    std::string known;
+    for (const auto& r : world_.regions) known += (known.empty() ? "" : ", ") + r.name;
+    for (const std::string& p : ltl::propositions(*formula)) {
+      const bool is_region = std::any_of(world_.regions.begin(), world_.regions.end(),
+                                         [&](const Region& r) { return r.name == p; });
+      if (!is_region) {
+        error(t.where, what + " names unknown region '" + p + "' (" +
+                           (known.empty() ? "the scenario has no regions" : "known regions: " + known) + ")");
+      }
+    }
+    try {
+      ltl::require_co_safe(*formula);
+    } catch (const ltl::NotCoSafeError& e) {
+      error(t.where, what + " is " + e.what());
     }
   }
 

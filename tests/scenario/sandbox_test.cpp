@@ -21,10 +21,11 @@ class Sandbox : public testing::Test {
     return path.string();
   }
 
+  // Its task names no region, so a test may add whichever regions it likes.
   static std::string minimal_world(const std::string& extra) {
     return "workspace { bounds = { { 0, 0 }, { 10, 10 } } }\n"
            "robot { start = { 1, 1 } }\n"
-           "task { formula = 'F p1' }\n" + extra;
+           "task { formula = 'F true' }\n" + extra;
   }
 
   static std::string first_message(const std::string& path, const LoadOptions& options = {}) {
