@@ -1,29 +1,60 @@
+#include "check_report.h"
 #include "command.h"
-#include "physltl/scenario/world_json.h"
+#include "output_folder.h"
+#include "overlays.h"
+#include "physltl/render/preview.h"
+#include "reasoning.h"
 #include "scenario_args.h"
-#include "world_summary.h"
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace physltl::app {
+namespace {
+
+// Replaces only preview.png in <out>/<name>/: the folder may hold a plan's outputs, which a check must not
+// delete.
+std::filesystem::path write_preview(const scenario::World& world, const Reasoning& reasoning,
+                                    const std::filesystem::path& out_dir) {
+  try {
+    OutputFolder folder(out_dir / world.name);
+    render::render_preview(world, reasoning.initial_state, preview_overlay(reasoning), folder.path() / "preview.png");
+    folder.commit_entries();
+    return folder.final_path() / "preview.png";
+  } catch (const std::exception& e) {
+    throw BadInput(std::string("cannot write preview.png: ") + e.what());
+  }
+}
+
+}  // namespace
 
 CommandRunner add_check_command(CLI::App& app) {
   struct Args {
     ScenarioArgs scenario;
     bool json = false;
+    std::string out_dir = "out";
+    bool no_preview = false;
   };
   auto args = std::make_shared<Args>();
   args->scenario.add_to(app);
   app.add_flag("--json", args->json, "Print the report as JSON on stdout");
+  app.add_option("--out", args->out_dir, "Folder for outputs; writes <out>/<name>/preview.png")->capture_default_str();
+  app.add_flag("--no-preview", args->no_preview, "Do not render preview.png");
   return [args] {
     const scenario::World world = args->scenario.load();
+    const Reasoning reasoning = reason_about(world);
+    // The picture first: when it cannot be written, the command fails before reporting anything.
+    std::optional<std::filesystem::path> preview;
+    if (!args->no_preview) preview = write_preview(world, reasoning, args->out_dir);
     if (args->json) {
-      std::cout << scenario::to_json(world).dump(2) << "\n";
+      std::cout << check_report_json(world, reasoning).dump(2) << "\n";
     } else {
-      print_world_summary(std::cout, world);
+      print_check_report(std::cout, world, reasoning);
+      if (preview) std::cout << "preview    " << preview->string() << "\n";
     }
-    return kExitOk;
+    return reasoning.feasible() ? kExitOk : kExitNoPlan;
   };
 }
 

@@ -1,0 +1,64 @@
+#include "output_folder.h"
+
+#include <unistd.h>
+
+#include <string>
+#include <system_error>
+
+namespace physltl::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path sibling(const fs::path& path, const char* tag) {
+  return path.parent_path() / (path.filename().string() + tag + std::to_string(::getpid()));
+}
+
+// rename(2) replaces a file or an empty folder in one step, but not a folder with contents: move that one
+// aside first and delete it once `from` is in place.
+void replace(const fs::path& from, const fs::path& to) {
+  if (fs::is_directory(to) && !fs::is_empty(to)) {
+    const fs::path old = sibling(to, ".old-");
+    fs::remove_all(old);
+    fs::rename(to, old);
+    fs::rename(from, to);
+    fs::remove_all(old);
+  } else {
+    fs::rename(from, to);
+  }
+}
+
+// "out/rooms/" names the same folder as "out/rooms"; with the slash kept, the temporary folder would land
+// inside the final one.
+fs::path without_trailing_slash(const fs::path& path) { return path.has_filename() ? path : path.parent_path(); }
+
+}  // namespace
+
+OutputFolder::OutputFolder(const fs::path& final_path)
+    : final_(without_trailing_slash(final_path)), temp_(sibling(final_, ".tmp-")) {
+  if (final_.has_parent_path()) fs::create_directories(final_.parent_path());
+  fs::remove_all(temp_);
+  fs::create_directory(temp_);
+}
+
+OutputFolder::~OutputFolder() {
+  if (committed_) return;
+  std::error_code ignored;  // nothing useful to do about a failure while unwinding
+  fs::remove_all(temp_, ignored);
+}
+
+void OutputFolder::commit() {
+  replace(temp_, final_);
+  committed_ = true;
+}
+
+void OutputFolder::commit_entries() {
+  if (!fs::exists(final_)) return commit();
+  for (const fs::directory_entry& entry : fs::directory_iterator(temp_)) {
+    replace(entry.path(), final_ / entry.path().filename());
+  }
+  fs::remove(temp_);
+  committed_ = true;
+}
+
+}  // namespace physltl::app

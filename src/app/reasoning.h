@@ -1,0 +1,37 @@
+#pragma once
+// What the knowledge layer and the LTL module conclude about a World before any planning: the paper's K,
+// kappa_0, F(K, Pi) -> M_p and the task simplified by M_p with its automaton. `check` reports it; the
+// planner starts from it.
+
+#include "physltl/knowledge/abstract_knowledge.h"
+#include "physltl/knowledge/feasibility.h"
+#include "physltl/knowledge/kappa.h"
+#include "physltl/ltl/analysis.h"
+#include "physltl/scenario/state.h"
+#include "physltl/scenario/world.h"
+
+#include <optional>
+
+namespace physltl::app {
+
+struct Reasoning {
+  knowledge::AbstractKnowledge knowledge;    // K
+  scenario::EnvironmentState initial_state;  // E_0: everything where the scenario put it
+  knowledge::Kappa initial_kappa;            // kappa_0 = INFERENCE(K, E_0)
+  knowledge::Feasibility feasibility;        // M_p: the invalid propositions, with reasons
+  // The task: as written, in positive normal form, simplified by M_p (the paper's list rule for
+  // information, the semantic rule the planner uses) and the DFA of the simplified task (empty when
+  // infeasible).
+  ltl::Analysis task;
+
+  bool feasible() const { return task.feasible(); }
+  // The formula the planner gets: the semantic simplification, or the normal form when no proposition is
+  // invalid; empty when the task is infeasible.
+  std::optional<ltl::Formula> simplified_formula() const;
+};
+
+// Pure and deterministic. Expects a World that passed scenario validation (its formula is co-safe over its
+// regions); otherwise throws ltl::ParseError or ltl::NotCoSafeError.
+Reasoning reason_about(const scenario::World& world);
+
+}  // namespace physltl::app
