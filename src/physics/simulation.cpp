@@ -14,7 +14,7 @@ namespace {
 constexpr double kGravity = 9.81;           // m/s^2, for floor friction only: motion is planar
 constexpr double kCollisionHeight = 1.0;    // m; every body spans z = ±0.5 so contact normals stay horizontal
 constexpr int kMaxContactsPerPair = 4;
-constexpr int kValuesPerBody = 13;          // position 3, quaternion 4, linear velocity 3, angular velocity 3
+constexpr int kValuesPerBody = 10;          // position 3, yaw 1, linear velocity 3, angular velocity 3
 constexpr double kBoxSpeedFactor = 2.0;     // pushed boxes may not outrun the robot by more than this
 
 // Coulomb friction of two materials, as Box2D and most engines combine it.
@@ -39,6 +39,10 @@ struct Simulation::Impl {
   std::vector<Geom> dynamic;  // robot first, then movables in World order
   std::vector<Geom> fixed;
   std::vector<dJointID> planar_joints;
+  // The yaw each body's quaternion was last set from. ODE normalises every quaternion it is given, and
+  // normalising is not idempotent in the last bit, so a saved quaternion would not restore exactly;
+  // the yaw it was made from does.
+  std::vector<double> yaw;
   double max_force;
   double max_speed;
   dContactGeom contact_buffer[kMaxContactsPerPair];
@@ -124,21 +128,25 @@ struct Simulation::Impl {
     dJointSetPlane2DAngleParam(joint, dParamFMax, index < 0 ? 1e3 : floor_torque);  // the robot does not spin
     planar_joints.push_back(joint);
     dynamic.push_back(g);
+    yaw.push_back(0.0);
   }
 
-  void set_pose(dBodyID body, const geometry::Pose2& pose, const scenario::Vec2& velocity) {
-    dBodySetPosition(body, pose.position.x(), pose.position.y(), 0.0);
-    const dQuaternion q = {std::cos(pose.yaw / 2), 0, 0, std::sin(pose.yaw / 2)};
-    dBodySetQuaternion(body, q);
-    dBodySetLinearVel(body, velocity.x(), velocity.y(), 0.0);
-    dBodySetAngularVel(body, 0, 0, 0);
+  void set_yaw(size_t i, double value) {
+    yaw[i] = value;
+    const dQuaternion q = {std::cos(value / 2), 0, 0, std::sin(value / 2)};
+    dBodySetQuaternion(dynamic[i].body, q);
+  }
+
+  void set_pose(size_t i, const geometry::Pose2& pose) {
+    dBodySetPosition(dynamic[i].body, pose.position.x(), pose.position.y(), 0.0);
+    set_yaw(i, pose.yaw);
+    dBodySetLinearVel(dynamic[i].body, 0, 0, 0);
+    dBodySetAngularVel(dynamic[i].body, 0, 0, 0);
   }
 
   void reset() {
-    set_pose(dynamic[0].body, {world.robot.start, 0.0}, scenario::Vec2::Zero());
-    for (size_t i = 0; i < world.movable_bodies.size(); ++i) {
-      set_pose(dynamic[i + 1].body, world.movable_bodies[i].footprint.pose, scenario::Vec2::Zero());
-    }
+    set_pose(0, {world.robot.start, 0.0});
+    for (size_t i = 0; i < world.movable_bodies.size(); ++i) set_pose(i + 1, world.movable_bodies[i].footprint.pose);
   }
 
   void collide(const Geom& a, const Geom& b, std::vector<scenario::RobotContact>& robot_contacts) {
@@ -146,12 +154,31 @@ struct Simulation::Impl {
     const dReal* pb = dGeomGetPosition(b.id);
     const double reach = a.bound_radius + b.bound_radius;
     if ((pa[0] - pb[0]) * (pa[0] - pb[0]) + (pa[1] - pb[1]) * (pa[1] - pb[1]) > reach * reach) return;
-    const int n = dCollide(a.id, b.id, kMaxContactsPerPair, contact_buffer, sizeof(dContactGeom));
+    const int found = dCollide(a.id, b.id, kMaxContactsPerPair, contact_buffer, sizeof(dContactGeom));
+    // Tall boxes touch at the top and the bottom of the same vertical edge; in the plane those are one
+    // contact, and the duplicate rows make the LCP singular ("LCP internal error"), so keep one.
+    int n = 0;
+    for (int i = 0; i < found; ++i) {
+      const dReal* p = contact_buffer[i].pos;
+      bool duplicate = false;
+      for (int k = 0; k < n; ++k) {
+        const dReal* q = contact_buffer[k].pos;
+        duplicate |= std::abs(p[0] - q[0]) < 1e-4 && std::abs(p[1] - q[1]) < 1e-4;
+      }
+      if (!duplicate) contact_buffer[n++] = contact_buffer[i];
+    }
     for (int i = 0; i < n; ++i) {
       dContact contact{};
       contact.geom = contact_buffer[i];
-      contact.surface.mode = dContactApprox1 | dContactSoftCFM | dContactSoftERP;
+      // One friction row, horizontal: the second tangent is vertical, where the plane-2D joint already
+      // holds the bodies, and a duplicate row makes the LCP singular.
+      const dReal* normal = contact.geom.normal;
+      contact.fdir1[0] = -normal[1];
+      contact.fdir1[1] = normal[0];
+      contact.fdir1[2] = 0.0;
+      contact.surface.mode = dContactApprox1 | dContactFDir1 | dContactMu2 | dContactSoftCFM | dContactSoftERP;
       contact.surface.mu = mix_friction(a.friction, b.friction);
+      contact.surface.mu2 = 0.0;
       contact.surface.soft_cfm = 1e-5;
       contact.surface.soft_erp = 0.2;
       dJointID joint = dJointCreateContact(ode_world, contact_group, &contact);
@@ -164,20 +191,19 @@ struct Simulation::Impl {
   }
 
   // After each step: remove the solver's drift out of the plane, and saturate speeds.
-  void settle(const Geom& g, double speed_limit) {
-    const dReal* q = dBodyGetQuaternion(g.body);
-    const double yaw = 2.0 * std::atan2(q[3], q[0]);
-    const dReal* p = dBodyGetPosition(g.body);
-    const dReal* v = dBodyGetLinearVel(g.body);
-    const dReal* w = dBodyGetAngularVel(g.body);
+  void settle(size_t i, double speed_limit) {
+    const dBodyID body = dynamic[i].body;
+    const dReal* q = dBodyGetQuaternion(body);
+    const dReal* p = dBodyGetPosition(body);
+    const dReal* v = dBodyGetLinearVel(body);
+    const dReal* w = dBodyGetAngularVel(body);
     const double speed = std::hypot(v[0], v[1]);
     const double scale = speed > speed_limit ? speed_limit / speed : 1.0;
     const double vx = v[0] * scale, vy = v[1] * scale, wz = w[2];
-    dBodySetPosition(g.body, p[0], p[1], 0.0);
-    const dQuaternion planar = {std::cos(yaw / 2), 0, 0, std::sin(yaw / 2)};
-    dBodySetQuaternion(g.body, planar);
-    dBodySetLinearVel(g.body, vx, vy, 0.0);
-    dBodySetAngularVel(g.body, 0, 0, wz);
+    dBodySetPosition(body, p[0], p[1], 0.0);
+    set_yaw(i, 2.0 * std::atan2(q[3], q[0]));
+    dBodySetLinearVel(body, vx, vy, 0.0);
+    dBodySetAngularVel(body, 0, 0, wz);
   }
 
   void step(const scenario::Vec2& force, std::vector<scenario::RobotContact>& robot_contacts) {
@@ -192,8 +218,8 @@ struct Simulation::Impl {
     }
     dWorldStep(ode_world, world.planner.step_size);
     dJointGroupEmpty(contact_group);
-    settle(dynamic[0], max_speed);
-    for (size_t i = 1; i < dynamic.size(); ++i) settle(dynamic[i], kBoxSpeedFactor * max_speed);
+    settle(0, max_speed);
+    for (size_t i = 1; i < dynamic.size(); ++i) settle(i, kBoxSpeedFactor * max_speed);
   }
 };
 
@@ -206,25 +232,31 @@ double Simulation::step_size() const { return impl_->world.planner.step_size; }
 
 PhysicsState Simulation::save() const {
   PhysicsState s;
-  s.values.reserve(impl_->dynamic.size() * kValuesPerBody);
-  auto append = [&s](const dReal* values, int count) { s.values.insert(s.values.end(), values, values + count); };
-  for (const Geom& g : impl_->dynamic) {
-    append(dBodyGetPosition(g.body), 3);
-    append(dBodyGetQuaternion(g.body), 4);
-    append(dBodyGetLinearVel(g.body), 3);
-    append(dBodyGetAngularVel(g.body), 3);
-  }
+  save(s);
   return s;
+}
+
+void Simulation::save(PhysicsState& s) const {
+  const auto& dynamic = impl_->dynamic;
+  s.values.resize(dynamic.size() * kValuesPerBody);
+  double* out = s.values.data();
+  auto append = [&out](const dReal* values, int count) { out = std::copy(values, values + count, out); };
+  for (size_t i = 0; i < dynamic.size(); ++i) {
+    append(dBodyGetPosition(dynamic[i].body), 3);
+    *out++ = impl_->yaw[i];
+    append(dBodyGetLinearVel(dynamic[i].body), 3);
+    append(dBodyGetAngularVel(dynamic[i].body), 3);
+  }
 }
 
 void Simulation::restore(const PhysicsState& s) {
   const double* v = s.values.data();
-  for (const Geom& g : impl_->dynamic) {
-    dBodySetPosition(g.body, v[0], v[1], v[2]);
-    const dQuaternion q = {v[3], v[4], v[5], v[6]};
-    dBodySetQuaternion(g.body, q);
-    dBodySetLinearVel(g.body, v[7], v[8], v[9]);
-    dBodySetAngularVel(g.body, v[10], v[11], v[12]);
+  for (size_t i = 0; i < impl_->dynamic.size(); ++i) {
+    const dBodyID body = impl_->dynamic[i].body;
+    dBodySetPosition(body, v[0], v[1], v[2]);
+    impl_->set_yaw(i, v[3]);
+    dBodySetLinearVel(body, v[4], v[5], v[6]);
+    dBodySetAngularVel(body, v[7], v[8], v[9]);
     v += kValuesPerBody;
   }
 }
@@ -246,8 +278,7 @@ void Simulation::read_environment(scenario::EnvironmentState& out) const {
   out.movable_velocities.resize(dyn.size() - 1);
   for (size_t i = 1; i < dyn.size(); ++i) {
     planar(dyn[i].body, out.movable_poses[i - 1].position, out.movable_velocities[i - 1]);
-    const dReal* q = dBodyGetQuaternion(dyn[i].body);
-    out.movable_poses[i - 1].yaw = 2.0 * std::atan2(q[3], q[0]);
+    out.movable_poses[i - 1].yaw = impl_->yaw[i];
   }
 }
 

@@ -28,6 +28,7 @@ class Simulation {
 
   void reset();  // the World's initial state
   PhysicsState save() const;
+  void save(PhysicsState& out) const;  // reuses out's storage: the planner saves after every step
   void restore(const PhysicsState& state);
 
   // Pushes the robot with `force` (each component clamped to the robot's max_force) for one step of the

@@ -1,0 +1,73 @@
+#include "control_sampler.h"
+
+#include "physltl/knowledge/side_set.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace physltl::planning {
+namespace {
+
+constexpr double kUniformShare = 0.2;  // even guided sampling keeps some uniform controls: completeness
+constexpr double kPushAlignment = 0.3;  // cosine: a push must help towards the target at least this much
+
+Vec2 unit(const Vec2& v) {
+  const double n = v.norm();
+  return n > 1e-12 ? Vec2(v / n) : Vec2(1.0, 0.0);
+}
+
+Vec2 random_unit(Random& random) {
+  const double a = random.uniform(-std::numbers::pi, std::numbers::pi);
+  return {std::cos(a), std::sin(a)};
+}
+
+}  // namespace
+
+ControlSampler::ControlSampler(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
+                               bool use_knowledge)
+    : world_(world), knowledge_(knowledge), use_knowledge_(use_knowledge), max_force_(world.robot.max_force) {}
+
+Vec2 ControlSampler::uniform_force(Random& random) const {
+  const double fx = random.uniform(-max_force_, max_force_);
+  const double fy = random.uniform(-max_force_, max_force_);
+  return {fx, fy};
+}
+
+bool ControlSampler::push_towards(const scenario::EnvironmentState& state, const knowledge::Kappa& kappa,
+                                  const Vec2& heading, Random& random, Vec2& force) const {
+  int candidates = 0;
+  for (size_t b = 0; b < knowledge_.movable_bodies.size(); ++b) {
+    const auto& body = knowledge_.movable_bodies[b];
+    const auto& pose = state.movable_poses[b];
+    for (const auto& mregion : body.mregions) {
+      if (!kappa.bodies[b].active_sides.contains(mregion.side)) continue;
+      if (!knowledge::mregion_at(mregion, pose).contains(state.robot_position)) continue;
+      const Vec2 direction = knowledge::push_direction(mregion.side, pose);
+      if (direction.dot(heading) < kPushAlignment) continue;
+      // Reservoir choice among the pushes that help: each equally likely.
+      if (random.uniform_int(0, candidates++) != 0) continue;
+      // Push through the body's centre so it slides rather than spins.
+      const Vec2 to_centre = pose.position - state.robot_position;
+      const Vec2 lateral = to_centre - to_centre.dot(direction) * direction;
+      force = max_force_ * random.uniform(0.7, 1.0) * unit(direction + 2.0 * lateral + 0.1 * random_unit(random));
+    }
+  }
+  return candidates > 0;
+}
+
+Control ControlSampler::sample(const scenario::EnvironmentState& state, const knowledge::Kappa& kappa,
+                               const Vec2& target, Random& random) const {
+  Control control;
+  control.steps = random.uniform_int(world_.planner.min_steps, world_.planner.max_steps);
+  if (!use_knowledge_ || random.chance(kUniformShare)) {
+    control.force = uniform_force(random);
+    return control;
+  }
+  const Vec2 heading = unit(target - state.robot_position);
+  if (!push_towards(state, kappa, heading, random, control.force)) {
+    control.force = max_force_ * random.uniform(0.4, 1.0) * unit(heading + 0.6 * random_unit(random));
+  }
+  return control;
+}
+
+}  // namespace physltl::planning

@@ -1,0 +1,93 @@
+#include "product_graph.h"
+
+#include <algorithm>
+#include <limits>
+#include <queue>
+
+namespace physltl::planning {
+namespace {
+
+// Automaton steps to acceptance. The robot is in at most one region at a time, so the letters that occur
+// are "no region" and each single region proposition.
+std::vector<int> distances_to_accept(const TaskAutomaton& task) {
+  const auto& dfa = task.dfa;
+  const int n = static_cast<int>(dfa.size());
+  std::vector<std::vector<int>> predecessors(n);
+  for (int q = 0; q < n; ++q) {
+    predecessors[dfa.step(q, {})].push_back(q);
+    for (int p = 0; p < static_cast<int>(dfa.propositions.size()); ++p) {
+      predecessors[dfa.step(q, std::span<const int>(&p, 1))].push_back(q);
+    }
+  }
+  std::vector<int> distance(n, -1);
+  std::queue<int> todo;
+  for (int q = 0; q < n; ++q) {
+    if (dfa.accepting[q]) distance[q] = 0, todo.push(q);
+  }
+  while (!todo.empty()) {
+    const int q = todo.front();
+    todo.pop();
+    for (int p : predecessors[q]) {
+      if (distance[p] < 0) distance[p] = distance[q] + 1, todo.push(p);
+    }
+  }
+  return distance;
+}
+
+}  // namespace
+
+ProductGraph::ProductGraph(const decomposition::Decomposition& decomposition, const TaskAutomaton& task)
+    : decomposition_(decomposition),
+      task_(task),
+      automaton_states_(static_cast<int>(task.dfa.size())),
+      distance_to_accept_(distances_to_accept(task)),
+      motions_(static_cast<size_t>(decomposition.size()) * automaton_states_),
+      selections_(motions_.size(), 0) {}
+
+void ProductGraph::add_motion(int id, int motion) { motions_[id].push_back(motion); }
+
+double ProductGraph::weight(int id) const {
+  const double coverage = static_cast<double>(motions_[id].size()) + 1.0;
+  const double selected = static_cast<double>(selections_[id]) + 1.0;
+  const double volume = decomposition_.triangles()[triangle_of(id)].area;
+  const double automaton_distance = distance_to_accept_[automaton_state_of(id)] + 1.0;
+  return coverage * volume / (automaton_distance * selected * selected);
+}
+
+std::vector<int> ProductGraph::lead(int start) const {
+  const int n = static_cast<int>(motions_.size());
+  std::vector<double> cost(n, std::numeric_limits<double>::infinity());
+  std::vector<int> previous(n, -1);
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  cost[start] = 0.0;
+  open.push({0.0, start});
+  int goal = -1;
+  while (!open.empty()) {
+    const auto [c, u] = open.top();
+    open.pop();
+    if (c > cost[u]) continue;
+    if (accepting(u)) {
+      goal = u;
+      break;
+    }
+    const int q = automaton_state_of(u);
+    for (int t : decomposition_.triangles()[triangle_of(u)].neighbors) {
+      const int next_q = task_.step(q, decomposition_.triangles()[t].region);
+      if (dead(next_q)) continue;
+      const int v = id(t, next_q);
+      const double next_cost = c + 1.0 / weight(v);
+      if (next_cost < cost[v]) {
+        cost[v] = next_cost;
+        previous[v] = u;
+        open.push({next_cost, v});
+      }
+    }
+  }
+  std::vector<int> path;
+  for (int v = goal; v >= 0; v = previous[v]) path.push_back(v);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+}  // namespace physltl::planning

@@ -1,0 +1,41 @@
+#pragma once
+// The high level of the planner: states (triangle, automaton state), their exploration statistics, and
+// the lead: the cheapest product path from the start to acceptance under the current weights.
+
+#include "physltl/decomposition/decomposition.h"
+#include "physltl/planning/task.h"
+
+#include <vector>
+
+namespace physltl::planning {
+
+class ProductGraph {
+ public:
+  ProductGraph(const decomposition::Decomposition& decomposition, const TaskAutomaton& task);
+
+  int id(int triangle, int automaton_state) const { return triangle * automaton_states_ + automaton_state; }
+  int triangle_of(int id) const { return id / automaton_states_; }
+  int automaton_state_of(int id) const { return id % automaton_states_; }
+  bool accepting(int id) const { return task_.dfa.accepting[automaton_state_of(id)]; }
+  // No accepting state can follow: trees never grow there.
+  bool dead(int automaton_state) const { return distance_to_accept_[automaton_state] < 0; }
+
+  // Book-keeping the weights depend on (Bhatia et al. 2010, as in OMPL's LTLPlanner).
+  void add_motion(int id, int motion);
+  void count_selection(int id) { ++selections_[id]; }
+  const std::vector<int>& motions(int id) const { return motions_[id]; }
+  double weight(int id) const;
+
+  // Product states from `start` to the first accepting one, cheapest under 1/weight; empty if none.
+  std::vector<int> lead(int start) const;
+
+ private:
+  const decomposition::Decomposition& decomposition_;
+  const TaskAutomaton& task_;
+  int automaton_states_;
+  std::vector<int> distance_to_accept_;  // automaton steps, over letters with at most one region; -1 never
+  std::vector<std::vector<int>> motions_;
+  std::vector<int> selections_;
+};
+
+}  // namespace physltl::planning

@@ -1,0 +1,125 @@
+#include "physltl/planning/planner.h"
+#include "physltl/planning/replay.h"
+
+#include "physltl/knowledge/feasibility.h"
+#include "physltl/ltl/parser.h"
+#include "physltl/ltl/simplify.h"
+#include "physltl/ltl/translate.h"
+#include "physltl/scenario/load.h"
+
+#include <gtest/gtest.h>
+
+namespace physltl::planning {
+namespace {
+
+// Everything a run prepares before planning, for one shipped scenario.
+struct Problem {
+  scenario::World world;
+  knowledge::AbstractKnowledge knowledge;
+  TaskAutomaton task;      // of the simplified formula: what the search aims at
+  TaskAutomaton original;  // of the formula as written: what replay checks
+  decomposition::Decomposition decomposition;
+
+  explicit Problem(const std::string& name)
+      : world(scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/scenarios/" + name)),
+        knowledge(knowledge::formulate(world)),
+        task(make_task(true)),
+        original(make_task(false)),
+        decomposition(decomposition::Decomposition::build(world)) {}
+
+  TaskAutomaton make_task(bool simplified) const {
+    const ltl::Formula phi = ltl::parse(world.task.formula);
+    if (!simplified) return TaskAutomaton::make(ltl::translate(phi), world);
+    const auto invalid = knowledge::evaluate_feasibility(knowledge).invalid_names();
+    return TaskAutomaton::make(ltl::translate(*ltl::simplify_semantically(phi, invalid).formula), world);
+  }
+
+  PlanResult solve(std::uint64_t seed, Guidance guidance = Guidance::kKnowledge) const {
+    PlannerOptions options;
+    options.seed = seed;
+    options.time_limit = 20;
+    options.guidance = guidance;
+    return plan(world, task, knowledge, decomposition, options);
+  }
+};
+
+TEST(Planner, SolvesOrderedAndTheReplayValidatesThePlan) {
+  const Problem p("ordered.lua");
+  const PlanResult result = p.solve(3);
+  ASSERT_TRUE(result.solved) << result.stop_reason;
+  const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+  EXPECT_TRUE(r.validated()) << r.failure;
+  EXPECT_GT(r.pushes, 0);  // p1 and p3 are under boxes
+  EXPECT_EQ(r.states.size(), static_cast<size_t>(result.plan.total_steps()) + 1);
+}
+
+TEST(Planner, SameSeedGivesTheSamePlanBitForBit) {
+  const Problem p("ordered.lua");
+  const PlanResult a = p.solve(11), b = p.solve(11);
+  ASSERT_TRUE(a.solved);
+  ASSERT_EQ(a.plan.controls.size(), b.plan.controls.size());
+  for (size_t i = 0; i < a.plan.controls.size(); ++i) {
+    EXPECT_EQ(a.plan.controls[i].force, b.plan.controls[i].force);
+    EXPECT_EQ(a.plan.controls[i].steps, b.plan.controls[i].steps);
+    EXPECT_EQ(a.plan.states[i], b.plan.states[i]);
+  }
+  EXPECT_EQ(a.stats.propagations, b.stats.propagations);
+}
+
+TEST(Planner, BaselineAlsoSolvesOrderedWithoutKnowledge) {
+  const Problem p("ordered.lua");
+  const PlanResult result = p.solve(5, Guidance::kBaseline);
+  ASSERT_TRUE(result.solved) << result.stop_reason;
+  EXPECT_TRUE(replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kBaseline).validated());
+}
+
+TEST(Replay, ATamperedPlanIsRejected) {
+  const Problem p("ordered.lua");
+  PlanResult result = p.solve(3);
+  ASSERT_TRUE(result.solved);
+  result.plan.controls[result.plan.controls.size() / 2].force.x() += 1.0;
+  const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+  EXPECT_FALSE(r.reproduces_plan);
+  EXPECT_FALSE(r.validated());
+  EXPECT_FALSE(r.failure.empty());
+}
+
+TEST(Replay, AnEmptyPlanDoesNotSatisfyAVisitTask) {
+  const Problem p("ordered.lua");
+  const Replay r = replay(p.world, Plan{}, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+  EXPECT_FALSE(r.accepted);
+  EXPECT_EQ(r.failure, "the region trace does not satisfy the formula");
+  ASSERT_EQ(r.region_trace.size(), 1u);  // the start is labelled
+  EXPECT_EQ(region_names(p.world, r.region_trace), std::vector<std::string>{"p0"});
+}
+
+TEST(Planner, GivesUpAtItsTimeLimitOnAnImpossibleTask) {
+  Problem p("rooms.lua");
+  // B4 too heavy to push: p4 stays out of reach, though the decomposition (which ignores movable
+  // bodies) still offers a lead through the doorway.
+  for (auto& b : p.world.movable_bodies) {
+    if (b.name == "B4") b.mass = 1e4;
+  }
+  p.knowledge = knowledge::formulate(p.world);
+  const TaskAutomaton task = TaskAutomaton::make(ltl::translate(ltl::parse("F p4")), p.world);
+  PlannerOptions options;
+  options.time_limit = 0.3;
+  const PlanResult result = plan(p.world, task, p.knowledge, p.decomposition, options);
+  EXPECT_FALSE(result.solved);
+  EXPECT_EQ(result.stop_reason, "time limit");
+  EXPECT_LT(result.stats.planning_time_s, 0.6);
+  EXPECT_GT(result.stats.propagations, 0);
+}
+
+TEST(Planner, StopsWhenAskedTo) {
+  const Problem p("rooms.lua");
+  std::atomic<bool> stop{true};
+  PlannerOptions options;
+  options.stop = &stop;
+  const PlanResult result = plan(p.world, p.task, p.knowledge, p.decomposition, options);
+  EXPECT_FALSE(result.solved);
+  EXPECT_EQ(result.stop_reason, "interrupted");
+}
+
+}  // namespace
+}  // namespace physltl::planning
