@@ -72,6 +72,8 @@ void print_check_report(std::ostream& out, const scenario::World& world, const R
   if (r.task.dfa) {
     fmt::print(out, "automaton  {} states, {} edges over {}\n", r.task.dfa->size(), r.task.dfa->edge_count(),
                list_or_none(r.task.dfa->propositions));
+  } else {
+    fmt::print(out, "automaton  none: the task is infeasible\n");
   }
 }
 

@@ -46,7 +46,7 @@ int parse_and_run(Command& command, int argc, char** argv) {
 int main(int argc, char** argv) {
   std::map<std::string, Command> subcommands;
   subcommands.emplace("check", make_command("physltl-studio check",
-                                            "Load a scenario, validate it and report what it contains.",
+                                            "Validate a scenario, report it with the planner's reasoning, write preview.png.",
                                             add_check_command));
   subcommands.emplace("ltl", make_command("physltl-studio ltl",
                                           "Parse a co-safe LTL formula, simplify it, translate it to a minimal DFA.",

@@ -1,5 +1,7 @@
 // The physltl-studio command as a user runs it: exit codes, stdout/stderr, and no stray output files.
 
+#include "physltl/render/png.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -36,10 +38,25 @@ Result run(const std::string& args) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stdout"), slurp(dir / "stderr")};
 }
 
+// An empty --out folder of the current test's own.
+fs::path fresh_out_dir() {
+  const fs::path out = fs::path(PHYSLTL_TEST_OUTPUT_DIR) / "cli" /
+                       testing::UnitTest::GetInstance()->current_test_info()->name() / "out";
+  fs::remove_all(out);
+  return out;
+}
+
+const nlohmann::json& entry_named(const nlohmann::json& list, const std::string& name) {
+  for (const auto& e : list) {
+    if (e["name"] == name) return e;
+  }
+  throw std::runtime_error("no entry named " + name);
+}
+
 const std::string kSource = PHYSLTL_SOURCE_DIR;
 
 TEST(Cli, CheckJsonPrintsBodiesWithKindsRegionsAndFormula) {
-  const Result r = run("check " + kSource + "/scenarios/rooms.lua --json");
+  const Result r = run("check " + kSource + "/scenarios/rooms.lua --json --no-preview");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["formula"], "F(p1 & F(p2 & F(p3 | p4)))");
@@ -52,6 +69,69 @@ TEST(Cli, CheckJsonPrintsBodiesWithKindsRegionsAndFormula) {
   }
   EXPECT_TRUE(has_fixed);
   EXPECT_TRUE(has_movable);
+}
+
+TEST(Cli, CheckJsonReportsTheReasoningOnRooms) {
+  const Result r = run("check " + kSource + "/scenarios/rooms.lua --json --no-preview");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["invalid_propositions"], nlohmann::json::array({"p3"}));
+  EXPECT_EQ(j["simplified_formula"], "F(p1 & F(p2 & F p4))");
+  EXPECT_EQ(j["automaton"]["states"], 4);
+  const auto& b1 = entry_named(j["bodies"], "B1");
+  EXPECT_EQ(b1["kind"], "movable");
+  EXPECT_EQ(b1["type"], "constraint-oriented");
+  EXPECT_EQ(b1["allowed_push_directions"], nlohmann::json::array({"+y", "-y"}));
+  EXPECT_EQ(entry_named(j["bodies"], "boundary_north")["type"], "fixed");
+  const auto& p3 = entry_named(j["regions"], "p3");
+  EXPECT_EQ(p3["reachable"], false);
+  EXPECT_EQ(p3["reason"], "p3: region enclosed by fixed walls");
+  EXPECT_EQ(entry_named(j["regions"], "p4")["reachable"], true);
+}
+
+TEST(Cli, CheckOfAWorldWhoseOnlyGoalIsEnclosedExitsOneAfterTheReport) {
+  const std::string scenario = kSource + "/tests/app/enclosed_goal.lua";
+  const Result r = run("check " + scenario + " --no-preview");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.out.find("invalid    goal: region enclosed by fixed walls"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("simplified infeasible: goal is invalid"), std::string::npos) << r.out;
+  const Result json = run("check " + scenario + " --json --no-preview");
+  EXPECT_EQ(json.exit_code, 1) << json.err;
+  const auto j = nlohmann::json::parse(json.out);
+  EXPECT_TRUE(j["simplified_formula"].is_null());
+  EXPECT_EQ(j["invalid_propositions"], nlohmann::json::array({"goal"}));
+}
+
+TEST(Cli, CheckWritesPreviewPngAtTheScenariosRenderSize) {
+  const fs::path out = fresh_out_dir();
+  const Result r = run("check " + kSource + "/scenarios/ordered.lua --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const fs::path preview = out / "ordered" / "preview.png";
+  EXPECT_NE(r.out.find("preview    " + preview.string()), std::string::npos) << r.out;
+  const physltl::render::Image image = physltl::render::read_png(preview);
+  EXPECT_EQ(image.width, 640);  // ordered.lua's render settings
+  EXPECT_EQ(image.height, 480);
+  EXPECT_EQ(std::distance(fs::directory_iterator(out), fs::directory_iterator()), 1) << "a temporary folder was left";
+}
+
+TEST(Cli, CheckReplacesOnlyPreviewPngBesideAPlansOutputs) {
+  const fs::path folder = fresh_out_dir() / "ordered";
+  fs::create_directories(folder);
+  std::ofstream(folder / "plan.mp4") << "a plan";
+  std::ofstream(folder / "preview.png") << "not a png";
+  const Result r = run("check " + kSource + "/scenarios/ordered.lua --out " + folder.parent_path().string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(slurp(folder / "plan.mp4"), "a plan");
+  EXPECT_EQ(physltl::render::read_png(folder / "preview.png").width, 640);
+}
+
+TEST(Cli, CheckOfABadScenarioWritesNothing) {
+  const fs::path out = fresh_out_dir();
+  const Result r = run("check " + kSource + "/tests/bad_scenarios/unknown_region_in_formula.lua --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("unknown region 'p2'"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 TEST(Cli, BadScenarioExitsTwoWithFileLineAndWritesNothing) {
@@ -79,9 +159,9 @@ TEST(Cli, UnknownOptionIsExitTwoAndHelpIsExitZero) {
 }
 
 TEST(Cli, SetPassesParametersToTheScript) {
-  const Result r = run("check --set unused=1 " + kSource + "/scenarios/ordered.lua --json");
+  const Result r = run("check --set unused=1 " + kSource + "/scenarios/ordered.lua --json --no-preview");
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  const Result bad = run("check --set novalue " + kSource + "/scenarios/ordered.lua");
+  const Result bad = run("check --set novalue " + kSource + "/scenarios/ordered.lua --no-preview");
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("--set expects key=value"), std::string::npos);
 }

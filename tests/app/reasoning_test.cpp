@@ -1,0 +1,59 @@
+// reason_about on the paper's worlds and on one whose only goal is walled off.
+
+#include "reasoning.h"
+
+#include "physltl/scenario/load.h"
+
+#include <gtest/gtest.h>
+
+namespace physltl::app {
+namespace {
+
+Reasoning reason_about_file(const std::string& relative_path) {
+  return reason_about(scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/" + relative_path));
+}
+
+TEST(ReasonAbout, RoomsDropsTheEnclosedP3AndPlansTheRest) {
+  const Reasoning r = reason_about_file("scenarios/rooms.lua");
+  EXPECT_EQ(r.feasibility.invalid_names(), std::vector<std::string>{"p3"});
+  ASSERT_TRUE(r.feasible());
+  ASSERT_TRUE(r.simplified_formula());
+  EXPECT_EQ(ltl::to_string(*r.simplified_formula()), "F(p1 & F(p2 & F p4))");
+  ASSERT_TRUE(r.task.by_lists);
+  EXPECT_EQ(ltl::to_string(*r.task.by_lists->formula), "F(p1 & F(p2 & F p4))");
+  ASSERT_TRUE(r.task.dfa);
+  EXPECT_EQ(r.task.dfa->propositions, (std::vector<std::string>{"p1", "p2", "p4"}));
+  EXPECT_EQ(r.task.dfa->size(), 4u);
+}
+
+TEST(ReasonAbout, RoomsKappaZeroTypesTheDoorwayBoxesConstraintOriented) {
+  const Reasoning r = reason_about_file("scenarios/rooms.lua");
+  ASSERT_EQ(r.initial_kappa.bodies.size(), 3u);
+  for (const knowledge::BodyKappa& body : r.initial_kappa.bodies) {
+    EXPECT_EQ(body.type, knowledge::BodyType::kConstraintOriented);
+    EXPECT_FALSE(body.active_sides.contains(scenario::Side::kMinusX));
+    EXPECT_TRUE(body.active_sides.contains(scenario::Side::kPlusY));
+  }
+  EXPECT_EQ(r.initial_state.robot_position, r.knowledge.robot.start);
+}
+
+TEST(ReasonAbout, WithNothingInvalidTheTaskIsItsNormalForm) {
+  const Reasoning r = reason_about_file("scenarios/ordered.lua");
+  EXPECT_TRUE(r.feasibility.invalid.empty());
+  EXPECT_FALSE(r.task.semantic);
+  ASSERT_TRUE(r.simplified_formula());
+  EXPECT_EQ(*r.simplified_formula(), r.task.normal_form);
+  EXPECT_TRUE(r.task.dfa);
+}
+
+TEST(ReasonAbout, AnEnclosedOnlyGoalMakesTheTaskInfeasible) {
+  const Reasoning r = reason_about_file("tests/app/enclosed_goal.lua");
+  EXPECT_FALSE(r.feasible());
+  EXPECT_FALSE(r.simplified_formula());
+  EXPECT_FALSE(r.task.dfa);
+  ASSERT_EQ(r.feasibility.invalid.size(), 1u);
+  EXPECT_EQ(r.feasibility.invalid[0].reason, "goal: region enclosed by fixed walls");
+}
+
+}  // namespace
+}  // namespace physltl::app
