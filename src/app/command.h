@@ -14,6 +14,7 @@ enum ExitCode : int {
   kExitOk = 0,
   kExitNoPlan = 1,    // planning failed, or the task is infeasible
   kExitBadInput = 2,  // bad scenario, bad formula, bad usage
+  kExitInterrupted = 130,  // Ctrl-C or SIGTERM: 128 + SIGINT, as shells report it
 };
 
 // Thrown for anything the user got wrong; main() prints the message and exits with kExitBadInput.

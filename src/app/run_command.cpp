@@ -1,39 +1,155 @@
 #include "command.h"
+#include "output_folder.h"
+#include "physltl/ltl/parser.h"
+#include "physltl/ltl/translate.h"
+#include "physltl/render/video.h"
+#include "plan_files.h"
+#include "plan_pictures.h"
+#include "reasoning.h"
 #include "scenario_args.h"
+#include "stop_signal.h"
 #include "world_summary.h"
 
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+#include <unistd.h>
+
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
 
 namespace physltl::app {
+namespace {
+
+struct RunArgs {
+  ScenarioArgs scenario;
+  bool render = false;
+  std::optional<std::uint64_t> seed;
+  std::optional<double> time_limit;
+  std::string out_dir = "out";
+  bool baseline = false;
+  bool quiet = false;
+};
+
+void write_json(const std::filesystem::path& file, const nlohmann::ordered_json& j) {
+  std::ofstream out(file);
+  out << j.dump(2) << "\n";
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+// Progress goes to stderr only when a person watches it.
+class ProgressLine {
+ public:
+  explicit ProgressLine(bool quiet) : enabled_(!quiet && isatty(STDERR_FILENO)) {}
+  void show(const std::string& text) {
+    if (enabled_) fmt::print(stderr, "\r{:<60}", text);
+  }
+  void done() {
+    if (enabled_) fmt::print(stderr, "\r{:<60}\r", "");
+  }
+
+ private:
+  bool enabled_;
+};
+
+int run(const RunArgs& args) {
+  scenario::World world = args.scenario.load();
+  if (args.seed) world.planner.seed = *args.seed;
+  if (args.time_limit) world.planner.time_limit = *args.time_limit;
+  const auto say = [&](const std::string& line) {
+    if (!args.quiet) std::cout << line << "\n";
+  };
+
+  const Reasoning reasoning = reason_about(world);
+  for (const auto& p : reasoning.feasibility.invalid) say("invalid    " + p.reason);
+  if (!reasoning.feasible()) {
+    std::cerr << "physltl-studio: the task is infeasible: " << reasoning.task.semantic->explanation << "\n";
+    return kExitNoPlan;
+  }
+  const auto guidance = args.baseline ? planning::Guidance::kBaseline : planning::Guidance::kKnowledge;
+  // The baseline plans for the formula as written (the paper's simple planner has no reasoning).
+  const ltl::Formula original = ltl::parse(world.task.formula);
+  const planning::TaskAutomaton as_written = planning::TaskAutomaton::make(ltl::translate(original), world);
+  const planning::TaskAutomaton task =
+      args.baseline ? as_written : planning::TaskAutomaton::make(*reasoning.task.dfa, world);
+  say(fmt::format("task       {} ({} automaton states, {} planner, seed {})",
+                  args.baseline ? world.task.formula : ltl::to_string(*reasoning.simplified_formula()),
+                  task.dfa.size(), guidance_name(guidance), world.planner.seed));
+
+  const auto decomposition = decomposition::Decomposition::build(world);
+  StopSignal stop;  // Ctrl-C and SIGTERM end the search; nothing is written then
+  planning::PlannerOptions options;
+  options.guidance = guidance;
+  options.seed = world.planner.seed;
+  options.time_limit = world.planner.time_limit;
+  options.stop = &stop.flag();
+  ProgressLine progress(args.quiet);
+  progress.show(fmt::format("planning (up to {:g} s) ...", world.planner.time_limit));
+  const planning::PlanResult result = planning::plan(world, task, reasoning.knowledge, decomposition, options);
+  progress.done();
+  const auto& stats = result.stats;
+  say(fmt::format("search     {}: {:.2f} s, {} nodes, {} propagations, {} physics steps", result.stop_reason,
+                  stats.planning_time_s, stats.tree_nodes, stats.propagations, stats.physics_steps));
+  if (stop.received()) {
+    std::cerr << "physltl-studio: interrupted; nothing written\n";
+    return kExitInterrupted;
+  }
+  if (!result.solved) {
+    std::cerr << fmt::format("physltl-studio: no plan found ({}); nothing written\n", result.stop_reason);
+    return kExitNoPlan;
+  }
+
+  const planning::Replay replay =
+      planning::replay(world, result.plan, as_written, reasoning.knowledge, planning::validity_mode(guidance));
+  if (!replay.validated()) {
+    // The search and the replay disagree: a bug, never a result.
+    std::cerr << "physltl-studio: BUG: the plan failed validation on replay: " << replay.failure
+              << "; nothing written\n";
+    return kExitNoPlan;
+  }
+  say(fmt::format("plan       {} controls, {:.1f} s of motion, {} pushes, validated by replay",
+                  result.plan.controls.size(), result.plan.total_steps() * world.planner.step_size, replay.pushes));
+
+  OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
+  const RunSummary summary{world, reasoning, guidance, result, &replay};
+  write_json(out.path() / "report.json", report_json(summary));
+  write_json(out.path() / "plan.json", plan_json(summary));
+  if (args.render) {
+    write_tree_picture(world, decomposition, result, &replay, out.path() / "tree.png");
+    const int automaton_states = static_cast<int>(as_written.dfa.size());
+    const int frames = write_plan_frames(world, reasoning, replay, automaton_states, out.path() / "frames",
+                                         [&](int done, int total) {
+      progress.show(fmt::format("frames {}/{}", done, total));
+    });
+    progress.show("encoding plan.mp4 ...");
+    const auto video = render::encode_video(out.path() / "frames", world.render.fps, out.path() / "plan.mp4");
+    progress.done();
+    say(fmt::format("render     {} frames, tree.png{}", frames, video.written ? ", plan.mp4" : ""));
+    if (!video.written) std::cerr << "physltl-studio: no video: " << video.message << "\n";
+  }
+  if (stop.received()) {
+    std::cerr << "physltl-studio: interrupted; nothing written\n";
+    return kExitInterrupted;
+  }
+  out.commit();
+  say("outputs    " + out.final_path().string() + "/");
+  return kExitOk;
+}
+
+}  // namespace
 
 CommandRunner add_run_command(CLI::App& app) {
-  struct Args {
-    ScenarioArgs scenario;
-    bool render = false;
-    std::optional<std::uint64_t> seed;
-    std::optional<double> time_limit;
-    std::string out_dir = "out";
-    bool baseline = false;
-    bool quiet = false;
-  };
-  auto args = std::make_shared<Args>();
+  auto args = std::make_shared<RunArgs>();
   args->scenario.add_to(app);
-  app.add_flag("--render", args->render, "Also write frames, tree.png and plan.mp4");
+  app.add_flag("--render", args->render, "Also write frames/, tree.png and plan.mp4");
   app.add_option("--seed", args->seed, "Seed of the planner's random generator (default: the scenario's)");
   app.add_option("--time-limit", args->time_limit, "Planning time limit in seconds (default: the scenario's)")
       ->check(CLI::PositiveNumber);
   app.add_option("--out", args->out_dir, "Folder for outputs; each scenario writes <out>/<name>/")->capture_default_str();
   app.add_flag("--baseline", args->baseline, "Plan without knowledge: the paper's simple physics-based LTL planner");
   app.add_flag("--quiet", args->quiet, "Print only errors");
-  return [args] {
-    scenario::World world = args->scenario.load();
-    if (args->seed) world.planner.seed = *args->seed;
-    if (args->time_limit) world.planner.time_limit = *args->time_limit;
-    if (!args->quiet) print_world_summary(std::cout, world);
-    return kExitOk;
-  };
+  return [args] { return run(*args); };
 }
 
 }  // namespace physltl::app

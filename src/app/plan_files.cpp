@@ -1,0 +1,103 @@
+#include "plan_files.h"
+
+#include "physltl/ltl/formula.h"
+
+namespace physltl::app {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json point(const scenario::Vec2& p) { return {p.x(), p.y()}; }
+
+// A body moved when the replay left it more than a centimetre or a degree from where it started.
+bool moved(const geometry::Pose2& from, const geometry::Pose2& to) {
+  return (to.position - from.position).norm() > 0.01 || std::abs(to.yaw - from.yaw) > 0.0175;
+}
+
+}  // namespace
+
+const char* guidance_name(planning::Guidance guidance) {
+  return guidance == planning::Guidance::kKnowledge ? "knowledge" : "baseline";
+}
+
+json report_json(const RunSummary& run) {
+  const auto& r = run.result;
+  const auto& reasoning = run.reasoning;
+  json invalid = json::array(), reasons = json::object();
+  for (const auto& p : reasoning.feasibility.invalid) {
+    invalid.push_back(p.name);
+    reasons[p.name] = p.reason;
+  }
+  const auto simplified = reasoning.simplified_formula();
+  json report = {
+      {"scenario", run.world.source_file},
+      {"planner", guidance_name(run.guidance)},
+      {"seed", run.world.planner.seed},
+      {"time_limit_s", run.world.planner.time_limit},
+      {"formula", run.world.task.formula},
+      {"simplified_formula", simplified ? json(ltl::to_string(*simplified)) : json(nullptr)},
+      {"invalid_propositions", invalid},
+      {"invalid_reasons", reasons},
+      {"automaton_states", reasoning.task.dfa ? json(reasoning.task.dfa->size()) : json(nullptr)},
+      {"solved", r.solved && run.replay != nullptr && run.replay->validated()},
+      {"validated", run.replay != nullptr && run.replay->validated()},
+      {"stop_reason", r.stop_reason},
+      {"planning_time_s", r.stats.planning_time_s},
+      {"tree_nodes", r.stats.tree_nodes},
+      {"propagations", r.stats.propagations},
+      {"physics_steps", r.stats.physics_steps},
+      {"invalid_steps", r.stats.invalid_steps},
+  };
+  if (run.replay != nullptr) {
+    report["validation"] = {
+        {"reproduces_plan", run.replay->reproduces_plan},
+        {"valid_states", run.replay->valid},
+        {"satisfies_formula", run.replay->accepted},
+        {"failure", run.replay->failure.empty() ? json(nullptr) : json(run.replay->failure)},
+    };
+    report["controls"] = r.plan.controls.size();
+    report["pushes"] = run.replay->pushes;
+    report["solution_duration_s"] = r.plan.total_steps() * run.world.planner.step_size;
+  }
+  return report;
+}
+
+json plan_json(const RunSummary& run) {
+  const auto& world = run.world;
+  const auto& replay = *run.replay;
+  const double dt = world.planner.step_size;
+  json controls = json::array();
+  for (const auto& c : run.result.plan.controls) {
+    controls.push_back({{"force", point(c.force)}, {"steps", c.steps}, {"duration_s", c.steps * dt}});
+  }
+  json states = json::array();
+  for (const auto& s : replay.states) {
+    json bodies = json::array();
+    for (const auto& pose : s.movable_poses) bodies.push_back({pose.position.x(), pose.position.y(), pose.yaw});
+    states.push_back({{"robot", point(s.robot_position)}, {"bodies", bodies}});
+  }
+  json moved_bodies = json::array();
+  for (size_t b = 0; b < world.movable_bodies.size(); ++b) {
+    if (moved(replay.states.front().movable_poses[b], replay.states.back().movable_poses[b])) {
+      moved_bodies.push_back(world.movable_bodies[b].name);
+    }
+  }
+  return {
+      {"scenario", world.source_file},
+      {"seed", world.planner.seed},
+      {"step_size_s", dt},
+      {"body_names", [&] {
+         json names = json::array();
+         for (const auto& b : world.movable_bodies) names.push_back(b.name);
+         return names;
+       }()},
+      {"controls", controls},
+      {"states", states},
+      {"region_trace", planning::region_names(world, replay.region_trace)},
+      {"automaton_trace", replay.automaton_trace},
+      {"pushing", replay.pushing},
+      {"moved_bodies", moved_bodies},
+  };
+}
+
+}  // namespace physltl::app

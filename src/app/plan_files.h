@@ -1,0 +1,30 @@
+#pragma once
+// plan.json and report.json: what a run found, for people and for scripts. Keys documented in
+// docs/outputs.md; the ones named there as stable stay.
+
+#include "physltl/planning/planner.h"
+#include "physltl/planning/replay.h"
+#include "physltl/scenario/world.h"
+#include "reasoning.h"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+
+namespace physltl::app {
+
+struct RunSummary {
+  const scenario::World& world;
+  const Reasoning& reasoning;
+  planning::Guidance guidance;
+  const planning::PlanResult& result;
+  const planning::Replay* replay;  // null when nothing was solved
+};
+
+nlohmann::ordered_json report_json(const RunSummary& run);
+nlohmann::ordered_json plan_json(const RunSummary& run);  // needs a replay
+
+// "knowledge" or "baseline", as reports and benchmarks name the planners.
+const char* guidance_name(planning::Guidance guidance);
+
+}  // namespace physltl::app

@@ -1,0 +1,33 @@
+#pragma once
+// --render: the replayed plan as frames and a video, and the search tree from above.
+
+#include "physltl/decomposition/decomposition.h"
+#include "physltl/planning/planner.h"
+#include "physltl/planning/replay.h"
+#include "physltl/render/scene.h"
+#include "reasoning.h"
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace physltl::app {
+
+// Called with (done, total) while frames are drawn, for progress on a terminal.
+using Progress = std::function<void(int, int)>;
+
+// frames/frame_00000.png ... at the World's fps, linearly interpolated between physics steps so boxes
+// glide as they were pushed. Returns the number of frames.
+// `automaton_states` is the size of the automaton the replay's trace runs on.
+int write_plan_frames(const scenario::World& world, const Reasoning& reasoning, const planning::Replay& replay,
+                      int automaton_states, const std::filesystem::path& folder, const Progress& progress);
+
+// tree.png: the decomposition faintly, the tree's edges coloured by automaton state, the path on top.
+void write_tree_picture(const scenario::World& world, const decomposition::Decomposition& decomposition,
+                        const planning::PlanResult& result, const planning::Replay* replay,
+                        const std::filesystem::path& file);
+
+// A colour per automaton state, from start (cool) to accepting (warm).
+render::Color automaton_state_color(int state, int states);
+
+}  // namespace physltl::app
