@@ -1,50 +1,15 @@
 #include "physltl/planning/planner.h"
 #include "physltl/planning/replay.h"
 
-#include "physltl/knowledge/feasibility.h"
-#include "physltl/ltl/parser.h"
-#include "physltl/ltl/simplify.h"
-#include "physltl/ltl/translate.h"
-#include "physltl/scenario/load.h"
+#include "test_problem.h"
 
 #include <gtest/gtest.h>
 
 namespace physltl::planning {
 namespace {
 
-// Everything a run prepares before planning, for one shipped scenario.
-struct Problem {
-  scenario::World world;
-  knowledge::AbstractKnowledge knowledge;
-  TaskAutomaton task;      // of the simplified formula: what the search aims at
-  TaskAutomaton original;  // of the formula as written: what replay checks
-  decomposition::Decomposition decomposition;
-
-  explicit Problem(const std::string& name)
-      : world(scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/scenarios/" + name)),
-        knowledge(knowledge::formulate(world)),
-        task(make_task(true)),
-        original(make_task(false)),
-        decomposition(decomposition::Decomposition::build(world)) {}
-
-  TaskAutomaton make_task(bool simplified) const {
-    const ltl::Formula phi = ltl::parse(world.task.formula);
-    if (!simplified) return TaskAutomaton::make(ltl::translate(phi), world);
-    const auto invalid = knowledge::evaluate_feasibility(knowledge).invalid_names();
-    return TaskAutomaton::make(ltl::translate(*ltl::simplify_semantically(phi, invalid).formula), world);
-  }
-
-  PlanResult solve(std::uint64_t seed, Guidance guidance = Guidance::kKnowledge) const {
-    PlannerOptions options;
-    options.seed = seed;
-    options.time_limit = 20;
-    options.guidance = guidance;
-    return plan(world, task, knowledge, decomposition, options);
-  }
-};
-
 TEST(Planner, SolvesOrderedAndTheReplayValidatesThePlan) {
-  const Problem p("ordered.lua");
+  const TestProblem p("ordered.lua");
   const PlanResult result = p.solve(3);
   ASSERT_TRUE(result.solved) << result.stop_reason;
   const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
@@ -54,7 +19,7 @@ TEST(Planner, SolvesOrderedAndTheReplayValidatesThePlan) {
 }
 
 TEST(Planner, SameSeedGivesTheSamePlanBitForBit) {
-  const Problem p("ordered.lua");
+  const TestProblem p("ordered.lua");
   const PlanResult a = p.solve(11), b = p.solve(11);
   ASSERT_TRUE(a.solved);
   ASSERT_EQ(a.plan.controls.size(), b.plan.controls.size());
@@ -67,14 +32,14 @@ TEST(Planner, SameSeedGivesTheSamePlanBitForBit) {
 }
 
 TEST(Planner, BaselineAlsoSolvesOrderedWithoutKnowledge) {
-  const Problem p("ordered.lua");
+  const TestProblem p("ordered.lua");
   const PlanResult result = p.solve(5, Guidance::kBaseline);
   ASSERT_TRUE(result.solved) << result.stop_reason;
   EXPECT_TRUE(replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kBaseline).validated());
 }
 
 TEST(Replay, ATamperedPlanIsRejected) {
-  const Problem p("ordered.lua");
+  const TestProblem p("ordered.lua");
   PlanResult result = p.solve(3);
   ASSERT_TRUE(result.solved);
   result.plan.controls[result.plan.controls.size() / 2].force.x() += 1.0;
@@ -85,7 +50,7 @@ TEST(Replay, ATamperedPlanIsRejected) {
 }
 
 TEST(Replay, AnEmptyPlanDoesNotSatisfyAVisitTask) {
-  const Problem p("ordered.lua");
+  const TestProblem p("ordered.lua");
   const Replay r = replay(p.world, Plan{}, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
   EXPECT_FALSE(r.accepted);
   EXPECT_EQ(r.failure, "the region trace does not satisfy the formula");
@@ -94,7 +59,7 @@ TEST(Replay, AnEmptyPlanDoesNotSatisfyAVisitTask) {
 }
 
 TEST(Planner, GivesUpAtItsTimeLimitOnAnImpossibleTask) {
-  Problem p("rooms.lua");
+  TestProblem p("rooms.lua");
   // B4 too heavy to push: p4 stays out of reach, though the decomposition (which ignores movable
   // bodies) still offers a lead through the doorway.
   for (auto& b : p.world.movable_bodies) {
@@ -112,7 +77,7 @@ TEST(Planner, GivesUpAtItsTimeLimitOnAnImpossibleTask) {
 }
 
 TEST(Planner, StopsWhenAskedTo) {
-  const Problem p("rooms.lua");
+  const TestProblem p("rooms.lua");
   std::atomic<bool> stop{true};
   PlannerOptions options;
   options.stop = &stop;

@@ -1,0 +1,48 @@
+#pragma once
+// The planning tests' fixture: everything a run prepares before planning, for one shipped scenario.
+
+#include "physltl/knowledge/feasibility.h"
+#include "physltl/ltl/parser.h"
+#include "physltl/ltl/simplify.h"
+#include "physltl/ltl/translate.h"
+#include "physltl/planning/planner.h"
+#include "physltl/planning/race.h"
+#include "physltl/scenario/load.h"
+
+#include <string>
+
+namespace physltl::planning {
+
+struct TestProblem {
+  scenario::World world;
+  knowledge::AbstractKnowledge knowledge;
+  TaskAutomaton task;      // of the simplified formula: what the search aims at
+  TaskAutomaton original;  // of the formula as written: what replay checks
+  decomposition::Decomposition decomposition;
+
+  explicit TestProblem(const std::string& name)
+      : world(scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/scenarios/" + name)),
+        knowledge(knowledge::formulate(world)),
+        task(make_task(true)),
+        original(make_task(false)),
+        decomposition(decomposition::Decomposition::build(world)) {}
+
+  TaskAutomaton make_task(bool simplified) const {
+    const ltl::Formula phi = ltl::parse(world.task.formula);
+    if (!simplified) return TaskAutomaton::make(ltl::translate(phi), world);
+    const auto invalid = knowledge::evaluate_feasibility(knowledge).invalid_names();
+    return TaskAutomaton::make(ltl::translate(*ltl::simplify_semantically(phi, invalid).formula), world);
+  }
+
+  Problem problem() const { return {world, task, original, knowledge, decomposition}; }
+
+  PlanResult solve(std::uint64_t seed, Guidance guidance = Guidance::kKnowledge) const {
+    PlannerOptions options;
+    options.seed = seed;
+    options.time_limit = 20;
+    options.guidance = guidance;
+    return plan(world, task, knowledge, decomposition, options);
+  }
+};
+
+}  // namespace physltl::planning
