@@ -5,46 +5,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <sys/wait.h>
-
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
+#include "command_runner.h"
 
 namespace {
 
-namespace fs = std::filesystem;
-
-struct Result {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-Result run(const std::string& args) {
-  const fs::path dir = fs::path(PHYSLTL_TEST_OUTPUT_DIR) / "cli" /
-                       testing::UnitTest::GetInstance()->current_test_info()->name();
-  fs::create_directories(dir);
-  const std::string command = std::string(PHYSLTL_BINARY) + " " + args + " >" + (dir / "stdout").string() + " 2>" +
-                              (dir / "stderr").string();
-  const int status = std::system(command.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stdout"), slurp(dir / "stderr")};
-}
-
-// An empty --out folder of the current test's own.
-fs::path fresh_out_dir() {
-  const fs::path out = fs::path(PHYSLTL_TEST_OUTPUT_DIR) / "cli" /
-                       testing::UnitTest::GetInstance()->current_test_info()->name() / "out";
-  fs::remove_all(out);
-  return out;
-}
+using namespace physltl::testing_support;
 
 const nlohmann::json& entry_named(const nlohmann::json& list, const std::string& name) {
   for (const auto& e : list) {

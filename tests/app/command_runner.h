@@ -1,0 +1,53 @@
+#pragma once
+// Runs the physltl-studio binary as a user would, capturing its exit code and output.
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace physltl::testing_support {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+inline std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A folder of the current test's own under the test output directory.
+inline fs::path test_dir(const std::string& leaf = "") {
+  const fs::path dir = fs::path(PHYSLTL_TEST_OUTPUT_DIR) / "cli" /
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name() / leaf;
+  fs::create_directories(dir);
+  return dir;
+}
+
+// An empty --out folder of the current test's own.
+inline fs::path fresh_out_dir() {
+  const fs::path out = test_dir() / "out";
+  fs::remove_all(out);
+  return out;
+}
+
+inline Result run(const std::string& args) {
+  const fs::path dir = test_dir();
+  const std::string command =
+      std::string(PHYSLTL_BINARY) + " " + args + " >" + (dir / "stdout").string() + " 2>" + (dir / "stderr").string();
+  const int status = std::system(command.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stdout"), slurp(dir / "stderr")};
+}
+
+}  // namespace physltl::testing_support

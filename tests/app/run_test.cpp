@@ -1,0 +1,129 @@
+// The main job, `physltl-studio SCENARIO.lua`, as a user runs it: outputs, determinism, and that a run
+// which does not succeed leaves earlier outputs alone.
+
+#include "command_runner.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <thread>
+
+namespace {
+
+using namespace physltl::testing_support;
+
+const std::string kSource = PHYSLTL_SOURCE_DIR;
+
+// ordered.lua with a small, short render, written under `dir` with the file name `name`.
+fs::path small_ordered(const fs::path& dir, const std::string& name = "ordered.lua") {
+  std::string text = slurp(kSource + "/scenarios/ordered.lua");
+  const auto at = text.find("render {");
+  text = text.substr(0, at) + "render { width = 160, height = 120, fps = 5 }\n";
+  fs::create_directories(dir);
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+TEST(Run, SolvesOrderedAndWritesAValidatedReportAndPlan) {
+  const fs::path out = fresh_out_dir();
+  const Result r = run(kSource + "/scenarios/ordered.lua --seed 3 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto report = nlohmann::json::parse(slurp(out / "ordered" / "report.json"));
+  EXPECT_EQ(report["solved"], true);
+  EXPECT_EQ(report["validated"], true);
+  EXPECT_EQ(report["seed"], 3);
+  EXPECT_EQ(report["formula"], "F(p1 & F(p3 & F(p2 & F p4)))");
+  EXPECT_EQ(report["invalid_propositions"], nlohmann::json::array());
+  EXPECT_GT(report["planning_time_s"].get<double>(), 0.0);
+  const auto plan = nlohmann::json::parse(slurp(out / "ordered" / "plan.json"));
+  const auto& trace = plan["region_trace"];
+  EXPECT_EQ(trace.front(), "p0");
+  EXPECT_EQ(trace.size(), plan["states"].size());
+  // Visits in the task's order: the first p1 comes before the first p3, which comes before the first p4.
+  auto first = [&](const std::string& region) {
+    for (size_t i = 0; i < trace.size(); ++i) {
+      if (trace[i] == region) return i;
+    }
+    return trace.size();
+  };
+  EXPECT_LT(first("p1"), first("p3"));
+  EXPECT_LT(first("p3"), first("p4"));
+  EXPECT_LT(first("p4"), trace.size());
+  EXPECT_FALSE(fs::exists(out / "ordered" / "frames"));  // no --render
+}
+
+TEST(Run, SameSeedGivesByteIdenticalPlanAndFrames) {
+  const fs::path scenario = small_ordered(test_dir("scenario"));
+  const fs::path a = test_dir("a"), b = test_dir("b");
+  fs::remove_all(a);
+  fs::remove_all(b);
+  ASSERT_EQ(run(scenario.string() + " --render --seed 5 --quiet --out " + a.string()).exit_code, 0);
+  ASSERT_EQ(run(scenario.string() + " --render --seed 5 --quiet --out " + b.string()).exit_code, 0);
+  EXPECT_EQ(slurp(a / "ordered" / "plan.json"), slurp(b / "ordered" / "plan.json"));
+  int frames = 0;
+  for (const auto& f : fs::directory_iterator(a / "ordered" / "frames")) {
+    ++frames;
+    EXPECT_EQ(slurp(f.path()), slurp(b / "ordered" / "frames" / f.path().filename())) << f.path().filename();
+  }
+  EXPECT_GT(frames, 10);
+  EXPECT_TRUE(fs::exists(a / "ordered" / "tree.png"));
+}
+
+TEST(Run, AnInfeasibleTaskExitsOneAndLeavesThePreviousOutputsAlone) {
+  const fs::path out = fresh_out_dir();
+  const fs::path good = small_ordered(test_dir("good"));
+  ASSERT_EQ(run(good.string() + " --quiet --out " + out.string()).exit_code, 0);
+  const std::string report = slurp(out / "ordered" / "report.json");
+
+  // Same scenario name, but p4 sealed off by fixed walls: infeasible.
+  std::string text = slurp(good);
+  text += "P.block { name = 'seal_s', min = { 1.4, 1.4 }, max = { 2.6, 1.5 } }\n"
+          "P.block { name = 'seal_n', min = { 1.4, 2.5 }, max = { 2.6, 2.6 } }\n"
+          "P.block { name = 'seal_w', min = { 1.4, 1.5 }, max = { 1.5, 2.5 } }\n"
+          "P.block { name = 'seal_e', min = { 2.5, 1.5 }, max = { 2.6, 2.5 } }\n";
+  const fs::path sealed = test_dir("sealed") / "ordered.lua";
+  std::ofstream(sealed) << text;
+  const Result r = run(sealed.string() + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("infeasible"), std::string::npos) << r.err;
+  EXPECT_EQ(slurp(out / "ordered" / "report.json"), report);
+  for (const auto& entry : fs::directory_iterator(out)) EXPECT_EQ(entry.path().filename(), "ordered");
+}
+
+TEST(Run, CtrlCStopsPlanningPromptlyAndWritesNothing) {
+  // rooms.lua with a task that goes around the rooms five times: far more than 0.7 s of search.
+  std::string text = slurp(kSource + "/scenarios/rooms.lua");
+  const auto at = text.find("task { formula =");
+  text.erase(at, text.find('\n', at) - at);
+  std::string formula = "p4", close;
+  for (int lap = 0; lap < 5; ++lap) formula = "p1 & F(p2 & F(p4 & F(" + formula, close += ")))";
+  text += "\ntask { formula = 'F(" + formula + close + ")' }\n";
+  const fs::path scenario = test_dir("scenario") / "laps.lua";
+  std::ofstream(scenario) << text;
+  const fs::path out = fresh_out_dir();
+
+  const std::string binary = PHYSLTL_BINARY;
+  const std::string scenario_arg = scenario.string(), out_arg = out.string();
+  std::vector<char*> argv = {const_cast<char*>(binary.c_str()), const_cast<char*>(scenario_arg.c_str()),
+                             const_cast<char*>("--time-limit"), const_cast<char*>("60"),
+                             const_cast<char*>("--quiet"), const_cast<char*>("--out"),
+                             const_cast<char*>(out_arg.c_str()), nullptr};
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, binary.c_str(), nullptr, nullptr, argv.data(), environ), 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(700));
+  const auto sent = std::chrono::steady_clock::now();
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  EXPECT_LT(std::chrono::steady_clock::now() - sent, std::chrono::seconds(2));
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_FALSE(fs::exists(out / "laps"));
+}
+
+}  // namespace
