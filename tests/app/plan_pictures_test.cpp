@@ -1,0 +1,99 @@
+// Pictures of a fixed plan against golden images: a frame while the robot pushes a box, and the tree.
+
+#include "plan_pictures.h"
+
+#include "golden_image.h"
+#include "physltl/ltl/parser.h"
+#include "physltl/ltl/translate.h"
+#include "physltl/render/frame_writer.h"
+#include "physltl/render/png.h"
+#include "physltl/scenario/load.h"
+#include "reasoning.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace physltl::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+// ordered.lua planned with seed 3, pictured at 320 x 240 and 10 frames per second.
+class FixedPlan : public testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    world_ = new scenario::World(scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/scenarios/ordered.lua"));
+    world_->render.width = 320;
+    world_->render.height = 240;
+    world_->render.fps = 10;
+    reasoning_ = new Reasoning(reason_about(*world_));
+    decomposition_ = new decomposition::Decomposition(decomposition::Decomposition::build(*world_));
+    const auto task = planning::TaskAutomaton::make(*reasoning_->task.dfa, *world_);
+    as_written_ = new planning::TaskAutomaton(
+        planning::TaskAutomaton::make(ltl::translate(ltl::parse(world_->task.formula)), *world_));
+    planning::PlannerOptions options;
+    options.seed = 3;
+    result_ = new planning::PlanResult(planning::plan(*world_, task, reasoning_->knowledge, *decomposition_, options));
+    replay_ = new planning::Replay(planning::replay(*world_, result_->plan, *as_written_, reasoning_->knowledge,
+                                                    knowledge::ValidityMode::kKnowledge));
+  }
+
+  static void TearDownTestSuite() {
+    delete replay_;
+    delete result_;
+    delete as_written_;
+    delete decomposition_;
+    delete reasoning_;
+    delete world_;
+  }
+
+  static fs::path output(const std::string& leaf) {
+    const fs::path dir = fs::path(PHYSLTL_TEST_OUTPUT_DIR) / "plan_pictures" / leaf;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+  }
+
+  static scenario::World* world_;
+  static Reasoning* reasoning_;
+  static decomposition::Decomposition* decomposition_;
+  static planning::TaskAutomaton* as_written_;
+  static planning::PlanResult* result_;
+  static planning::Replay* replay_;
+};
+
+scenario::World* FixedPlan::world_;
+Reasoning* FixedPlan::reasoning_;
+decomposition::Decomposition* FixedPlan::decomposition_;
+planning::TaskAutomaton* FixedPlan::as_written_;
+planning::PlanResult* FixedPlan::result_;
+planning::Replay* FixedPlan::replay_;
+
+TEST_F(FixedPlan, FramesCoverThePlanAtTheScenariosFrameRate) {
+  ASSERT_TRUE(replay_->validated()) << replay_->failure;
+  const fs::path frames = output("frames");
+  const int written = write_plan_frames(*world_, *reasoning_, *replay_, static_cast<int>(as_written_->dfa.size()),
+                                        frames, nullptr);
+  const double seconds = world_->planner.step_size * static_cast<double>(replay_->states.size() - 1);
+  EXPECT_EQ(written, static_cast<int>(std::floor(seconds * world_->render.fps)) + 1);
+  EXPECT_TRUE(fs::exists(render::FrameWriter::frame_path(frames, written - 1)));
+  EXPECT_FALSE(fs::exists(render::FrameWriter::frame_path(frames, written)));
+
+  // Half a second into the first push: the robot against a box that has started to move.
+  const auto first_push = std::find(replay_->pushing.begin(), replay_->pushing.end(), true) - replay_->pushing.begin();
+  const double push_time = world_->planner.step_size * static_cast<double>(first_push) + 0.5;
+  const int frame = static_cast<int>(std::round(push_time * world_->render.fps));
+  EXPECT_TRUE(render::matches_golden(render::read_png(render::FrameWriter::frame_path(frames, frame)),
+                                     "ordered_plan_mid_push"));
+}
+
+TEST_F(FixedPlan, TreePictureShowsTheSearchAndThePath) {
+  const fs::path file = output("tree") / "tree.png";
+  write_tree_picture(*world_, *decomposition_, *result_, replay_, file);
+  EXPECT_TRUE(render::matches_golden(render::read_png(file), "ordered_plan_tree"));
+}
+
+}  // namespace
+}  // namespace physltl::app
