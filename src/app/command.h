@@ -28,5 +28,6 @@ using CommandRunner = std::function<int()>;
 CommandRunner add_run_command(CLI::App& app);  // the main job: plan (and render) a scenario
 CommandRunner add_check_command(CLI::App& app);
 CommandRunner add_ltl_command(CLI::App& app);
+CommandRunner add_bench_command(CLI::App& app);
 
 }  // namespace physltl::app

@@ -51,6 +51,9 @@ int main(int argc, char** argv) {
   subcommands.emplace("ltl", make_command("physltl-studio ltl",
                                           "Parse a co-safe LTL formula, simplify it, translate it to a minimal DFA.",
                                           add_ltl_command));
+  subcommands.emplace("bench", make_command("physltl-studio bench",
+                                            "Benchmark the planners on a range of seeds: table, bench.json, OMPL log.",
+                                            add_bench_command));
   if (argc > 1) {
     auto it = subcommands.find(argv[1]);
     if (it != subcommands.end()) return parse_and_run(it->second, argc - 1, argv + 1);

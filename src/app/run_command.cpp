@@ -1,10 +1,10 @@
 #include "command.h"
 #include "output_folder.h"
-#include "physltl/ltl/parser.h"
-#include "physltl/ltl/translate.h"
+#include "physltl/ltl/formula.h"
 #include "physltl/render/video.h"
 #include "plan_files.h"
 #include "plan_pictures.h"
+#include "planning_job.h"
 #include "reasoning.h"
 #include "scenario_args.h"
 #include "stop_signal.h"
@@ -30,6 +30,7 @@ struct RunArgs {
   std::string out_dir = "out";
   bool baseline = false;
   bool quiet = false;
+  int threads = 1;
 };
 
 void write_json(const std::filesystem::path& file, const nlohmann::ordered_json& j) {
@@ -68,29 +69,27 @@ int run(const RunArgs& args) {
     return kExitNoPlan;
   }
   const auto guidance = args.baseline ? planning::Guidance::kBaseline : planning::Guidance::kKnowledge;
-  // The baseline plans for the formula as written (the paper's simple planner has no reasoning).
-  const ltl::Formula original = ltl::parse(world.task.formula);
-  const planning::TaskAutomaton as_written = planning::TaskAutomaton::make(ltl::translate(original), world);
-  const planning::TaskAutomaton task =
-      args.baseline ? as_written : planning::TaskAutomaton::make(*reasoning.task.dfa, world);
+  const PreparedRun prepared(world, reasoning);
+  const planning::TaskAutomaton& task = prepared.search_task(guidance);
   say(fmt::format("task       {} ({} automaton states, {} planner, seed {})",
                   args.baseline ? world.task.formula : ltl::to_string(*reasoning.simplified_formula()),
                   task.dfa.size(), guidance_name(guidance), world.planner.seed));
 
-  const auto decomposition = decomposition::Decomposition::build(world);
   StopSignal stop;  // Ctrl-C and SIGTERM end the search; nothing is written then
-  planning::PlannerOptions options;
-  options.guidance = guidance;
-  options.seed = world.planner.seed;
-  options.time_limit = world.planner.time_limit;
-  options.stop = &stop.flag();
   ProgressLine progress(args.quiet);
   progress.show(fmt::format("planning (up to {:g} s) ...", world.planner.time_limit));
-  const planning::PlanResult result = planning::plan(world, task, reasoning.knowledge, decomposition, options);
+  const planning::RaceResult race = solve(prepared, {.guidance = guidance,
+                                                     .seed = world.planner.seed,
+                                                     .time_limit = world.planner.time_limit,
+                                                     .threads = args.threads,
+                                                     .stop = &stop.flag()});
   progress.done();
+  const planning::PlanResult& result = race.result;
   const auto& stats = result.stats;
-  say(fmt::format("search     {}: {:.2f} s, {} nodes, {} propagations, {} physics steps", result.stop_reason,
-                  stats.planning_time_s, stats.tree_nodes, stats.propagations, stats.physics_steps));
+  say(fmt::format("search     {}: {:.2f} s, {} nodes, {} propagations, {} physics steps{}", result.stop_reason,
+                  stats.planning_time_s, stats.tree_nodes, stats.propagations, stats.physics_steps,
+                  args.threads > 1 && race.winner >= 0 ? fmt::format(" (thread {} of {})", race.winner, args.threads)
+                                                       : ""));
   if (stop.received()) {
     std::cerr << "physltl-studio: interrupted; nothing written\n";
     return kExitInterrupted;
@@ -100,8 +99,7 @@ int run(const RunArgs& args) {
     return kExitNoPlan;
   }
 
-  const planning::Replay replay =
-      planning::replay(world, result.plan, as_written, reasoning.knowledge, planning::validity_mode(guidance));
+  const planning::Replay& replay = *race.replay;
   if (!replay.validated()) {
     // The search and the replay disagree: a bug, never a result.
     std::cerr << "physltl-studio: BUG: the plan failed validation on replay: " << replay.failure
@@ -116,8 +114,8 @@ int run(const RunArgs& args) {
   write_json(out.path() / "report.json", report_json(summary));
   write_json(out.path() / "plan.json", plan_json(summary));
   if (args.render) {
-    write_tree_picture(world, decomposition, result, &replay, out.path() / "tree.png");
-    const int automaton_states = static_cast<int>(as_written.dfa.size());
+    write_tree_picture(world, prepared.decomposition(), result, &replay, out.path() / "tree.png");
+    const int automaton_states = static_cast<int>(prepared.as_written().dfa.size());
     const int frames = write_plan_frames(world, reasoning, replay, automaton_states, out.path() / "frames",
                                          [&](int done, int total) {
       progress.show(fmt::format("frames {}/{}", done, total));
@@ -149,6 +147,9 @@ CommandRunner add_run_command(CLI::App& app) {
   app.add_option("--out", args->out_dir, "Folder for outputs; each scenario writes <out>/<name>/")->capture_default_str();
   app.add_flag("--baseline", args->baseline, "Plan without knowledge: the paper's simple physics-based LTL planner");
   app.add_flag("--quiet", args->quiet, "Print only errors");
+  app.add_option("--threads", args->threads, "Planners racing on the problem; the first validated plan wins")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
   return [args] { return run(*args); };
 }
 

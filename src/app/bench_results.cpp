@@ -1,0 +1,174 @@
+#include "bench_results.h"
+
+#include "plan_files.h"
+#include "statistics.h"
+
+#include <fmt/format.h>
+
+namespace physltl::app {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+const PlannerRuns* find_planner(const BenchResults& results, planning::Guidance guidance) {
+  for (const auto& p : results.planners) {
+    if (p.guidance == guidance) return &p;
+  }
+  return nullptr;
+}
+
+std::string seeds_text(const BenchResults& r) {
+  return fmt::format("seeds {}..{}", r.first_seed, r.first_seed + static_cast<std::uint64_t>(r.runs) - 1);
+}
+
+std::map<std::string, std::string> ompl_run(const BenchRun& run, double counted_time_s) {
+  const OmplStatus status = run.solved                     ? OmplStatus::kExactSolution
+                            : run.stop_reason == "time limit" ? OmplStatus::kTimeout
+                                                              : OmplStatus::kAbort;
+  std::map<std::string, std::string> values = {
+      {"seed INTEGER", std::to_string(run.seed)},
+      {"time REAL", fmt::format("{}", counted_time_s)},
+      {"solved BOOLEAN", run.solved ? "1" : "0"},
+      {"correct solution BOOLEAN", run.solved ? "1" : "0"},
+      {"status ENUM", std::to_string(static_cast<int>(status))},
+      {"graph states INTEGER", std::to_string(run.tree_nodes)},
+      {"propagations INTEGER", std::to_string(run.propagations)},
+      {"physics steps INTEGER", std::to_string(run.physics_steps)},
+  };
+  if (run.solved) {
+    values["solution segments INTEGER"] = std::to_string(run.controls);
+    values["pushes INTEGER"] = std::to_string(run.pushes);
+    values["solution duration REAL"] = fmt::format("{}", run.solution_duration_s);
+  }
+  return values;
+}
+
+}  // namespace
+
+PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
+  PlannerSummary s;
+  std::vector<double> nodes, pushes, durations;
+  double wall = 0.0, propagations = 0.0;
+  for (const auto& run : planner.runs) {
+    s.solved += run.solved;
+    s.times_s.push_back(run.solved ? run.wall_s : time_limit_s);
+    nodes.push_back(static_cast<double>(run.tree_nodes));
+    wall += run.wall_s;
+    propagations += static_cast<double>(run.propagations);
+    if (run.solved) {
+      pushes.push_back(run.pushes);
+      durations.push_back(run.solution_duration_s);
+    }
+  }
+  s.median_s = statistics::median(s.times_s);
+  s.mean_s = statistics::mean(s.times_s);
+  s.p90_s = statistics::quantile(s.times_s, 0.9);
+  s.max_s = statistics::maximum(s.times_s);
+  s.tree_nodes_median = statistics::median(nodes);
+  s.propagations_per_s = wall > 0.0 ? propagations / wall : 0.0;
+  s.pushes_median = statistics::median(pushes);
+  s.solution_duration_median_s = statistics::median(durations);
+  return s;
+}
+
+std::optional<double> ratio_of_medians(const BenchResults& results) {
+  const PlannerRuns* knowledge = find_planner(results, planning::Guidance::kKnowledge);
+  const PlannerRuns* baseline = find_planner(results, planning::Guidance::kBaseline);
+  if (knowledge == nullptr || baseline == nullptr) return std::nullopt;
+  const double k = summarize(*knowledge, results.time_limit_s).median_s;
+  if (k <= 0.0) return std::nullopt;
+  return summarize(*baseline, results.time_limit_s).median_s / k;
+}
+
+std::string bench_table(const BenchResults& r) {
+  std::string text = fmt::format("{}: {} runs ({}), time limit {:g} s, {} thread{}\n", r.scenario, r.runs,
+                                 seeds_text(r), r.time_limit_s, r.threads, r.threads == 1 ? "" : "s");
+  text += fmt::format("{:<10} {:>7} {:>9} {:>8} {:>8} {:>8} {:>7} {:>8} {:>7} {:>10}\n", "planner", "solved",
+                      "median_s", "mean_s", "p90_s", "max_s", "nodes", "prop/s", "pushes", "duration_s");
+  for (const auto& p : r.planners) {
+    const PlannerSummary s = summarize(p, r.time_limit_s);
+    text += fmt::format("{:<10} {:>7} {:>9.3f} {:>8.3f} {:>8.3f} {:>8.3f} {:>7.0f} {:>8.0f} {:>7.1f} {:>10.2f}\n",
+                        guidance_name(p.guidance), fmt::format("{}/{}", s.solved, p.runs.size()), s.median_s,
+                        s.mean_s, s.p90_s, s.max_s, s.tree_nodes_median, s.propagations_per_s, s.pushes_median,
+                        s.solution_duration_median_s);
+  }
+  if (const auto ratio = ratio_of_medians(r)) {
+    text += fmt::format("ratio of medians (baseline / knowledge): {:.2f}\n", *ratio);
+  }
+  text += "times count unsolved runs at the time limit; pushes and duration are medians over solved runs\n";
+  return text;
+}
+
+json bench_json(const BenchResults& r) {
+  json planners = json::array();
+  for (const auto& p : r.planners) {
+    const PlannerSummary s = summarize(p, r.time_limit_s);
+    json runs = json::array();
+    for (const auto& run : p.runs) {
+      json entry = {{"seed", run.seed},
+                    {"solved", run.solved},
+                    {"stop_reason", run.stop_reason},
+                    {"wall_s", run.wall_s},
+                    {"tree_nodes", run.tree_nodes},
+                    {"propagations", run.propagations},
+                    {"physics_steps", run.physics_steps}};
+      if (run.solved) {
+        entry["controls"] = run.controls;
+        entry["pushes"] = run.pushes;
+        entry["solution_duration_s"] = run.solution_duration_s;
+      }
+      runs.push_back(std::move(entry));
+    }
+    planners.push_back({{"name", guidance_name(p.guidance)},
+                        {"solved", s.solved},
+                        {"median_s", s.median_s},
+                        {"mean_s", s.mean_s},
+                        {"p90_s", s.p90_s},
+                        {"max_s", s.max_s},
+                        {"times_s", s.times_s},
+                        {"tree_nodes_median", s.tree_nodes_median},
+                        {"propagations_per_s", s.propagations_per_s},
+                        {"pushes_median", s.pushes_median},
+                        {"solution_duration_median_s", s.solution_duration_median_s},
+                        {"per_run", std::move(runs)}});
+  }
+  const auto ratio = ratio_of_medians(r);
+  return {{"scenario", r.scenario},
+          {"scenario_file", r.scenario_file},
+          {"settings", r.settings},
+          {"runs", r.runs},
+          {"first_seed", r.first_seed},
+          {"time_limit_s", r.time_limit_s},
+          {"threads", r.threads},
+          {"started_at", r.started_at},
+          {"total_duration_s", r.total_duration_s},
+          {"planners", std::move(planners)},
+          {"ratio_of_medians", ratio ? json(*ratio) : json(nullptr)}};
+}
+
+OmplExperiment ompl_experiment(const BenchResults& r, const std::string& host, const std::string& cpu_info) {
+  OmplExperiment e;
+  e.name = r.scenario;
+  e.parameters = {{"threads INTEGER", std::to_string(r.threads)}};
+  e.host = host;
+  e.start_time = r.started_at;
+  std::string command = "physltl-studio bench " + r.scenario_file;
+  for (const auto& setting : r.settings) command += " --set " + setting;
+  e.setup = fmt::format("{}\n{}, unsolved runs timed at the limit\n", command, seeds_text(r));
+  e.cpu_info = cpu_info;
+  e.seed = r.first_seed;
+  e.time_limit_s = r.time_limit_s;
+  e.run_count = static_cast<unsigned>(r.runs);
+  e.total_duration_s = r.total_duration_s;
+  for (const auto& p : r.planners) {
+    OmplPlannerResults planner;
+    planner.name = std::string("physltl_") + guidance_name(p.guidance);
+    planner.common = {{"guidance", guidance_name(p.guidance)}};
+    const PlannerSummary s = summarize(p, r.time_limit_s);
+    for (size_t i = 0; i < p.runs.size(); ++i) planner.runs.push_back(ompl_run(p.runs[i], s.times_s[i]));
+    e.planners.push_back(std::move(planner));
+  }
+  return e;
+}
+
+}  // namespace physltl::app

@@ -1,0 +1,68 @@
+#pragma once
+// What `bench` measured: one record per planner and seed, their summary, and the three ways it is shown
+// (the table on stdout, bench.json, the OMPL benchmark log). Keys documented in docs/benchmarks.md.
+
+#include "ompl_log.h"
+#include "physltl/planning/planner.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace physltl::app {
+
+struct BenchRun {
+  std::uint64_t seed = 0;
+  bool solved = false;         // a plan that replay validated
+  std::string stop_reason;
+  double wall_s = 0.0;         // planning and validating, as measured
+  long long tree_nodes = 0;    // of the winning (or first) planner's tree
+  long long propagations = 0;  // of all racing planners
+  long long physics_steps = 0;
+  int controls = 0;            // solved runs only
+  int pushes = 0;
+  double solution_duration_s = 0.0;
+};
+
+struct PlannerRuns {
+  planning::Guidance guidance;
+  std::vector<BenchRun> runs;  // one per seed, in seed order
+};
+
+struct BenchResults {
+  std::string scenario;       // the World's name
+  std::string scenario_file;
+  std::vector<std::string> settings;  // --set key=value
+  std::uint64_t first_seed = 1;
+  int runs = 0;
+  double time_limit_s = 0.0;
+  int threads = 1;
+  std::string started_at;      // local "YYYY-MM-DD HH:MM:SS"
+  double total_duration_s = 0.0;
+  std::vector<PlannerRuns> planners;  // knowledge first, then the baseline with --compare
+};
+
+struct PlannerSummary {
+  int solved = 0;
+  std::vector<double> times_s;  // per seed; unsolved runs count at the time limit
+  double median_s = 0.0, mean_s = 0.0, p90_s = 0.0, max_s = 0.0;
+  double tree_nodes_median = 0.0;
+  double propagations_per_s = 0.0;  // all propagations over all wall time
+  double pushes_median = 0.0;       // over solved runs
+  double solution_duration_median_s = 0.0;  // over solved runs
+};
+
+PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s);
+
+// The baseline's median time over the knowledge planner's, or null without a baseline.
+std::optional<double> ratio_of_medians(const BenchResults& results);
+
+std::string bench_table(const BenchResults& results);
+nlohmann::ordered_json bench_json(const BenchResults& results);
+// host and cpu_info describe the machine; they are the caller's to find out.
+OmplExperiment ompl_experiment(const BenchResults& results, const std::string& host, const std::string& cpu_info);
+
+}  // namespace physltl::app

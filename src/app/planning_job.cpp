@@ -1,0 +1,30 @@
+#include "planning_job.h"
+
+#include "physltl/ltl/parser.h"
+#include "physltl/ltl/translate.h"
+
+namespace physltl::app {
+
+PreparedRun::PreparedRun(const scenario::World& world, const Reasoning& reasoning)
+    : world_(world),
+      reasoning_(reasoning),
+      simplified_(planning::TaskAutomaton::make(*reasoning.task.dfa, world)),
+      as_written_(planning::TaskAutomaton::make(ltl::translate(ltl::parse(world.task.formula)), world)),
+      decomposition_(decomposition::Decomposition::build(world)) {}
+
+const planning::TaskAutomaton& PreparedRun::search_task(planning::Guidance guidance) const {
+  return guidance == planning::Guidance::kBaseline ? as_written_ : simplified_;
+}
+
+planning::RaceResult solve(const PreparedRun& run, const SolveOptions& options) {
+  planning::PlannerOptions planner;
+  planner.guidance = options.guidance;
+  planner.seed = options.seed;
+  planner.time_limit = options.time_limit;
+  planner.stop = options.stop;
+  const planning::Problem problem{run.world(), run.search_task(options.guidance), run.as_written(),
+                                  run.reasoning().knowledge, run.decomposition()};
+  return planning::race(problem, planner, options.threads);
+}
+
+}  // namespace physltl::app

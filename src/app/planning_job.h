@@ -1,0 +1,49 @@
+#pragma once
+// What the main job and `bench` share: a World and its Reasoning turned into the planner's inputs once,
+// then solved any number of times (per planner, seed and thread count). Only a plan that replay validated
+// counts as solved.
+
+#include "physltl/decomposition/decomposition.h"
+#include "physltl/planning/race.h"
+#include "physltl/planning/task.h"
+#include "reasoning.h"
+
+#include <atomic>
+#include <cstdint>
+
+namespace physltl::app {
+
+class PreparedRun {
+ public:
+  // Expects a feasible reasoning (reasoning.feasible()); both must outlive this object.
+  PreparedRun(const scenario::World& world, const Reasoning& reasoning);
+
+  const scenario::World& world() const { return world_; }
+  const Reasoning& reasoning() const { return reasoning_; }
+  // The automaton the search aims at: the simplified formula's for the knowledge planner, the formula as
+  // written for the baseline (the paper's simple planner has no reasoning).
+  const planning::TaskAutomaton& search_task(planning::Guidance guidance) const;
+  // The formula as written, which every replay checks.
+  const planning::TaskAutomaton& as_written() const { return as_written_; }
+  const decomposition::Decomposition& decomposition() const { return decomposition_; }
+
+ private:
+  const scenario::World& world_;
+  const Reasoning& reasoning_;
+  planning::TaskAutomaton simplified_;
+  planning::TaskAutomaton as_written_;
+  decomposition::Decomposition decomposition_;
+};
+
+struct SolveOptions {
+  planning::Guidance guidance = planning::Guidance::kKnowledge;
+  std::uint64_t seed = 1;
+  double time_limit = 60.0;
+  int threads = 1;
+  const std::atomic<bool>* stop = nullptr;  // Ctrl-C
+};
+
+// Plans with options.threads racing planners and validates the winning plan by replay.
+planning::RaceResult solve(const PreparedRun& run, const SolveOptions& options);
+
+}  // namespace physltl::app

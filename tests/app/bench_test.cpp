@@ -1,0 +1,53 @@
+// `physltl-studio bench` as a user runs it.
+
+#include "command_runner.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace {
+
+using namespace physltl::testing_support;
+
+const std::string kSource = PHYSLTL_SOURCE_DIR;
+
+TEST(Bench, CompareOnOrderedWritesBenchJsonWithBothPlannersOnTheSameSeeds) {
+  const fs::path out = fresh_out_dir();
+  const fs::path log = test_dir() / "ordered.log";
+  const Result r = run("bench " + kSource + "/scenarios/ordered.lua --runs 2 --seed 5 --compare --time-limit 20 --out " +
+                       out.string() + " --log " + log.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("ratio of medians"), std::string::npos) << r.out;
+
+  const auto j = nlohmann::json::parse(slurp(out / "ordered" / "bench.json"));
+  EXPECT_EQ(j["scenario"], "ordered");
+  EXPECT_EQ(j["runs"], 2);
+  ASSERT_EQ(j["planners"].size(), 2u);
+  EXPECT_EQ(j["planners"][0]["name"], "knowledge");
+  EXPECT_EQ(j["planners"][1]["name"], "baseline");
+  for (const auto& planner : j["planners"]) {
+    EXPECT_TRUE(planner["solved"].is_number_integer());
+    EXPECT_TRUE(planner["median_s"].is_number());
+    ASSERT_EQ(planner["times_s"].size(), 2u);
+    EXPECT_EQ(planner["per_run"][0]["seed"], 5);
+    EXPECT_EQ(planner["per_run"][1]["seed"], 6);
+  }
+  EXPECT_TRUE(j["ratio_of_medians"].is_number());
+
+  const std::string text = slurp(log);
+  EXPECT_EQ(text.rfind("OMPL version 1.5.2\nExperiment ordered\n", 0), 0u) << text.substr(0, 80);
+  EXPECT_NE(text.find("\n2 planners\nphysltl_knowledge\n"), std::string::npos);
+  EXPECT_NE(text.find("\n2 runs per planner\n"), std::string::npos);
+}
+
+TEST(Bench, WithoutCompareRunsOnlyTheKnowledgePlanner) {
+  const fs::path out = fresh_out_dir();
+  const Result r = run("bench " + kSource + "/scenarios/ordered.lua --runs 1 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(slurp(out / "ordered" / "bench.json"));
+  ASSERT_EQ(j["planners"].size(), 1u);
+  EXPECT_TRUE(j["ratio_of_medians"].is_null());
+  EXPECT_EQ(r.out.find("baseline"), std::string::npos);
+}
+
+}  // namespace
