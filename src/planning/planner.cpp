@@ -6,6 +6,7 @@
 #include "product_graph.h"
 #include "random.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace physltl::planning {
@@ -22,6 +23,14 @@ struct Motion {
   int automaton_state = 0;
   int product_state = 0;
 };
+
+// Kappa is a function of the movable bodies' poses only, which stay bit for bit the same while the robot
+// moves without pushing: then INFERENCE need not run again.
+bool same_poses(const std::vector<geometry::Pose2>& a, const std::vector<geometry::Pose2>& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const geometry::Pose2& p, const geometry::Pose2& q) {
+    return p.position == q.position && p.yaw == q.yaw;
+  });
+}
 
 // Uniform point in a triangle.
 Vec2 point_in(const decomposition::Triangle& t, Random& random) {
@@ -43,7 +52,8 @@ class Search {
         graph_(decomposition, task),
         sampler_(world, knowledge, options.guidance == Guidance::kKnowledge),
         random_(options.seed),
-        simulation_(world) {}
+        simulation_(world),
+        regions_(world) {}
 
   PlanResult run() {
     const auto started = std::chrono::steady_clock::now();
@@ -91,7 +101,7 @@ class Search {
     simulation_.save(root.state);
     root.robot = world_.robot.start;
     // The start is labelled with its region too (OMPL's LTLPlanner forgets this).
-    root.automaton_state = task_.step(task_.dfa.start, region_at(world_, root.robot));
+    root.automaton_state = task_.step(task_.dfa.start, regions_.at(root.robot));
     root.product_state = graph_.id(decomposition_.locate(root.robot), root.automaton_state);
     motions_.push_back(std::move(root));
     graph_.add_motion(motions_[0].product_state, 0);
@@ -131,7 +141,7 @@ class Search {
 
     simulation_.restore(motions_[from].state);
     simulation_.read_environment(environment_);
-    knowledge::infer(knowledge_, environment_, kappa_);
+    update_kappa();
     const Control control = sampler_.sample(environment_, kappa_, target, random_);
     ++stats_.propagations;
 
@@ -147,8 +157,8 @@ class Search {
         ++stats_.invalid_steps;
         break;
       }
-      if (mode_ == knowledge::ValidityMode::kKnowledge) knowledge::infer(knowledge_, environment_, kappa_);
-      const int next = task_.step(automaton_state, region_at(world_, environment_.robot_position));
+      if (mode_ == knowledge::ValidityMode::kKnowledge) update_kappa();
+      const int next = task_.step(automaton_state, regions_.at(environment_.robot_position));
       if (graph_.dead(next)) break;
       automaton_state = next;
       valid_steps = step;
@@ -171,6 +181,14 @@ class Search {
     graph_.add_motion(motion.product_state, index);
     motions_.push_back(std::move(motion));
     return accepted ? index : -1;
+  }
+
+  // kappa_ = INFERENCE(environment_), skipped when no movable body moved since the last inference.
+  void update_kappa() {
+    if (kappa_valid_ && same_poses(environment_.movable_poses, kappa_poses_)) return;
+    knowledge::infer(knowledge_, environment_, kappa_);
+    kappa_poses_ = environment_.movable_poses;
+    kappa_valid_ = true;
   }
 
   void finish(PlanResult& result, int solution, std::chrono::steady_clock::time_point started, const char* reason) {
@@ -201,6 +219,7 @@ class Search {
   ControlSampler sampler_;
   Random random_;
   physics::Simulation simulation_;
+  const RegionMap regions_;
   std::vector<Motion> motions_;
   std::vector<int> available_;         // indices into the current lead
   std::vector<double> cumulative_;     // running sums of their weights
@@ -208,6 +227,8 @@ class Search {
   // Scratch space reused by every step, so the hot loop does not allocate.
   scenario::EnvironmentState environment_;
   knowledge::Kappa kappa_;
+  std::vector<geometry::Pose2> kappa_poses_;  // the poses kappa_ was inferred for
+  bool kappa_valid_ = false;
   std::vector<scenario::RobotContact> contacts_;
   physics::PhysicsState last_valid_;
 };

@@ -11,10 +11,11 @@ Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomato
               const knowledge::AbstractKnowledge& knowledge, knowledge::ValidityMode mode) {
   Replay r;
   physics::Simulation simulation(world);
+  const RegionMap regions(world);
   std::vector<scenario::RobotContact> contacts;
   auto record = [&](int automaton_state, bool pushing) {
     r.states.push_back(simulation.environment());
-    r.region_trace.push_back(region_at(world, r.states.back().robot_position));
+    r.region_trace.push_back(regions.at(r.states.back().robot_position));
     r.automaton_trace.push_back(formula.step(automaton_state, r.region_trace.back()));
     r.pushing.push_back(pushing);
   };

@@ -14,9 +14,13 @@ int TaskAutomaton::step(int state, int region) const {
   return dfa.step(state, std::span<const int>(&proposition, 1));
 }
 
-int region_at(const scenario::World& world, const scenario::Vec2& p) {
-  for (size_t i = 0; i < world.regions.size(); ++i) {
-    if (world.regions[i].polygon.contains(p)) return static_cast<int>(i);
+RegionMap::RegionMap(const scenario::World& world) : world_(world) {
+  for (const auto& region : world.regions) bounds_.push_back(region.polygon.bounds());
+}
+
+int RegionMap::at(const scenario::Vec2& p) const {
+  for (size_t i = 0; i < bounds_.size(); ++i) {
+    if (bounds_[i].contains(p) && world_.regions[i].polygon.contains(p)) return static_cast<int>(i);
   }
   return -1;
 }

@@ -20,7 +20,17 @@ struct TaskAutomaton {
   int step(int state, int region) const;
 };
 
-// The region containing point `p` (the robot's centre), or -1 outside every region. Regions are disjoint.
-int region_at(const scenario::World& world, const scenario::Vec2& p);
+// Which region contains a point (the robot's centre). The planner asks after every physics step, so each
+// region's bounding box is tried before its polygon.
+class RegionMap {
+ public:
+  explicit RegionMap(const scenario::World& world);
+  // The region containing `p`, or -1 outside every region. Regions are disjoint.
+  int at(const scenario::Vec2& p) const;
+
+ private:
+  const scenario::World& world_;
+  std::vector<geometry::Rect> bounds_;  // World::regions order
+};
 
 }  // namespace physltl::planning
