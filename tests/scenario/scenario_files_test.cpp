@@ -40,6 +40,30 @@ TEST(ScenarioFiles, EveryShippedScenarioLoadsAndValidates) {
   EXPECT_GE(count, 2);
 }
 
+TEST(ScenarioFiles, RoomsNLoadsForEveryRoomCountWithABoxPerDoorwayAndASequencingTask) {
+  for (const int n : {2, 4, 8, 16}) {
+    LoadOptions options;
+    options.params["rooms"] = std::to_string(n);
+    const World w = load_scenario(kScenarios + "/rooms_n.lua", options);
+    EXPECT_EQ(w.regions.size(), static_cast<size_t>(n));
+    EXPECT_EQ(w.movable_bodies.size(), static_cast<size_t>(n));
+    EXPECT_EQ(w.task.formula.rfind("F(r1 & F", 0), 0u) << w.task.formula;
+    EXPECT_NE(w.task.formula.find("F r" + std::to_string(n) + ")"), std::string::npos) << w.task.formula;
+    EXPECT_EQ(std::count(w.task.formula.begin(), w.task.formula.end(), 'F'), n) << w.task.formula;
+  }
+}
+
+TEST(ScenarioFiles, RoomsNRejectsOtherRoomCountsWithAClearMessage) {
+  LoadOptions options;
+  options.params["rooms"] = "5";
+  try {
+    load_scenario(kScenarios + "/rooms_n.lua", options);
+    ADD_FAILURE() << "rooms=5 loaded";
+  } catch (const ScenarioError& e) {
+    EXPECT_NE(std::string(e.what()).find("params.rooms must be 2, 4, 8 or 16, got 5"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ScenarioFiles, RoomsHasFourRegionsThreeDoorwayBoxesAndThePapersTask) {
   const World w = load_scenario(kScenarios + "/rooms.lua");
   EXPECT_EQ(w.name, "rooms");
