@@ -90,37 +90,29 @@ class Ordered : public ::testing::Test {
   size_t b2_;
 };
 
-TEST_F(Ordered, BothBoxesStartFree) {
-  const Kappa kappa = infer(formulate(world_), scenario::EnvironmentState::initial(world_));
-  EXPECT_EQ(kappa.bodies[b1_].type, BodyType::kFree);
-  EXPECT_EQ(kappa.bodies[b2_].type, BodyType::kFree);
+// ordered.lua authors the paper's two-sided boxes: B1 pushed along +x or -y (from its -x or +y side), B2
+// along +y or -x (from its -y or +x side).
+TEST_F(Ordered, BothBoxesStartWithEveryAuthoredSideActive) {
+  const auto k = formulate(world_);
+  const auto state = scenario::EnvironmentState::initial(world_);
+  const Kappa kappa = infer(k, state);
+  EXPECT_EQ(push_directions(kappa.bodies[b1_], k.movable_bodies[b1_], state.movable_poses[b1_]), "+x -y");
+  EXPECT_EQ(push_directions(kappa.bodies[b2_], k.movable_bodies[b2_], state.movable_poses[b2_]), "-x +y");
 }
 
-TEST_F(Ordered, B1PushedAlongXBlocksB2sMinusYMRegionAndMakesBothConstraintOriented) {
-  const Kappa kappa = with_b1_at({0.9, 0.0});  // just below B2 at (1.0, 0.75), a 0.25 m gap between them
-  EXPECT_EQ(kappa.bodies[b2_].type, BodyType::kConstraintOriented);
-  EXPECT_EQ(sides(kappa.bodies[b2_].active_sides), "-x +x +y");
-  EXPECT_EQ(kappa.bodies[b1_].type, BodyType::kConstraintOriented);
-  EXPECT_EQ(sides(kappa.bodies[b1_].active_sides), "-x +x -y");
-}
-
-TEST_F(Ordered, MovingB1AwayRestoresBothTypes) {
-  const Kappa kappa = with_b1_at({0.9, -1.0});
-  EXPECT_EQ(kappa.bodies[b1_].type, BodyType::kFree);
-  EXPECT_EQ(kappa.bodies[b2_].type, BodyType::kFree);
-}
-
-// The paper pushes its B1 "along x or -y" and ends with B2 "pushable only along -x": read as authored
-// two-sided boxes, that is B1 pushed from -x and +y, B2 from -y and +x.
-TEST_F(Ordered, WithThePapersTwoSidedBoxesB2IsPushableOnlyAlongMinusXOnceB1Arrives) {
-  world_.movable_bodies[b1_].push_from = {Side::kMinusX, Side::kPlusY};
-  world_.movable_bodies[b2_].push_from = {Side::kMinusY, Side::kPlusX};
+TEST_F(Ordered, B1PushedAlongXLeavesB2PushableOnlyAlongMinusX) {
   const auto k = formulate(world_);
   auto state = scenario::EnvironmentState::initial(world_);
-  state.movable_poses[b1_].position = {0.9, 0.0};
+  state.movable_poses[b1_].position = {0.9, 0.0};  // just below B2 at (1.0, 0.75), a 0.25 m gap between them
   const Kappa kappa = infer(k, state);
   EXPECT_EQ(kappa.bodies[b2_].type, BodyType::kConstraintOriented);
+  EXPECT_EQ(sides(kappa.bodies[b2_].active_sides), "+x");
   EXPECT_EQ(push_directions(kappa.bodies[b2_], k.movable_bodies[b2_], state.movable_poses[b2_]), "-x");
+}
+
+TEST_F(Ordered, MovingB1AwayRestoresB2sSides) {
+  EXPECT_EQ(sides(with_b1_at({0.9, 0.0}).bodies[b2_].active_sides), "+x");
+  EXPECT_EQ(sides(with_b1_at({0.9, -1.0}).bodies[b2_].active_sides), "+x -y");
 }
 
 TEST_F(Ordered, EveryRegionIsReachable) {
