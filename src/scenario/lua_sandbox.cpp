@@ -7,10 +7,12 @@ extern "C" {
 }
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
-#include <regex>
+#include <string_view>
 
 namespace physltl::scenario {
 namespace {
@@ -26,6 +28,16 @@ struct Sandbox {
   long long instructions = 0;
   int last_line = 0;
   std::vector<Element> elements;
+  // The message of the Lua error being raised. It lives here, not on the C stack, because pushing it may
+  // itself fail for lack of memory, and that error longjmps too.
+  std::string raised_message;
+};
+
+// lua_error (and any Lua memory error) longjmps, as Lua is built as C: C++ objects on the way would never be
+// destroyed. So the C++ side of every function Lua calls throws ScriptError instead, and guarded() turns it
+// into a Lua error once those objects are gone.
+struct ScriptError {
+  std::string message;
 };
 
 Sandbox& sandbox_of(lua_State* L) {
@@ -72,10 +84,22 @@ Location caller_location(lua_State* L) {
   return first_lua;
 }
 
-[[noreturn]] void raise_at(lua_State* L, const Location& where, const std::string& message) {
-  lua_pushstring(L, (where.str() + ": " + message).c_str());
-  lua_error(L);
-  std::abort();  // lua_error does not return
+[[noreturn]] void raise_at(const Location& where, const std::string& message) {
+  throw ScriptError{where.str() + ": " + message};
+}
+
+// Runs `body`, the C++ part of a function called by Lua, and raises its ScriptError as a Lua error after
+// the body's objects are destroyed.
+template <typename Body>
+int guarded(lua_State* L, Body body) {
+  try {
+    return body();
+  } catch (ScriptError& e) {
+    sandbox_of(L).raised_message = std::move(e.message);
+  }
+  const std::string& message = sandbox_of(L).raised_message;
+  lua_pushlstring(L, message.data(), message.size());
+  return lua_error(L);
 }
 
 void budget_hook(lua_State* L, lua_Debug* ar) {
@@ -83,19 +107,25 @@ void budget_hook(lua_State* L, lua_Debug* ar) {
   lua_getinfo(L, "Sl", ar);
   if (ar->currentline > 0) box.last_line = ar->currentline;
   box.instructions += kHookEvery;
-  if (box.instructions > box.options.instruction_budget) {
+  if (box.instructions <= box.options.instruction_budget) return;
+  // From now on every instruction raises, so a script that catches the error with pcall and loops on
+  // cannot run on: the next instruction outside the pcall raises again.
+  lua_sethook(L, budget_hook, LUA_MASKCOUNT, 1);
+  guarded(L, [&]() -> int {
     // The hook runs inside the interrupted function, so `ar` is where the loop is.
-    const Location here{ar->source[0] == '@' ? ar->source + 1 : ar->short_src, ar->currentline};
-    raise_at(L, here,
+    raise_at({ar->source[0] == '@' ? ar->source + 1 : ar->short_src, ar->currentline},
              "instruction budget of " + std::to_string(box.options.instruction_budget) +
                  " exceeded (an endless loop?)");
-  }
+  });
 }
 
 LuaValue copy_value(lua_State* L, int index, int depth, const Location& where);
 
 LuaValue copy_table(lua_State* L, int index, int depth, const Location& where) {
-  if (depth > kMaxTableDepth) raise_at(L, where, "tables nested deeper than 32 levels (a cycle?)");
+  // Each level holds a key and a value on the Lua stack, which only has room for a few unless asked.
+  if (depth > kMaxTableDepth || !lua_checkstack(L, 2)) {
+    raise_at(where, "tables nested deeper than " + std::to_string(kMaxTableDepth) + " levels (a cycle?)");
+  }
   index = lua_absindex(L, index);
   LuaValue value;
   value.kind = LuaValue::Kind::kTable;
@@ -103,22 +133,22 @@ LuaValue copy_table(lua_State* L, int index, int depth, const Location& where) {
   lua_pushnil(L);
   while (lua_next(L, index) != 0) {
     if (lua_type(L, -2) == LUA_TSTRING) {
-      value.fields.emplace_back(lua_tostring(L, -2), copy_value(L, -1, depth + 1, where));
+      value.fields.push_back({lua_tostring(L, -2), copy_value(L, -1, depth + 1, where)});
     } else if (lua_isinteger(L, -2)) {
       numbered.emplace_back(lua_tointeger(L, -2), copy_value(L, -1, depth + 1, where));
     } else {
-      raise_at(L, where, std::string("table keys must be names or list positions, got a ") + luaL_typename(L, -2));
+      raise_at(where, std::string("table keys must be names or list positions, got a ") + luaL_typename(L, -2));
     }
     lua_pop(L, 1);
   }
   std::sort(numbered.begin(), numbered.end(), [](auto& a, auto& b) { return a.first < b.first; });
   for (size_t i = 0; i < numbered.size(); ++i) {
     if (numbered[i].first != static_cast<lua_Integer>(i + 1)) {
-      raise_at(L, where, "a list has a gap or a non-positive index at [" + std::to_string(numbered[i].first) + "]");
+      raise_at(where, "a list has a gap or a non-positive index at [" + std::to_string(numbered[i].first) + "]");
     }
     value.array.push_back(std::move(numbered[i].second));
   }
-  std::sort(value.fields.begin(), value.fields.end(), [](auto& a, auto& b) { return a.first < b.first; });
+  std::sort(value.fields.begin(), value.fields.end(), [](auto& a, auto& b) { return a.key < b.key; });
   return value;
 }
 
@@ -141,45 +171,57 @@ LuaValue copy_value(lua_State* L, int index, int depth, const Location& where) {
       break;
     case LUA_TTABLE: return copy_table(L, index, depth, where);
     default:
-      raise_at(L, where, std::string("values of type ") + luaL_typename(L, index) + " cannot describe a scenario");
+      raise_at(where, std::string("values of type ") + luaL_typename(L, index) + " cannot describe a scenario");
   }
   return value;
 }
 
 int record_element(lua_State* L) {
-  Sandbox& box = sandbox_of(L);
-  const char* kind = lua_tostring(L, lua_upvalueindex(1));
-  const Location where = caller_location(L);
-  if (lua_gettop(L) != 1 || !lua_istable(L, 1)) {
-    raise_at(L, where, std::string(kind) + " takes one table, e.g. " + kind + " { ... }");
-  }
-  box.elements.push_back({kind, copy_table(L, 1, 0, where), where});
-  return 0;
+  return guarded(L, [L] {
+    const char* kind = lua_tostring(L, lua_upvalueindex(1));
+    const Location where = caller_location(L);
+    if (lua_gettop(L) != 1 || !lua_istable(L, 1)) {
+      raise_at(where, std::string(kind) + " takes one table, e.g. " + kind + " { ... }");
+    }
+    sandbox_of(L).elements.push_back({kind, copy_table(L, 1, 0, where), where});
+    return 0;
+  });
 }
 
 // print() goes to stderr: stdout belongs to reports such as `check --json`.
 int print_to_stderr(lua_State* L) {
-  const Location where = caller_location(L);
-  std::string line = where.str() + ":";
-  for (int i = 1; i <= lua_gettop(L); ++i) line += std::string(" ") + luaL_tolstring(L, i, nullptr);
+  // Convert first: __tostring runs Lua code, which may raise while no C++ object is alive yet.
+  const int n = lua_gettop(L);
+  luaL_checkstack(L, n, "too many values to print");
+  for (int i = 1; i <= n; ++i) luaL_tolstring(L, i, nullptr);
+  std::string line = caller_location(L).str() + ":";
+  for (int i = n + 1; i <= 2 * n; ++i) line += std::string(" ") + lua_tostring(L, i);
   std::fprintf(stderr, "%s\n", line.c_str());
   return 0;
 }
 
+bool is_module_name(std::string_view name) {
+  const auto word_char = [](char c) { return c == '_' || std::isalnum(static_cast<unsigned char>(c)); };
+  return !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) && std::all_of(name.begin(), name.end(), word_char);
+}
+
+// Only Lua-owned strings here: loading and running the helper may raise (memory, budget) at any point.
 int sandboxed_require(lua_State* L) {
-  Sandbox& box = sandbox_of(L);
-  const std::string name = luaL_checkstring(L, 1);
-  if (!std::regex_match(name, std::regex("[A-Za-z_][A-Za-z0-9_]*"))) {
-    raise_at(L, caller_location(L), "require: '" + name + "' is not a helper module name");
+  const char* name = luaL_checkstring(L, 1);
+  if (!is_module_name(name)) {
+    return guarded(L, [&]() -> int { raise_at(caller_location(L), "require: '" + std::string(name) + "' is not a helper module name"); });
   }
   lua_getfield(L, LUA_REGISTRYINDEX, "physltl.loaded");
-  lua_getfield(L, -1, name.c_str());
+  lua_getfield(L, -1, name);
   if (!lua_isnil(L, -1)) return 1;
   lua_pop(L, 1);
-  const std::string file = box.options.lua_dir + "/" + name + ".lua";
-  if (luaL_loadfilex(L, file.c_str(), "t") != LUA_OK) {
-    if (std::string(lua_tostring(L, -1)).find("cannot open") != std::string::npos) {
-      raise_at(L, caller_location(L), "require: no helper module '" + name + "' in " + box.options.lua_dir);
+  const char* file = lua_pushfstring(L, "%s/%s.lua", sandbox_of(L).options.lua_dir.c_str(), name);
+  if (luaL_loadfilex(L, file, "t") != LUA_OK) {
+    if (std::strstr(lua_tostring(L, -1), "cannot open") != nullptr) {
+      return guarded(L, [&]() -> int {
+        raise_at(caller_location(L),
+                 "require: no helper module '" + std::string(name) + "' in " + sandbox_of(L).options.lua_dir);
+      });
     }
     return lua_error(L);
   }
@@ -189,7 +231,28 @@ int sandboxed_require(lua_State* L) {
     lua_pushboolean(L, 1);
   }
   lua_pushvalue(L, -1);
-  lua_setfield(L, -3, name.c_str());
+  lua_setfield(L, -4, name);  // below: the module, the file name, the loaded table
+  return 1;
+}
+
+// Lua runs finalizers with hooks off, so the instruction budget could not stop an endless __gc: a
+// metatable with one is refused. (Only setmetatable can mark an object for finalization here: scripts
+// make no userdata.) The original setmetatable is upvalue 1.
+int setmetatable_without_finalizer(lua_State* L) {
+  if (lua_type(L, 2) == LUA_TTABLE) {
+    lua_pushliteral(L, "__gc");
+    const bool has_finalizer = lua_rawget(L, 2) != LUA_TNIL;
+    lua_pop(L, 1);
+    if (has_finalizer) {
+      return guarded(L, [L]() -> int {
+        raise_at(caller_location(L), "setmetatable: __gc metamethods are not allowed (the instruction budget "
+                                     "cannot stop them)");
+      });
+    }
+  }
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, lua_gettop(L) - 1, 1);
   return 1;
 }
 
@@ -206,6 +269,9 @@ void open_safe_libraries(lua_State* L) {
     lua_pushnil(L);
     lua_setglobal(L, name);
   }
+  lua_getglobal(L, "setmetatable");
+  lua_pushcclosure(L, setmetatable_without_finalizer, 1);
+  lua_setglobal(L, "setmetatable");
   // Lua seeds math.random from the clock; a scenario must describe the same world every time.
   lua_getglobal(L, "math");
   lua_getfield(L, -1, "randomseed");
@@ -239,14 +305,33 @@ void push_params(lua_State* L, const std::map<std::string, std::string>& params)
   lua_setglobal(L, "params");
 }
 
+// Lua shortens long file names in its messages to "..." and their last 56 characters; the user named the
+// whole path.
+std::string script_file_named(const Sandbox& box, const std::string& file) {
+  if (file.rfind("...", 0) == 0 && box.path.size() >= file.size() - 3 &&
+      box.path.compare(box.path.size() - (file.size() - 3), std::string::npos, file, 3) == 0) {
+    return box.path;
+  }
+  return file;
+}
+
 Diagnostic diagnostic_from_lua_message(const Sandbox& box, const std::string& message) {
   if (box.memory_exceeded) {
     return {{box.path, box.last_line},
             "memory limit of " + std::to_string(box.options.memory_limit_bytes >> 20) + " MiB exceeded"};
   }
-  static const std::regex located("^(.+?):(\\d+): ([\\s\\S]*)$");
-  std::smatch m;
-  if (std::regex_match(message, m, located)) return {{m[1], std::stoi(m[2])}, m[3]};
+  // Lua puts "file:line: " in front; the first such prefix is the location. (No std::regex: it recurses per
+  // character and overflows the stack on long messages.)
+  for (std::size_t colon = message.find(':'); colon != std::string::npos; colon = message.find(':', colon + 1)) {
+    const char* digits = message.data() + colon + 1;
+    const char* end = message.data() + message.size();
+    int line = 0;
+    const auto [after, error] = std::from_chars(digits, end, line);
+    if (colon > 0 && error == std::errc() && after != digits && line > 0 && end - after >= 2 && after[0] == ':' &&
+        after[1] == ' ') {
+      return {{script_file_named(box, message.substr(0, colon)), line}, std::string(after + 2, end)};
+    }
+  }
   return {{box.path, box.last_line}, message};
 }
 
@@ -282,7 +367,10 @@ std::vector<Element> run_scenario_script(const std::string& path, const LoadOpti
   int status = luaL_loadfilex(L, path.c_str(), "t");
   if (status == LUA_OK) status = lua_pcall(L, 0, 0, 0);
   if (status != LUA_OK) {
-    const std::string message = lua_isstring(L, -1) ? lua_tostring(L, -1) : "error object is not a string";
+    // Only a string is read as is: converting a number would allocate, outside any protected call.
+    const std::string message = lua_type(L, -1) == LUA_TSTRING   ? lua_tostring(L, -1)
+                                : lua_type(L, -1) == LUA_TNUMBER ? std::to_string(lua_tonumber(L, -1))
+                                                                 : "error object is not a string";
     throw ScenarioError({diagnostic_from_lua_message(*box, message)});
   }
   return std::move(box->elements);

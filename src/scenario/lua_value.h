@@ -17,11 +17,17 @@ struct LuaValue {
   double number = 0.0;
   bool is_integer = false;
   std::string string;
-  std::vector<LuaValue> array;                            // keys 1..n
-  std::vector<std::pair<std::string, LuaValue>> fields;  // string keys, sorted
+  struct Field;  // defined below: std::pair<std::string, LuaValue> would need LuaValue complete here (clang)
+  std::vector<LuaValue> array;  // keys 1..n
+  std::vector<Field> fields;    // string keys, sorted
 
   const LuaValue* field(const std::string& key) const;
   static const char* kind_name(Kind kind);
+};
+
+struct LuaValue::Field {
+  std::string key;
+  LuaValue value;
 };
 
 // One call of a constructor such as `movable { ... }` in a script.

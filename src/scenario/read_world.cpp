@@ -12,6 +12,11 @@ namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
+// Far beyond any world the planner can take, and small enough that validation's pairwise overlap checks
+// stay well under a second: a script looping over constructors must not turn loading into a hang.
+constexpr int kMaxBodiesOfAKind = 2000;        // fixed, movable
+constexpr std::size_t kMaxRegionCorners = 10'000;  // all regions together
+
 std::optional<Side> parse_side(const std::string& text) {
   static const std::map<std::string, Side> sides = {
       {"-x", Side::kMinusX}, {"+x", Side::kPlusX}, {"-y", Side::kMinusY}, {"+y", Side::kPlusY}};
@@ -144,12 +149,20 @@ World read_world(const std::vector<Element>& elements, const std::string& path, 
   // Singletons: exactly once (workspace, robot, task) or at most once (planner, render).
   std::map<std::string, const Element*> first_of;
   std::map<std::string, int> count_of;
+  std::size_t region_corners = 0;
   for (const Element& e : elements) {
     const int index = ++count_of[e.kind];
     if (is_singleton(e.kind) && index > 1) {
       diagnostics.push_back({e.where, e.kind + " is given twice (first at " + first_of[e.kind]->where.str() + ")"});
       continue;
     }
+    if ((e.kind == "fixed" || e.kind == "movable") && index > kMaxBodiesOfAKind) {
+      if (index == kMaxBodiesOfAKind + 1) {
+        diagnostics.push_back({e.where, "more than " + std::to_string(kMaxBodiesOfAKind) + " " + e.kind + " bodies"});
+      }
+      continue;
+    }
+    if (e.kind == "region" && region_corners > kMaxRegionCorners) continue;  // reported once, at the first too many
     first_of.emplace(e.kind, &e);
     TableReader r(e.table, element_label(e, index), e.where, diagnostics);
     if (e.kind == "workspace") {
@@ -167,6 +180,10 @@ World read_world(const std::vector<Element>& elements, const std::string& path, 
     } else if (e.kind == "region") {
       world.regions.push_back(read_region(r));
       world.regions.back().where = e.where;
+      region_corners += world.regions.back().polygon.vertices.size();
+      if (region_corners > kMaxRegionCorners) {
+        r.error("the regions have more than " + std::to_string(kMaxRegionCorners) + " corners together");
+      }
     } else if (e.kind == "task") {
       read_task(r, world.task);
       world.task.where = e.where;

@@ -7,8 +7,8 @@
 namespace physltl::scenario {
 
 const LuaValue* LuaValue::field(const std::string& key) const {
-  auto it = std::lower_bound(fields.begin(), fields.end(), key, [](const auto& f, const std::string& k) { return f.first < k; });
-  return it != fields.end() && it->first == key ? &it->second : nullptr;
+  auto it = std::lower_bound(fields.begin(), fields.end(), key, [](const auto& f, const std::string& k) { return f.key < k; });
+  return it != fields.end() && it->key == key ? &it->value : nullptr;
 }
 
 const char* LuaValue::kind_name(Kind kind) {

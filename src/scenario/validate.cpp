@@ -4,10 +4,10 @@
 #include "physltl/ltl/parser.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <optional>
-#include <regex>
 #include <set>
 
 namespace physltl::scenario {
@@ -19,6 +19,14 @@ constexpr double kMaxMass = 1e6;    // kg
 constexpr double kMaxForce = 1e6;   // N
 constexpr double kMaxFriction = 100.0;
 constexpr double kMaxSpeed = 20.0;  // m/s: a mobile robot among boxes, and a bound on tunnelling per step
+
+// [a-z_][a-zA-Z0-9_]*, checked by hand: std::regex recurses per character and overflows the stack on the
+// long names a script can make.
+bool is_proposition_name(const std::string& name) {
+  const auto word_char = [](char c) { return c == '_' || std::isalnum(static_cast<unsigned char>(c)); };
+  return !name.empty() && (name[0] == '_' || std::islower(static_cast<unsigned char>(name[0]))) &&
+         std::all_of(name.begin(), name.end(), word_char);
+}
 
 class Validator {
  public:
@@ -160,14 +168,13 @@ class Validator {
   }
 
   void check_regions() {
-    static const std::regex identifier("[a-z_][a-zA-Z0-9_]*");
     static const std::set<std::string> reserved = {"p0", "true", "false", "X", "F", "G", "U", "R", "W", "M"};
     std::map<std::string, Location> names;
     const auto& regions = world_.regions;
     for (size_t i = 0; i < regions.size(); ++i) {
       const auto& r = regions[i];
       const std::string what = "region '" + r.name + "'";
-      if (!std::regex_match(r.name, identifier)) {
+      if (!is_proposition_name(r.name)) {
         error(r.where, what + ": a region name must start with a lower-case letter or '_' and hold only letters, "
                               "digits and '_' (it is a proposition in the formula)");
       } else if (reserved.count(r.name)) {

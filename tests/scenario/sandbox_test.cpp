@@ -94,6 +94,13 @@ TEST_F(Sandbox, HelpersAreRequiredFromTheLuaFolderOnly) {
             std::string::npos);
 }
 
+TEST_F(Sandbox, RuntimeErrorsNameTheWholePathHoweverLong) {
+  const std::string path = write(minimal_world("local x = nil + 1\n"));
+  ASSERT_GT(path.size(), 60u);  // Lua's own messages keep "..." and the last 56 characters
+  const std::string message = first_message(path);
+  EXPECT_EQ(message.rfind(path + ":4: ", 0), 0u) << message;
+}
+
 TEST_F(Sandbox, MissingScenarioFileIsAClearError) {
   EXPECT_EQ(first_message("no/such/file.lua"),
             "no/such/file.lua: cannot read the scenario file (missing, a folder, or not readable)");
