@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -35,6 +36,9 @@ int parse_and_run(Command& command, int argc, char** argv) {
     for (const auto& d : e.diagnostics()) std::cerr << d.str() << "\n";
   } catch (const BadInput& e) {
     std::cerr << "physltl-studio: " << e.what() << "\n";
+  } catch (const std::filesystem::filesystem_error& e) {
+    // An --out folder that cannot be made or written (a file in the way, no permission, a full disk).
+    std::cerr << "physltl-studio: cannot write the outputs: " << e.what() << "\n";
   }
   return kExitBadInput;
 }

@@ -42,6 +42,29 @@ inline fs::path fresh_out_dir() {
   return out;
 }
 
+// ordered.lua with a small, short render, written under `dir` with the file name `name`.
+inline fs::path small_ordered(const fs::path& dir, const std::string& name = "ordered.lua") {
+  std::string text = slurp(fs::path(PHYSLTL_SOURCE_DIR) / "scenarios" / "ordered.lua");
+  const auto at = text.find("render {");
+  text = text.substr(0, at) + "render { width = 160, height = 120, fps = 5 }\n";
+  fs::create_directories(dir);
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+// rooms.lua with a task that goes around the rooms five times: far more than a few seconds of search.
+inline fs::path rooms_laps(const fs::path& dir) {
+  std::string text = slurp(fs::path(PHYSLTL_SOURCE_DIR) / "scenarios" / "rooms.lua");
+  const auto at = text.find("task { formula =");
+  text.erase(at, text.find('\n', at) - at);
+  std::string formula = "p4", close;
+  for (int lap = 0; lap < 5; ++lap) formula = "p1 & F(p2 & F(p4 & F(" + formula, close += ")))";
+  text += "\ntask { formula = 'F(" + formula + close + ")' }\n";
+  fs::create_directories(dir);
+  std::ofstream(dir / "laps.lua") << text;
+  return dir / "laps.lua";
+}
+
 inline Result run(const std::string& args) {
   const fs::path dir = test_dir();
   const std::string command =

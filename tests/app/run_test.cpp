@@ -19,16 +19,6 @@ using namespace physltl::testing_support;
 
 const std::string kSource = PHYSLTL_SOURCE_DIR;
 
-// ordered.lua with a small, short render, written under `dir` with the file name `name`.
-fs::path small_ordered(const fs::path& dir, const std::string& name = "ordered.lua") {
-  std::string text = slurp(kSource + "/scenarios/ordered.lua");
-  const auto at = text.find("render {");
-  text = text.substr(0, at) + "render { width = 160, height = 120, fps = 5 }\n";
-  fs::create_directories(dir);
-  std::ofstream(dir / name) << text;
-  return dir / name;
-}
-
 TEST(Run, SolvesOrderedAndWritesAValidatedReportAndPlan) {
   const fs::path out = fresh_out_dir();
   const Result r = run(kSource + "/scenarios/ordered.lua --seed 3 --out " + out.string());
@@ -96,15 +86,7 @@ TEST(Run, AnInfeasibleTaskExitsOneAndLeavesThePreviousOutputsAlone) {
 }
 
 TEST(Run, CtrlCStopsPlanningPromptlyAndWritesNothing) {
-  // rooms.lua with a task that goes around the rooms five times: far more than 0.7 s of search.
-  std::string text = slurp(kSource + "/scenarios/rooms.lua");
-  const auto at = text.find("task { formula =");
-  text.erase(at, text.find('\n', at) - at);
-  std::string formula = "p4", close;
-  for (int lap = 0; lap < 5; ++lap) formula = "p1 & F(p2 & F(p4 & F(" + formula, close += ")))";
-  text += "\ntask { formula = 'F(" + formula + close + ")' }\n";
-  const fs::path scenario = test_dir("scenario") / "laps.lua";
-  std::ofstream(scenario) << text;
+  const fs::path scenario = rooms_laps(test_dir("scenario"));
   const fs::path out = fresh_out_dir();
 
   const std::string binary = PHYSLTL_BINARY;
