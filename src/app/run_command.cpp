@@ -68,6 +68,9 @@ int run(const RunArgs& args) {
     std::cerr << "physltl-studio: the task is infeasible: " << reasoning.task.semantic->explanation << "\n";
     return kExitNoPlan;
   }
+  // Made before planning so that an unwritable --out fails at once, not after minutes of search; it is
+  // removed again unless the run succeeds.
+  OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
   const auto guidance = args.baseline ? planning::Guidance::kBaseline : planning::Guidance::kKnowledge;
   const PreparedRun prepared(world, reasoning);
   const planning::TaskAutomaton& task = prepared.search_task(guidance);
@@ -109,7 +112,6 @@ int run(const RunArgs& args) {
   say(fmt::format("plan       {} controls, {:.1f} s of motion, {} pushes, validated by replay",
                   result.plan.controls.size(), result.plan.total_steps() * world.planner.step_size, replay.pushes));
 
-  OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
   const RunSummary summary{world, reasoning, guidance, result, &replay};
   write_json(out.path() / "report.json", report_json(summary));
   write_json(out.path() / "plan.json", plan_json(summary));
