@@ -51,6 +51,8 @@ int write_plan_frames(const scenario::World& world, const Reasoning& reasoning, 
   render::Renderer renderer(world, world.render.width, world.render.height);
   render::FrameWriter writer(folder);
   knowledge::Kappa kappa;
+  // One overlay for all frames: the travelled path only grows, so it is extended, not rebuilt per frame.
+  render::Overlay overlay;
   for (int f = 0; f < frames; ++f) {
     const double time = static_cast<double>(f) / world.render.fps;
     const double index = std::min(time / dt, static_cast<double>(replay.states.size() - 1));
@@ -59,7 +61,6 @@ int write_plan_frames(const scenario::World& world, const Reasoning& reasoning, 
     const auto state = interpolate(replay.states[i], replay.states[j], index - static_cast<double>(i));
     knowledge::infer(reasoning.knowledge, state, kappa);
 
-    render::Overlay overlay;
     overlay.mregions = mregion_overlays(reasoning.knowledge, kappa, state);
     const int region = replay.region_trace[i];
     const int q = replay.automaton_trace[i];
@@ -67,7 +68,7 @@ int write_plan_frames(const scenario::World& world, const Reasoning& reasoning, 
                       fmt::format("t = {:.2f} s   region: {}", time, region < 0 ? "p0" : world.regions[region].name),
                       fmt::format("automaton state {} of {}{}", q, automaton_states,
                                   q == replay.automaton_trace.back() && replay.accepted ? " (accepting)" : "")};
-    for (size_t k = 0; k <= i; ++k) overlay.path.push_back(replay.states[k].robot_position);
+    while (overlay.path.size() <= i) overlay.path.push_back(replay.states[overlay.path.size()].robot_position);
     writer.add(renderer.draw(state, overlay, render::View::kPerspective));
     if (progress) progress(f + 1, frames);
   }
