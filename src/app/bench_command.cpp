@@ -37,21 +37,20 @@ struct BenchArgs {
 
 BenchRun measure(const PreparedRun& prepared, const SolveOptions& options) {
   const auto started = std::chrono::steady_clock::now();
-  const planning::RaceResult race = solve(prepared, options);
+  const planning::ValidatedPlan solution = solve(prepared, options);
   BenchRun run;
   run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   run.seed = options.seed;
-  run.solved = race.solved();
-  run.stop_reason = race.solved() || !race.result.solved ? race.result.stop_reason : "failed replay";
-  run.tree_nodes = race.result.stats.tree_nodes;
-  for (const auto& racer : race.racers) {
-    run.propagations += racer.stats.propagations;
-    run.physics_steps += racer.stats.physics_steps;
-  }
+  const planning::PlanResult& result = solution.result;
+  run.solved = solution.solved();
+  run.stop_reason = solution.solved() || !result.solved ? result.stop_reason : "failed replay";
+  run.tree_nodes = result.stats.tree_nodes;
+  run.propagations = result.stats.propagations;
+  run.physics_steps = result.stats.physics_steps;
   if (run.solved) {
-    run.controls = static_cast<int>(race.result.plan.controls.size());
-    run.pushes = race.replay->pushes;
-    run.solution_duration_s = race.result.plan.total_steps() * prepared.world().planner.step_size;
+    run.controls = static_cast<int>(result.plan.controls.size());
+    run.pushes = solution.replay->pushes;
+    run.solution_duration_s = result.plan.total_steps() * prepared.world().planner.step_size;
   }
   return run;
 }
@@ -175,7 +174,7 @@ CommandRunner add_bench_command(CLI::App& app) {
   app.add_option("--time-limit", args->time_limit, "Planning time limit per run in seconds (default: the scenario's)")
       ->check(CLI::PositiveNumber);
   app.add_flag("--compare", args->compare, "Also run the baseline planner on the same seeds, interleaved");
-  app.add_option("--threads", args->threads, "Planners racing on each run; the first validated plan wins")
+  app.add_option("--threads", args->threads, "Threads growing each run's search tree (same plans, sooner)")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
   app.add_option("--log", args->log_file, "Also write an OMPL benchmark log (for ompl_benchmark_statistics.py)");

@@ -16,15 +16,16 @@ const planning::TaskAutomaton& PreparedRun::search_task(planning::Guidance guida
   return guidance == planning::Guidance::kBaseline ? as_written_ : simplified_;
 }
 
-planning::RaceResult solve(const PreparedRun& run, const SolveOptions& options) {
+planning::ValidatedPlan solve(const PreparedRun& run, const SolveOptions& options) {
   planning::PlannerOptions planner;
   planner.guidance = options.guidance;
   planner.seed = options.seed;
   planner.time_limit = options.time_limit;
   planner.stop = options.stop;
+  planner.threads = options.threads;
   const planning::Problem problem{run.world(), run.search_task(options.guidance), run.as_written(),
                                   run.reasoning().knowledge, run.decomposition()};
-  return planning::race(problem, planner, options.threads);
+  return planning::plan_and_validate(problem, planner);
 }
 
 }  // namespace physltl::app

@@ -4,7 +4,7 @@
 // counts as solved.
 
 #include "physltl/decomposition/decomposition.h"
-#include "physltl/planning/race.h"
+#include "physltl/planning/validated_plan.h"
 #include "physltl/planning/task.h"
 #include "reasoning.h"
 
@@ -43,7 +43,7 @@ struct SolveOptions {
   const std::atomic<bool>* stop = nullptr;  // Ctrl-C
 };
 
-// Plans with options.threads racing planners and validates the winning plan by replay.
-planning::RaceResult solve(const PreparedRun& run, const SolveOptions& options);
+// Plans with options.threads threads growing one tree and validates the plan by replay.
+planning::ValidatedPlan solve(const PreparedRun& run, const SolveOptions& options);
 
 }  // namespace physltl::app

@@ -81,18 +81,17 @@ int run(const RunArgs& args) {
   StopSignal stop;  // Ctrl-C and SIGTERM end the search; nothing is written then
   ProgressLine progress(args.quiet);
   progress.show(fmt::format("planning (up to {:g} s) ...", world.planner.time_limit));
-  const planning::RaceResult race = solve(prepared, {.guidance = guidance,
-                                                     .seed = world.planner.seed,
-                                                     .time_limit = world.planner.time_limit,
-                                                     .threads = args.threads,
-                                                     .stop = &stop.flag()});
+  const planning::ValidatedPlan solution = solve(prepared, {.guidance = guidance,
+                                                            .seed = world.planner.seed,
+                                                            .time_limit = world.planner.time_limit,
+                                                            .threads = args.threads,
+                                                            .stop = &stop.flag()});
   progress.done();
-  const planning::PlanResult& result = race.result;
+  const planning::PlanResult& result = solution.result;
   const auto& stats = result.stats;
   say(fmt::format("search     {}: {:.2f} s, {} nodes, {} propagations, {} physics steps{}", result.stop_reason,
                   stats.planning_time_s, stats.tree_nodes, stats.propagations, stats.physics_steps,
-                  args.threads > 1 && race.winner >= 0 ? fmt::format(" (thread {} of {})", race.winner, args.threads)
-                                                       : ""));
+                  args.threads > 1 ? fmt::format(" ({} threads)", args.threads) : ""));
   if (stop.received()) {
     std::cerr << "physltl-studio: interrupted; nothing written\n";
     return kExitInterrupted;
@@ -102,7 +101,7 @@ int run(const RunArgs& args) {
     return kExitNoPlan;
   }
 
-  const planning::Replay& replay = *race.replay;
+  const planning::Replay& replay = *solution.replay;
   if (!replay.validated()) {
     // The search and the replay disagree: a bug, never a result.
     std::cerr << "physltl-studio: BUG: the plan failed validation on replay: " << replay.failure
@@ -149,7 +148,7 @@ CommandRunner add_run_command(CLI::App& app) {
   app.add_option("--out", args->out_dir, "Folder for outputs; each scenario writes <out>/<name>/")->capture_default_str();
   app.add_flag("--baseline", args->baseline, "Plan without knowledge: the paper's simple physics-based LTL planner");
   app.add_flag("--quiet", args->quiet, "Print only errors");
-  app.add_option("--threads", args->threads, "Planners racing on the problem; the first validated plan wins")
+  app.add_option("--threads", args->threads, "Threads growing the search tree (same plan, sooner)")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
   return [args] { return run(*args); };

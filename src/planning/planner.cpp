@@ -1,36 +1,23 @@
 #include "physltl/planning/planner.h"
 
-#include "control_sampler.h"
-#include "physltl/knowledge/kappa.h"
-#include "physltl/physics/simulation.h"
 #include "product_graph.h"
 #include "random.h"
+#include "tree_grower.h"
+#include "worker_pool.h"
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 
 namespace physltl::planning {
 namespace {
 
 constexpr int kExpansionsPerLead = 64;  // tree expansions between two lead computations
-
-// A node of the tree: the state after `control` from `parent`.
-struct Motion {
-  physics::PhysicsState state;
-  Vec2 robot = Vec2::Zero();
-  int parent = -1;
-  Control control;
-  int automaton_state = 0;
-  int product_state = 0;
-};
-
-// Kappa is a function of the movable bodies' poses only, which stay bit for bit the same while the robot
-// moves without pushing: then INFERENCE need not run again.
-bool same_poses(const std::vector<geometry::Pose2>& a, const std::vector<geometry::Pose2>& b) {
-  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const geometry::Pose2& p, const geometry::Pose2& q) {
-    return p.position == q.position && p.yaw == q.yaw;
-  });
-}
+// Expansions chosen together and grown in parallel. Choosing a batch before growing it makes the plan
+// independent of the number of threads; a batch much larger than the thread count keeps them all busy
+// while the chain lengths of its expansions vary.
+constexpr int kBatch = 16;
+static_assert(kExpansionsPerLead % kBatch == 0);
 
 // Uniform point in a triangle.
 Vec2 point_in(const decomposition::Triangle& t, Random& random) {
@@ -38,6 +25,13 @@ Vec2 point_in(const decomposition::Triangle& t, Random& random) {
   if (a + b > 1.0) a = 1.0 - a, b = 1.0 - b;
   return t.corners[0] + a * (t.corners[1] - t.corners[0]) + b * (t.corners[2] - t.corners[0]);
 }
+
+// Where to grow from and towards, and the seed of the grower's own generator.
+struct Expansion {
+  int from = 0;
+  Vec2 target = Vec2::Zero();
+  std::uint64_t seed = 0;
+};
 
 class Search {
  public:
@@ -48,12 +42,10 @@ class Search {
         knowledge_(knowledge),
         decomposition_(decomposition),
         options_(options),
-        mode_(validity_mode(options.guidance)),
         graph_(decomposition, task),
-        sampler_(world, knowledge, options.guidance == Guidance::kKnowledge),
         random_(options.seed),
-        simulation_(world),
-        regions_(world) {}
+        pool_(options.threads),
+        growers_(static_cast<size_t>(pool_.threads())) {}
 
   PlanResult run() {
     const auto started = std::chrono::steady_clock::now();
@@ -75,12 +67,15 @@ class Search {
         return result;
       }
       collect_available(lead);
-      for (int i = 0; i < kExpansionsPerLead && !available_.empty(); ++i) {
-        const int solution = expand(lead);
+      for (int batch = 0; batch < kExpansionsPerLead / kBatch; ++batch) {
+        choose_expansions(lead);
+        grow_in_parallel();
+        const int solution = add_growths();
         if (solution >= 0) {
           finish(result, solution, started, "solved");
           return result;
         }
+        if (should_stop(started) != nullptr) break;
       }
     }
   }
@@ -96,12 +91,13 @@ class Search {
   }
 
   void add_root() {
-    simulation_.reset();
+    physics::Simulation simulation(world_);
+    const RegionMap regions(world_);
     Motion root;
-    simulation_.save(root.state);
+    simulation.save(root.state);
     root.robot = world_.robot.start;
     // The start is labelled with its region too (OMPL's LTLPlanner forgets this).
-    root.automaton_state = task_.step(task_.dfa.start, regions_.at(root.robot));
+    root.automaton_state = task_.step(task_.dfa.start, regions.at(root.robot));
     root.product_state = graph_.id(decomposition_.locate(root.robot), root.automaton_state);
     motions_.push_back(std::move(root));
     graph_.add_motion(motions_[0].product_state, 0);
@@ -126,69 +122,50 @@ class Search {
     return available_[std::min(k, available_.size() - 1)];
   }
 
-  // One SelectHighLevelState / SampleControlAndSteps / propagate round. Returns the index of a motion
-  // that reached acceptance, or -1.
-  int expand(const std::vector<int>& lead) {
-    const int lead_index = pick_available_lead_index();
-    const int product = lead[lead_index];
-    graph_.count_selection(product);
-    const auto& candidates = graph_.motions(product);
-    const int from = candidates[random_.uniform_int(0, static_cast<int>(candidates.size()) - 1)];
-
-    // Aim a few lead steps ahead: one triangle is too short a horizon for a robot pushing a box.
-    const int ahead = std::min<int>(lead_index + random_.uniform_int(1, 4), static_cast<int>(lead.size()) - 1);
-    const Vec2 target = point_in(decomposition_.triangles()[graph_.triangle_of(lead[ahead])], random_);
-
-    simulation_.restore(motions_[from].state);
-    simulation_.read_environment(environment_);
-    update_kappa();
-    const Control control = sampler_.sample(environment_, kappa_, target, random_);
-    ++stats_.propagations;
-
-    int automaton_state = motions_[from].automaton_state;
-    int valid_steps = 0;
-    bool accepted = false;
-    for (int step = 1; step <= control.steps; ++step) {
-      simulation_.step(control.force, contacts_);
-      ++stats_.physics_steps;
-      simulation_.read_environment(environment_);
-      // VALIDITYCHECKER(E_new, kappa_j), then kappa_{j+1} = INFERENCE(E_new, kappa_j).
-      if (!knowledge::is_valid(knowledge_, kappa_, environment_, contacts_, mode_)) {
-        ++stats_.invalid_steps;
-        break;
-      }
-      if (mode_ == knowledge::ValidityMode::kKnowledge) update_kappa();
-      const int next = task_.step(automaton_state, regions_.at(environment_.robot_position));
-      if (graph_.dead(next)) break;
-      automaton_state = next;
-      valid_steps = step;
-      simulation_.save(last_valid_);
-      if (task_.dfa.accepting[automaton_state]) {
-        accepted = true;
-        break;
-      }
+  // SelectHighLevelState of Algorithm 3, kBatch times, with the tree as it stands.
+  void choose_expansions(const std::vector<int>& lead) {
+    expansions_.resize(kBatch);
+    for (Expansion& e : expansions_) {
+      const int lead_index = pick_available_lead_index();
+      const int product = lead[lead_index];
+      graph_.count_selection(product);
+      const auto& candidates = graph_.motions(product);
+      e.from = candidates[random_.uniform_int(0, static_cast<int>(candidates.size()) - 1)];
+      // Aim a few lead steps ahead: one triangle is too short a horizon for a robot pushing a box.
+      const int ahead = std::min<int>(lead_index + random_.uniform_int(1, 4), static_cast<int>(lead.size()) - 1);
+      e.target = point_in(decomposition_.triangles()[graph_.triangle_of(lead[ahead])], random_);
+      e.seed = random_.next();
     }
-    if (valid_steps == 0) return -1;
-
-    Motion motion;
-    motion.state = last_valid_;
-    motion.robot = Vec2(last_valid_.values[0], last_valid_.values[1]);  // the robot's x, y come first
-    motion.parent = from;
-    motion.control = {control.force, valid_steps};
-    motion.automaton_state = automaton_state;
-    motion.product_state = graph_.id(decomposition_.locate(motion.robot), automaton_state);
-    const int index = static_cast<int>(motions_.size());
-    graph_.add_motion(motion.product_state, index);
-    motions_.push_back(std::move(motion));
-    return accepted ? index : -1;
   }
 
-  // kappa_ = INFERENCE(environment_), skipped when no movable body moved since the last inference.
-  void update_kappa() {
-    if (kappa_valid_ && same_poses(environment_.movable_poses, kappa_poses_)) return;
-    knowledge::infer(knowledge_, environment_, kappa_);
-    kappa_poses_ = environment_.movable_poses;
-    kappa_valid_ = true;
+  // SampleControlAndSteps and propagation for the whole batch. The tree is only read meanwhile.
+  void grow_in_parallel() {
+    growths_.resize(expansions_.size());
+    pool_.run(static_cast<int>(expansions_.size()), [this](int worker, int task) {
+      // Built on the thread that uses it: ODE keeps per-thread data.
+      auto& grower = growers_[static_cast<size_t>(worker)];
+      if (!grower) grower.emplace(world_, task_, knowledge_, decomposition_, graph_, options_.guidance == Guidance::kKnowledge);
+      const Expansion& e = expansions_[static_cast<size_t>(task)];
+      grower->grow(motions_[static_cast<size_t>(e.from)], e.target, e.seed, growths_[static_cast<size_t>(task)]);
+    });
+  }
+
+  // Adds the batch's motions in the order the expansions were chosen. Returns the first motion that
+  // reached acceptance, or -1.
+  int add_growths() {
+    for (size_t i = 0; i < growths_.size(); ++i) {
+      Growth& growth = growths_[i];
+      ++stats_.propagations;
+      stats_.physics_steps += growth.physics_steps;
+      stats_.invalid_steps += growth.stopped_by_invalid_step ? 1 : 0;
+      if (!growth.motion) continue;
+      const int index = static_cast<int>(motions_.size());
+      growth.motion->parent = expansions_[i].from;
+      graph_.add_motion(growth.motion->product_state, index);
+      motions_.push_back(std::move(*growth.motion));
+      if (growth.accepted) return index;
+    }
+    return -1;
   }
 
   void finish(PlanResult& result, int solution, std::chrono::steady_clock::time_point started, const char* reason) {
@@ -214,23 +191,16 @@ class Search {
   const knowledge::AbstractKnowledge& knowledge_;
   const decomposition::Decomposition& decomposition_;
   const PlannerOptions& options_;
-  const knowledge::ValidityMode mode_;
   ProductGraph graph_;
-  ControlSampler sampler_;
   Random random_;
-  physics::Simulation simulation_;
-  const RegionMap regions_;
   std::vector<Motion> motions_;
   std::vector<int> available_;         // indices into the current lead
   std::vector<double> cumulative_;     // running sums of their weights
+  std::vector<Expansion> expansions_;  // the current batch
+  std::vector<Growth> growths_;        // what each of them grew
   PlannerStats stats_;
-  // Scratch space reused by every step, so the hot loop does not allocate.
-  scenario::EnvironmentState environment_;
-  knowledge::Kappa kappa_;
-  std::vector<geometry::Pose2> kappa_poses_;  // the poses kappa_ was inferred for
-  bool kappa_valid_ = false;
-  std::vector<scenario::RobotContact> contacts_;
-  physics::PhysicsState last_valid_;
+  WorkerPool pool_;
+  std::vector<std::optional<TreeGrower>> growers_;  // one per worker
 };
 
 }  // namespace

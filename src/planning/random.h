@@ -17,6 +17,7 @@ class Random {
     return lo + static_cast<int>(engine_() % static_cast<std::uint64_t>(hi - lo + 1));
   }
   bool chance(double p) { return uniform01() < p; }
+  std::uint64_t next() { return engine_(); }
 
  private:
   std::mt19937_64 engine_;

@@ -6,7 +6,7 @@
 #include "physltl/ltl/simplify.h"
 #include "physltl/ltl/translate.h"
 #include "physltl/planning/planner.h"
-#include "physltl/planning/race.h"
+#include "physltl/planning/validated_plan.h"
 #include "physltl/scenario/load.h"
 
 #include <string>

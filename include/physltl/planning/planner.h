@@ -33,6 +33,9 @@ struct PlannerOptions {
   double time_limit = 60.0;                     // s of wall-clock planning
   const std::atomic<bool>* stop = nullptr;      // set from elsewhere (Ctrl-C, another thread's success)
   std::size_t max_tree_nodes = 2'000'000;       // memory bound: ~0.5 KiB per node
+  // Threads growing the one tree, each with its own ODE world. The plan does not depend on it: a seed
+  // gives the same plan with any number of threads, only sooner.
+  int threads = 1;
 };
 
 struct PlannerStats {

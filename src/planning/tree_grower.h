@@ -1,0 +1,73 @@
+#pragma once
+// One thread's share of the search: from a tree node, sample a control towards a target point and
+// propagate it through ODE step by step under the validity checker and INFERENCE. Each grower owns its ODE world, kappa and scratch space. What it grows depends only on
+// the node, the target and the seed, never on the grower's history, which is what lets several threads
+// expand one tree and still give a seed's plan exactly.
+
+#include "control_sampler.h"
+#include "physltl/decomposition/decomposition.h"
+#include "physltl/knowledge/abstract_knowledge.h"
+#include "physltl/knowledge/validity.h"
+#include "physltl/physics/simulation.h"
+#include "physltl/planning/task.h"
+#include "product_graph.h"
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace physltl::planning {
+
+// A node of the search tree: the state after `control` from `parent`.
+struct Motion {
+  physics::PhysicsState state;
+  Vec2 robot = Vec2::Zero();
+  int parent = -1;
+  Control control;
+  int automaton_state = 0;
+  int product_state = 0;
+};
+
+// What one expansion grew: a child of the node grown from (its `parent` is left for the tree to fill
+// in), unless the first step was already invalid.
+struct Growth {
+  std::optional<Motion> motion;
+  bool accepted = false;  // the motion reached an accepting automaton state
+  int physics_steps = 0;
+  bool stopped_by_invalid_step = false;
+};
+
+class TreeGrower {
+ public:
+  TreeGrower(const scenario::World& world, const TaskAutomaton& task, const knowledge::AbstractKnowledge& knowledge,
+             const decomposition::Decomposition& decomposition, const ProductGraph& graph, bool use_knowledge);
+
+  // Replaces `growth` with what grows from `from` towards `target`, drawing from a generator seeded with
+  // `seed`.
+  void grow(const Motion& from, const Vec2& target, std::uint64_t seed, Growth& growth);
+
+ private:
+  // Applies `control` from the simulation's current state until the end, an invalid step, a dead
+  // automaton state or acceptance; the valid steps make the growth's motion.
+  void propagate(const Control& control, int automaton_state, Growth& growth);
+  // kappa_ = INFERENCE(environment_), skipped when no movable body moved since the last inference.
+  void update_kappa();
+
+  const TaskAutomaton& task_;
+  const knowledge::AbstractKnowledge& knowledge_;
+  const decomposition::Decomposition& decomposition_;
+  const ProductGraph& graph_;
+  const knowledge::ValidityMode mode_;
+  const ControlSampler sampler_;
+  const RegionMap regions_;
+  physics::Simulation simulation_;
+  // Scratch space reused by every step, so the hot loop does not allocate.
+  scenario::EnvironmentState environment_;
+  knowledge::Kappa kappa_;
+  std::vector<geometry::Pose2> kappa_poses_;  // the poses kappa_ was inferred for
+  bool kappa_valid_ = false;
+  std::vector<scenario::RobotContact> contacts_;
+  physics::PhysicsState last_valid_;
+};
+
+}  // namespace physltl::planning
