@@ -16,6 +16,9 @@ constexpr double kCollisionHeight = 1.0;    // m; every body spans z = ±0.5 so 
 constexpr int kMaxContactsPerPair = 4;
 constexpr int kValuesPerBody = 10;          // position 3, yaw 1, linear velocity 3, angular velocity 3
 constexpr double kBoxSpeedFactor = 2.0;     // pushed boxes may not outrun the robot by more than this
+// A box slower than this is at rest: floor friction takes ~0.2 m/s off a sliding box per step, so a box
+// this slow would stop within the step anyway, and calling it stopped lets the step skip it.
+constexpr double kRestSpeed = 1e-4;         // m/s, and rad/s for turning
 
 // Coulomb friction of two materials, as Box2D and most engines combine it.
 double mix_friction(double a, double b) { return std::sqrt(a * b); }
@@ -43,6 +46,7 @@ struct Simulation::Impl {
   // normalising is not idempotent in the last bit, so a saved quaternion would not restore exactly;
   // the yaw it was made from does.
   std::vector<double> yaw;
+  std::vector<char> awake;  // per dynamic body, this step: it is integrated and collided
   double max_force;
   double max_speed;
   dContactGeom contact_buffer[kMaxContactsPerPair];
@@ -129,6 +133,7 @@ struct Simulation::Impl {
     planar_joints.push_back(joint);
     dynamic.push_back(g);
     yaw.push_back(0.0);
+    awake.push_back(1);
   }
 
   void set_yaw(size_t i, double value) {
@@ -149,11 +154,46 @@ struct Simulation::Impl {
     for (size_t i = 0; i < world.movable_bodies.size(); ++i) set_pose(i + 1, world.movable_bodies[i].footprint.pose);
   }
 
-  void collide(const Geom& a, const Geom& b, std::vector<scenario::RobotContact>& robot_contacts) {
+  static bool may_touch(const Geom& a, const Geom& b) {
     const dReal* pa = dGeomGetPosition(a.id);
     const dReal* pb = dGeomGetPosition(b.id);
     const double reach = a.bound_radius + b.bound_radius;
-    if ((pa[0] - pb[0]) * (pa[0] - pb[0]) + (pa[1] - pb[1]) * (pa[1] - pb[1]) > reach * reach) return;
+    return (pa[0] - pb[0]) * (pa[0] - pb[0]) + (pa[1] - pb[1]) * (pa[1] - pb[1]) <= reach * reach;
+  }
+
+  static bool at_rest(dBodyID body) {
+    const dReal* v = dBodyGetLinearVel(body);
+    const dReal* w = dBodyGetAngularVel(body);
+    return v[0] == 0.0 && v[1] == 0.0 && w[2] == 0.0;
+  }
+
+  // Which bodies this step moves: the robot, every box in motion, and every box that may touch one of
+  // those. A box at rest that nothing moving can reach would stay put bit for bit, and skipping it makes
+  // a step's cost grow with the bodies in motion rather than with all bodies in the World. The choice
+  // depends only on the state, so restoring a state restores it too.
+  void wake_bodies() {
+    awake[0] = 1;
+    for (size_t i = 1; i < dynamic.size(); ++i) awake[i] = !at_rest(dynamic[i].body);
+    for (bool woke = true; woke;) {
+      woke = false;
+      for (size_t i = 0; i < dynamic.size(); ++i) {
+        if (!awake[i]) continue;
+        for (size_t j = 1; j < dynamic.size(); ++j) {
+          if (!awake[j] && may_touch(dynamic[i], dynamic[j])) awake[j] = 1, woke = true;
+        }
+      }
+    }
+    for (size_t i = 1; i < dynamic.size(); ++i) {
+      if (awake[i]) {
+        dBodyEnable(dynamic[i].body);
+      } else {
+        dBodyDisable(dynamic[i].body);
+      }
+    }
+  }
+
+  void collide(const Geom& a, const Geom& b, std::vector<scenario::RobotContact>& robot_contacts) {
+    if (!may_touch(a, b)) return;
     const int found = dCollide(a.id, b.id, kMaxContactsPerPair, contact_buffer, sizeof(dContactGeom));
     // Tall boxes touch at the top and the bottom of the same vertical edge; in the plane those are one
     // contact, and the duplicate rows make the LCP singular ("LCP internal error"), so keep one.
@@ -199,7 +239,8 @@ struct Simulation::Impl {
     const dReal* w = dBodyGetAngularVel(body);
     const double speed = std::hypot(v[0], v[1]);
     const double scale = speed > speed_limit ? speed_limit / speed : 1.0;
-    const double vx = v[0] * scale, vy = v[1] * scale, wz = w[2];
+    double vx = v[0] * scale, vy = v[1] * scale, wz = w[2];
+    if (i > 0 && speed < kRestSpeed && std::abs(wz) < kRestSpeed) vx = vy = wz = 0.0;
     dBodySetPosition(body, p[0], p[1], 0.0);
     set_yaw(i, 2.0 * std::atan2(q[3], q[0]));
     dBodySetLinearVel(body, vx, vy, 0.0);
@@ -211,15 +252,22 @@ struct Simulation::Impl {
     const double fx = std::clamp(force.x(), -max_force, max_force);
     const double fy = std::clamp(force.y(), -max_force, max_force);
     dBodyAddForce(dynamic[0].body, fx, fy, 0.0);
-    // Fixed pair order, no collision space: contact order never depends on history.
+    wake_bodies();
+    // Fixed pair order, no collision space: contact order never depends on history. Two sleeping bodies
+    // cannot meet.
     for (size_t i = 0; i < dynamic.size(); ++i) {
-      for (size_t j = i + 1; j < dynamic.size(); ++j) collide(dynamic[i], dynamic[j], robot_contacts);
+      for (size_t j = i + 1; j < dynamic.size(); ++j) {
+        if (awake[i] || awake[j]) collide(dynamic[i], dynamic[j], robot_contacts);
+      }
+      if (!awake[i]) continue;
       for (const Geom& f : fixed) collide(dynamic[i], f, robot_contacts);
     }
     dWorldStep(ode_world, world.planner.step_size);
     dJointGroupEmpty(contact_group);
     settle(0, max_speed);
-    for (size_t i = 1; i < dynamic.size(); ++i) settle(i, kBoxSpeedFactor * max_speed);
+    for (size_t i = 1; i < dynamic.size(); ++i) {
+      if (awake[i]) settle(i, kBoxSpeedFactor * max_speed);
+    }
   }
 };
 

@@ -84,6 +84,39 @@ TEST(Simulation, SpeedSaturatesAtTheRobotsMaxSpeed) {
   EXPECT_LE(sim.environment().robot_velocity.norm(), world.robot.max_speed + 1e-12);
 }
 
+// Boxes at rest are skipped by a step; one that a moving body reaches must still take part, including a
+// box pushed by another box.
+TEST(Simulation, APushedBoxPushesTheBoxInFrontOfItAndLeavesADistantOneExactlyWhereItWas) {
+  auto world = small_world();
+  scenario::MovableBody second = world.movable_bodies[0], distant = world.movable_bodies[0];
+  second.name = "C";
+  second.footprint.pose.position = {3.8, 5};
+  distant.name = "D";
+  distant.footprint.pose.position = {3, 1};
+  world.movable_bodies.push_back(second);
+  world.movable_bodies.push_back(distant);
+  Simulation sim(world);
+  push(sim, {20, 0}, 80);
+  const auto e = sim.environment();
+  EXPECT_GT(e.movable_poses[1].position.x(), 4.0);  // C was pushed on by B
+  EXPECT_EQ(e.movable_poses[2].position, Vec2(3, 1));
+  EXPECT_EQ(e.movable_poses[2].yaw, 0.0);
+}
+
+TEST(Simulation, APushedBoxComesToRestExactlyOnceThePushEnds) {
+  const auto world = small_world();
+  Simulation sim(world);
+  push(sim, {20, 0}, 40);
+  ASSERT_GT(sim.environment().movable_velocities[0].norm(), 0.1);  // sliding
+  push(sim, {-20, 0}, 40);  // the robot backs off; floor friction stops the box
+  const auto e = sim.environment();
+  EXPECT_EQ(e.movable_velocities[0], Vec2::Zero());
+  const PhysicsState before = sim.save();
+  push(sim, {-20, 0}, 1);
+  EXPECT_EQ(sim.environment().movable_poses[0].position, e.movable_poses[0].position);
+  EXPECT_NE(sim.save(), before);  // the robot still moves
+}
+
 TEST(Simulation, RestoringAStateContinuesBitForBit) {
   const auto world = small_world();
   Simulation a(world), b(world);

@@ -1,7 +1,9 @@
 #pragma once
 // The physics of a World, on ODE: the paper's PROPAGATOR. Planar motion: the robot sphere and the boxes
 // slide on the floor (plane-2D joints), floor friction acts as Coulomb friction inside the solver, and
-// contacts are found in a fixed order, so the same state and control give bit-identical results.
+// contacts are found in a fixed order, so the same state and control give bit-identical results. A box
+// slower than 0.1 mm/s is at rest, and a step skips boxes at rest that no moving body can reach, so the
+// cost of a step follows the bodies in motion, not the size of the World.
 // One Simulation per thread; it is the only code that mutates physical state.
 
 #include "physltl/scenario/state.h"
