@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace physltl::knowledge {
 namespace {
@@ -35,21 +36,23 @@ struct ContactSegment {
   }
 };
 
-// Calls visit(interval) for every obstacle near the segment, with the stretch of the segment on which the
-// robot would overlap that obstacle. Obstacles: fixed bodies and every other movable body.
-template <class Visit>
-void for_each_blocked_stretch(const AbstractKnowledge& k, const scenario::EnvironmentState& state, size_t pushed,
-                              const ContactSegment& segment, Visit&& visit) {
+// The stretches of the segment on which the robot would overlap an obstacle: a fixed body or any other
+// movable body near the segment.
+void blocked_stretches(const AbstractKnowledge& k, const scenario::EnvironmentState& state, size_t pushed,
+                       const ContactSegment& segment, std::vector<Interval>& blocked) {
   const double r = k.robot.radius;
+  auto add = [&](const geometry::OrientedBox& box) {
+    const Interval stretch = Obstacle(box).closer_than(segment.from, segment.direction, r);
+    if (!stretch.empty()) blocked.push_back(stretch);
+  };
   for (const auto& f : k.fixed_bodies) {
-    if (!segment.may_reach(f.bounds, r)) continue;
-    visit(Obstacle(f.footprint).closer_than(segment.from, segment.direction, r));
+    if (segment.may_reach(f.bounds, r)) add(f.footprint);
   }
   for (size_t j = 0; j < k.movable_bodies.size(); ++j) {
     const auto& other = k.movable_bodies[j];
     const geometry::Pose2& pose = state.movable_poses[j];
     if (j == pushed || segment.distance_to(pose.position) >= other.bound_radius + r) continue;
-    visit(Obstacle({pose, other.footprint.half_extents}).closer_than(segment.from, segment.direction, r));
+    add({pose, other.footprint.half_extents});
   }
 }
 
@@ -62,17 +65,16 @@ bool has_free_stretch(const AbstractKnowledge& k, const scenario::EnvironmentSta
   const Interval in_workspace =
       inside_rectangle(segment.from - workspace_center, segment.direction, room_for_centre);
   const double end = std::min(segment.length, in_workspace.hi);
-  // Sweep t forward past every blocked stretch that covers [t, t + kMinFreeStretch); when a full pass
-  // moves nothing, that window is free. t only grows, to some stretch's end, so this terminates.
+  std::vector<Interval> blocked;
+  blocked.reserve(8);
+  blocked_stretches(k, state, pushed, segment, blocked);
+  std::sort(blocked.begin(), blocked.end(), [](const Interval& a, const Interval& b) { return a.lo < b.lo; });
+  // Sweep t forward past every blocked stretch that covers [t, t + kMinFreeStretch). In order of their
+  // starts, the first stretch that starts beyond that window leaves it free, and so do all later ones.
   double t = std::max(0.0, in_workspace.lo);
-  for (bool moved = true; moved && t + kMinFreeStretch <= end;) {
-    moved = false;
-    for_each_blocked_stretch(k, state, pushed, segment, [&](const Interval& blocked) {
-      if (blocked.lo < t + kMinFreeStretch && blocked.hi > t) {
-        t = blocked.hi;
-        moved = true;
-      }
-    });
+  for (const Interval& b : blocked) {
+    if (b.lo >= t + kMinFreeStretch) break;
+    t = std::max(t, b.hi);
   }
   return t + kMinFreeStretch <= end;
 }
@@ -84,6 +86,33 @@ Vec2 to_world(const geometry::Pose2& pose, double cos_yaw, double sin_yaw, const
 BodyType type_of(const MovableBodyKnowledge& body, SideSet active) {
   if (body.body_class == BodyClass::kFixed || active.empty()) return BodyType::kImmovable;
   return active.is_all() ? BodyType::kFree : BodyType::kConstraintOriented;
+}
+
+BodyKappa infer_body(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, size_t i) {
+  const MovableBodyKnowledge& body = knowledge.movable_bodies[i];
+  const geometry::Pose2& pose = state.movable_poses[i];
+  const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
+  SideSet active;
+  for (const MRegionTemplate& m : body.mregions) {
+    const Vec2 from = to_world(pose, c, s, m.contact_from);
+    const Vec2 along = to_world(pose, c, s, m.contact_to) - from;
+    const double length = along.norm();
+    if (has_free_stretch(knowledge, state, i, {from, along / length, length})) active.insert(m.side);
+  }
+  return {type_of(body, active), active};
+}
+
+// How far from a body's centre the robot's centre can be while it touches a pushable side.
+double segment_reach(const MovableBodyKnowledge& body) {
+  double reach = 0.0;
+  for (const MRegionTemplate& m : body.mregions) reach = std::max({reach, m.contact_from.norm(), m.contact_to.norm()});
+  return reach;
+}
+
+void check_body_count(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state) {
+  if (state.movable_poses.size() != knowledge.movable_bodies.size()) {
+    throw std::invalid_argument("infer: the state has a different number of movable bodies than the knowledge");
+  }
 }
 
 }  // namespace
@@ -98,23 +127,35 @@ const char* type_name(BodyType type) {
 }
 
 void infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, Kappa& kappa) {
+  check_body_count(knowledge, state);
+  kappa.bodies.resize(knowledge.movable_bodies.size());
+  for (size_t i = 0; i < kappa.bodies.size(); ++i) kappa.bodies[i] = infer_body(knowledge, state, i);
+}
+
+void reinfer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state,
+             std::span<const geometry::Pose2> inferred_for, Kappa& kappa) {
+  check_body_count(knowledge, state);
   const size_t n = knowledge.movable_bodies.size();
-  if (state.movable_poses.size() != n) {
-    throw std::invalid_argument("infer: the state has a different number of movable bodies than the knowledge");
+  if (inferred_for.size() != n || kappa.bodies.size() != n) {
+    throw std::invalid_argument("reinfer: kappa was inferred for a different number of movable bodies");
   }
-  kappa.bodies.resize(n);
+  std::vector<size_t> moved;
+  for (size_t j = 0; j < n; ++j) {
+    const geometry::Pose2& now = state.movable_poses[j];
+    if (now.position != inferred_for[j].position || now.yaw != inferred_for[j].yaw) moved.push_back(j);
+  }
+  if (moved.empty()) return;
+  const double r = knowledge.robot.radius;
   for (size_t i = 0; i < n; ++i) {
-    const MovableBodyKnowledge& body = knowledge.movable_bodies[i];
-    const geometry::Pose2& pose = state.movable_poses[i];
-    const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
-    SideSet active;
-    for (const MRegionTemplate& m : body.mregions) {
-      const Vec2 from = to_world(pose, c, s, m.contact_from);
-      const Vec2 along = to_world(pose, c, s, m.contact_to) - from;
-      const double length = along.norm();
-      if (has_free_stretch(knowledge, state, i, {from, along / length, length})) active.insert(m.side);
-    }
-    kappa.bodies[i] = {type_of(body, active), active};
+    const Vec2& centre = state.movable_poses[i].position;
+    // A moved body changes i's mRegions only if it comes, before or after the move, within a robot's
+    // diameter of a contact segment of i.
+    const bool affected = std::any_of(moved.begin(), moved.end(), [&](size_t j) {
+      if (j == i) return true;
+      const double reach = segment_reach(knowledge.movable_bodies[i]) + 2.0 * r + knowledge.movable_bodies[j].bound_radius;
+      return (inferred_for[j].position - centre).norm() < reach || (state.movable_poses[j].position - centre).norm() < reach;
+    });
+    if (affected) kappa.bodies[i] = infer_body(knowledge, state, i);
   }
 }
 

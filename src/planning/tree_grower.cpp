@@ -3,20 +3,7 @@
 #include "physltl/knowledge/kappa.h"
 #include "random.h"
 
-#include <algorithm>
-
 namespace physltl::planning {
-namespace {
-
-// Kappa is a function of the movable bodies' poses only, which stay bit for bit the same while the robot
-// moves without pushing: then INFERENCE need not run again.
-bool same_poses(const std::vector<geometry::Pose2>& a, const std::vector<geometry::Pose2>& b) {
-  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const geometry::Pose2& p, const geometry::Pose2& q) {
-    return p.position == q.position && p.yaw == q.yaw;
-  });
-}
-
-}  // namespace
 
 TreeGrower::TreeGrower(const scenario::World& world, const TaskAutomaton& task,
                        const knowledge::AbstractKnowledge& knowledge, const decomposition::Decomposition& decomposition,
@@ -74,10 +61,13 @@ void TreeGrower::propagate(const Control& control, int automaton_state, Growth& 
 }
 
 void TreeGrower::update_kappa() {
-  if (kappa_valid_ && same_poses(environment_.movable_poses, kappa_poses_)) return;
-  knowledge::infer(knowledge_, environment_, kappa_);
+  if (kappa_valid_) {
+    knowledge::reinfer(knowledge_, environment_, kappa_poses_, kappa_);
+  } else {
+    knowledge::infer(knowledge_, environment_, kappa_);
+    kappa_valid_ = true;
+  }
   kappa_poses_ = environment_.movable_poses;
-  kappa_valid_ = true;
 }
 
 }  // namespace physltl::planning

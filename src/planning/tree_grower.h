@@ -50,7 +50,7 @@ class TreeGrower {
   // Applies `control` from the simulation's current state until the end, an invalid step, a dead
   // automaton state or acceptance; the valid steps make the growth's motion.
   void propagate(const Control& control, int automaton_state, Growth& growth);
-  // kappa_ = INFERENCE(environment_), skipped when no movable body moved since the last inference.
+  // kappa_ = INFERENCE(environment_), redone only for the bodies a move since the last call can affect.
   void update_kappa();
 
   const TaskAutomaton& task_;

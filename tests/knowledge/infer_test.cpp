@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <numbers>
+#include <random>
+#include <string>
 
 namespace physltl::knowledge {
 namespace {
@@ -139,6 +141,51 @@ TEST(Infer, InPlaceInferenceEqualsFreshInferenceWhateverThePreviousKappa) {
   infer(k, state, previous);
   EXPECT_EQ(previous, infer(k, state));
   EXPECT_EQ(infer(k, state), infer(k, state));
+}
+
+// The planner re-infers after every physics step from the previous kappa; bodies moving in and out of
+// each other's mRegions must give exactly what a fresh inference gives.
+TEST(Reinfer, EqualsFreshInferenceAlongRandomMovesInACrowdedRoom) {
+  auto w = open_world(2.5);
+  add_wall(w, "middle", {-0.1, -2.5}, {0.1, 0.5});
+  for (int row = 0; row < 3; ++row) {
+    for (int column = 0; column < 4; ++column) {
+      add_box(w, "B" + std::to_string(row * 4 + column), {-1.8 + 1.2 * column, -1.5 + 1.2 * row}, {0.5, 0.4});
+    }
+  }
+  const auto k = formulate(w);
+  auto state = scenario::EnvironmentState::initial(w);
+  Kappa kappa = infer(k, state);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> step(-0.15, 0.15), anywhere(-2.2, 2.2);
+  int changes = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const auto before = state.movable_poses;
+    const Kappa kappa_before = kappa;
+    for (int moves = 1 + static_cast<int>(random() % 3); moves > 0; --moves) {
+      auto& pose = state.movable_poses[random() % state.movable_poses.size()];
+      if (random() % 20 == 0) {
+        pose.position = {anywhere(random), anywhere(random)};  // a jump across the room
+      } else {
+        pose.position += Vec2(step(random), step(random));
+        pose.yaw += 0.3 * step(random);
+      }
+    }
+    reinfer(k, state, before, kappa);
+    ASSERT_EQ(kappa, infer(k, state)) << "move " << i;
+    changes += kappa != kappa_before;
+  }
+  EXPECT_GT(changes, 300);  // the moves did block and free mRegions
+}
+
+TEST(Reinfer, WithNothingMovedKeepsKappa) {
+  auto w = open_world();
+  add_box(w, "A", {0, 0}, {0.5, 0.5});
+  const auto k = formulate(w);
+  const auto state = scenario::EnvironmentState::initial(w);
+  Kappa kappa{{{BodyType::kImmovable, {}}}};  // deliberately not this state's: nothing moved, nothing redone
+  reinfer(k, state, state.movable_poses, kappa);
+  EXPECT_EQ(kappa.bodies[0].type, BodyType::kImmovable);
 }
 
 TEST(Infer, RejectsAStateWithADifferentNumberOfBodies) {

@@ -6,6 +6,7 @@
 #include "physltl/knowledge/side_set.h"
 #include "physltl/scenario/state.h"
 
+#include <span>
 #include <vector>
 
 namespace physltl::knowledge {
@@ -33,6 +34,12 @@ Kappa infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState
 // INFERENCE: E x kappa -> kappa'. Rewrites `kappa` in place for `state`, reusing its storage so the
 // planner's call after every propagation step does not allocate. The result equals infer(knowledge, state).
 void infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, Kappa& kappa);
+
+// INFERENCE after a change of state: `kappa` was inferred for the movable poses `inferred_for`; this
+// infers again only the bodies that moved and those a moved body came near, which is what keeps the
+// planner's per-step cost independent of the number of bodies. The result equals infer(knowledge, state).
+void reinfer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state,
+             std::span<const geometry::Pose2> inferred_for, Kappa& kappa);
 
 // The world-frame directions a body at `pose` can be pushed in now, one per active side.
 std::vector<geometry::Vec2> allowed_push_directions(const MovableBodyKnowledge& body, const BodyKappa& kappa,
