@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <functional>
 #include <queue>
 
 namespace physltl::planning {
@@ -54,18 +55,21 @@ double ProductGraph::weight(int id) const {
   return coverage * volume / (automaton_distance * selected * selected);
 }
 
-std::vector<int> ProductGraph::lead(int start) const {
-  const int n = static_cast<int>(motions_.size());
-  std::vector<double> cost(n, std::numeric_limits<double>::infinity());
-  std::vector<int> previous(n, -1);
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+std::vector<int> ProductGraph::lead(int start) {
+  // Dijkstra; the buffers are members because the planner asks for a lead dozens of times a second.
+  std::vector<double>& cost = lead_cost_;
+  std::vector<int>& previous = lead_previous_;
+  std::vector<std::pair<double, int>>& open = lead_open_;  // a min-heap
+  cost.assign(motions_.size(), std::numeric_limits<double>::infinity());
+  previous.assign(motions_.size(), -1);
+  open.clear();
   cost[start] = 0.0;
-  open.push({0.0, start});
+  open.push_back({0.0, start});
   int goal = -1;
   while (!open.empty()) {
-    const auto [c, u] = open.top();
-    open.pop();
+    std::pop_heap(open.begin(), open.end(), std::greater<>{});
+    const auto [c, u] = open.back();
+    open.pop_back();
     if (c > cost[u]) continue;
     if (accepting(u)) {
       goal = u;
@@ -80,7 +84,8 @@ std::vector<int> ProductGraph::lead(int start) const {
       if (next_cost < cost[v]) {
         cost[v] = next_cost;
         previous[v] = u;
-        open.push({next_cost, v});
+        open.push_back({next_cost, v});
+        std::push_heap(open.begin(), open.end(), std::greater<>{});
       }
     }
   }

@@ -5,6 +5,7 @@
 #include "physltl/decomposition/decomposition.h"
 #include "physltl/planning/task.h"
 
+#include <utility>
 #include <vector>
 
 namespace physltl::planning {
@@ -27,7 +28,7 @@ class ProductGraph {
   double weight(int id) const;
 
   // Product states from `start` to the first accepting one, cheapest under 1/weight; empty if none.
-  std::vector<int> lead(int start) const;
+  std::vector<int> lead(int start);
 
  private:
   const decomposition::Decomposition& decomposition_;
@@ -36,6 +37,9 @@ class ProductGraph {
   std::vector<int> distance_to_accept_;  // automaton steps, over letters with at most one region; -1 never
   std::vector<std::vector<int>> motions_;
   std::vector<int> selections_;
+  std::vector<double> lead_cost_;
+  std::vector<int> lead_previous_;
+  std::vector<std::pair<double, int>> lead_open_;
 };
 
 }  // namespace physltl::planning

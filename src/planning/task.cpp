@@ -3,15 +3,22 @@
 namespace physltl::planning {
 
 TaskAutomaton TaskAutomaton::make(const ltl::Dfa& dfa, const scenario::World& world) {
-  TaskAutomaton task{dfa, {}};
+  TaskAutomaton task{dfa, {}, {}};
   for (const auto& region : world.regions) task.proposition_of_region.push_back(dfa.proposition_index(region.name));
+  const int letters = static_cast<int>(world.regions.size()) + 1;
+  task.successors.resize(dfa.size() * static_cast<size_t>(letters));
+  for (int state = 0; state < static_cast<int>(dfa.size()); ++state) {
+    for (int region = -1; region + 1 < letters; ++region) {
+      const int proposition = region < 0 ? -1 : task.proposition_of_region[region];
+      task.successors[state * letters + region + 1] =
+          proposition < 0 ? dfa.step(state, {}) : dfa.step(state, std::span<const int>(&proposition, 1));
+    }
+  }
   return task;
 }
 
 int TaskAutomaton::step(int state, int region) const {
-  const int proposition = region < 0 ? -1 : proposition_of_region[region];
-  if (proposition < 0) return dfa.step(state, {});
-  return dfa.step(state, std::span<const int>(&proposition, 1));
+  return successors[state * (proposition_of_region.size() + 1) + region + 1];
 }
 
 RegionMap::RegionMap(const scenario::World& world) : world_(world) {

@@ -14,6 +14,9 @@ struct TaskAutomaton {
   // For each World region, the index of its proposition in dfa.propositions, or -1 when the formula
   // does not mention it (the region then reads as the paper's p0).
   std::vector<int> proposition_of_region;
+  // step(state, region) for every state and region, tabulated: the planner asks after every physics step
+  // and for every edge of its lead search. Indexed [state * (regions + 1) + region + 1].
+  std::vector<int> successors;
 
   static TaskAutomaton make(const ltl::Dfa& dfa, const scenario::World& world);
   // The automaton's state after it reads the region the robot is in (-1: no region).
