@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <optional>
 
 namespace physltl::planning {
@@ -18,6 +19,7 @@ constexpr int kExpansionsPerLead = 64;  // tree expansions between two lead comp
 // while the chain lengths of its expansions vary.
 constexpr int kBatch = 16;
 static_assert(kExpansionsPerLead % kBatch == 0);
+constexpr int kBatchesPerLead = kExpansionsPerLead / kBatch;
 // Share of expansions that grow from the frontier of the lead (below) rather than from anywhere along it.
 // Bhatia's weights alone spread the effort over every stage the tree has passed, most of it going to
 // rooms already done in a sequencing task; the rest keeps every stage in reach. Measured with the next
@@ -65,20 +67,27 @@ class Search {
       finish(result, 0, started, "solved");
       return result;
     }
+    std::vector<int> lead = graph_.lead(root_product);
     while (true) {
       if (const char* reason = should_stop(started)) {
         finish(result, -1, started, reason);
         return result;
       }
-      const std::vector<int> lead = graph_.lead(root_product);
       if (lead.empty()) {
         finish(result, -1, started, "no lead");
         return result;
       }
       collect_available(lead);
-      for (int batch = 0; batch < kExpansionsPerLead / kBatch; ++batch) {
+      std::vector<int> next_lead;
+      for (int batch = 0; batch < kBatchesPerLead; ++batch) {
         choose_expansions(lead);
-        grow_in_parallel();
+        // The next lead is computed while the last batch grows: the tree stands still meanwhile, and on a
+        // large world the lead search costs as much as a batch.
+        if (batch + 1 == kBatchesPerLead) {
+          grow_in_parallel([&] { next_lead = graph_.lead(root_product); });
+        } else {
+          grow_in_parallel(nullptr);
+        }
         const int solution = add_growths();
         if (solution >= 0) {
           finish(result, solution, started, "solved");
@@ -86,6 +95,7 @@ class Search {
         }
         if (should_stop(started) != nullptr) break;
       }
+      lead = std::move(next_lead);
     }
   }
 
@@ -155,14 +165,17 @@ class Search {
   }
 
   // SampleControlAndSteps and propagation for the whole batch. The tree is only read meanwhile.
-  void grow_in_parallel() {
+  // `alongside`, if given, runs as one more task of the batch, first.
+  void grow_in_parallel(const std::function<void()>& alongside) {
     growths_.resize(expansions_.size());
-    pool_.run(static_cast<int>(expansions_.size()), [this](int worker, int task) {
+    const int extra = alongside ? 1 : 0;
+    pool_.run(static_cast<int>(expansions_.size()) + extra, [&](int worker, int task) {
+      if (task < extra) return alongside();
       // Built on the thread that uses it: ODE keeps per-thread data.
       auto& grower = growers_[static_cast<size_t>(worker)];
       if (!grower) grower.emplace(world_, task_, knowledge_, decomposition_, graph_, options_.guidance == Guidance::kKnowledge);
-      const Expansion& e = expansions_[static_cast<size_t>(task)];
-      grower->grow(motions_[static_cast<size_t>(e.from)], e.target, e.seed, growths_[static_cast<size_t>(task)]);
+      const Expansion& e = expansions_[static_cast<size_t>(task - extra)];
+      grower->grow(motions_[static_cast<size_t>(e.from)], e.target, e.seed, growths_[static_cast<size_t>(task - extra)]);
     });
   }
 
