@@ -30,7 +30,7 @@ struct BenchArgs {
   std::optional<std::uint64_t> seed;
   std::optional<double> time_limit;
   bool compare = false;
-  int threads = 1;
+  std::vector<int> threads{1};
   std::string log_file;
   std::string out_dir = "out/bench";
 };
@@ -102,6 +102,11 @@ void write_log(const std::filesystem::path& file, const OmplExperiment& experime
 }
 
 int bench(const BenchArgs& args) {
+  for (size_t i = 0; i < args.threads.size(); ++i) {
+    if (std::count(args.threads.begin(), args.threads.begin() + static_cast<long>(i), args.threads[i]) > 0) {
+      throw BadInput(fmt::format("--threads: {} is given twice", args.threads[i]));
+    }
+  }
   scenario::World world = args.scenario.load();
   if (args.time_limit) world.planner.time_limit = *args.time_limit;
   const Reasoning reasoning = reason_about(world);
@@ -120,25 +125,27 @@ int bench(const BenchArgs& args) {
   results.time_limit_s = world.planner.time_limit;
   results.threads = args.threads;
   results.started_at = local_time_now();
-  results.planners.push_back({planning::Guidance::kKnowledge, {}});
-  if (args.compare) results.planners.push_back({planning::Guidance::kBaseline, {}});
+  for (const auto guidance : {planning::Guidance::kKnowledge, planning::Guidance::kBaseline}) {
+    if (guidance == planning::Guidance::kBaseline && !args.compare) continue;
+    for (int threads : args.threads) results.planners.push_back({guidance, threads, {}});
+  }
 
   StopSignal stop;
   const bool show_progress = isatty(STDERR_FILENO);
   const auto started = std::chrono::steady_clock::now();
-  // Interleaved (knowledge seed S, baseline seed S, knowledge S+1, ...) so that drift in the machine's
-  // load hits both planners alike.
+  // Interleaved (knowledge seed S, baseline seed S, knowledge S+1, ..., and each thread count in turn) so
+  // that drift in the machine's speed hits every configuration alike.
   for (int i = 0; i < args.runs; ++i) {
     for (auto& planner : results.planners) {
       const std::uint64_t seed = results.first_seed + static_cast<std::uint64_t>(i);
       if (show_progress) {
         fmt::print(stderr, "\r{:<60}", fmt::format("run {}/{}: {} seed {} ...", i + 1, args.runs,
-                                                   guidance_name(planner.guidance), seed));
+                                                   planner_label(results, planner), seed));
       }
       planner.runs.push_back(measure(prepared, {.guidance = planner.guidance,
                                                 .seed = seed,
                                                 .time_limit = world.planner.time_limit,
-                                                .threads = args.threads,
+                                                .threads = planner.threads,
                                                 .stop = &stop.flag()}));
       if (stop.received()) {
         if (show_progress) fmt::print(stderr, "\n");
@@ -174,7 +181,10 @@ CommandRunner add_bench_command(CLI::App& app) {
   app.add_option("--time-limit", args->time_limit, "Planning time limit per run in seconds (default: the scenario's)")
       ->check(CLI::PositiveNumber);
   app.add_flag("--compare", args->compare, "Also run the baseline planner on the same seeds, interleaved");
-  app.add_option("--threads", args->threads, "Threads growing each run's search tree (same plans, sooner)")
+  app.add_option("--threads", args->threads,
+                 "Threads growing each run's search tree (same plans, sooner); a list such as 1,2 measures each, "
+                 "interleaved")
+      ->delimiter(',')
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
   app.add_option("--log", args->log_file, "Also write an OMPL benchmark log (for ompl_benchmark_statistics.py)");

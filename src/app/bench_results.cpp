@@ -4,17 +4,26 @@
 #include "statistics.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace physltl::app {
 namespace {
 
 using json = nlohmann::ordered_json;
 
-const PlannerRuns* find_planner(const BenchResults& results, planning::Guidance guidance) {
+const PlannerRuns* find_planner(const BenchResults& results, planning::Guidance guidance, int threads) {
   for (const auto& p : results.planners) {
-    if (p.guidance == guidance) return &p;
+    if (p.guidance == guidance && p.threads == threads) return &p;
   }
   return nullptr;
+}
+
+double median_of(const BenchResults& results, const PlannerRuns& planner) {
+  return summarize(planner, results.time_limit_s).median_s;
+}
+
+std::string threads_text(const std::vector<int>& threads) {
+  return fmt::format("{} thread{}", fmt::join(threads, ", "), threads.size() == 1 && threads[0] == 1 ? "" : "s");
 }
 
 std::string seeds_text(const BenchResults& r) {
@@ -72,28 +81,50 @@ PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
 }
 
 std::optional<double> ratio_of_medians(const BenchResults& results) {
-  const PlannerRuns* knowledge = find_planner(results, planning::Guidance::kKnowledge);
-  const PlannerRuns* baseline = find_planner(results, planning::Guidance::kBaseline);
+  if (results.threads.empty()) return std::nullopt;
+  const PlannerRuns* knowledge = find_planner(results, planning::Guidance::kKnowledge, results.threads[0]);
+  const PlannerRuns* baseline = find_planner(results, planning::Guidance::kBaseline, results.threads[0]);
   if (knowledge == nullptr || baseline == nullptr) return std::nullopt;
-  const double k = summarize(*knowledge, results.time_limit_s).median_s;
+  const double k = median_of(results, *knowledge);
   if (k <= 0.0) return std::nullopt;
-  return summarize(*baseline, results.time_limit_s).median_s / k;
+  return median_of(results, *baseline) / k;
+}
+
+std::vector<ThreadsRatio> threads_ratios(const BenchResults& results) {
+  std::vector<ThreadsRatio> ratios;
+  if (results.threads.empty()) return ratios;
+  const PlannerRuns* first = find_planner(results, planning::Guidance::kKnowledge, results.threads[0]);
+  if (first == nullptr || median_of(results, *first) <= 0.0) return ratios;
+  for (size_t i = 1; i < results.threads.size(); ++i) {
+    if (const PlannerRuns* p = find_planner(results, planning::Guidance::kKnowledge, results.threads[i])) {
+      ratios.push_back({results.threads[i], median_of(results, *p) / median_of(results, *first)});
+    }
+  }
+  return ratios;
+}
+
+std::string planner_label(const BenchResults& results, const PlannerRuns& planner) {
+  const std::string name = guidance_name(planner.guidance);
+  return results.threads.size() > 1 ? fmt::format("{} x{}", name, planner.threads) : name;
 }
 
 std::string bench_table(const BenchResults& r) {
-  std::string text = fmt::format("{}: {} runs ({}), time limit {:g} s, {} thread{}\n", r.scenario, r.runs,
-                                 seeds_text(r), r.time_limit_s, r.threads, r.threads == 1 ? "" : "s");
-  text += fmt::format("{:<10} {:>7} {:>9} {:>8} {:>8} {:>8} {:>7} {:>8} {:>7} {:>10}\n", "planner", "solved",
+  std::string text = fmt::format("{}: {} runs ({}), time limit {:g} s, {}\n", r.scenario, r.runs, seeds_text(r),
+                                 r.time_limit_s, threads_text(r.threads));
+  text += fmt::format("{:<12} {:>7} {:>9} {:>8} {:>8} {:>8} {:>7} {:>8} {:>7} {:>10}\n", "planner", "solved",
                       "median_s", "mean_s", "p90_s", "max_s", "nodes", "prop/s", "pushes", "duration_s");
   for (const auto& p : r.planners) {
     const PlannerSummary s = summarize(p, r.time_limit_s);
-    text += fmt::format("{:<10} {:>7} {:>9.3f} {:>8.3f} {:>8.3f} {:>8.3f} {:>7.0f} {:>8.0f} {:>7.1f} {:>10.2f}\n",
-                        guidance_name(p.guidance), fmt::format("{}/{}", s.solved, p.runs.size()), s.median_s,
+    text += fmt::format("{:<12} {:>7} {:>9.3f} {:>8.3f} {:>8.3f} {:>8.3f} {:>7.0f} {:>8.0f} {:>7.1f} {:>10.2f}\n",
+                        planner_label(r, p), fmt::format("{}/{}", s.solved, p.runs.size()), s.median_s,
                         s.mean_s, s.p90_s, s.max_s, s.tree_nodes_median, s.propagations_per_s, s.pushes_median,
                         s.solution_duration_median_s);
   }
   if (const auto ratio = ratio_of_medians(r)) {
     text += fmt::format("ratio of medians (baseline / knowledge): {:.2f}\n", *ratio);
+  }
+  for (const auto& [threads, ratio] : threads_ratios(r)) {
+    text += fmt::format("ratio of medians (knowledge x{} / knowledge x{}): {:.2f}\n", threads, r.threads[0], ratio);
   }
   text += "times count unsolved runs at the time limit; pushes and duration are medians over solved runs\n";
   return text;
@@ -120,6 +151,7 @@ json bench_json(const BenchResults& r) {
       runs.push_back(std::move(entry));
     }
     planners.push_back({{"name", guidance_name(p.guidance)},
+                        {"threads", p.threads},
                         {"solved", s.solved},
                         {"median_s", s.median_s},
                         {"mean_s", s.mean_s},
@@ -133,6 +165,8 @@ json bench_json(const BenchResults& r) {
                         {"per_run", std::move(runs)}});
   }
   const auto ratio = ratio_of_medians(r);
+  json ratios = json::array();
+  for (const auto& [threads, value] : threads_ratios(r)) ratios.push_back({{"threads", threads}, {"ratio", value}});
   return {{"scenario", r.scenario},
           {"scenario_file", r.scenario_file},
           {"settings", r.settings},
@@ -143,13 +177,13 @@ json bench_json(const BenchResults& r) {
           {"started_at", r.started_at},
           {"total_duration_s", r.total_duration_s},
           {"planners", std::move(planners)},
-          {"ratio_of_medians", ratio ? json(*ratio) : json(nullptr)}};
+          {"ratio_of_medians", ratio ? json(*ratio) : json(nullptr)},
+          {"threads_ratios", std::move(ratios)}};
 }
 
 OmplExperiment ompl_experiment(const BenchResults& r, const std::string& host, const std::string& cpu_info) {
   OmplExperiment e;
   e.name = r.scenario;
-  e.parameters = {{"threads INTEGER", std::to_string(r.threads)}};
   e.host = host;
   e.start_time = r.started_at;
   std::string command = "physltl-studio bench " + r.scenario_file;
@@ -163,7 +197,8 @@ OmplExperiment ompl_experiment(const BenchResults& r, const std::string& host, c
   for (const auto& p : r.planners) {
     OmplPlannerResults planner;
     planner.name = std::string("physltl_") + guidance_name(p.guidance);
-    planner.common = {{"guidance", guidance_name(p.guidance)}};
+    if (r.threads.size() > 1) planner.name += fmt::format("_{}threads", p.threads);
+    planner.common = {{"guidance", guidance_name(p.guidance)}, {"threads", std::to_string(p.threads)}};
     const PlannerSummary s = summarize(p, r.time_limit_s);
     for (size_t i = 0; i < p.runs.size(); ++i) planner.runs.push_back(ompl_run(p.runs[i], s.times_s[i]));
     e.planners.push_back(std::move(planner));

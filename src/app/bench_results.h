@@ -19,16 +19,18 @@ struct BenchRun {
   bool solved = false;         // a plan that replay validated
   std::string stop_reason;
   double wall_s = 0.0;         // planning and validating, as measured
-  long long tree_nodes = 0;    // of the winning (or first) planner's tree
-  long long propagations = 0;  // of all racing planners
+  long long tree_nodes = 0;
+  long long propagations = 0;
   long long physics_steps = 0;
   int controls = 0;            // solved runs only
   int pushes = 0;
   double solution_duration_s = 0.0;
 };
 
+// One planner with one thread count.
 struct PlannerRuns {
   planning::Guidance guidance;
+  int threads = 1;
   std::vector<BenchRun> runs;  // one per seed, in seed order
 };
 
@@ -39,10 +41,11 @@ struct BenchResults {
   std::uint64_t first_seed = 1;
   int runs = 0;
   double time_limit_s = 0.0;
-  int threads = 1;
+  std::vector<int> threads;    // the thread counts measured, as given
   std::string started_at;      // local "YYYY-MM-DD HH:MM:SS"
   double total_duration_s = 0.0;
-  std::vector<PlannerRuns> planners;  // knowledge first, then the baseline with --compare
+  // Knowledge with each thread count, then the baseline with each (--compare).
+  std::vector<PlannerRuns> planners;
 };
 
 struct PlannerSummary {
@@ -57,8 +60,19 @@ struct PlannerSummary {
 
 PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s);
 
-// The baseline's median time over the knowledge planner's, or null without a baseline.
+// The baseline's median time over the knowledge planner's, both with the first thread count; null without
+// a baseline.
 std::optional<double> ratio_of_medians(const BenchResults& results);
+
+// For the knowledge planner with each further thread count: its median over the first thread count's.
+struct ThreadsRatio {
+  int threads = 1;
+  double ratio = 0.0;
+};
+std::vector<ThreadsRatio> threads_ratios(const BenchResults& results);
+
+// "knowledge", or "knowledge x2" when several thread counts were measured.
+std::string planner_label(const BenchResults& results, const PlannerRuns& planner);
 
 std::string bench_table(const BenchResults& results);
 nlohmann::ordered_json bench_json(const BenchResults& results);

@@ -50,4 +50,33 @@ TEST(Bench, WithoutCompareRunsOnlyTheKnowledgePlanner) {
   EXPECT_EQ(r.out.find("baseline"), std::string::npos);
 }
 
+TEST(Bench, SeveralThreadCountsAreMeasuredOnTheSameSeedsWithTheSamePlans) {
+  const fs::path out = fresh_out_dir();
+  const Result r = run("bench " + kSource + "/scenarios/ordered.lua --runs 2 --threads 1,2 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("knowledge x2"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("ratio of medians (knowledge x2 / knowledge x1)"), std::string::npos) << r.out;
+
+  const auto j = nlohmann::json::parse(slurp(out / "ordered" / "bench.json"));
+  EXPECT_EQ(j["threads"], nlohmann::json::parse("[1, 2]"));
+  ASSERT_EQ(j["planners"].size(), 2u);
+  EXPECT_EQ(j["planners"][0]["threads"], 1);
+  EXPECT_EQ(j["planners"][1]["threads"], 2);
+  for (int run = 0; run < 2; ++run) {  // threads change the time a plan takes, not the plan
+    EXPECT_EQ(j["planners"][0]["per_run"][run]["propagations"], j["planners"][1]["per_run"][run]["propagations"]);
+    EXPECT_EQ(j["planners"][0]["per_run"][run]["tree_nodes"], j["planners"][1]["per_run"][run]["tree_nodes"]);
+  }
+  ASSERT_EQ(j["threads_ratios"].size(), 1u);
+  EXPECT_EQ(j["threads_ratios"][0]["threads"], 2);
+  EXPECT_TRUE(j["threads_ratios"][0]["ratio"].is_number());
+}
+
+TEST(Bench, AThreadCountGivenTwiceIsRefused) {
+  const fs::path out = fresh_out_dir();
+  const Result r = run("bench " + kSource + "/scenarios/ordered.lua --threads 2,1,2 --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--threads: 2 is given twice"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out / "ordered"));
+}
+
 }  // namespace
