@@ -38,21 +38,34 @@ std::vector<int> distances_to_accept(const TaskAutomaton& task) {
 }  // namespace
 
 ProductGraph::ProductGraph(const decomposition::Decomposition& decomposition, const TaskAutomaton& task)
-    : decomposition_(decomposition),
-      task_(task),
+    : task_(task),
       automaton_states_(static_cast<int>(task.dfa.size())),
       distance_to_accept_(distances_to_accept(task)),
       motions_(static_cast<size_t>(decomposition.size()) * automaton_states_),
-      selections_(motions_.size(), 0) {}
+      selections_(motions_.size(), 0) {
+  for (const auto& triangle : decomposition.triangles()) {
+    first_neighbour_.push_back(static_cast<int>(neighbours_.size()));
+    for (int t : triangle.neighbors) neighbours_.push_back({t, decomposition.triangles()[t].region});
+  }
+  first_neighbour_.push_back(static_cast<int>(neighbours_.size()));
+  volume_per_distance_.resize(motions_.size());
+  for (size_t id = 0; id < motions_.size(); ++id) {
+    const int i = static_cast<int>(id);
+    volume_per_distance_[id] = decomposition.triangles()[triangle_of(i)].area /
+                               (distance_to_accept_[automaton_state_of(i)] + 1.0);
+  }
+  entry_cost_.resize(motions_.size());
+  for (size_t id = 0; id < motions_.size(); ++id) entry_cost_[id] = 1.0 / weight(static_cast<int>(id));
+}
 
-void ProductGraph::add_motion(int id, int motion) { motions_[id].push_back(motion); }
+void ProductGraph::add_motion(int id, int motion) {
+  motions_[id].push_back(motion);
+  entry_cost_[id] = 1.0 / weight(id);
+}
 
-double ProductGraph::weight(int id) const {
-  const double coverage = static_cast<double>(motions_[id].size()) + 1.0;
-  const double selected = static_cast<double>(selections_[id]) + 1.0;
-  const double volume = decomposition_.triangles()[triangle_of(id)].area;
-  const double automaton_distance = distance_to_accept_[automaton_state_of(id)] + 1.0;
-  return coverage * volume / (automaton_distance * selected * selected);
+void ProductGraph::count_selection(int id) {
+  ++selections_[id];
+  entry_cost_[id] = 1.0 / weight(id);
 }
 
 std::vector<int> ProductGraph::lead(int start) {
@@ -76,11 +89,12 @@ std::vector<int> ProductGraph::lead(int start) {
       break;
     }
     const int q = automaton_state_of(u);
-    for (int t : decomposition_.triangles()[triangle_of(u)].neighbors) {
-      const int next_q = task_.step(q, decomposition_.triangles()[t].region);
+    const int triangle = triangle_of(u);
+    for (int n = first_neighbour_[triangle]; n < first_neighbour_[triangle + 1]; ++n) {
+      const int next_q = task_.step(q, neighbours_[n].region);
       if (dead(next_q)) continue;
-      const int v = id(t, next_q);
-      const double next_cost = c + 1.0 / weight(v);
+      const int v = id(neighbours_[n].triangle, next_q);
+      const double next_cost = c + entry_cost_[v];
       if (next_cost < cost[v]) {
         cost[v] = next_cost;
         previous[v] = u;

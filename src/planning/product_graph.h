@@ -23,20 +23,32 @@ class ProductGraph {
 
   // Book-keeping the weights depend on (Bhatia et al. 2010, as in OMPL's LTLPlanner).
   void add_motion(int id, int motion);
-  void count_selection(int id) { ++selections_[id]; }
+  void count_selection(int id);
   const std::vector<int>& motions(int id) const { return motions_[id]; }
-  double weight(int id) const;
+  double weight(int id) const {
+    const double selected = static_cast<double>(selections_[id]) + 1.0;
+    return (static_cast<double>(motions_[id].size()) + 1.0) * volume_per_distance_[id] / (selected * selected);
+  }
 
   // Product states from `start` to the first accepting one, cheapest under 1/weight; empty if none.
   std::vector<int> lead(int start);
 
  private:
-  const decomposition::Decomposition& decomposition_;
   const TaskAutomaton& task_;
   int automaton_states_;
   std::vector<int> distance_to_accept_;  // automaton steps, over letters with at most one region; -1 never
+  // The lead search's view of the decomposition, flat: for each triangle its neighbours and their regions.
+  struct Neighbour {
+    int triangle;
+    int region;
+  };
+  std::vector<int> first_neighbour_;  // per triangle, into neighbours_; one more entry at the end
+  std::vector<Neighbour> neighbours_;
+  // The weight's constant part: triangle area over (automaton steps to acceptance + 1).
+  std::vector<double> volume_per_distance_;
   std::vector<std::vector<int>> motions_;
   std::vector<int> selections_;
+  std::vector<double> entry_cost_;  // 1 / weight, kept up to date: the lead search reads it for every edge
   std::vector<double> lead_cost_;
   std::vector<int> lead_previous_;
   std::vector<std::pair<double, int>> lead_open_;
