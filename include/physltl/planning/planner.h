@@ -6,8 +6,9 @@
 // Why not OMPL's LTLPlanner: it labels neither the start state nor the cells crossed within one
 // propagation (a fast robot skips cells and reaches product states the graph does not expect), solve()
 // runs once per planner, and OMPL's random generator is seeded process-wide, which defeats one seed per
-// run and per thread. This loop keeps the same structure (lead, available regions, weights) and tracks
-// the automaton at every physics step.
+// run and per thread. This loop keeps the same structure (lead, available regions, weights), tracks the
+// automaton at every physics step, grows mostly from the lead's frontier, and lets several threads grow
+// one tree without changing the plan (docs/planner.md).
 
 #include "physltl/decomposition/decomposition.h"
 #include "physltl/knowledge/abstract_knowledge.h"
