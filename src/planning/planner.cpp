@@ -16,7 +16,7 @@ namespace {
 constexpr int kExpansionsPerLead = 64;  // tree expansions between two lead computations
 // Expansions chosen together and grown in parallel. Choosing a batch before growing it makes the plan
 // independent of the number of threads; a batch much larger than the thread count keeps them all busy
-// while the chain lengths of its expansions vary.
+// although its propagations differ in length.
 constexpr int kBatch = 16;
 static_assert(kExpansionsPerLead % kBatch == 0);
 constexpr int kBatchesPerLead = kExpansionsPerLead / kBatch;
