@@ -57,16 +57,16 @@ void blocked_stretches(const AbstractKnowledge& k, const scenario::EnvironmentSt
 }
 
 // Whether the robot can stand somewhere along the segment: inside the workspace and clear of obstacles.
+// `blocked` is scratch space, passed in so that one inference allocates it once.
 bool has_free_stretch(const AbstractKnowledge& k, const scenario::EnvironmentState& state, size_t pushed,
-                      const ContactSegment& segment) {
+                      const ContactSegment& segment, std::vector<Interval>& blocked) {
   const Vec2 workspace_center = 0.5 * (k.workspace.min + k.workspace.max);
   const Vec2 room_for_centre = 0.5 * k.workspace.size() - Vec2::Constant(k.robot.radius);
   if (room_for_centre.minCoeff() <= 0.0) return false;
   const Interval in_workspace =
       inside_rectangle(segment.from - workspace_center, segment.direction, room_for_centre);
   const double end = std::min(segment.length, in_workspace.hi);
-  std::vector<Interval> blocked;
-  blocked.reserve(8);
+  blocked.clear();
   blocked_stretches(k, state, pushed, segment, blocked);
   std::sort(blocked.begin(), blocked.end(), [](const Interval& a, const Interval& b) { return a.lo < b.lo; });
   // Sweep t forward past every blocked stretch that covers [t, t + kMinFreeStretch). In order of their
@@ -88,7 +88,8 @@ BodyType type_of(const MovableBodyKnowledge& body, SideSet active) {
   return active.is_all() ? BodyType::kFree : BodyType::kConstraintOriented;
 }
 
-BodyKappa infer_body(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, size_t i) {
+BodyKappa infer_body(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, size_t i,
+                     std::vector<Interval>& scratch) {
   const MovableBodyKnowledge& body = knowledge.movable_bodies[i];
   const geometry::Pose2& pose = state.movable_poses[i];
   const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
@@ -97,7 +98,9 @@ BodyKappa infer_body(const AbstractKnowledge& knowledge, const scenario::Environ
     const Vec2 from = to_world(pose, c, s, m.contact_from);
     const Vec2 along = to_world(pose, c, s, m.contact_to) - from;
     const double length = along.norm();
-    if (has_free_stretch(knowledge, state, i, {from, along / length, length})) active.insert(m.side);
+    if (length > 0.0 && has_free_stretch(knowledge, state, i, {from, along / length, length}, scratch)) {
+      active.insert(m.side);
+    }
   }
   return {type_of(body, active), active};
 }
@@ -129,7 +132,8 @@ const char* type_name(BodyType type) {
 void infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, Kappa& kappa) {
   check_body_count(knowledge, state);
   kappa.bodies.resize(knowledge.movable_bodies.size());
-  for (size_t i = 0; i < kappa.bodies.size(); ++i) kappa.bodies[i] = infer_body(knowledge, state, i);
+  std::vector<Interval> scratch;
+  for (size_t i = 0; i < kappa.bodies.size(); ++i) kappa.bodies[i] = infer_body(knowledge, state, i, scratch);
 }
 
 void reinfer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state,
@@ -146,6 +150,7 @@ void reinfer(const AbstractKnowledge& knowledge, const scenario::EnvironmentStat
   }
   if (moved.empty()) return;
   const double r = knowledge.robot.radius;
+  std::vector<Interval> scratch;
   for (size_t i = 0; i < n; ++i) {
     const Vec2& centre = state.movable_poses[i].position;
     // A moved body changes i's mRegions only if it comes, before or after the move, within a robot's
@@ -155,7 +160,7 @@ void reinfer(const AbstractKnowledge& knowledge, const scenario::EnvironmentStat
       const double reach = segment_reach(knowledge.movable_bodies[i]) + 2.0 * r + knowledge.movable_bodies[j].bound_radius;
       return (inferred_for[j].position - centre).norm() < reach || (state.movable_poses[j].position - centre).norm() < reach;
     });
-    if (affected) kappa.bodies[i] = infer_body(knowledge, state, i);
+    if (affected) kappa.bodies[i] = infer_body(knowledge, state, i, scratch);
   }
 }
 

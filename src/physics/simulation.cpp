@@ -46,7 +46,8 @@ struct Simulation::Impl {
   // normalising is not idempotent in the last bit, so a saved quaternion would not restore exactly;
   // the yaw it was made from does.
   std::vector<double> yaw;
-  std::vector<char> awake;  // per dynamic body, this step: it is integrated and collided
+  std::vector<char> awake;    // per dynamic body, this step: it is integrated and collided
+  std::vector<size_t> woken;  // wake_bodies' work list, kept to avoid allocating every step
   double max_force;
   double max_speed;
   dContactGeom contact_buffer[kMaxContactsPerPair];
@@ -168,19 +169,21 @@ struct Simulation::Impl {
   }
 
   // Which bodies this step moves: the robot, every box in motion, and every box that may touch one of
-  // those. A box at rest that nothing moving can reach would stay put bit for bit, and skipping it makes
-  // a step's cost grow with the bodies in motion rather than with all bodies in the World. The choice
-  // depends only on the state, so restoring a state restores it too.
+  // those, found from each woken body in turn. The others are left out of the step: ODE's solver and the
+  // contact tests then cost in proportion to the bodies in motion, not to all bodies in the World. This
+  // is a physical simplification, like any engine's sleeping bodies: a box at rest is no longer settled
+  // or pushed out of a wall it slightly overlaps. The choice depends only on the state, so restoring a
+  // state restores it too.
   void wake_bodies() {
-    awake[0] = 1;
-    for (size_t i = 1; i < dynamic.size(); ++i) awake[i] = !at_rest(dynamic[i].body);
-    for (bool woke = true; woke;) {
-      woke = false;
-      for (size_t i = 0; i < dynamic.size(); ++i) {
-        if (!awake[i]) continue;
-        for (size_t j = 1; j < dynamic.size(); ++j) {
-          if (!awake[j] && may_touch(dynamic[i], dynamic[j])) awake[j] = 1, woke = true;
-        }
+    woken.clear();
+    for (size_t i = 0; i < dynamic.size(); ++i) {
+      awake[i] = i == 0 || !at_rest(dynamic[i].body);
+      if (awake[i]) woken.push_back(i);
+    }
+    for (size_t next = 0; next < woken.size(); ++next) {
+      const Geom& mover = dynamic[woken[next]];
+      for (size_t j = 1; j < dynamic.size(); ++j) {
+        if (!awake[j] && may_touch(mover, dynamic[j])) awake[j] = 1, woken.push_back(j);
       }
     }
     for (size_t i = 1; i < dynamic.size(); ++i) {
@@ -273,8 +276,6 @@ struct Simulation::Impl {
 
 Simulation::Simulation(const scenario::World& world) : impl_(std::make_unique<Impl>(world)) {}
 Simulation::~Simulation() = default;
-
-void Simulation::reset() { impl_->reset(); }
 
 double Simulation::step_size() const { return impl_->world.planner.step_size; }
 

@@ -69,10 +69,6 @@ class Search {
     }
     std::vector<int> lead = graph_.lead(root_product);
     while (true) {
-      if (const char* reason = should_stop(started)) {
-        finish(result, -1, started, reason);
-        return result;
-      }
       if (lead.empty()) {
         finish(result, -1, started, "no lead");
         return result;
@@ -93,7 +89,10 @@ class Search {
           finish(result, solution, started, "solved");
           return result;
         }
-        if (should_stop(started) != nullptr) break;
+        if (const char* reason = should_stop(started)) {
+          finish(result, -1, started, reason);
+          return result;
+        }
       }
       lead = std::move(next_lead);
     }

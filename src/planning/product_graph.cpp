@@ -51,8 +51,9 @@ ProductGraph::ProductGraph(const decomposition::Decomposition& decomposition, co
   volume_per_distance_.resize(motions_.size());
   for (size_t id = 0; id < motions_.size(); ++id) {
     const int i = static_cast<int>(id);
-    volume_per_distance_[id] = decomposition.triangles()[triangle_of(i)].area /
-                               (distance_to_accept_[automaton_state_of(i)] + 1.0);
+    // Zero for states from which acceptance is out of reach: the lead never enters them.
+    const int distance = distance_to_accept_[automaton_state_of(i)];
+    volume_per_distance_[id] = distance < 0 ? 0.0 : decomposition.triangles()[triangle_of(i)].area / (distance + 1.0);
   }
   entry_cost_.resize(motions_.size());
   for (size_t id = 0; id < motions_.size(); ++id) entry_cost_[id] = 1.0 / weight(static_cast<int>(id));

@@ -1,8 +1,9 @@
 #pragma once
 // One thread's share of the search: from a tree node, sample a control towards a target point and
-// propagate it through ODE step by step under the validity checker and INFERENCE. Each grower owns its ODE world, kappa and scratch space. What it grows depends only on
-// the node, the target and the seed, never on the grower's history, which is what lets several threads
-// expand one tree and still give a seed's plan exactly.
+// propagate it through ODE step by step under the validity checker and INFERENCE. Each grower owns its
+// ODE world, kappa and scratch space. What it grows depends only on the node, the target and the seed,
+// never on the grower's history, which is what lets several threads expand one tree and still give a
+// seed's plan exactly.
 
 #include "control_sampler.h"
 #include "physltl/decomposition/decomposition.h"

@@ -5,10 +5,17 @@
 namespace physltl::planning {
 
 WorkerPool::WorkerPool(int threads) {
-  for (int w = 1; w < std::max(threads, 1); ++w) helpers_.emplace_back([this, w] { help(w); });
+  try {
+    for (int w = 1; w < std::max(threads, 1); ++w) helpers_.emplace_back([this, w] { help(w); });
+  } catch (...) {
+    close();  // the helpers already started wait for a batch; they must be told to leave before joining
+    throw;
+  }
 }
 
-WorkerPool::~WorkerPool() {
+WorkerPool::~WorkerPool() { close(); }
+
+void WorkerPool::close() {
   {
     std::lock_guard lock(mutex_);
     closing_ = true;

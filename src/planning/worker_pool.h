@@ -31,6 +31,7 @@ class WorkerPool {
  private:
   void help(int worker);
   void work(int worker);
+  void close();  // stops and joins the helpers
 
   std::mutex mutex_;
   std::condition_variable batch_ready_;

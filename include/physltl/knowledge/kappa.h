@@ -31,13 +31,14 @@ struct Kappa {
 // anywhere along it, would overlap a fixed body, another movable body or leave the workspace.
 Kappa infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state);
 
-// INFERENCE: E x kappa -> kappa'. Rewrites `kappa` in place for `state`, reusing its storage so the
-// planner's call after every propagation step does not allocate. The result equals infer(knowledge, state).
+// INFERENCE: E x kappa -> kappa'. Rewrites `kappa` in place for `state`, reusing its storage. The result
+// equals infer(knowledge, state).
 void infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, Kappa& kappa);
 
 // INFERENCE after a change of state: `kappa` was inferred for the movable poses `inferred_for`; this
-// infers again only the bodies that moved and those a moved body came near, which is what keeps the
-// planner's per-step cost independent of the number of bodies. The result equals infer(knowledge, state).
+// infers again only the bodies that moved and those a moved body came near, so that a step that moves one
+// box costs about one body's inference however many bodies the World has (plus a comparison of every
+// pose). The result equals infer(knowledge, state).
 void reinfer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state,
              std::span<const geometry::Pose2> inferred_for, Kappa& kappa);
 

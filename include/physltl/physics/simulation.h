@@ -2,8 +2,8 @@
 // The physics of a World, on ODE: the paper's PROPAGATOR. Planar motion: the robot sphere and the boxes
 // slide on the floor (plane-2D joints), floor friction acts as Coulomb friction inside the solver, and
 // contacts are found in a fixed order, so the same state and control give bit-identical results. A box
-// slower than 0.1 mm/s is at rest, and a step skips boxes at rest that no moving body can reach, so the
-// cost of a step follows the bodies in motion, not the size of the World.
+// slower than 0.1 mm/s is at rest, and a step leaves out the boxes at rest that no moving body can reach,
+// so ODE's solver and contact tests work on the bodies in motion, not on the whole World.
 // One Simulation per thread; it is the only code that mutates physical state.
 
 #include "physltl/scenario/state.h"
@@ -28,7 +28,6 @@ class Simulation {
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 
-  void reset();  // the World's initial state
   PhysicsState save() const;
   void save(PhysicsState& out) const;  // reuses out's storage: the planner saves after every step
   void restore(const PhysicsState& state);
