@@ -14,10 +14,12 @@
 #include <fmt/ostream.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <thread>
 
 namespace physltl::app {
 namespace {
@@ -30,7 +32,9 @@ struct RunArgs {
   std::string out_dir = "out";
   bool baseline = false;
   bool quiet = false;
-  int threads = 1;
+  // One per core: threads change how soon the plan is found, never which plan (bench defaults to one
+  // thread, the fair figure).
+  int threads = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
 };
 
 void write_json(const std::filesystem::path& file, const nlohmann::ordered_json& j) {
@@ -148,7 +152,8 @@ CommandRunner add_run_command(CLI::App& app) {
   app.add_option("--out", args->out_dir, "Folder for outputs; each scenario writes <out>/<name>/")->capture_default_str();
   app.add_flag("--baseline", args->baseline, "Plan without knowledge: the paper's simple physics-based LTL planner");
   app.add_flag("--quiet", args->quiet, "Print only errors");
-  app.add_option("--threads", args->threads, "Threads growing the search tree (same plan, sooner)")
+  app.add_option("--threads", args->threads,
+                 "Threads growing the search tree (default: one per core; the same plan with any number)")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
   return [args] { return run(*args); };
