@@ -53,7 +53,7 @@ TEST(Run, SameSeedGivesByteIdenticalPlanAndFramesWithOneOrTwoThreads) {
   const fs::path a = test_dir("a"), b = test_dir("b");
   fs::remove_all(a);
   fs::remove_all(b);
-  ASSERT_EQ(run(scenario.string() + " --render --seed 5 --quiet --out " + a.string()).exit_code, 0);
+  ASSERT_EQ(run(scenario.string() + " --render --seed 5 --threads 1 --quiet --out " + a.string()).exit_code, 0);
   ASSERT_EQ(run(scenario.string() + " --render --seed 5 --threads 2 --quiet --out " + b.string()).exit_code, 0);
   EXPECT_EQ(slurp(a / "ordered" / "plan.json"), slurp(b / "ordered" / "plan.json"));
   int frames = 0;
