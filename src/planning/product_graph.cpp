@@ -64,6 +64,11 @@ void ProductGraph::add_motion(int id, int motion) {
   entry_cost_[id] = 1.0 / weight(id);
 }
 
+void ProductGraph::remove_motion(int id, int motion) {
+  std::erase(motions_[id], motion);
+  entry_cost_[id] = 1.0 / weight(id);
+}
+
 void ProductGraph::count_selection(int id) {
   ++selections_[id];
   entry_cost_[id] = 1.0 / weight(id);

@@ -23,6 +23,7 @@ class ProductGraph {
 
   // Book-keeping the weights depend on (Bhatia et al. 2010, as in OMPL's LTLPlanner).
   void add_motion(int id, int motion);
+  void remove_motion(int id, int motion);
   void count_selection(int id);
   const std::vector<int>& motions(int id) const { return motions_[id]; }
   double weight(int id) const {

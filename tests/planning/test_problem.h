@@ -9,6 +9,7 @@
 #include "physltl/planning/validated_plan.h"
 #include "physltl/scenario/load.h"
 
+#include <map>
 #include <string>
 
 namespace physltl::planning {
@@ -20,8 +21,8 @@ struct TestProblem {
   TaskAutomaton original;  // of the formula as written: what replay checks
   decomposition::Decomposition decomposition;
 
-  explicit TestProblem(const std::string& name)
-      : world(scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/scenarios/" + name)),
+  explicit TestProblem(const std::string& name, const std::map<std::string, std::string>& params = {})
+      : world(scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/scenarios/" + name, {.params = params})),
         knowledge(knowledge::formulate(world)),
         task(make_task(true)),
         original(make_task(false)),

@@ -37,7 +37,7 @@ TEST(Threads, TwoAndThreeThreadsFindExactlyTheOneThreadPlanAndItValidates) {
 }
 
 TEST(Threads, AnOutsideStopEndsEveryThreadPromptly) {
-  const TestProblem p("rooms.lua");
+  const TestProblem p("rooms_n.lua", {{"rooms", "16"}});
   std::atomic<bool> stop{false};
   PlannerOptions options = options_with(1, 2);
   options.stop = &stop;
@@ -48,7 +48,7 @@ TEST(Threads, AnOutsideStopEndsEveryThreadPromptly) {
   const auto started = std::chrono::steady_clock::now();
   const ValidatedPlan result = plan_and_validate(p.problem(), options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  // rooms.lua takes its planner hundreds of milliseconds; a stop after 50 ms lands mid-search.
+  // Sixteen rooms take the planner seconds; a stop after 50 ms lands mid-search.
   EXPECT_FALSE(result.solved());
   EXPECT_EQ(result.result.stop_reason, "interrupted");
   EXPECT_FALSE(result.replay.has_value());

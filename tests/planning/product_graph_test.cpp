@@ -1,0 +1,48 @@
+#include "product_graph.h"
+
+#include "test_problem.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace physltl::planning {
+namespace {
+
+TEST(ProductGraph, TheLeadWalksNeighbouringTrianglesToAcceptance) {
+  const TestProblem p("ordered.lua");
+  ProductGraph graph(p.decomposition, p.task);
+  const RegionMap regions(p.world);
+  const int start_triangle = p.decomposition.locate(p.world.robot.start);
+  const int start = graph.id(start_triangle, p.task.step(p.task.dfa.start, regions.at(p.world.robot.start)));
+  const std::vector<int> lead = graph.lead(start);
+  ASSERT_GE(lead.size(), 2u);
+  EXPECT_EQ(lead.front(), start);
+  EXPECT_TRUE(graph.accepting(lead.back()));
+  for (size_t i = 1; i < lead.size(); ++i) {
+    const auto& from = p.decomposition.triangles()[graph.triangle_of(lead[i - 1])];
+    const int to = graph.triangle_of(lead[i]);
+    EXPECT_NE(std::find(from.neighbors.begin(), from.neighbors.end(), to), from.neighbors.end()) << i;
+    // Entering a triangle reads its region.
+    EXPECT_EQ(graph.automaton_state_of(lead[i]),
+              p.task.step(graph.automaton_state_of(lead[i - 1]), p.decomposition.triangles()[to].region));
+  }
+}
+
+TEST(ProductGraph, DroppingAStatesLastNodeMakesItUnexploredAgain) {
+  const TestProblem p("ordered.lua");
+  ProductGraph graph(p.decomposition, p.task);
+  const int state = graph.id(0, p.task.dfa.start);
+  const double unexplored = graph.weight(state);
+  graph.add_motion(state, 7);
+  graph.add_motion(state, 9);
+  EXPECT_GT(graph.weight(state), unexplored);
+  graph.remove_motion(state, 7);
+  EXPECT_EQ(graph.motions(state), std::vector<int>{9});
+  graph.remove_motion(state, 9);
+  EXPECT_TRUE(graph.motions(state).empty());
+  EXPECT_EQ(graph.weight(state), unexplored);
+}
+
+}  // namespace
+}  // namespace physltl::planning
