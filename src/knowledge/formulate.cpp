@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace physltl::knowledge {
@@ -100,6 +101,15 @@ AbstractKnowledge formulate(const scenario::World& world, const FormulationSetti
   }
   for (const auto& m : world.movable_bodies) k.movable_bodies.push_back(movable_knowledge(m, world, k.robot, settings));
   for (const auto& region : world.regions) k.propositions.push_back({region.name, region.polygon});
+
+  // A contact segment lies within half its length of its midpoint, and the robot on it within its radius.
+  double half_segment = 0.0;
+  for (const auto& body : k.movable_bodies) {
+    for (const auto& m : body.mregions) half_segment = std::max(half_segment, 0.5 * (m.contact_to - m.contact_from).norm());
+  }
+  std::vector<geometry::Rect> bounds;
+  for (const auto& f : k.fixed_bodies) bounds.push_back(f.bounds);
+  k.fixed_near = geometry::RectGrid(bounds, half_segment + k.robot.radius);
   return k;
 }
 

@@ -45,8 +45,9 @@ void blocked_stretches(const AbstractKnowledge& k, const scenario::EnvironmentSt
     const Interval stretch = Obstacle(box).closer_than(segment.from, segment.direction, r);
     if (!stretch.empty()) blocked.push_back(stretch);
   };
-  for (const auto& f : k.fixed_bodies) {
-    if (segment.may_reach(f.bounds, r)) add(f.footprint);
+  for (int f : k.fixed_near.near(segment.from + 0.5 * segment.length * segment.direction)) {
+    const FixedBodyKnowledge& fixed = k.fixed_bodies[static_cast<size_t>(f)];
+    if (segment.may_reach(fixed.bounds, r)) add(fixed.footprint);
   }
   for (size_t j = 0; j < k.movable_bodies.size(); ++j) {
     const auto& other = k.movable_bodies[j];

@@ -1,6 +1,7 @@
 #include "physltl/physics/simulation.h"
 
 #include "ode_runtime.h"
+#include "physltl/geometry/rect_grid.h"
 
 #include <ode/ode.h>
 #include <ode/threading_impl.h>
@@ -41,6 +42,7 @@ struct Simulation::Impl {
   dJointGroupID contact_group = nullptr;
   std::vector<Geom> dynamic;  // robot first, then movables in World order
   std::vector<Geom> fixed;
+  geometry::RectGrid fixed_near;  // the fixed bodies' bounds, within reach of the largest dynamic body
   std::vector<dJointID> planar_joints;
   // The yaw each body's quaternion was last set from. ODE normalises every quaternion it is given, and
   // normalising is not idempotent in the last bit, so a saved quaternion would not restore exactly;
@@ -95,6 +97,11 @@ struct Simulation::Impl {
       place(g.id, f.footprint.pose);
       fixed.push_back(g);
     }
+    std::vector<geometry::Rect> fixed_bounds;
+    for (const auto& f : w.fixed_bodies) fixed_bounds.push_back(geometry::Polygon::from_box(f.footprint).bounds());
+    double reach = 0.0;
+    for (const Geom& g : dynamic) reach = std::max(reach, g.bound_radius);
+    fixed_near = geometry::RectGrid(fixed_bounds, reach);
     reset();
   }
 
@@ -257,13 +264,15 @@ struct Simulation::Impl {
     dBodyAddForce(dynamic[0].body, fx, fy, 0.0);
     wake_bodies();
     // Fixed pair order, no collision space: contact order never depends on history. Two sleeping bodies
-    // cannot meet.
+    // cannot meet. The grid only leaves out fixed bodies too far away to touch, in index order, so the
+    // contacts are those of testing every pair.
     for (size_t i = 0; i < dynamic.size(); ++i) {
       for (size_t j = i + 1; j < dynamic.size(); ++j) {
         if (awake[i] || awake[j]) collide(dynamic[i], dynamic[j], robot_contacts);
       }
       if (!awake[i]) continue;
-      for (const Geom& f : fixed) collide(dynamic[i], f, robot_contacts);
+      const dReal* p = dGeomGetPosition(dynamic[i].id);
+      for (int f : fixed_near.near({p[0], p[1]})) collide(dynamic[i], fixed[static_cast<size_t>(f)], robot_contacts);
     }
     dWorldStep(ode_world, world.planner.step_size);
     dJointGroupEmpty(contact_group);

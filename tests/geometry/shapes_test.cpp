@@ -60,5 +60,20 @@ TEST(Polygon, CentroidOfARectangleIsItsCentre) {
   EXPECT_NEAR(c.y(), 4.0, 1e-12);
 }
 
+TEST(OrientedBox, InsideARectangleTurnsWithTheBox) {
+  const Rect room{{0, 0}, {4, 2}};
+  EXPECT_TRUE(inside(box(2, 1, 1, 1), room));
+  EXPECT_TRUE(inside(box(0.5, 0.5, 1, 1), room));      // touching two walls
+  EXPECT_FALSE(inside(box(0.49, 0.5, 1, 1), room));
+  // A 2.2 by 0.2 plank fits lying along the room; turned a quarter it pokes out at the top and bottom.
+  EXPECT_TRUE(inside(box(2, 1, 2.2, 0.2), room));
+  EXPECT_FALSE(inside(box(2, 1, 2.2, 0.2, std::numbers::pi / 2), room));
+  EXPECT_TRUE(inside(box(2, 1, 2.2, 0.2, std::numbers::pi), room));
+  // Turned by 45 degrees a unit square reaches sqrt(1/2) from its centre.
+  EXPECT_TRUE(inside(box(0.71, 1, 1, 1, std::numbers::pi / 4), room));
+  EXPECT_FALSE(inside(box(0.70, 1, 1, 1, std::numbers::pi / 4), room));
+  EXPECT_TRUE(inside(box(0.70, 1, 1, 1, std::numbers::pi / 4), room, 0.01));  // within the tolerance
+}
+
 }  // namespace
 }  // namespace physltl::geometry

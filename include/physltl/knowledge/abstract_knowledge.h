@@ -3,6 +3,7 @@
 // robot's capabilities, manipulation-region (mRegion) templates and the propositional regions.
 // formulate() is the paper's OntologyFormulation, from the World instead of an OWL file.
 
+#include "physltl/geometry/rect_grid.h"
 #include "physltl/geometry/shapes.h"
 #include "physltl/knowledge/side_set.h"
 #include "physltl/scenario/world.h"
@@ -64,6 +65,9 @@ struct AbstractKnowledge {
   geometry::Rect workspace;
   RobotCapabilities robot;
   std::vector<FixedBodyKnowledge> fixed_bodies;      // World::fixed_bodies order
+  // The fixed bodies' bounds, near() the midpoint of any mRegion's contact segment when the robot on that
+  // segment could touch them.
+  geometry::RectGrid fixed_near;
   std::vector<MovableBodyKnowledge> movable_bodies;  // World::movable_bodies order
   std::vector<Proposition> propositions;             // World::regions order
 };
