@@ -36,6 +36,11 @@ constexpr int kMaxStepsAhead = 8;
 // seeds 1..12: median propagations 21,700 -> 17,600, worst 65,600 -> 23,900; 2, 4 and 8 within noise of
 // each other; rooms.lua and ordered.lua unchanged).
 constexpr int kFailuresBeforeDropped = 8;
+// The lead ends this many automaton steps beyond the furthest the tree has got, not at acceptance: the
+// expansions only use its first part, and with many stages ahead the rest was most of the lead search's
+// work (rooms_n with 16 rooms: the same leads in 8 of 10 seeds, no more propagations; one step ahead
+// changed most leads and cost 20 % more).
+constexpr int kLevelsAhead = 2;
 
 // Uniform point in a triangle.
 Vec2 point_in(const decomposition::Triangle& t, Random& random) {
@@ -74,7 +79,7 @@ class Search {
       finish(result, 0, started, "solved");
       return result;
     }
-    std::vector<int> lead = graph_.lead(root_product);
+    std::vector<int> lead = graph_.lead(root_product, horizon());
     while (true) {
       if (lead.empty()) {
         finish(result, -1, started, "no lead");
@@ -88,7 +93,7 @@ class Search {
         // The next lead is computed while the last batch grows: the tree stands still meanwhile, and on a
         // large world the lead search costs as much as a batch.
         if (batch + 1 == kBatchesPerLead) {
-          grow_in_parallel([&] { next_lead = graph_.lead(root_product); });
+          grow_in_parallel([&, horizon = horizon()] { next_lead = graph_.lead(root_product, horizon); });
         } else {
           grow_in_parallel(nullptr);
         }
@@ -116,6 +121,9 @@ class Search {
     return nullptr;
   }
 
+  // How far the lead looks: a few automaton steps beyond the furthest the tree has got.
+  int horizon() const { return std::max(0, closest_to_accept_ - kLevelsAhead); }
+
   void add_root() {
     physics::Simulation simulation(world_);
     const RegionMap regions(world_);
@@ -125,6 +133,7 @@ class Search {
     // The start is labelled with its region too (OMPL's LTLPlanner forgets this).
     root.automaton_state = task_.step(task_.dfa.start, regions.at(root.robot));
     root.product_state = graph_.id(decomposition_.locate(root.robot), root.automaton_state);
+    closest_to_accept_ = graph_.distance_to_accept(root.automaton_state);
     motions_.push_back(std::move(root));
     failed_starts_.push_back(0);
     graph_.add_motion(motions_[0].product_state, 0);
@@ -200,6 +209,7 @@ class Search {
       const int index = static_cast<int>(motions_.size());
       growth.motion->parent = expansions_[i].from;
       graph_.add_motion(growth.motion->product_state, index);
+      closest_to_accept_ = std::min(closest_to_accept_, graph_.distance_to_accept(growth.motion->automaton_state));
       motions_.push_back(std::move(*growth.motion));
       failed_starts_.push_back(0);
       if (growth.accepted) return index;
@@ -245,6 +255,7 @@ class Search {
   ProductGraph graph_;
   Random random_;
   std::vector<Motion> motions_;
+  int closest_to_accept_ = 0;             // fewest automaton steps to acceptance from any node
   std::vector<int> failed_starts_;        // per motion: expansions in a row that failed at once
   std::vector<int> available_;         // indices into the current lead
   std::vector<double> cumulative_;     // running sums of their weights

@@ -74,7 +74,7 @@ void ProductGraph::count_selection(int id) {
   entry_cost_[id] = 1.0 / weight(id);
 }
 
-std::vector<int> ProductGraph::lead(int start) {
+std::vector<int> ProductGraph::lead(int start, int horizon) {
   // Dijkstra; the buffers are members because the planner asks for a lead dozens of times a second.
   std::vector<double>& cost = lead_cost_;
   std::vector<int>& previous = lead_previous_;
@@ -90,11 +90,11 @@ std::vector<int> ProductGraph::lead(int start) {
     const auto [c, u] = open.back();
     open.pop_back();
     if (c > cost[u]) continue;
-    if (accepting(u)) {
+    const int q = automaton_state_of(u);
+    if (distance_to_accept_[q] <= horizon) {
       goal = u;
       break;
     }
-    const int q = automaton_state_of(u);
     const int triangle = triangle_of(u);
     for (int n = first_neighbour_[triangle]; n < first_neighbour_[triangle + 1]; ++n) {
       const int next_q = task_.step(q, neighbours_[n].region);

@@ -31,8 +31,12 @@ class ProductGraph {
     return (static_cast<double>(motions_[id].size()) + 1.0) * volume_per_distance_[id] / (selected * selected);
   }
 
-  // Product states from `start` to the first accepting one, cheapest under 1/weight; empty if none.
-  std::vector<int> lead(int start);
+  // Automaton steps from the state to acceptance, over letters with at most one region; -1 never.
+  int distance_to_accept(int automaton_state) const { return distance_to_accept_[automaton_state]; }
+
+  // Product states from `start` to the first one whose automaton state is at most `horizon` steps from
+  // acceptance (0: an accepting one), cheapest under 1/weight; empty if none.
+  std::vector<int> lead(int start, int horizon = 0);
 
  private:
   const TaskAutomaton& task_;

@@ -29,6 +29,23 @@ TEST(ProductGraph, TheLeadWalksNeighbouringTrianglesToAcceptance) {
   }
 }
 
+TEST(ProductGraph, ALeadWithAHorizonStopsAtTheFirstStateThatClose) {
+  const TestProblem p("ordered.lua");  // four regions in order: the start is four steps from acceptance
+  ProductGraph graph(p.decomposition, p.task);
+  const int start = graph.id(p.decomposition.locate(p.world.robot.start), p.task.dfa.start);
+  ASSERT_EQ(graph.distance_to_accept(p.task.dfa.start), 4);
+  const std::vector<int> full = graph.lead(start);
+  for (int horizon = 3; horizon >= 1; --horizon) {
+    const std::vector<int> lead = graph.lead(start, horizon);
+    ASSERT_FALSE(lead.empty());
+    EXPECT_EQ(graph.distance_to_accept(graph.automaton_state_of(lead.back())), horizon);
+    for (size_t i = 0; i + 1 < lead.size(); ++i) {
+      EXPECT_GT(graph.distance_to_accept(graph.automaton_state_of(lead[i])), horizon);
+    }
+    EXPECT_LT(lead.size(), full.size());
+  }
+}
+
 TEST(ProductGraph, DroppingAStatesLastNodeMakesItUnexploredAgain) {
   const TestProblem p("ordered.lua");
   ProductGraph graph(p.decomposition, p.task);
