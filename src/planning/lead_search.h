@@ -1,0 +1,30 @@
+#pragma once
+// The lead of Algorithm 3, kept up to date at a fraction of the cost of searching it from the start every
+// time. The lead runs through the stages the tree has done (automaton states it has left behind) and
+// then the frontier's. Only the frontier part changes much between two leads: the tree grows there. So
+// most updates search again only from where the lead enters the frontier's automaton state and keep the
+// part before it; every few updates, and whenever the horizon moves, the whole lead is searched again.
+
+#include "product_graph.h"
+
+#include <vector>
+
+namespace physltl::planning {
+
+class LeadSearch {
+ public:
+  explicit LeadSearch(ProductGraph& graph) : graph_(graph) {}
+
+  // The lead from `start` until an automaton state at most `horizon` steps from acceptance, as
+  // ProductGraph::lead; empty if there is none.
+  std::vector<int> next(int start, int horizon);
+
+ private:
+  ProductGraph& graph_;
+  // The last whole lead up to and including its first state in the frontier's automaton state.
+  std::vector<int> prefix_;
+  int horizon_ = -1;
+  int updates_until_whole_ = 0;
+};
+
+}  // namespace physltl::planning
