@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace physltl::physics {
 namespace {
@@ -31,7 +32,14 @@ struct Geom {
   int index = 0;           // into the World's list of its kind; -1 for the robot
   double friction = 0.5;
   double bound_radius = 0.0;  // of the footprint, for a cheap test before dCollide
+  scenario::Vec2 position = scenario::Vec2::Zero();  // fixed bodies only: they never move
 };
+
+// Positions within the sum of two bounding radii: only then can two bodies touch.
+bool within_reach(const scenario::Vec2& a, double radius_a, const scenario::Vec2& b, double radius_b) {
+  const double reach = radius_a + radius_b;
+  return (a - b).squaredNorm() <= reach * reach;
+}
 
 }  // namespace
 
@@ -44,11 +52,14 @@ struct Simulation::Impl {
   std::vector<Geom> fixed;
   geometry::RectGrid fixed_near;  // the fixed bodies' bounds, within reach of the largest dynamic body
   std::vector<dJointID> planar_joints;
-  // The yaw each body's quaternion was last set from. ODE normalises every quaternion it is given, and
-  // normalising is not idempotent in the last bit, so a saved quaternion would not restore exactly;
-  // the yaw it was made from does.
-  std::vector<double> yaw;
+  // The PhysicsState of the dynamic bodies, kept equal to what ODE holds: every change goes through
+  // set_body(). Reading it costs a copy; reading ODE costs calls into bodies spread over memory, and a
+  // World with many boxes is read after every step. It also keeps each body's yaw: ODE normalises every
+  // quaternion it is given, and normalising is not idempotent in the last bit, so a saved quaternion
+  // would not restore exactly; the yaw it was made from does.
+  std::vector<double> state;
   std::vector<char> awake;    // per dynamic body, this step: it is integrated and collided
+  std::vector<char> enabled;  // per dynamic body, as ODE has it now
   std::vector<size_t> woken;  // wake_bodies' work list, kept to avoid allocating every step
   double max_force;
   double max_speed;
@@ -94,6 +105,7 @@ struct Simulation::Impl {
       g.index = static_cast<int>(i);
       g.friction = 0.5;
       g.bound_radius = f.footprint.half_extents.norm();
+      g.position = f.footprint.pose.position;
       place(g.id, f.footprint.pose);
       fixed.push_back(g);
     }
@@ -140,21 +152,29 @@ struct Simulation::Impl {
     dJointSetPlane2DAngleParam(joint, dParamFMax, index < 0 ? 1e3 : floor_torque);  // the robot does not spin
     planar_joints.push_back(joint);
     dynamic.push_back(g);
-    yaw.push_back(0.0);
+    state.resize(state.size() + kValuesPerBody, 0.0);
     awake.push_back(1);
+    enabled.push_back(1);
   }
 
-  void set_yaw(size_t i, double value) {
-    yaw[i] = value;
-    const dQuaternion q = {std::cos(value / 2), 0, 0, std::sin(value / 2)};
-    dBodySetQuaternion(dynamic[i].body, q);
+  double* values(size_t i) { return state.data() + i * kValuesPerBody; }
+  const double* values(size_t i) const { return state.data() + i * kValuesPerBody; }
+  scenario::Vec2 position(size_t i) const { return {values(i)[0], values(i)[1]}; }
+
+  // Sets body i in ODE and in `state` to `v`, in PhysicsState's layout.
+  void set_body(size_t i, const double* v) {
+    const dBodyID body = dynamic[i].body;
+    dBodySetPosition(body, v[0], v[1], v[2]);
+    const dQuaternion q = {std::cos(v[3] / 2), 0, 0, std::sin(v[3] / 2)};
+    dBodySetQuaternion(body, q);
+    dBodySetLinearVel(body, v[4], v[5], v[6]);
+    dBodySetAngularVel(body, v[7], v[8], v[9]);
+    std::copy(v, v + kValuesPerBody, values(i));
   }
 
   void set_pose(size_t i, const geometry::Pose2& pose) {
-    dBodySetPosition(dynamic[i].body, pose.position.x(), pose.position.y(), 0.0);
-    set_yaw(i, pose.yaw);
-    dBodySetLinearVel(dynamic[i].body, 0, 0, 0);
-    dBodySetAngularVel(dynamic[i].body, 0, 0, 0);
+    const double v[kValuesPerBody] = {pose.position.x(), pose.position.y(), 0.0, pose.yaw, 0, 0, 0, 0, 0, 0};
+    set_body(i, v);
   }
 
   void reset() {
@@ -162,17 +182,21 @@ struct Simulation::Impl {
     for (size_t i = 0; i < world.movable_bodies.size(); ++i) set_pose(i + 1, world.movable_bodies[i].footprint.pose);
   }
 
-  static bool may_touch(const Geom& a, const Geom& b) {
-    const dReal* pa = dGeomGetPosition(a.id);
-    const dReal* pb = dGeomGetPosition(b.id);
-    const double reach = a.bound_radius + b.bound_radius;
-    return (pa[0] - pb[0]) * (pa[0] - pb[0]) + (pa[1] - pb[1]) * (pa[1] - pb[1]) <= reach * reach;
+  // Bodies whose values already match are left alone: a restore usually differs from the current state in
+  // the robot and a box or two.
+  void restore(const double* v) {
+    for (size_t i = 0; i < dynamic.size(); ++i, v += kValuesPerBody) {
+      if (!std::equal(v, v + kValuesPerBody, values(i))) set_body(i, v);
+    }
   }
 
-  static bool at_rest(dBodyID body) {
-    const dReal* v = dBodyGetLinearVel(body);
-    const dReal* w = dBodyGetAngularVel(body);
-    return v[0] == 0.0 && v[1] == 0.0 && w[2] == 0.0;
+  bool may_touch(size_t i, size_t j) const {
+    return within_reach(position(i), dynamic[i].bound_radius, position(j), dynamic[j].bound_radius);
+  }
+
+  bool at_rest(size_t i) const {
+    const double* v = values(i);
+    return v[4] == 0.0 && v[5] == 0.0 && v[9] == 0.0;
   }
 
   // Which bodies this step moves: the robot, every box in motion, and every box that may touch one of
@@ -184,16 +208,19 @@ struct Simulation::Impl {
   void wake_bodies() {
     woken.clear();
     for (size_t i = 0; i < dynamic.size(); ++i) {
-      awake[i] = i == 0 || !at_rest(dynamic[i].body);
+      awake[i] = i == 0 || !at_rest(i);
       if (awake[i]) woken.push_back(i);
     }
     for (size_t next = 0; next < woken.size(); ++next) {
-      const Geom& mover = dynamic[woken[next]];
+      const size_t mover = woken[next];
       for (size_t j = 1; j < dynamic.size(); ++j) {
-        if (!awake[j] && may_touch(mover, dynamic[j])) awake[j] = 1, woken.push_back(j);
+        if (!awake[j] && may_touch(mover, j)) awake[j] = 1, woken.push_back(j);
       }
     }
+    std::sort(woken.begin(), woken.end());
     for (size_t i = 1; i < dynamic.size(); ++i) {
+      if (awake[i] == enabled[i]) continue;
+      enabled[i] = awake[i];
       if (awake[i]) {
         dBodyEnable(dynamic[i].body);
       } else {
@@ -203,7 +230,6 @@ struct Simulation::Impl {
   }
 
   void collide(const Geom& a, const Geom& b, std::vector<scenario::RobotContact>& robot_contacts) {
-    if (!may_touch(a, b)) return;
     const int found = dCollide(a.id, b.id, kMaxContactsPerPair, contact_buffer, sizeof(dContactGeom));
     // Tall boxes touch at the top and the bottom of the same vertical edge; in the plane those are one
     // contact, and the duplicate rows make the LCP singular ("LCP internal error"), so keep one.
@@ -251,10 +277,8 @@ struct Simulation::Impl {
     const double scale = speed > speed_limit ? speed_limit / speed : 1.0;
     double vx = v[0] * scale, vy = v[1] * scale, wz = w[2];
     if (i > 0 && speed < kRestSpeed && std::abs(wz) < kRestSpeed) vx = vy = wz = 0.0;
-    dBodySetPosition(body, p[0], p[1], 0.0);
-    set_yaw(i, 2.0 * std::atan2(q[3], q[0]));
-    dBodySetLinearVel(body, vx, vy, 0.0);
-    dBodySetAngularVel(body, 0, 0, wz);
+    const double settled[kValuesPerBody] = {p[0], p[1], 0.0, 2.0 * std::atan2(q[3], q[0]), vx, vy, 0.0, 0.0, 0.0, wz};
+    set_body(i, settled);
   }
 
   void step(const scenario::Vec2& force, std::vector<scenario::RobotContact>& robot_contacts) {
@@ -264,15 +288,24 @@ struct Simulation::Impl {
     dBodyAddForce(dynamic[0].body, fx, fy, 0.0);
     wake_bodies();
     // Fixed pair order, no collision space: contact order never depends on history. Two sleeping bodies
-    // cannot meet. The grid only leaves out fixed bodies too far away to touch, in index order, so the
-    // contacts are those of testing every pair.
+    // cannot meet, so a sleeping body is paired only with the awake ones after it. The grid only leaves
+    // out fixed bodies too far away to touch, in index order, so the contacts are those of testing every
+    // pair.
     for (size_t i = 0; i < dynamic.size(); ++i) {
-      for (size_t j = i + 1; j < dynamic.size(); ++j) {
-        if (awake[i] || awake[j]) collide(dynamic[i], dynamic[j], robot_contacts);
+      const scenario::Vec2 p = position(i);
+      const double radius = dynamic[i].bound_radius;
+      auto pair_with = [&](size_t j) {
+        if (within_reach(p, radius, position(j), dynamic[j].bound_radius)) collide(dynamic[i], dynamic[j], robot_contacts);
+      };
+      if (!awake[i]) {
+        for (auto j = std::upper_bound(woken.begin(), woken.end(), i); j != woken.end(); ++j) pair_with(*j);
+        continue;
       }
-      if (!awake[i]) continue;
-      const dReal* p = dGeomGetPosition(dynamic[i].id);
-      for (int f : fixed_near.near({p[0], p[1]})) collide(dynamic[i], fixed[static_cast<size_t>(f)], robot_contacts);
+      for (size_t j = i + 1; j < dynamic.size(); ++j) pair_with(j);
+      for (int f : fixed_near.near(p)) {
+        const Geom& g = fixed[static_cast<size_t>(f)];
+        if (within_reach(p, radius, g.position, g.bound_radius)) collide(dynamic[i], g, robot_contacts);
+      }
     }
     dWorldStep(ode_world, world.planner.step_size);
     dJointGroupEmpty(contact_group);
@@ -294,29 +327,13 @@ PhysicsState Simulation::save() const {
   return s;
 }
 
-void Simulation::save(PhysicsState& s) const {
-  const auto& dynamic = impl_->dynamic;
-  s.values.resize(dynamic.size() * kValuesPerBody);
-  double* out = s.values.data();
-  auto append = [&out](const dReal* values, int count) { out = std::copy(values, values + count, out); };
-  for (size_t i = 0; i < dynamic.size(); ++i) {
-    append(dBodyGetPosition(dynamic[i].body), 3);
-    *out++ = impl_->yaw[i];
-    append(dBodyGetLinearVel(dynamic[i].body), 3);
-    append(dBodyGetAngularVel(dynamic[i].body), 3);
-  }
-}
+void Simulation::save(PhysicsState& s) const { s.values = impl_->state; }
 
 void Simulation::restore(const PhysicsState& s) {
-  const double* v = s.values.data();
-  for (size_t i = 0; i < impl_->dynamic.size(); ++i) {
-    const dBodyID body = impl_->dynamic[i].body;
-    dBodySetPosition(body, v[0], v[1], v[2]);
-    impl_->set_yaw(i, v[3]);
-    dBodySetLinearVel(body, v[4], v[5], v[6]);
-    dBodySetAngularVel(body, v[7], v[8], v[9]);
-    v += kValuesPerBody;
+  if (s.values.size() != impl_->state.size()) {
+    throw std::invalid_argument("Simulation::restore: the state is of a World with other bodies");
   }
+  impl_->restore(s.values.data());
 }
 
 void Simulation::step(const scenario::Vec2& force, std::vector<scenario::RobotContact>& contacts) {
@@ -324,19 +341,16 @@ void Simulation::step(const scenario::Vec2& force, std::vector<scenario::RobotCo
 }
 
 void Simulation::read_environment(scenario::EnvironmentState& out) const {
-  const auto& dyn = impl_->dynamic;
-  auto planar = [](dBodyID body, scenario::Vec2& position, scenario::Vec2& velocity) {
-    const dReal* p = dBodyGetPosition(body);
-    const dReal* v = dBodyGetLinearVel(body);
-    position = {p[0], p[1]};
-    velocity = {v[0], v[1]};
-  };
-  planar(dyn[0].body, out.robot_position, out.robot_velocity);
-  out.movable_poses.resize(dyn.size() - 1);
-  out.movable_velocities.resize(dyn.size() - 1);
-  for (size_t i = 1; i < dyn.size(); ++i) {
-    planar(dyn[i].body, out.movable_poses[i - 1].position, out.movable_velocities[i - 1]);
-    out.movable_poses[i - 1].yaw = impl_->yaw[i];
+  const size_t bodies = impl_->dynamic.size();
+  const double* v = impl_->values(0);
+  out.robot_position = {v[0], v[1]};
+  out.robot_velocity = {v[4], v[5]};
+  out.movable_poses.resize(bodies - 1);
+  out.movable_velocities.resize(bodies - 1);
+  for (size_t i = 1; i < bodies; ++i) {
+    v = impl_->values(i);
+    out.movable_poses[i - 1] = {{v[0], v[1]}, v[3]};
+    out.movable_velocities[i - 1] = {v[4], v[5]};
   }
 }
 

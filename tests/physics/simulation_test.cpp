@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include <cmath>
 #include <thread>
 
@@ -128,6 +130,28 @@ TEST(Simulation, RestoringAStateContinuesBitForBit) {
   b.restore(mid);
   push(b, {15, -4}, 20);
   EXPECT_EQ(a.save(), b.save());
+}
+
+// A restore rewrites only the bodies that differ: here the robot, not the box still at its start.
+TEST(Simulation, RestoringAStateThatMovedOnlyTheRobotContinuesBitForBit) {
+  const auto world = small_world();
+  Simulation a(world), b(world);
+  push(a, {-10, 4}, 10);  // away from the box
+  const PhysicsState moved = a.save();
+  push(a, {20, -3}, 60);  // then into it
+  ASSERT_NE(a.environment().movable_poses[0].position, world.movable_bodies[0].footprint.pose.position);
+
+  b.restore(moved);
+  push(b, {20, -3}, 60);
+  EXPECT_EQ(a.save(), b.save());
+}
+
+TEST(Simulation, RestoringAStateOfAnotherWorldIsRefused) {
+  auto two_boxes = small_world();
+  two_boxes.movable_bodies.push_back(two_boxes.movable_bodies[0]);
+  two_boxes.movable_bodies[1].footprint.pose.position = {3, 8};
+  Simulation one(small_world()), two(two_boxes);
+  EXPECT_THROW(one.restore(two.save()), std::invalid_argument);
 }
 
 // ODE renormalises quaternions it is given; a state saved and restored at every step must still follow
