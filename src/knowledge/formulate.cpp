@@ -68,6 +68,9 @@ MovableBodyKnowledge movable_knowledge(const scenario::MovableBody& body, const 
   for (Side side : kAllSides) {
     if (side_set.contains(side)) k.mregions.push_back(mregion_template(side, k.footprint.half_extents, depth, robot.radius));
   }
+  for (const MRegionTemplate& m : k.mregions) {
+    k.contact_reach = std::max({k.contact_reach, m.contact_from.norm(), m.contact_to.norm()});
+  }
   return k;
 }
 

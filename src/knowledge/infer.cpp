@@ -45,20 +45,24 @@ void blocked_stretches(const AbstractKnowledge& k, const scenario::EnvironmentSt
     const Interval stretch = Obstacle(box).closer_than(segment.from, segment.direction, r);
     if (!stretch.empty()) blocked.push_back(stretch);
   };
-  for (int f : k.fixed_near.near(segment.from + 0.5 * segment.length * segment.direction)) {
+  // Every point of the segment lies within half its length of its middle.
+  const Vec2 middle = segment.from + 0.5 * segment.length * segment.direction;
+  for (int f : k.fixed_near.near(middle)) {
     const FixedBodyKnowledge& fixed = k.fixed_bodies[static_cast<size_t>(f)];
     if (segment.may_reach(fixed.bounds, r)) add(fixed.footprint);
   }
   for (size_t j = 0; j < k.movable_bodies.size(); ++j) {
     const auto& other = k.movable_bodies[j];
     const geometry::Pose2& pose = state.movable_poses[j];
-    if (j == pushed || segment.distance_to(pose.position) >= other.bound_radius + r) continue;
+    const double near = 0.5 * segment.length + other.bound_radius + r;
+    if (j == pushed || (pose.position - middle).squaredNorm() >= near * near) continue;
+    if (segment.distance_to(pose.position) >= other.bound_radius + r) continue;
     add({pose, other.footprint.half_extents});
   }
 }
 
 // Whether the robot can stand somewhere along the segment: inside the workspace and clear of obstacles.
-// `blocked` is scratch space, passed in so that one inference allocates it once.
+// `blocked` is scratch space, reused so that the planner's inference after every step does not allocate.
 bool has_free_stretch(const AbstractKnowledge& k, const scenario::EnvironmentState& state, size_t pushed,
                       const ContactSegment& segment, std::vector<Interval>& blocked) {
   const Vec2 workspace_center = 0.5 * (k.workspace.min + k.workspace.max);
@@ -90,7 +94,7 @@ BodyType type_of(const MovableBodyKnowledge& body, SideSet active) {
 }
 
 BodyKappa infer_body(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, size_t i,
-                     std::vector<Interval>& scratch) {
+                     std::vector<Interval>& blocked) {
   const MovableBodyKnowledge& body = knowledge.movable_bodies[i];
   const geometry::Pose2& pose = state.movable_poses[i];
   const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
@@ -99,18 +103,22 @@ BodyKappa infer_body(const AbstractKnowledge& knowledge, const scenario::Environ
     const Vec2 from = to_world(pose, c, s, m.contact_from);
     const Vec2 along = to_world(pose, c, s, m.contact_to) - from;
     const double length = along.norm();
-    if (length > 0.0 && has_free_stretch(knowledge, state, i, {from, along / length, length}, scratch)) {
+    if (length > 0.0 && has_free_stretch(knowledge, state, i, {from, along / length, length}, blocked)) {
       active.insert(m.side);
     }
   }
   return {type_of(body, active), active};
 }
 
-// How far from a body's centre the robot's centre can be while it touches a pushable side.
-double segment_reach(const MovableBodyKnowledge& body) {
-  double reach = 0.0;
-  for (const MRegionTemplate& m : body.mregions) reach = std::max({reach, m.contact_from.norm(), m.contact_to.norm()});
-  return reach;
+// Scratch space of the inferences on one thread.
+struct Scratch {
+  std::vector<size_t> moved;
+  std::vector<Interval> blocked;
+};
+
+Scratch& scratch() {
+  thread_local Scratch s;
+  return s;
 }
 
 void check_body_count(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state) {
@@ -133,8 +141,8 @@ const char* type_name(BodyType type) {
 void infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, Kappa& kappa) {
   check_body_count(knowledge, state);
   kappa.bodies.resize(knowledge.movable_bodies.size());
-  std::vector<Interval> scratch;
-  for (size_t i = 0; i < kappa.bodies.size(); ++i) kappa.bodies[i] = infer_body(knowledge, state, i, scratch);
+  std::vector<Interval>& blocked = scratch().blocked;
+  for (size_t i = 0; i < kappa.bodies.size(); ++i) kappa.bodies[i] = infer_body(knowledge, state, i, blocked);
 }
 
 void reinfer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state,
@@ -144,24 +152,26 @@ void reinfer(const AbstractKnowledge& knowledge, const scenario::EnvironmentStat
   if (inferred_for.size() != n || kappa.bodies.size() != n) {
     throw std::invalid_argument("reinfer: kappa was inferred for a different number of movable bodies");
   }
-  std::vector<size_t> moved;
+  std::vector<size_t>& moved = scratch().moved;
+  moved.clear();
   for (size_t j = 0; j < n; ++j) {
     const geometry::Pose2& now = state.movable_poses[j];
     if (now.position != inferred_for[j].position || now.yaw != inferred_for[j].yaw) moved.push_back(j);
   }
   if (moved.empty()) return;
   const double r = knowledge.robot.radius;
-  std::vector<Interval> scratch;
+  std::vector<Interval>& blocked = scratch().blocked;
   for (size_t i = 0; i < n; ++i) {
     const Vec2& centre = state.movable_poses[i].position;
     // A moved body changes i's mRegions only if it comes, before or after the move, within a robot's
     // diameter of a contact segment of i.
     const bool affected = std::any_of(moved.begin(), moved.end(), [&](size_t j) {
       if (j == i) return true;
-      const double reach = segment_reach(knowledge.movable_bodies[i]) + 2.0 * r + knowledge.movable_bodies[j].bound_radius;
-      return (inferred_for[j].position - centre).norm() < reach || (state.movable_poses[j].position - centre).norm() < reach;
+      const double reach = knowledge.movable_bodies[i].contact_reach + 2.0 * r + knowledge.movable_bodies[j].bound_radius;
+      return (inferred_for[j].position - centre).squaredNorm() < reach * reach ||
+             (state.movable_poses[j].position - centre).squaredNorm() < reach * reach;
     });
-    if (affected) kappa.bodies[i] = infer_body(knowledge, state, i, scratch);
+    if (affected) kappa.bodies[i] = infer_body(knowledge, state, i, blocked);
   }
 }
 

@@ -54,6 +54,8 @@ struct MovableBodyKnowledge {
   double friction = 0.0;            // the body's own coefficient
   double floor_friction_force = 0.0;  // N needed to start it sliding
   std::vector<MRegionTemplate> mregions;  // the pushable sides; empty for class kFixed
+  // How far from the body's centre the robot's centre can be while it touches a pushable side.
+  double contact_reach = 0.0;
 };
 
 struct Proposition {
