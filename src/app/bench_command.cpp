@@ -1,6 +1,7 @@
 // `physltl-studio bench`: the planners on a range of seeds, side by side (issue 7).
 
 #include "bench_results.h"
+#include "bench_sweep.h"
 #include "command.h"
 #include "output_folder.h"
 #include "plan_files.h"
@@ -9,6 +10,7 @@
 #include "stop_signal.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -31,6 +33,7 @@ struct BenchArgs {
   std::optional<double> time_limit;
   bool compare = false;
   std::vector<int> threads{1};
+  std::string sweep;  // key=v1,v2,...
   std::string log_file;
   std::string out_dir = "out/bench";
 };
@@ -90,6 +93,13 @@ std::string folder_name(const std::string& scenario, const std::vector<std::stri
   return name;
 }
 
+// With --sweep, one log per value: rooms.log -> rooms-rooms-4.log.
+std::filesystem::path log_file_for(const std::string& file, const std::optional<SweepSpec>& sweep, const std::string& value) {
+  std::filesystem::path path(file);
+  if (!sweep) return path;
+  return path.parent_path() / (path.stem().string() + "-" + folder_name(sweep->key, {}) + "-" + value + path.extension().string());
+}
+
 // The log file appears whole or not at all, like the output folder.
 void write_log(const std::filesystem::path& file, const OmplExperiment& experiment) {
   const std::filesystem::path temp = file.string() + ".tmp";
@@ -101,73 +111,131 @@ void write_log(const std::filesystem::path& file, const OmplExperiment& experime
   std::filesystem::rename(temp, file);
 }
 
+// One setting of the scenario measured: its World, what the planners need, and what they did.
+struct BenchCase {
+  std::string swept_value;  // empty without --sweep
+  scenario::World world;
+  std::optional<Reasoning> reasoning;  // set once the world is loaded
+  std::unique_ptr<PreparedRun> prepared;
+  BenchResults results;
+};
+
+void write_bench_json(const std::filesystem::path& file, const nlohmann::ordered_json& json) {
+  std::ofstream out(file);
+  out << json.dump(2) << "\n";
+  if (!out) throw BadInput("cannot write " + file.string());
+}
+
 int bench(const BenchArgs& args) {
   for (size_t i = 0; i < args.threads.size(); ++i) {
     if (std::count(args.threads.begin(), args.threads.begin() + static_cast<long>(i), args.threads[i]) > 0) {
       throw BadInput(fmt::format("--threads: {} is given twice", args.threads[i]));
     }
   }
-  scenario::World world = args.scenario.load();
-  if (args.time_limit) world.planner.time_limit = *args.time_limit;
-  const Reasoning reasoning = reason_about(world);
-  if (!reasoning.feasible()) {
-    std::cerr << "physltl-studio: the task is infeasible: " << reasoning.task.semantic->explanation << "\n";
-    return kExitNoPlan;
+  std::optional<SweepSpec> sweep;
+  if (!args.sweep.empty()) {
+    sweep = parse_sweep(args.sweep);
+    for (const auto& setting : args.scenario.settings) {
+      if (setting.rfind(sweep->key + "=", 0) == 0) throw BadInput("--sweep " + sweep->key + " is also given to --set");
+    }
   }
-  const PreparedRun prepared(world, reasoning);
+  // Every case is loaded and reasoned about before the first run: a bad value fails at once.
+  std::vector<std::unique_ptr<BenchCase>> cases;
+  const std::vector<std::string> no_sweep{""};
+  for (const auto& value : sweep ? sweep->values : no_sweep) {
+    auto c = std::make_unique<BenchCase>();
+    c->swept_value = value;
+    ScenarioArgs scenario = args.scenario;
+    if (sweep) scenario.settings.push_back(sweep->key + "=" + value);
+    c->world = scenario.load();
+    if (args.time_limit) c->world.planner.time_limit = *args.time_limit;
+    c->reasoning.emplace(reason_about(c->world));
+    if (!c->reasoning->feasible()) {
+      std::cerr << "physltl-studio: the task is infeasible" << (sweep ? " with " + sweep->key + "=" + value : "")
+                << ": " << c->reasoning->task.semantic->explanation << "\n";
+      return kExitNoPlan;
+    }
+    c->prepared = std::make_unique<PreparedRun>(c->world, *c->reasoning);
+    BenchResults& results = c->results;
+    results.scenario = c->world.name;
+    results.scenario_file = c->world.source_file;
+    results.settings = scenario.settings;
+    results.first_seed = args.seed.value_or(c->world.planner.seed);
+    results.runs = args.runs;
+    results.time_limit_s = c->world.planner.time_limit;
+    results.threads = args.threads;
+    results.started_at = local_time_now();
+    for (const auto guidance : {planning::Guidance::kKnowledge, planning::Guidance::kBaseline}) {
+      if (guidance == planning::Guidance::kBaseline && !args.compare) continue;
+      for (int threads : args.threads) results.planners.push_back({guidance, threads, {}});
+    }
+    cases.push_back(std::move(c));
+  }
 
-  BenchResults results;
-  results.scenario = world.name;
-  results.scenario_file = world.source_file;
-  results.settings = args.scenario.settings;
-  results.first_seed = args.seed.value_or(world.planner.seed);
-  results.runs = args.runs;
-  results.time_limit_s = world.planner.time_limit;
-  results.threads = args.threads;
-  results.started_at = local_time_now();
-  for (const auto guidance : {planning::Guidance::kKnowledge, planning::Guidance::kBaseline}) {
-    if (guidance == planning::Guidance::kBaseline && !args.compare) continue;
-    for (int threads : args.threads) results.planners.push_back({guidance, threads, {}});
-  }
+  // Every value runs on the same seeds, even if a script chose its default seed by its params.
+  const std::uint64_t first_seed = cases.front()->results.first_seed;
+  for (auto& c : cases) c->results.first_seed = first_seed;
 
   StopSignal stop;
   const bool show_progress = isatty(STDERR_FILENO);
-  const auto started = std::chrono::steady_clock::now();
-  // Interleaved (knowledge seed S, baseline seed S, knowledge S+1, ..., and each thread count in turn) so
+  // Interleaved (seed S: knowledge, baseline, each thread count, each swept value; then seed S+1, ...) so
   // that drift in the machine's speed hits every configuration alike.
   for (int i = 0; i < args.runs; ++i) {
-    for (auto& planner : results.planners) {
-      const std::uint64_t seed = results.first_seed + static_cast<std::uint64_t>(i);
-      if (show_progress) {
-        fmt::print(stderr, "\r{:<60}", fmt::format("run {}/{}: {} seed {} ...", i + 1, args.runs,
-                                                   planner_label(results, planner), seed));
+    const std::uint64_t seed = first_seed + static_cast<std::uint64_t>(i);
+    for (auto& c : cases) {
+      const auto started = std::chrono::steady_clock::now();
+      for (auto& planner : c->results.planners) {
+        if (show_progress) {
+          const std::string where = sweep ? fmt::format(" {}={}", sweep->key, c->swept_value) : "";
+          fmt::print(stderr, "\r{:<72}", fmt::format("run {}/{}{}: {} seed {} ...", i + 1, args.runs, where,
+                                                     planner_label(c->results, planner), seed));
+        }
+        planner.runs.push_back(measure(*c->prepared, {.guidance = planner.guidance,
+                                                      .seed = seed,
+                                                      .time_limit = c->world.planner.time_limit,
+                                                      .threads = planner.threads,
+                                                      .stop = &stop.flag()}));
+        if (stop.received()) {
+          if (show_progress) fmt::print(stderr, "\n");
+          std::cerr << "physltl-studio: interrupted; nothing written\n";
+          return kExitInterrupted;
+        }
       }
-      planner.runs.push_back(measure(prepared, {.guidance = planner.guidance,
-                                                .seed = seed,
-                                                .time_limit = world.planner.time_limit,
-                                                .threads = planner.threads,
-                                                .stop = &stop.flag()}));
-      if (stop.received()) {
-        if (show_progress) fmt::print(stderr, "\n");
-        std::cerr << "physltl-studio: interrupted; nothing written\n";
-        return kExitInterrupted;
-      }
+      c->results.total_duration_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     }
   }
-  if (show_progress) fmt::print(stderr, "\r{:<60}\r", "");
-  results.total_duration_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  if (show_progress) fmt::print(stderr, "\r{:<72}\r", "");
 
-  std::cout << bench_table(results);
-  OutputFolder out(std::filesystem::path(args.out_dir) / folder_name(world.name, args.scenario.settings));
-  {
-    std::ofstream json_file(out.path() / "bench.json");
-    json_file << bench_json(results).dump(2) << "\n";
-    if (!json_file) throw BadInput("cannot write " + (out.path() / "bench.json").string());
+  // Every folder and log is written before any is committed: all appear, or none.
+  std::vector<std::unique_ptr<OutputFolder>> folders;
+  std::vector<std::string> written;
+  for (const auto& c : cases) {
+    std::cout << bench_table(c->results);
+    auto& out = folders.emplace_back(std::make_unique<OutputFolder>(
+        std::filesystem::path(args.out_dir) / folder_name(c->world.name, c->results.settings)));
+    write_bench_json(out->path() / "bench.json", bench_json(c->results));
+    written.push_back(out->final_path().string() + "/bench.json");
   }
-  if (!args.log_file.empty()) write_log(args.log_file, ompl_experiment(results, host_name(), cpu_info()));
-  out.commit();
-  std::cout << "outputs    " << out.final_path().string() << "/bench.json"
-            << (args.log_file.empty() ? "" : ", " + args.log_file) << "\n";
+  if (sweep) {
+    Sweep result{sweep->key, args.scenario.settings, {}};
+    for (const auto& c : cases) result.points.push_back({c->swept_value, c->results});
+    std::cout << sweep_table(result);
+    std::vector<std::string> folder_settings = args.scenario.settings;
+    folder_settings.push_back("sweep=" + sweep->key);
+    auto& out = folders.emplace_back(std::make_unique<OutputFolder>(
+        std::filesystem::path(args.out_dir) / folder_name(cases.front()->world.name, folder_settings)));
+    write_bench_json(out->path() / "sweep.json", sweep_json(result));
+    written.push_back(out->final_path().string() + "/sweep.json");
+  }
+  if (!args.log_file.empty()) {
+    for (const auto& c : cases) {
+      const auto file = log_file_for(args.log_file, sweep, c->swept_value);
+      write_log(file, ompl_experiment(c->results, host_name(), cpu_info()));
+      written.push_back(file.string());
+    }
+  }
+  for (auto& out : folders) out->commit();
+  std::cout << "outputs    " << fmt::format("{}", fmt::join(written, ", ")) << "\n";
   return kExitOk;
 }
 
@@ -187,6 +255,9 @@ CommandRunner add_bench_command(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
+  app.add_option("--sweep", args->sweep,
+                 "Also measure the scenario with key set to each value (key=v1,v2,...), on the same seeds, "
+                 "interleaved; reports how the time grows");
   app.add_option("--log", args->log_file, "Also write an OMPL benchmark log (for ompl_benchmark_statistics.py)");
   app.add_option("--out", args->out_dir, "Folder for outputs; writes <out>/<scenario>/bench.json")->capture_default_str();
   return [args] { return bench(*args); };

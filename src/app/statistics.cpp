@@ -26,4 +26,20 @@ double maximum(const std::vector<double>& sample) {
   return sample.empty() ? 0.0 : *std::max_element(sample.begin(), sample.end());
 }
 
+LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y) {
+  LineFit fit;
+  const size_t n = std::min(x.size(), y.size());
+  if (n == 0) return fit;
+  const std::vector<double> xs(x.begin(), x.begin() + static_cast<long>(n)), ys(y.begin(), y.begin() + static_cast<long>(n));
+  const double mx = mean(xs), my = mean(ys);
+  double sxx = 0.0, sxy = 0.0;
+  for (size_t i = 0; i < n; ++i) sxx += (xs[i] - mx) * (xs[i] - mx), sxy += (xs[i] - mx) * (ys[i] - my);
+  fit.slope = sxx > 0.0 ? sxy / sxx : 0.0;
+  fit.intercept = my - fit.slope * mx;
+  for (size_t i = 0; i < n; ++i) {
+    fit.largest_deviation = std::max(fit.largest_deviation, std::abs(ys[i] - (fit.intercept + fit.slope * xs[i])));
+  }
+  return fit;
+}
+
 }  // namespace physltl::app::statistics

@@ -12,4 +12,13 @@ double median(std::vector<double> sample);
 double quantile(std::vector<double> sample, double q);
 double maximum(const std::vector<double>& sample);
 
+// The least-squares line y = intercept + slope * x through the points, and the largest distance of a
+// point from it along y. Needs two distinct x; otherwise the slope is 0 and the line passes the mean.
+struct LineFit {
+  double intercept = 0.0;
+  double slope = 0.0;
+  double largest_deviation = 0.0;
+};
+LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y);
+
 }  // namespace physltl::app::statistics

@@ -79,4 +79,57 @@ TEST(Bench, AThreadCountGivenTwiceIsRefused) {
   EXPECT_FALSE(fs::exists(out / "ordered"));
 }
 
+TEST(Bench, SweepMeasuresEveryValueOnTheSameSeedsAndFitsALine) {
+  const fs::path out = fresh_out_dir();
+  const fs::path log = test_dir() / "rooms.log";
+  const Result r = run("bench " + kSource + "/scenarios/rooms_n.lua --sweep rooms=2,4 --runs 2 --seed 3 --out " +
+                       out.string() + " --log " + log.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("rooms_n over rooms = 2, 4 (seeds 3..4 for each, interleaved)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("least squares: median_s = "), std::string::npos) << r.out;
+
+  const auto j = nlohmann::json::parse(slurp(out / "rooms_n-sweep-rooms" / "sweep.json"));
+  EXPECT_EQ(j["key"], "rooms");
+  EXPECT_EQ(j["runs"], 2);
+  ASSERT_EQ(j["planners"].size(), 1u);
+  const auto& points = j["planners"][0]["points"];
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_EQ(points[0]["value"], "2");
+  EXPECT_EQ(points[1]["value"], "4");
+  // Four rooms need more propagations than two on the same seeds; the line's slope says by how much time.
+  EXPECT_GT(points[1]["propagations_median"].get<double>(), points[0]["propagations_median"].get<double>());
+  const auto& line = j["planners"][0]["line"];
+  const double slope = line["slope_s"], intercept = line["intercept_s"];
+  for (int i = 0; i < 2; ++i) {  // through two points the line is exact
+    EXPECT_NEAR(intercept + slope * (2 + 2 * i), points[i]["median_s"].get<double>(), 1e-9);
+  }
+
+  // Each value also gets its own bench.json and OMPL log, as if benchmarked alone.
+  for (const std::string rooms : {"2", "4"}) {
+    const auto bench = nlohmann::json::parse(slurp(out / ("rooms_n-rooms-" + rooms) / "bench.json"));
+    EXPECT_EQ(bench["settings"], nlohmann::json::array({"rooms=" + rooms}));
+    EXPECT_EQ(bench["first_seed"], 3);
+    EXPECT_TRUE(fs::exists(test_dir() / ("rooms-rooms-" + rooms + ".log")));
+  }
+}
+
+TEST(Bench, ABadSweepIsRefusedBeforeAnyRun) {
+  const fs::path out = fresh_out_dir();
+  const std::string bench = "bench " + kSource + "/scenarios/rooms_n.lua --runs 1 --out " + out.string();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--sweep rooms", "--sweep expects key=v1,v2,..."},
+      {"--sweep rooms=4", "--sweep needs at least two values"},
+      {"--sweep rooms=2,,4", "--sweep: an empty value"},
+      {"--sweep rooms=2,4,2", "--sweep: rooms=2 is given twice"},
+      {"--sweep rooms=2,4 --set rooms=8", "--sweep rooms is also given to --set"},
+      {"--sweep rooms=2,3", "params.rooms must be 2, 4, 8 or 16, got 3"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    const Result r = run(bench + " " + arguments);
+    EXPECT_EQ(r.exit_code, 2) << arguments;
+    EXPECT_NE(r.err.find(message), std::string::npos) << arguments << ": " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(out)) << "nothing written";
+}
+
 }  // namespace

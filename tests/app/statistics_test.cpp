@@ -32,5 +32,23 @@ TEST(Statistics, EmptySamplesGiveZero) {
   EXPECT_EQ(maximum({}), 0.0);
 }
 
+TEST(Statistics, FitLineRecoversALineAndReportsTheLargestDeviation) {
+  const LineFit exact = fit_line({2, 4, 8, 16}, {1, 2, 4, 8});
+  EXPECT_NEAR(exact.slope, 0.5, 1e-12);
+  EXPECT_NEAR(exact.intercept, 0.0, 1e-12);
+  EXPECT_NEAR(exact.largest_deviation, 0.0, 1e-12);
+  // y = 1 + 2x with the third point 0.3 high: the line moves a little towards it.
+  const LineFit bent = fit_line({0, 1, 2, 3}, {1, 3, 5.3, 7});
+  EXPECT_NEAR(bent.slope, 2.03, 1e-12);
+  EXPECT_NEAR(bent.intercept, 1.03, 1e-12);
+  EXPECT_NEAR(bent.largest_deviation, 0.21, 1e-12);
+}
+
+TEST(Statistics, FitLineThroughOneXIsFlat) {
+  const LineFit fit = fit_line({3, 3}, {1, 2});
+  EXPECT_EQ(fit.slope, 0.0);
+  EXPECT_DOUBLE_EQ(fit.intercept, 1.5);
+}
+
 }  // namespace
 }  // namespace physltl::app::statistics

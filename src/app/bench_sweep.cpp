@@ -1,0 +1,157 @@
+#include "bench_sweep.h"
+
+#include "command.h"
+#include "plan_files.h"
+#include "statistics.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <charconv>
+#include <optional>
+
+namespace physltl::app {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+std::optional<double> number(const std::string& text) {
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
+// The swept values as numbers, when every one is.
+std::optional<std::vector<double>> numeric_values(const Sweep& sweep) {
+  std::vector<double> values;
+  for (const auto& point : sweep.points) {
+    const auto value = number(point.value);
+    if (!value) return std::nullopt;
+    values.push_back(*value);
+  }
+  return values;
+}
+
+// What the sweep shows for one planner configuration at one value.
+struct Row {
+  PlannerSummary summary;
+  double propagations_median = 0.0;
+  double microseconds_per_propagation = 0.0;
+};
+
+Row row(const BenchResults& results, size_t planner) {
+  const PlannerRuns& runs = results.planners[planner];
+  Row r;
+  r.summary = summarize(runs, results.time_limit_s);
+  std::vector<double> propagations;
+  double wall = 0.0, total = 0.0;
+  for (const auto& run : runs.runs) {
+    propagations.push_back(static_cast<double>(run.propagations));
+    wall += run.wall_s;
+    total += static_cast<double>(run.propagations);
+  }
+  r.propagations_median = statistics::median(propagations);
+  r.microseconds_per_propagation = total > 0.0 ? 1e6 * wall / total : 0.0;
+  return r;
+}
+
+std::vector<double> medians(const Sweep& sweep, size_t planner) {
+  std::vector<double> m;
+  for (const auto& point : sweep.points) m.push_back(row(point.results, planner).summary.median_s);
+  return m;
+}
+
+}  // namespace
+
+SweepSpec parse_sweep(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) throw BadInput("--sweep expects key=v1,v2,..., got '" + text + "'");
+  SweepSpec spec{text.substr(0, eq), {}};
+  const std::string list = text.substr(eq + 1);
+  size_t from = 0;
+  while (true) {
+    const size_t comma = list.find(',', from);
+    const std::string value = list.substr(from, comma == std::string::npos ? std::string::npos : comma - from);
+    if (value.empty()) throw BadInput("--sweep: an empty value in '" + text + "'");
+    if (std::find(spec.values.begin(), spec.values.end(), value) != spec.values.end()) {
+      throw BadInput("--sweep: " + spec.key + "=" + value + " is given twice");
+    }
+    spec.values.push_back(value);
+    if (comma == std::string::npos) break;
+    from = comma + 1;
+  }
+  if (spec.values.size() < 2) throw BadInput("--sweep needs at least two values, got '" + text + "'");
+  return spec;
+}
+
+std::string sweep_table(const Sweep& sweep) {
+  if (sweep.points.empty()) return "";
+  const BenchResults& first = sweep.points.front().results;
+  std::vector<std::string> values;
+  for (const auto& point : sweep.points) values.push_back(point.value);
+  std::string text = fmt::format("{} over {} = {} (seeds {}..{} for each, interleaved)\n", first.scenario, sweep.key,
+                                 fmt::join(values, ", "), first.first_seed,
+                                 first.first_seed + static_cast<std::uint64_t>(first.runs) - 1);
+  const auto xs = numeric_values(sweep);
+  for (size_t p = 0; p < first.planners.size(); ++p) {
+    text += fmt::format("{:<12} {:>8} {:>7} {:>9} {:>7} {:>13} {:>8}\n", planner_label(first, first.planners[p]),
+                        sweep.key, "solved", "median_s", "growth", "propagations", "us/prop");
+    double previous = 0.0;
+    for (const auto& point : sweep.points) {
+      const Row r = row(point.results, p);
+      const std::string growth = previous > 0.0 ? fmt::format("{:.2f}", r.summary.median_s / previous) : "-";
+      text += fmt::format("{:<12} {:>8} {:>7} {:>9.3f} {:>7} {:>13.0f} {:>8.1f}\n", "", point.value,
+                          fmt::format("{}/{}", r.summary.solved, point.results.planners[p].runs.size()),
+                          r.summary.median_s, growth, r.propagations_median, r.microseconds_per_propagation);
+      previous = r.summary.median_s;
+    }
+    if (xs) {
+      const statistics::LineFit fit = statistics::fit_line(*xs, medians(sweep, p));
+      text += fmt::format("{:<12} least squares: median_s = {:.3f} {} {:.4f} x {} (largest deviation {:.3f} s)\n", "",
+                          fit.intercept, fit.slope < 0 ? "-" : "+", std::abs(fit.slope), sweep.key,
+                          fit.largest_deviation);
+    }
+  }
+  text += "growth: the median over the previous value's; us/prop: wall time over all propagations\n";
+  return text;
+}
+
+json sweep_json(const Sweep& sweep) {
+  json planners = json::array();
+  if (sweep.points.empty()) return {{"key", sweep.key}, {"planners", planners}};
+  const BenchResults& first = sweep.points.front().results;
+  const auto xs = numeric_values(sweep);
+  for (size_t p = 0; p < first.planners.size(); ++p) {
+    json rows = json::array();
+    for (const auto& point : sweep.points) {
+      const Row r = row(point.results, p);
+      rows.push_back({{"value", point.value},
+                      {"solved", r.summary.solved},
+                      {"median_s", r.summary.median_s},
+                      {"times_s", r.summary.times_s},
+                      {"propagations_median", r.propagations_median},
+                      {"microseconds_per_propagation", r.microseconds_per_propagation}});
+    }
+    json fit = nullptr;
+    if (xs) {
+      const statistics::LineFit line = statistics::fit_line(*xs, medians(sweep, p));
+      fit = {{"intercept_s", line.intercept}, {"slope_s", line.slope}, {"largest_deviation_s", line.largest_deviation}};
+    }
+    planners.push_back({{"name", guidance_name(first.planners[p].guidance)},
+                        {"threads", first.planners[p].threads},
+                        {"points", std::move(rows)},
+                        {"line", std::move(fit)}});
+  }
+  return {{"scenario", first.scenario},
+          {"scenario_file", first.scenario_file},
+          {"key", sweep.key},
+          {"settings", sweep.settings},
+          {"runs", first.runs},
+          {"first_seed", first.first_seed},
+          {"time_limit_s", first.time_limit_s},
+          {"planners", std::move(planners)}};
+}
+
+}  // namespace physltl::app
