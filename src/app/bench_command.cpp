@@ -100,16 +100,34 @@ std::filesystem::path log_file_for(const std::string& file, const std::optional<
   return path.parent_path() / (path.stem().string() + "-" + folder_name(sweep->key, {}) + "-" + value + path.extension().string());
 }
 
-// The log file appears whole or not at all, like the output folder.
-void write_log(const std::filesystem::path& file, const OmplExperiment& experiment) {
-  const std::filesystem::path temp = file.string() + ".tmp";
-  {
+// Log files appear whole or not at all, like the output folders: each is written beside its final name
+// and renamed into place by commit(); those not committed are removed.
+class PendingLogs {
+ public:
+  PendingLogs() = default;
+  PendingLogs(const PendingLogs&) = delete;
+  PendingLogs& operator=(const PendingLogs&) = delete;
+  ~PendingLogs() {
+    std::error_code ignored;
+    for (const auto& [temp, file] : logs_) std::filesystem::remove(temp, ignored);
+  }
+
+  void write(const std::filesystem::path& file, const OmplExperiment& experiment) {
+    const std::filesystem::path temp = file.string() + ".tmp";
+    logs_.emplace_back(temp, file);
     std::ofstream out(temp);
     write_ompl_log(out, experiment);
     if (!out) throw BadInput("cannot write " + file.string());
   }
-  std::filesystem::rename(temp, file);
-}
+
+  void commit() {
+    for (const auto& [temp, file] : logs_) std::filesystem::rename(temp, file);
+    logs_.clear();
+  }
+
+ private:
+  std::vector<std::pair<std::filesystem::path, std::filesystem::path>> logs_;  // temporary, final
+};
 
 // One setting of the scenario measured: its World, what the planners need, and what they did.
 struct BenchCase {
@@ -206,9 +224,17 @@ int bench(const BenchArgs& args) {
   }
   if (show_progress) fmt::print(stderr, "\r{:<72}\r", "");
 
-  // Every folder and log is written before any is committed: all appear, or none.
+  // Every log and folder is written before any is committed: all appear, or none.
+  std::vector<std::string> written, written_logs;
+  PendingLogs logs;
+  if (!args.log_file.empty()) {
+    for (const auto& c : cases) {
+      const auto file = log_file_for(args.log_file, sweep, c->swept_value);
+      logs.write(file, ompl_experiment(c->results, host_name(), cpu_info()));
+      written_logs.push_back(file.string());
+    }
+  }
   std::vector<std::unique_ptr<OutputFolder>> folders;
-  std::vector<std::string> written;
   for (const auto& c : cases) {
     std::cout << bench_table(c->results);
     auto& out = folders.emplace_back(std::make_unique<OutputFolder>(
@@ -227,14 +253,9 @@ int bench(const BenchArgs& args) {
     write_bench_json(out->path() / "sweep.json", sweep_json(result));
     written.push_back(out->final_path().string() + "/sweep.json");
   }
-  if (!args.log_file.empty()) {
-    for (const auto& c : cases) {
-      const auto file = log_file_for(args.log_file, sweep, c->swept_value);
-      write_log(file, ompl_experiment(c->results, host_name(), cpu_info()));
-      written.push_back(file.string());
-    }
-  }
   for (auto& out : folders) out->commit();
+  logs.commit();
+  written.insert(written.end(), written_logs.begin(), written_logs.end());
   std::cout << "outputs    " << fmt::format("{}", fmt::join(written, ", ")) << "\n";
   return kExitOk;
 }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <optional>
 
 namespace physltl::app {
@@ -19,7 +20,7 @@ using json = nlohmann::ordered_json;
 std::optional<double> number(const std::string& text) {
   double value = 0.0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
   return value;
 }
 
@@ -75,6 +76,10 @@ SweepSpec parse_sweep(const std::string& text) {
     const size_t comma = list.find(',', from);
     const std::string value = list.substr(from, comma == std::string::npos ? std::string::npos : comma - from);
     if (value.empty()) throw BadInput("--sweep: an empty value in '" + text + "'");
+    // Values name output folders and log files.
+    if (value.find_first_of("/\\") != std::string::npos) {
+      throw BadInput("--sweep: a value may not contain / or \\, got '" + value + "'");
+    }
     if (std::find(spec.values.begin(), spec.values.end(), value) != spec.values.end()) {
       throw BadInput("--sweep: " + spec.key + "=" + value + " is given twice");
     }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 namespace physltl::physics {
@@ -182,11 +183,11 @@ struct Simulation::Impl {
     for (size_t i = 0; i < world.movable_bodies.size(); ++i) set_pose(i + 1, world.movable_bodies[i].footprint.pose);
   }
 
-  // Bodies whose values already match are left alone: a restore usually differs from the current state in
-  // the robot and a box or two.
+  // Bodies whose values already match bit for bit (-0.0 is not 0.0 here) are left alone: a restore usually
+  // differs from the current state in the robot and a box or two.
   void restore(const double* v) {
     for (size_t i = 0; i < dynamic.size(); ++i, v += kValuesPerBody) {
-      if (!std::equal(v, v + kValuesPerBody, values(i))) set_body(i, v);
+      if (std::memcmp(v, values(i), kValuesPerBody * sizeof(double)) != 0) set_body(i, v);
     }
   }
 

@@ -11,7 +11,7 @@ constexpr int kUpdatesPerWholeSearch = 8;
 }  // namespace
 
 std::vector<int> LeadSearch::next(int start, int horizon) {
-  if (horizon == horizon_ && !prefix_.empty() && updates_until_whole_-- > 0) {
+  if (horizon == horizon_ && !prefix_.empty() && prefix_.front() == start && updates_until_whole_-- > 0) {
     const std::vector<int> frontier_part = graph_.lead(prefix_.back(), horizon);
     if (!frontier_part.empty()) {
       std::vector<int> lead(prefix_.begin(), prefix_.end() - 1);

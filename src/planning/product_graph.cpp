@@ -91,7 +91,7 @@ std::vector<int> ProductGraph::lead(int start, int horizon) {
     open.pop_back();
     if (c > cost[u]) continue;
     const int q = automaton_state_of(u);
-    if (distance_to_accept_[q] <= horizon) {
+    if (!dead(q) && distance_to_accept_[q] <= horizon) {
       goal = u;
       break;
     }

@@ -146,6 +146,15 @@ TEST(Simulation, RestoringAStateThatMovedOnlyTheRobotContinuesBitForBit) {
   EXPECT_EQ(a.save(), b.save());
 }
 
+TEST(Simulation, RestoringTellsMinusZeroFromZero) {
+  Simulation sim(small_world());
+  PhysicsState state = sim.save();
+  ASSERT_FALSE(std::signbit(state.values[4]));  // the robot's x velocity, +0.0 at rest
+  state.values[4] = -0.0;
+  sim.restore(state);
+  EXPECT_TRUE(std::signbit(sim.save().values[4]));
+}
+
 TEST(Simulation, RestoringAStateOfAnotherWorldIsRefused) {
   auto two_boxes = small_world();
   two_boxes.movable_bodies.push_back(two_boxes.movable_bodies[0]);

@@ -76,6 +76,21 @@ TEST(Planner, GivesUpAtItsTimeLimitOnAnImpossibleTask) {
   EXPECT_GT(result.stats.propagations, 0);
 }
 
+TEST(Planner, ATaskAlreadyLostAtTheStartHasNoLead) {
+  TestProblem p("ordered.lua");
+  // The robot starts in p2 and the task forbids p2 before p1: no run can satisfy it any more.
+  for (const auto& region : p.world.regions) {
+    if (region.name == "p2") p.world.robot.start = region.polygon.centroid();
+  }
+  const TaskAutomaton task = TaskAutomaton::make(ltl::translate(ltl::parse("!p2 U p1")), p.world);
+  PlannerOptions options;
+  options.time_limit = 5;
+  const PlanResult result = plan(p.world, task, p.knowledge, p.decomposition, options);
+  EXPECT_FALSE(result.solved);
+  EXPECT_EQ(result.stop_reason, "no lead");
+  EXPECT_EQ(result.stats.propagations, 0);
+}
+
 TEST(Planner, StopsWhenAskedTo) {
   const TestProblem p("rooms.lua");
   std::atomic<bool> stop{true};
