@@ -218,7 +218,6 @@ struct Simulation::Impl {
         if (!awake[j] && may_touch(mover, j)) awake[j] = 1, woken.push_back(j);
       }
     }
-    std::sort(woken.begin(), woken.end());
     for (size_t i = 1; i < dynamic.size(); ++i) {
       if (awake[i] == enabled[i]) continue;
       enabled[i] = awake[i];
@@ -288,21 +287,17 @@ struct Simulation::Impl {
     const double fy = std::clamp(force.y(), -max_force, max_force);
     dBodyAddForce(dynamic[0].body, fx, fy, 0.0);
     wake_bodies();
-    // Fixed pair order, no collision space: contact order never depends on history. Two sleeping bodies
-    // cannot meet, so a sleeping body is paired only with the awake ones after it. The grid only leaves
-    // out fixed bodies too far away to touch, in index order, so the contacts are those of testing every
-    // pair.
+    // Fixed pair order, no collision space: contact order never depends on history. A sleeping body is
+    // out of reach of every awake one (wake_bodies woke those) and of every other sleeping one's motion,
+    // so only awake bodies have pairs to test. The grid only leaves out fixed bodies too far away to
+    // touch, in index order, so the contacts are those of testing every pair.
     for (size_t i = 0; i < dynamic.size(); ++i) {
+      if (!awake[i]) continue;
       const scenario::Vec2 p = position(i);
       const double radius = dynamic[i].bound_radius;
-      auto pair_with = [&](size_t j) {
+      for (size_t j = i + 1; j < dynamic.size(); ++j) {
         if (within_reach(p, radius, position(j), dynamic[j].bound_radius)) collide(dynamic[i], dynamic[j], robot_contacts);
-      };
-      if (!awake[i]) {
-        for (auto j = std::upper_bound(woken.begin(), woken.end(), i); j != woken.end(); ++j) pair_with(*j);
-        continue;
       }
-      for (size_t j = i + 1; j < dynamic.size(); ++j) pair_with(j);
       for (int f : fixed_near.near(p)) {
         const Geom& g = fixed[static_cast<size_t>(f)];
         if (within_reach(p, radius, g.position, g.bound_radius)) collide(dynamic[i], g, robot_contacts);
