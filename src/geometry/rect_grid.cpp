@@ -23,7 +23,7 @@ RectGrid::RectGrid(std::span<const Rect> rects, double reach) : all_(rects.size(
   origin_ = lo;
   columns_ = static_cast<int>(std::ceil(size.x() / cell_)) + 1;
   rows_ = static_cast<int>(std::ceil(size.y() / cell_)) + 1;
-  // Two passes, counting then filling, so every cell's indices sit together and stay ascending.
+  // Bucketed per cell first, then laid out flat: each cell's indices together, in ascending order.
   std::vector<std::vector<int>> cells(static_cast<size_t>(columns_) * rows_);
   for (size_t i = 0; i < rects.size(); ++i) {
     const Vec2 a = (rects[i].min - margin - origin_) / cell_, b = (rects[i].max + margin - origin_) / cell_;
