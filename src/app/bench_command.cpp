@@ -33,7 +33,7 @@ struct BenchArgs {
   std::optional<double> time_limit;
   bool compare = false;
   std::vector<int> threads{1};
-  std::string sweep;  // key=v1,v2,...
+  std::optional<std::string> sweep;  // key=v1,v2,...
   std::string log_file;
   std::string out_dir = "out/bench";
 };
@@ -151,8 +151,8 @@ int bench(const BenchArgs& args) {
     }
   }
   std::optional<SweepSpec> sweep;
-  if (!args.sweep.empty()) {
-    sweep = parse_sweep(args.sweep);
+  if (args.sweep) {
+    sweep = parse_sweep(*args.sweep);
     for (const auto& setting : args.scenario.settings) {
       if (setting.rfind(sweep->key + "=", 0) == 0) throw BadInput("--sweep " + sweep->key + " is also given to --set");
     }

@@ -118,6 +118,7 @@ TEST(Bench, ABadSweepIsRefusedBeforeAnyRun) {
   const std::string bench = "bench " + kSource + "/scenarios/rooms_n.lua --runs 1 --out " + out.string();
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"--sweep rooms", "--sweep expects key=v1,v2,..."},
+      {"--sweep ''", "--sweep expects key=v1,v2,..., got ''"},
       {"--sweep rooms=4", "--sweep needs at least two values"},
       {"--sweep rooms=2,,4", "--sweep: an empty value"},
       {"--sweep rooms=2,4,2", "--sweep: rooms=2 is given twice"},
