@@ -97,7 +97,7 @@ std::string folder_name(const std::string& scenario, const std::vector<std::stri
 std::filesystem::path log_file_for(const std::string& file, const std::optional<SweepSpec>& sweep, const std::string& value) {
   std::filesystem::path path(file);
   if (!sweep) return path;
-  return path.parent_path() / (path.stem().string() + "-" + folder_name(sweep->key, {}) + "-" + value + path.extension().string());
+  return path.parent_path() / (path.stem().string() + "-" + sweep->key + "-" + value + path.extension().string());
 }
 
 // Log files appear whole or not at all, like the output folders: each is written beside its final name
@@ -224,16 +224,9 @@ int bench(const BenchArgs& args) {
   }
   if (show_progress) fmt::print(stderr, "\r{:<72}\r", "");
 
-  // Every log and folder is written before any is committed: all appear, or none.
-  std::vector<std::string> written, written_logs;
-  PendingLogs logs;
-  if (!args.log_file.empty()) {
-    for (const auto& c : cases) {
-      const auto file = log_file_for(args.log_file, sweep, c->swept_value);
-      logs.write(file, ompl_experiment(c->results, host_name(), cpu_info()));
-      written_logs.push_back(file.string());
-    }
-  }
+  // Every folder and log is written before any is committed: all appear, or none. The folders come first:
+  // they create <out>, where a log may go.
+  std::vector<std::string> written;
   std::vector<std::unique_ptr<OutputFolder>> folders;
   for (const auto& c : cases) {
     std::cout << bench_table(c->results);
@@ -253,9 +246,16 @@ int bench(const BenchArgs& args) {
     write_bench_json(out->path() / "sweep.json", sweep_json(result));
     written.push_back(out->final_path().string() + "/sweep.json");
   }
+  PendingLogs logs;
+  if (!args.log_file.empty()) {
+    for (const auto& c : cases) {
+      const auto file = log_file_for(args.log_file, sweep, c->swept_value);
+      logs.write(file, ompl_experiment(c->results, host_name(), cpu_info()));
+      written.push_back(file.string());
+    }
+  }
   for (auto& out : folders) out->commit();
   logs.commit();
-  written.insert(written.end(), written_logs.begin(), written_logs.end());
   std::cout << "outputs    " << fmt::format("{}", fmt::join(written, ", ")) << "\n";
   return kExitOk;
 }

@@ -58,10 +58,22 @@ Row row(const BenchResults& results, size_t planner) {
   return r;
 }
 
-std::vector<double> medians(const Sweep& sweep, size_t planner) {
-  std::vector<double> m;
-  for (const auto& point : sweep.points) m.push_back(row(point.results, planner).summary.median_s);
-  return m;
+// One planner configuration over the sweep: a row per value and, when every value is a number, the
+// least-squares line through the medians.
+struct PlannerSweep {
+  std::vector<Row> rows;
+  std::optional<statistics::LineFit> line;
+};
+
+PlannerSweep planner_sweep(const Sweep& sweep, size_t planner) {
+  PlannerSweep result;
+  std::vector<double> medians;
+  for (const auto& point : sweep.points) {
+    result.rows.push_back(row(point.results, planner));
+    medians.push_back(result.rows.back().summary.median_s);
+  }
+  if (const auto xs = numeric_values(sweep)) result.line = statistics::fit_line(*xs, medians);
+  return result;
 }
 
 }  // namespace
@@ -99,24 +111,24 @@ std::string sweep_table(const Sweep& sweep) {
   std::string text = fmt::format("{} over {} = {} (seeds {}..{} for each, interleaved)\n", first.scenario, sweep.key,
                                  fmt::join(values, ", "), first.first_seed,
                                  first.first_seed + static_cast<std::uint64_t>(first.runs) - 1);
-  const auto xs = numeric_values(sweep);
   for (size_t p = 0; p < first.planners.size(); ++p) {
+    const PlannerSweep planner = planner_sweep(sweep, p);
     text += fmt::format("{:<12} {:>8} {:>7} {:>9} {:>7} {:>13} {:>8}\n", planner_label(first, first.planners[p]),
                         sweep.key, "solved", "median_s", "growth", "propagations", "us/prop");
     double previous = 0.0;
-    for (const auto& point : sweep.points) {
-      const Row r = row(point.results, p);
+    for (size_t i = 0; i < sweep.points.size(); ++i) {
+      const SweepPoint& point = sweep.points[i];
+      const Row& r = planner.rows[i];
       const std::string growth = previous > 0.0 ? fmt::format("{:.2f}", r.summary.median_s / previous) : "-";
       text += fmt::format("{:<12} {:>8} {:>7} {:>9.3f} {:>7} {:>13.0f} {:>8.1f}\n", "", point.value,
                           fmt::format("{}/{}", r.summary.solved, point.results.planners[p].runs.size()),
                           r.summary.median_s, growth, r.propagations_median, r.microseconds_per_propagation);
       previous = r.summary.median_s;
     }
-    if (xs) {
-      const statistics::LineFit fit = statistics::fit_line(*xs, medians(sweep, p));
+    if (const auto& fit = planner.line) {
       text += fmt::format("{:<12} least squares: median_s = {:.3f} {} {:.4f} x {} (largest deviation {:.3f} s)\n", "",
-                          fit.intercept, fit.slope < 0 ? "-" : "+", std::abs(fit.slope), sweep.key,
-                          fit.largest_deviation);
+                          fit->intercept, fit->slope < 0 ? "-" : "+", std::abs(fit->slope), sweep.key,
+                          fit->largest_deviation);
     }
   }
   text += "growth: the median over the previous value's; us/prop: wall time over all propagations\n";
@@ -127,12 +139,12 @@ json sweep_json(const Sweep& sweep) {
   json planners = json::array();
   if (sweep.points.empty()) return {{"key", sweep.key}, {"planners", planners}};
   const BenchResults& first = sweep.points.front().results;
-  const auto xs = numeric_values(sweep);
   for (size_t p = 0; p < first.planners.size(); ++p) {
+    const PlannerSweep planner = planner_sweep(sweep, p);
     json rows = json::array();
-    for (const auto& point : sweep.points) {
-      const Row r = row(point.results, p);
-      rows.push_back({{"value", point.value},
+    for (size_t i = 0; i < sweep.points.size(); ++i) {
+      const Row& r = planner.rows[i];
+      rows.push_back({{"value", sweep.points[i].value},
                       {"solved", r.summary.solved},
                       {"median_s", r.summary.median_s},
                       {"times_s", r.summary.times_s},
@@ -140,9 +152,8 @@ json sweep_json(const Sweep& sweep) {
                       {"microseconds_per_propagation", r.microseconds_per_propagation}});
     }
     json fit = nullptr;
-    if (xs) {
-      const statistics::LineFit line = statistics::fit_line(*xs, medians(sweep, p));
-      fit = {{"intercept_s", line.intercept}, {"slope_s", line.slope}, {"largest_deviation_s", line.largest_deviation}};
+    if (const auto& line = planner.line) {
+      fit = {{"intercept_s", line->intercept}, {"slope_s", line->slope}, {"largest_deviation_s", line->largest_deviation}};
     }
     planners.push_back({{"name", guidance_name(first.planners[p].guidance)},
                         {"threads", first.planners[p].threads},

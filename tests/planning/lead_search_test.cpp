@@ -1,5 +1,6 @@
 #include "lead_search.h"
 
+#include "product_path.h"
 #include "test_problem.h"
 
 #include <gtest/gtest.h>
@@ -8,20 +9,6 @@
 
 namespace physltl::planning {
 namespace {
-
-// A path of the product graph: neighbouring triangles, each entered with the automaton's step.
-void expect_path(const TestProblem& p, const ProductGraph& graph, const std::vector<int>& lead, int horizon) {
-  ASSERT_FALSE(lead.empty());
-  EXPECT_LE(graph.distance_to_accept(graph.automaton_state_of(lead.back())), horizon);
-  for (size_t i = 1; i < lead.size(); ++i) {
-    const auto& from = p.decomposition.triangles()[graph.triangle_of(lead[i - 1])];
-    const int to = graph.triangle_of(lead[i]);
-    ASSERT_NE(std::find(from.neighbors.begin(), from.neighbors.end(), to), from.neighbors.end()) << i;
-    ASSERT_EQ(graph.automaton_state_of(lead[i]),
-              p.task.step(graph.automaton_state_of(lead[i - 1]), p.decomposition.triangles()[to].region));
-    EXPECT_GT(graph.distance_to_accept(graph.automaton_state_of(lead[i - 1])), horizon);
-  }
-}
 
 TEST(LeadSearch, KeepsThePartBeforeTheFrontierAndSearchesTheRestAgain) {
   const TestProblem p("ordered.lua");
@@ -40,7 +27,7 @@ TEST(LeadSearch, KeepsThePartBeforeTheFrontierAndSearchesTheRestAgain) {
   const long entry = second - first.begin();
   for (long i = 1; i <= entry + 2; ++i) graph.add_motion(first[static_cast<size_t>(i)], static_cast<int>(i));
   const std::vector<int> whole = search.next(start, horizon);
-  expect_path(p, graph, whole, horizon);
+  expect_product_path(p, graph, whole, horizon);
 
   // Choosing the frontier's states over and over makes them dear: the next updates route around them,
   // keep the part before the frontier as it was, and stay paths of the product graph.
@@ -49,7 +36,7 @@ TEST(LeadSearch, KeepsThePartBeforeTheFrontierAndSearchesTheRestAgain) {
       for (int k = 0; k < 50; ++k) graph.count_selection(whole[i]);
     }
     const std::vector<int> lead = search.next(start, horizon);
-    expect_path(p, graph, lead, horizon);
+    expect_product_path(p, graph, lead, horizon);
     EXPECT_TRUE(std::equal(whole.begin(), whole.begin() + entry + 1, lead.begin())) << round;
   }
 }

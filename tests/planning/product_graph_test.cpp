@@ -1,5 +1,6 @@
 #include "product_graph.h"
 
+#include "product_path.h"
 #include "test_problem.h"
 
 #include <gtest/gtest.h>
@@ -19,14 +20,7 @@ TEST(ProductGraph, TheLeadWalksNeighbouringTrianglesToAcceptance) {
   ASSERT_GE(lead.size(), 2u);
   EXPECT_EQ(lead.front(), start);
   EXPECT_TRUE(graph.accepting(lead.back()));
-  for (size_t i = 1; i < lead.size(); ++i) {
-    const auto& from = p.decomposition.triangles()[graph.triangle_of(lead[i - 1])];
-    const int to = graph.triangle_of(lead[i]);
-    EXPECT_NE(std::find(from.neighbors.begin(), from.neighbors.end(), to), from.neighbors.end()) << i;
-    // Entering a triangle reads its region.
-    EXPECT_EQ(graph.automaton_state_of(lead[i]),
-              p.task.step(graph.automaton_state_of(lead[i - 1]), p.decomposition.triangles()[to].region));
-  }
+  expect_product_path(p, graph, lead, 0);
 }
 
 TEST(ProductGraph, ALeadWithAHorizonStopsAtTheFirstStateThatClose) {
@@ -37,11 +31,9 @@ TEST(ProductGraph, ALeadWithAHorizonStopsAtTheFirstStateThatClose) {
   const std::vector<int> full = graph.lead(start);
   for (int horizon = 3; horizon >= 1; --horizon) {
     const std::vector<int> lead = graph.lead(start, horizon);
+    expect_product_path(p, graph, lead, horizon);
     ASSERT_FALSE(lead.empty());
     EXPECT_EQ(graph.distance_to_accept(graph.automaton_state_of(lead.back())), horizon);
-    for (size_t i = 0; i + 1 < lead.size(); ++i) {
-      EXPECT_GT(graph.distance_to_accept(graph.automaton_state_of(lead[i])), horizon);
-    }
     EXPECT_LT(lead.size(), full.size());
   }
 }
