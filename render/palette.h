@@ -12,6 +12,7 @@ inline constexpr Color kDecomposition{0.70f, 0.74f, 0.82f};
 inline constexpr Color kFixedBody{0.82f, 0.20f, 0.18f};
 inline constexpr Color kMovableBody{0.20f, 0.42f, 0.85f};
 inline constexpr Color kRobot{0.20f, 0.72f, 0.30f};
+inline constexpr Color kRobotNose{0.08f, 0.30f, 0.12f};  // a differential robot's heading
 inline constexpr Color kRegion{1.00f, 0.85f, 0.10f, 0.55f};
 inline constexpr Color kRegionEdge{0.80f, 0.62f, 0.00f};
 inline constexpr Color kActiveMRegion{1.00f, 0.50f, 0.00f, 0.45f};

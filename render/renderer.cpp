@@ -180,6 +180,13 @@ struct Renderer::Impl {
     const float r = static_cast<float>(world.robot.radius);
     add_mesh(vertices, sphere, body_transform({state.robot_position, 0.0}, r, Vector3f::Constant(r)),
              palette::kRobot);
+    if (world.robot.drive == scenario::Drive::kDifferential) {
+      // A nose on the robot's front, sticking out of the sphere, so the heading shows from above and aside.
+      const Vec2 heading(std::cos(state.robot_yaw), std::sin(state.robot_yaw));
+      const geometry::Pose2 nose{state.robot_position + 0.75 * world.robot.radius * heading, state.robot_yaw};
+      add_mesh(vertices, cube, body_transform(nose, 1.4f * r, Vector3f(0.7f * r, 0.35f * r, 0.35f * r)),
+               palette::kRobotNose);
+    }
     return vertices;
   }
 

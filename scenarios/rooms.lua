@@ -21,7 +21,13 @@ local P = require "physltl"
 local t = 0.2 -- wall thickness (m)
 
 workspace { bounds = { { -6, -5 }, { 6, 5 } }, floor_friction = 0.5 }
-robot { radius = 0.25, mass = 1.0, max_force = 20, start = { 0, 0 } }
+-- The paper's robot drives in any direction (holonomic). `--set drive=differential`, or
+-- scenarios/rooms_differential.lua, puts a round differential-drive robot here instead: it moves only
+-- along its heading and turns at up to 90 deg/s, so it must face a box to push it.
+local drive = params.drive or "holonomic"
+local differential = drive == "differential"
+robot { drive = drive, radius = 0.25, mass = 1.0, max_force = 20, max_speed = 1.0, start = { 0, 0 },
+        max_turn_rate_deg = differential and 90 or nil, start_yaw_deg = differential and 90 or nil }
 
 P.boundary { min = { -6, -5 }, max = { 6, 5 }, thickness = t }
 

@@ -53,6 +53,8 @@ json report_json(const RunSummary& run) {
         {"reproduces_plan", run.replay->reproduces_plan},
         {"valid_states", run.replay->valid},
         {"satisfies_formula", run.replay->accepted},
+        {"within_limits", run.replay->within_limits},
+        {"peak_speed", run.replay->peak_speed},
         {"failure", run.replay->failure.empty() ? json(nullptr) : json(run.replay->failure)},
     };
     report["controls"] = r.plan.controls.size();
@@ -67,14 +69,21 @@ json plan_json(const RunSummary& run) {
   const auto& replay = *run.replay;
   const double dt = world.planner.step_size;
   json controls = json::array();
+  const bool differential = world.robot.drive == scenario::Drive::kDifferential;
   for (const auto& c : run.result.plan.controls) {
-    controls.push_back({{"force", point(c.force)}, {"steps", c.steps}, {"duration_s", c.steps * dt}});
+    json control = differential ? json{{"forward_speed", c.setpoint.x()}, {"turn_rate", c.setpoint.y()}}
+                                : json{{"velocity", point(c.setpoint)}};
+    control["steps"] = c.steps;
+    control["duration_s"] = c.steps * dt;
+    controls.push_back(control);
   }
   json states = json::array();
   for (const auto& s : replay.states) {
     json bodies = json::array();
     for (const auto& pose : s.movable_poses) bodies.push_back({pose.position.x(), pose.position.y(), pose.yaw});
-    states.push_back({{"robot", point(s.robot_position)}, {"bodies", bodies}});
+    json robot = point(s.robot_position);
+    if (differential) robot.push_back(s.robot_yaw);
+    states.push_back({{"robot", robot}, {"bodies", bodies}});
   }
   json moved_bodies = json::array();
   for (size_t b = 0; b < world.movable_bodies.size(); ++b) {
@@ -86,6 +95,7 @@ json plan_json(const RunSummary& run) {
       {"scenario", world.source_file},
       {"seed", world.planner.seed},
       {"step_size_s", dt},
+      {"drive", scenario::drive_name(world.robot.drive)},
       {"body_names", [&] {
          json names = json::array();
          for (const auto& b : world.movable_bodies) names.push_back(b.name);

@@ -25,6 +25,7 @@ scenario::EnvironmentState interpolate(const scenario::EnvironmentState& a, cons
                                        double t) {
   scenario::EnvironmentState s = a;
   s.robot_position = (1 - t) * a.robot_position + t * b.robot_position;
+  s.robot_yaw = lerp_angle(a.robot_yaw, b.robot_yaw, t);
   for (size_t i = 0; i < s.movable_poses.size(); ++i) {
     s.movable_poses[i].position = (1 - t) * a.movable_poses[i].position + t * b.movable_poses[i].position;
     s.movable_poses[i].yaw = lerp_angle(a.movable_poses[i].yaw, b.movable_poses[i].yaw, t);

@@ -45,9 +45,9 @@ MovableBodyKnowledge movable_knowledge(const scenario::MovableBody& body, const 
   if (k.floor_friction_force >= robot.push_force) {
     k.body_class = BodyClass::kFixed;
     k.class_reason = fmt::format(
-        "too heavy to push: its floor friction holds it with {:.1f} N, the robot has {:.1f} N to spare "
-        "({:.1f} N force bound minus {:.1f} N of its own floor friction)",
-        k.floor_friction_force, robot.push_force, robot.max_force, robot.floor_friction_force);
+        "too heavy to push: its floor friction holds it with {:.1f} N, the robot's drive pushes with at "
+        "most {:.1f} N",
+        k.floor_friction_force, robot.push_force);
     return k;
   }
   const std::vector<Side> sides =
@@ -94,9 +94,11 @@ AbstractKnowledge formulate(const scenario::World& world, const FormulationSetti
   const auto& r = world.robot;
   k.robot.radius = r.radius;
   k.robot.mass = r.mass;
+  k.robot.drive = r.drive;
   k.robot.max_force = r.max_force;
-  k.robot.floor_friction_force = combined_friction(r.friction, world.workspace.floor_friction) * r.mass * settings.gravity;
-  k.robot.push_force = r.max_force - k.robot.floor_friction_force;
+  k.robot.max_speed = r.max_speed;
+  k.robot.max_turn_rate = r.drive == scenario::Drive::kDifferential ? r.max_turn_rate : 0.0;
+  k.robot.push_force = r.max_force;
   k.robot.start = r.start;
 
   for (const auto& f : world.fixed_bodies) {

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <numbers>
 
 namespace physltl::knowledge {
 namespace {
@@ -67,8 +68,10 @@ json to_json(const AbstractKnowledge& k) {
           {"robot",
            {{"radius", r.radius},
             {"mass", r.mass},
+            {"drive", scenario::drive_name(r.drive)},
             {"max_force", r.max_force},
-            {"floor_friction_force", r.floor_friction_force},
+            {"max_speed", r.max_speed},
+            {"max_turn_rate_deg", r.max_turn_rate * 180.0 / std::numbers::pi},
             {"push_force", r.push_force},
             {"start", point(r.start)}}},
           {"bodies", bodies},

@@ -1,5 +1,6 @@
 #include "physltl/knowledge/validity.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace physltl::knowledge {
@@ -25,6 +26,7 @@ bool pushes_from_active_mregion(const MovableBodyKnowledge& body, const BodyKapp
 const char* violation_name(Violation violation) {
   switch (violation) {
     case Violation::kNone: return "none";
+    case Violation::kExceedsRobotLimits: return "robot exceeds its speed or turn-rate limit";
     case Violation::kLeftWorkspace: return "left the workspace";
     case Violation::kTouchesFixedBody: return "robot touches a fixed body";
     case Violation::kTouchesImmovableBody: return "robot touches an immovable body";
@@ -40,6 +42,7 @@ Validity check_validity(const AbstractKnowledge& knowledge, const Kappa& kappa, 
   if (state.movable_poses.size() != n || (uses_kappa && kappa.bodies.size() != n)) {
     throw std::invalid_argument("check_validity: state, kappa and knowledge disagree on the movable bodies");
   }
+  if (!within_robot_limits(knowledge.robot, state)) return {Violation::kExceedsRobotLimits, -1};
   if (!robot_inside_workspace(knowledge, state.robot_position)) return {Violation::kLeftWorkspace, -1};
   for (size_t i = 0; i < n; ++i) {
     const geometry::OrientedBox footprint{state.movable_poses[i], knowledge.movable_bodies[i].footprint.half_extents};
@@ -60,6 +63,14 @@ Validity check_validity(const AbstractKnowledge& knowledge, const Kappa& kappa, 
     }
   }
   return {};
+}
+
+bool within_robot_limits(const RobotCapabilities& robot, const scenario::EnvironmentState& state) {
+  const double slack = 1.0 + kLimitTolerance;
+  // A holonomic robot's heading is held, not driven: it has no turn rate to bound.
+  const bool turns_within = robot.drive == scenario::Drive::kHolonomic ||
+                            std::abs(state.robot_turn_rate) <= robot.max_turn_rate * slack;
+  return state.robot_velocity.norm() <= robot.max_speed * slack && turns_within;
 }
 
 bool is_valid(const AbstractKnowledge& knowledge, const Kappa& kappa, const scenario::EnvironmentState& state,

@@ -1,5 +1,6 @@
 #include "physltl/physics/simulation.h"
 
+#include "drive.h"
 #include "ode_runtime.h"
 #include "physltl/geometry/rect_grid.h"
 
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numbers>
 #include <stdexcept>
 
 namespace physltl::physics {
@@ -18,7 +20,11 @@ constexpr double kGravity = 9.81;           // m/s^2, for floor friction only: m
 constexpr double kCollisionHeight = 1.0;    // m; every body spans z = ±0.5 so contact normals stay horizontal
 constexpr int kMaxContactsPerPair = 4;
 constexpr int kValuesPerBody = 10;          // position 3, yaw 1, linear velocity 3, angular velocity 3
-constexpr double kBoxSpeedFactor = 2.0;     // pushed boxes may not outrun the robot by more than this
+// ODE pushes overlapping bodies apart at up to this speed. The robot's speed limit holds at every step
+// only if this correction stays well below it (docs/physics.md measures what remains).
+constexpr double kMaxCorrectingSpeed = 0.1;  // m/s
+// A holonomic robot keeps its heading: the plane-2D joint's angular motor holds it with this torque bound.
+constexpr double kHeadingHoldTorque = 1e3;  // N m
 // A box slower than this is at rest: floor friction takes ~0.2 m/s off a sliding box per step, so a box
 // this slow would stop within the step anyway, and calling it stopped lets the step skip it.
 constexpr double kRestSpeed = 1e-4;         // m/s, and rad/s for turning
@@ -62,11 +68,12 @@ struct Simulation::Impl {
   std::vector<char> awake;    // per dynamic body, this step: it is integrated and collided
   std::vector<char> enabled;  // per dynamic body, as ODE has it now
   std::vector<size_t> woken;  // wake_bodies' work list, kept to avoid allocating every step
-  double max_force;
-  double max_speed;
+  DriveBody drive;
+  DriveEffort last_drive;
+  dJointID wheel_grip = nullptr;  // differential drive only
   dContactGeom contact_buffer[kMaxContactsPerPair];
 
-  explicit Impl(const scenario::World& w) : world(w), max_force(w.robot.max_force), max_speed(w.robot.max_speed) {
+  explicit Impl(const scenario::World& w) : world(w) {
     ensure_ode_ready_on_this_thread();
     ode_world = dWorldCreate();
     // ODE's default stepping implementation is one object shared by all worlds; with a planner per
@@ -77,7 +84,7 @@ struct Simulation::Impl {
     dWorldSetERP(ode_world, 0.2);
     dWorldSetCFM(ode_world, 1e-6);
     dWorldSetContactSurfaceLayer(ode_world, 0.001);
-    dWorldSetContactMaxCorrectingVel(ode_world, 1.0);
+    dWorldSetContactMaxCorrectingVel(ode_world, kMaxCorrectingSpeed);
     dWorldSetAutoDisableFlag(ode_world, 0);  // no hidden sleep counters: the state is all in PhysicsState
     contact_group = dJointGroupCreate(0);
 
@@ -85,8 +92,12 @@ struct Simulation::Impl {
     const auto& r = w.robot;
     dMass mass;
     dMassSetSphereTotal(&mass, r.mass, r.radius);
-    add_dynamic(dCreateSphere(nullptr, r.radius), mass, r.friction, r.radius, -1,
-                mix_friction(floor, r.friction) * r.mass * kGravity, 0.0);
+    // The robot rolls on its wheels: no sliding friction with the floor, only what its drive applies.
+    const bool differential = r.drive == scenario::Drive::kDifferential;
+    add_dynamic(dCreateSphere(nullptr, r.radius), mass, r.friction, r.radius, -1, 0.0,
+                differential ? 0.0 : kHeadingHoldTorque);
+    drive = {r.mass, mass.I[2 * 4 + 2], r.radius, r.max_force};
+    if (differential) add_wheel_grip(mix_friction(floor, r.friction) * r.mass * kGravity);
 
     for (size_t i = 0; i < w.movable_bodies.size(); ++i) {
       const auto& b = w.movable_bodies[i];
@@ -150,12 +161,23 @@ struct Simulation::Impl {
     dJointAttach(joint, g.body, nullptr);
     dJointSetPlane2DXParam(joint, dParamFMax, floor_force);
     dJointSetPlane2DYParam(joint, dParamFMax, floor_force);
-    dJointSetPlane2DAngleParam(joint, dParamFMax, index < 0 ? 1e3 : floor_torque);  // the robot does not spin
+    dJointSetPlane2DAngleParam(joint, dParamFMax, floor_torque);
     planar_joints.push_back(joint);
     dynamic.push_back(g);
     state.resize(state.size() + kValuesPerBody, 0.0);
     awake.push_back(1);
     enabled.push_back(1);
+  }
+
+  // The wheels of a differential robot grip the floor sideways: a velocity constraint across the heading,
+  // bounded by Coulomb friction, so the robot slides sideways only when contacts push harder than that.
+  // Its axis is set every step, across the heading the step ends in (differential_drive).
+  void add_wheel_grip(double max_grip_force) {
+    wheel_grip = dJointCreateLMotor(ode_world, nullptr);
+    dJointAttach(wheel_grip, dynamic[0].body, nullptr);
+    dJointSetLMotorNumAxes(wheel_grip, 1);
+    dJointSetLMotorParam(wheel_grip, dParamVel, 0.0);
+    dJointSetLMotorParam(wheel_grip, dParamFMax, max_grip_force);
   }
 
   double* values(size_t i) { return state.data() + i * kValuesPerBody; }
@@ -179,7 +201,7 @@ struct Simulation::Impl {
   }
 
   void reset() {
-    set_pose(0, {world.robot.start, 0.0});
+    set_pose(0, {world.robot.start, world.robot.start_yaw});
     for (size_t i = 0; i < world.movable_bodies.size(); ++i) set_pose(i + 1, world.movable_bodies[i].footprint.pose);
   }
 
@@ -266,26 +288,36 @@ struct Simulation::Impl {
     }
   }
 
-  // After each step: remove the solver's drift out of the plane, and saturate speeds.
-  void settle(size_t i, double speed_limit) {
+  // After each step: remove the solver's drift out of the plane, and bring slow boxes to rest.
+  void settle(size_t i) {
     const dBodyID body = dynamic[i].body;
     const dReal* q = dBodyGetQuaternion(body);
     const dReal* p = dBodyGetPosition(body);
     const dReal* v = dBodyGetLinearVel(body);
     const dReal* w = dBodyGetAngularVel(body);
-    const double speed = std::hypot(v[0], v[1]);
-    const double scale = speed > speed_limit ? speed_limit / speed : 1.0;
-    double vx = v[0] * scale, vy = v[1] * scale, wz = w[2];
-    if (i > 0 && speed < kRestSpeed && std::abs(wz) < kRestSpeed) vx = vy = wz = 0.0;
-    const double settled[kValuesPerBody] = {p[0], p[1], 0.0, 2.0 * std::atan2(q[3], q[0]), vx, vy, 0.0, 0.0, 0.0, wz};
+    double vx = v[0], vy = v[1], wz = w[2];
+    if (i > 0 && std::hypot(vx, vy) < kRestSpeed && std::abs(wz) < kRestSpeed) vx = vy = wz = 0.0;
+    const double yaw = std::remainder(2.0 * std::atan2(q[3], q[0]), 2.0 * std::numbers::pi);
+    const double settled[kValuesPerBody] = {p[0], p[1], 0.0, yaw, vx, vy, 0.0, 0.0, 0.0, wz};
     set_body(i, settled);
   }
 
-  void step(const scenario::Vec2& force, std::vector<scenario::RobotContact>& robot_contacts) {
+  // The drive's effort for this step; a differential robot's grip turns with it.
+  DriveEffort drive_effort(const Vec2& setpoint) {
+    const double* robot = values(0);
+    const Vec2 velocity(robot[4], robot[5]);
+    const double dt = world.planner.step_size;
+    if (wheel_grip == nullptr) return holonomic_drive(drive, setpoint, velocity, dt);
+    const DifferentialEffort wheels = differential_drive(drive, setpoint, robot[3], velocity, robot[9], dt);
+    dJointSetLMotorAxis(wheel_grip, 0, 0, -wheels.heading.y(), wheels.heading.x(), 0.0);
+    return wheels.effort;
+  }
+
+  void step(const Vec2& setpoint, std::vector<scenario::RobotContact>& robot_contacts) {
     robot_contacts.clear();
-    const double fx = std::clamp(force.x(), -max_force, max_force);
-    const double fy = std::clamp(force.y(), -max_force, max_force);
-    dBodyAddForce(dynamic[0].body, fx, fy, 0.0);
+    last_drive = drive_effort(setpoint);
+    dBodyAddForce(dynamic[0].body, last_drive.force.x(), last_drive.force.y(), 0.0);
+    dBodyAddTorque(dynamic[0].body, 0.0, 0.0, last_drive.torque);
     wake_bodies();
     // Fixed pair order, no collision space: contact order never depends on history. A sleeping body is
     // out of reach of every awake one (wake_bodies woke those) and of every other sleeping one's motion,
@@ -305,9 +337,8 @@ struct Simulation::Impl {
     }
     dWorldStep(ode_world, world.planner.step_size);
     dJointGroupEmpty(contact_group);
-    settle(0, max_speed);
-    for (size_t i = 1; i < dynamic.size(); ++i) {
-      if (awake[i]) settle(i, kBoxSpeedFactor * max_speed);
+    for (size_t i = 0; i < dynamic.size(); ++i) {
+      if (awake[i]) settle(i);
     }
   }
 };
@@ -332,15 +363,19 @@ void Simulation::restore(const PhysicsState& s) {
   impl_->restore(s.values.data());
 }
 
-void Simulation::step(const scenario::Vec2& force, std::vector<scenario::RobotContact>& contacts) {
-  impl_->step(force, contacts);
+void Simulation::step(const Vec2& setpoint, std::vector<scenario::RobotContact>& contacts) {
+  impl_->step(setpoint, contacts);
 }
+
+const DriveEffort& Simulation::last_drive() const { return impl_->last_drive; }
 
 void Simulation::read_environment(scenario::EnvironmentState& out) const {
   const size_t bodies = impl_->dynamic.size();
   const double* v = impl_->values(0);
   out.robot_position = {v[0], v[1]};
   out.robot_velocity = {v[4], v[5]};
+  out.robot_yaw = v[3];
+  out.robot_turn_rate = v[9];
   out.movable_poses.resize(bodies - 1);
   out.movable_velocities.resize(bodies - 1);
   for (size_t i = 1; i < bodies; ++i) {

@@ -2,6 +2,7 @@
 
 #include "physltl/knowledge/side_set.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -25,16 +26,29 @@ Vec2 random_unit(Random& random) {
 
 ControlSampler::ControlSampler(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
                                bool use_knowledge)
-    : world_(world), knowledge_(knowledge), use_knowledge_(use_knowledge), max_force_(world.robot.max_force) {}
+    : world_(world), knowledge_(knowledge), use_knowledge_(use_knowledge) {}
 
-Vec2 ControlSampler::uniform_force(Random& random) const {
-  const double fx = random.uniform(-max_force_, max_force_);
-  const double fy = random.uniform(-max_force_, max_force_);
-  return {fx, fy};
+Vec2 ControlSampler::uniform_setpoint(Random& random) const {
+  const auto& robot = world_.robot;
+  if (robot.drive == scenario::Drive::kDifferential) {
+    const double forward = random.uniform(-robot.max_speed, robot.max_speed);
+    return {forward, random.uniform(-robot.max_turn_rate, robot.max_turn_rate)};
+  }
+  const Vec2 direction = random_unit(random);
+  return robot.max_speed * std::sqrt(random.uniform(0.0, 1.0)) * direction;  // uniform over the disc
+}
+
+Vec2 ControlSampler::along(const scenario::EnvironmentState& state, const Vec2& direction, double speed,
+                           int steps) const {
+  const auto& robot = world_.robot;
+  if (robot.drive == scenario::Drive::kHolonomic) return speed * direction;
+  const double error = std::remainder(std::atan2(direction.y(), direction.x()) - state.robot_yaw, 2.0 * std::numbers::pi);
+  const double turn_rate = std::clamp(error / (steps * world_.planner.step_size), -robot.max_turn_rate, robot.max_turn_rate);
+  return {speed * std::max(0.0, std::cos(error)), turn_rate};
 }
 
 bool ControlSampler::push_towards(const scenario::EnvironmentState& state, const knowledge::Kappa& kappa,
-                                  const Vec2& heading, Random& random, Vec2& force) const {
+                                  const Vec2& heading, Random& random, Vec2& direction) const {
   int candidates = 0;
   for (size_t b = 0; b < knowledge_.movable_bodies.size(); ++b) {
     const auto& body = knowledge_.movable_bodies[b];
@@ -42,14 +56,14 @@ bool ControlSampler::push_towards(const scenario::EnvironmentState& state, const
     for (const auto& mregion : body.mregions) {
       if (!kappa.bodies[b].active_sides.contains(mregion.side)) continue;
       if (!knowledge::mregion_at(mregion, pose).contains(state.robot_position)) continue;
-      const Vec2 direction = knowledge::push_direction(mregion.side, pose);
-      if (direction.dot(heading) < kPushAlignment) continue;
+      const Vec2 push = knowledge::push_direction(mregion.side, pose);
+      if (push.dot(heading) < kPushAlignment) continue;
       // Reservoir choice among the pushes that help: each equally likely.
       if (random.uniform_int(0, candidates++) != 0) continue;
       // Push through the body's centre so it slides rather than spins.
       const Vec2 to_centre = pose.position - state.robot_position;
-      const Vec2 lateral = to_centre - to_centre.dot(direction) * direction;
-      force = max_force_ * random.uniform(0.7, 1.0) * unit(direction + 2.0 * lateral + 0.1 * random_unit(random));
+      const Vec2 lateral = to_centre - to_centre.dot(push) * push;
+      direction = unit(push + 2.0 * lateral + 0.1 * random_unit(random));
     }
   }
   return candidates > 0;
@@ -60,13 +74,19 @@ Control ControlSampler::sample(const scenario::EnvironmentState& state, const kn
   Control control;
   control.steps = random.uniform_int(world_.planner.min_steps, world_.planner.max_steps);
   if (!use_knowledge_ || random.chance(kUniformShare)) {
-    control.force = uniform_force(random);
+    control.setpoint = uniform_setpoint(random);
     return control;
   }
   const Vec2 heading = unit(target - state.robot_position);
-  if (!push_towards(state, kappa, heading, random, control.force)) {
-    control.force = max_force_ * random.uniform(0.4, 1.0) * unit(heading + 0.6 * random_unit(random));
+  Vec2 direction;
+  double speed = 0.0;
+  if (push_towards(state, kappa, heading, random, direction)) {
+    speed = random.uniform(0.7, 1.0);
+  } else {
+    speed = random.uniform(0.4, 1.0);
+    direction = unit(heading + 0.6 * random_unit(random));
   }
+  control.setpoint = along(state, direction, speed * world_.robot.max_speed, control.steps);
   return control;
 }
 

@@ -1,7 +1,9 @@
 #pragma once
-// SampleControlAndSteps of Algorithm 3. The baseline samples forces uniformly, as OMPL's control
-// samplers do. Knowledge guidance steers towards the lead and, where the robot stands in an active
-// mRegion of a body that is in the way, pushes that body along the direction the mRegion allows.
+// SampleControlAndSteps of Algorithm 3. The baseline samples drive set-points uniformly, as OMPL's
+// control samplers do. Knowledge guidance steers towards the lead and, where the robot stands in an
+// active mRegion of a body that is in the way, pushes that body along the direction the mRegion allows.
+// A differential robot is steered by turning towards the wanted direction while it drives as far as it
+// already faces it.
 
 #include "physltl/knowledge/kappa.h"
 #include "physltl/planning/plan.h"
@@ -19,14 +21,16 @@ class ControlSampler {
                  Random& random) const;
 
  private:
-  Vec2 uniform_force(Random& random) const;
+  Vec2 uniform_setpoint(Random& random) const;
+  // The set-point that moves the robot along the unit vector `direction` at up to `speed` for `steps`.
+  Vec2 along(const scenario::EnvironmentState& state, const Vec2& direction, double speed, int steps) const;
+  // A push direction of a body the robot stands ready to push that helps towards `heading`.
   bool push_towards(const scenario::EnvironmentState& state, const knowledge::Kappa& kappa, const Vec2& heading,
-                    Random& random, Vec2& force) const;
+                    Random& random, Vec2& direction) const;
 
   const scenario::World& world_;
   const knowledge::AbstractKnowledge& knowledge_;
   bool use_knowledge_;
-  double max_force_;
 };
 
 }  // namespace physltl::planning

@@ -5,7 +5,37 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <numbers>
+
 namespace physltl::planning {
+namespace {
+
+constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;  // for messages
+
+}  // namespace
+
+std::string control_out_of_bounds(const scenario::World& world, const Control& control) {
+  const auto& robot = world.robot;
+  const auto& planner = world.planner;
+  // The search keeps the valid prefix of a control it had to cut short, so fewer than min_steps is fine.
+  if (control.steps < 1 || control.steps > planner.max_steps) {
+    return fmt::format("{} steps, outside 1..max_steps = {}", control.steps, planner.max_steps);
+  }
+  const double slack = 1.0 + knowledge::kLimitTolerance;
+  if (!control.setpoint.allFinite()) return "a set-point that is not a number";
+  if (robot.drive == scenario::Drive::kHolonomic) {
+    if (control.setpoint.norm() > robot.max_speed * slack) {
+      return fmt::format("set-point speed {:.3f} m/s above max_speed {:g}", control.setpoint.norm(), robot.max_speed);
+    }
+  } else if (std::abs(control.setpoint.x()) > robot.max_speed * slack) {
+    return fmt::format("forward set-point {:.3f} m/s beyond max_speed {:g}", control.setpoint.x(), robot.max_speed);
+  } else if (std::abs(control.setpoint.y()) > robot.max_turn_rate * slack) {
+    return fmt::format("turn set-point {:.1f} deg/s beyond max_turn_rate_deg {:g}", control.setpoint.y() * kDegreesPerRadian,
+                       robot.max_turn_rate * kDegreesPerRadian);
+  }
+  return "";
+}
 
 Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomaton& formula,
               const knowledge::AbstractKnowledge& knowledge, knowledge::ValidityMode mode) {
@@ -19,29 +49,47 @@ Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomato
     r.automaton_trace.push_back(formula.step(automaton_state, r.region_trace.back()));
     r.pushing.push_back(pushing);
   };
+  auto fail = [&](bool& check, std::string why) {
+    if (check && r.failure.empty()) r.failure = std::move(why);
+    check = false;
+  };
   record(formula.dfa.start, false);
   knowledge::Kappa kappa = knowledge::infer(knowledge, r.states.back());
   r.reproduces_plan = plan.states.size() == plan.controls.size();
   r.valid = true;
+  r.within_limits = true;
+  const double force_bound = world.robot.max_force * (1.0 + 1e-9);  // rounding of the norm only
   for (size_t c = 0; c < plan.controls.size(); ++c) {
+    const Control& control = plan.controls[c];
+    if (const std::string why = control_out_of_bounds(world, control); !why.empty()) {
+      fail(r.within_limits, fmt::format("control {}: {}", c, why));
+    }
     bool pushed = false;
-    for (int s = 0; s < plan.controls[c].steps; ++s) {
-      simulation.step(plan.controls[c].force, contacts);
+    for (int s = 0; s < control.steps; ++s) {
+      simulation.step(control.setpoint, contacts);
       bool touching_movable = false;
       for (const auto& contact : contacts) touching_movable |= contact.body == scenario::RobotContact::Body::kMovable;
       pushed |= touching_movable;
       record(r.automaton_trace.back(), touching_movable);
-      const auto validity = knowledge::check_validity(knowledge, kappa, r.states.back(), contacts, mode);
-      if (!validity.valid() && r.valid) {
-        r.valid = false;
-        r.failure = fmt::format("step {} (control {}): {}", r.states.size() - 1, c, knowledge::violation_name(validity.violation));
+      const auto& state = r.states.back();
+      const size_t step = r.states.size() - 1;
+      r.peak_speed = std::max(r.peak_speed, state.robot_velocity.norm());
+      if (simulation.last_drive().force.norm() > force_bound) {
+        fail(r.within_limits, fmt::format("step {} (control {}): drive force above max_force", step, c));
       }
-      knowledge::infer(knowledge, r.states.back(), kappa);
+      if (!knowledge::within_robot_limits(knowledge.robot, state)) {
+        fail(r.within_limits, fmt::format("step {} (control {}): {:.3f} m/s, {:.1f} deg/s beyond the robot's limits",
+                                          step, c, state.robot_velocity.norm(), state.robot_turn_rate * kDegreesPerRadian));
+      }
+      const auto validity = knowledge::check_validity(knowledge, kappa, state, contacts, mode);
+      if (!validity.valid()) {
+        fail(r.valid, fmt::format("step {} (control {}): {}", step, c, knowledge::violation_name(validity.violation)));
+      }
+      knowledge::infer(knowledge, state, kappa);
     }
     r.pushes += pushed;
     if (r.reproduces_plan && !(simulation.save() == plan.states[c])) {
-      r.reproduces_plan = false;
-      if (r.failure.empty()) r.failure = fmt::format("control {} ends in a different state than planned", c);
+      fail(r.reproduces_plan, fmt::format("control {} ends in a different state than planned", c));
     }
   }
   r.accepted = formula.dfa.accepting[r.automaton_trace.back()];

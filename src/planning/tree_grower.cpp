@@ -30,7 +30,7 @@ void TreeGrower::propagate(const Control& control, int automaton_state, Growth& 
   int valid_steps = 0;
   bool accepted = false;
   for (int step = 1; step <= control.steps; ++step) {
-    simulation_.step(control.force, contacts_);
+    simulation_.step(control.setpoint, contacts_);
     ++growth.physics_steps;
     simulation_.read_environment(environment_);
     // VALIDITYCHECKER(E_new, kappa_j), then kappa_{j+1} = INFERENCE(E_new, kappa_j).
@@ -54,7 +54,7 @@ void TreeGrower::propagate(const Control& control, int automaton_state, Growth& 
   Motion& motion = growth.motion.emplace();
   motion.state = last_valid_;
   motion.robot = Vec2(last_valid_.values[0], last_valid_.values[1]);  // the robot's x, y come first
-  motion.control = {control.force, valid_steps};
+  motion.control = {control.setpoint, valid_steps};
   motion.automaton_state = automaton_state;
   motion.product_state = graph_.id(decomposition_.locate(motion.robot), automaton_state);
   growth.accepted = accepted;

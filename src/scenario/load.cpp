@@ -26,6 +26,14 @@ const char* side_name(Side side) {
   return "?";
 }
 
+const char* drive_name(Drive drive) {
+  switch (drive) {
+    case Drive::kHolonomic: return "holonomic";
+    case Drive::kDifferential: return "differential";
+  }
+  return "?";
+}
+
 std::string LoadOptions::default_lua_dir() { return PHYSLTL_LUA_DIR; }
 
 World load_scenario(const std::string& path, const LoadOptions& options) {

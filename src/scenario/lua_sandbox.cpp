@@ -11,6 +11,7 @@ extern "C" {
 #include <charconv>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 #include <string_view>
 
@@ -22,6 +23,7 @@ constexpr int kMaxTableDepth = 32;
 
 struct Sandbox {
   std::string path;
+  std::string script_dir;  // where `require` looks after the helpers
   LoadOptions options;
   std::size_t allocated = 0;
   bool memory_exceeded = false;
@@ -215,23 +217,31 @@ int sandboxed_require(lua_State* L) {
   lua_getfield(L, -1, name);
   if (!lua_isnil(L, -1)) return 1;
   lua_pop(L, 1);
-  const char* file = lua_pushfstring(L, "%s/%s.lua", sandbox_of(L).options.lua_dir.c_str(), name);
-  if (luaL_loadfilex(L, file, "t") != LUA_OK) {
-    if (std::strstr(lua_tostring(L, -1), "cannot open") != nullptr) {
-      return guarded(L, [&]() -> int {
-        raise_at(caller_location(L),
-                 "require: no helper module '" + std::string(name) + "' in " + sandbox_of(L).options.lua_dir);
-      });
-    }
-    return lua_error(L);
+  // The helpers first, then the scenario's own folder: variants of a world share its file that way.
+  const Sandbox& box = sandbox_of(L);
+  lua_pushfstring(L, "%s/%s.lua", box.options.lua_dir.c_str(), name);
+  lua_pushfstring(L, "%s/%s.lua", box.script_dir.c_str(), name);
+  int status = LUA_ERRFILE;
+  for (int candidate = -2; candidate <= -1 && status == LUA_ERRFILE; ++candidate) {
+    status = luaL_loadfilex(L, lua_tostring(L, candidate), "t");
+    if (status == LUA_ERRFILE) lua_pop(L, 1);
   }
+  if (status == LUA_ERRFILE) {
+    return guarded(L, [&]() -> int {
+      raise_at(caller_location(L), "require: no helper module '" + std::string(name) + "' in " +
+                                       sandbox_of(L).options.lua_dir + " or " + sandbox_of(L).script_dir);
+    });
+  }
+  if (status != LUA_OK) return lua_error(L);
+  lua_replace(L, -3);  // the chunk in place of the first file name
+  lua_pop(L, 1);   // the second file name
   lua_call(L, 0, 1);
   if (lua_isnil(L, -1)) {
     lua_pop(L, 1);
     lua_pushboolean(L, 1);
   }
   lua_pushvalue(L, -1);
-  lua_setfield(L, -4, name);  // below: the module, the file name, the loaded table
+  lua_setfield(L, -3, name);  // below: the module, the loaded table
   return 1;
 }
 
@@ -346,6 +356,8 @@ const std::vector<std::string>& element_kinds() {
 std::vector<Element> run_scenario_script(const std::string& path, const LoadOptions& options) {
   auto box = std::make_unique<Sandbox>();
   box->path = path;
+  box->script_dir = std::filesystem::path(path).parent_path().string();
+  if (box->script_dir.empty()) box->script_dir = ".";
   box->options = options;
   std::unique_ptr<lua_State, decltype(&lua_close)> state(lua_newstate(limited_alloc, box.get()), lua_close);
   if (!state) throw ScenarioError({{{path, 0}, "cannot start the Lua interpreter"}});

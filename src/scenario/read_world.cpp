@@ -52,6 +52,18 @@ void read_workspace(TableReader& r, Workspace& w) {
 }
 
 void read_robot(TableReader& r, Robot& robot) {
+  const std::string drive = r.string("drive", drive_name(robot.drive));
+  if (drive == drive_name(Drive::kDifferential)) {
+    robot.drive = Drive::kDifferential;
+    robot.max_turn_rate = r.number("max_turn_rate_deg", robot.max_turn_rate / kDegree) * kDegree;
+    robot.start_yaw = r.number("start_yaw_deg", 0.0) * kDegree;
+  } else if (drive != drive_name(Drive::kHolonomic)) {
+    r.error("'drive' is \"holonomic\" or \"differential\", got \"" + drive + "\"");
+  } else {
+    for (const char* key : {"max_turn_rate_deg", "start_yaw_deg"}) {
+      if (r.optional_number(key)) r.error(std::string("'") + key + "' is for drive = \"differential\": a holonomic robot never turns");
+    }
+  }
   robot.radius = r.number("radius", robot.radius);
   robot.mass = r.number("mass", robot.mass);
   robot.max_force = r.number("max_force", robot.max_force);

@@ -5,6 +5,7 @@ namespace physltl::scenario {
 EnvironmentState EnvironmentState::initial(const World& world) {
   EnvironmentState s;
   s.robot_position = world.robot.start;
+  s.robot_yaw = world.robot.start_yaw;
   for (const auto& b : world.movable_bodies) {
     s.movable_poses.push_back(b.footprint.pose);
     s.movable_velocities.push_back(Vec2::Zero());

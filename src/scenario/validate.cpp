@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <optional>
 #include <set>
 
@@ -19,6 +20,8 @@ constexpr double kMaxMass = 1e6;    // kg
 constexpr double kMaxForce = 1e6;   // N
 constexpr double kMaxFriction = 100.0;
 constexpr double kMaxSpeed = 20.0;  // m/s: a mobile robot among boxes, and a bound on tunnelling per step
+constexpr double kMaxTurnRateDeg = 3600.0;  // deg/s: ten turns a second
+constexpr double kDegree = std::numbers::pi / 180.0;
 
 // [a-z_][a-zA-Z0-9_]*, checked by hand: std::regex recurses per character and overflows the stack on the
 // long names a script can make.
@@ -91,6 +94,7 @@ class Validator {
     check_range(r.where, "robot: 'mass'", r.mass, 0.0, kMaxMass);
     check_range(r.where, "robot: 'max_force'", r.max_force, 0.0, kMaxForce);
     check_range(r.where, "robot: 'max_speed'", r.max_speed, 0.0, kMaxSpeed);
+    check_range(r.where, "robot: 'max_turn_rate_deg'", r.max_turn_rate / kDegree, 0.0, kMaxTurnRateDeg);
     check_range(r.where, "robot: 'friction'", r.friction, 0.0, kMaxFriction, true);
     if (!workspace_ok() || !(r.radius > 0)) return;
     const auto& b = world_.workspace.bounds;

@@ -14,6 +14,22 @@ nlohmann::ordered_json footprint(const geometry::OrientedBox& box) {
           {"yaw_deg", box.pose.yaw * 180.0 / std::numbers::pi}};
 }
 
+nlohmann::ordered_json robot_json(const Robot& robot) {
+  constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
+  nlohmann::ordered_json j = {{"drive", drive_name(robot.drive)},
+                              {"radius", robot.radius},
+                              {"mass", robot.mass},
+                              {"max_force", robot.max_force},
+                              {"max_speed", robot.max_speed},
+                              {"friction", robot.friction},
+                              {"start", point(robot.start)}};
+  if (robot.drive == Drive::kDifferential) {
+    j["max_turn_rate_deg"] = robot.max_turn_rate * kDegreesPerRadian;
+    j["start_yaw_deg"] = robot.start_yaw * kDegreesPerRadian;
+  }
+  return j;
+}
+
 }  // namespace
 
 nlohmann::ordered_json to_json(const World& world) {
@@ -57,13 +73,7 @@ nlohmann::ordered_json to_json(const World& world) {
        {{"min", point(world.workspace.bounds.min)},
         {"max", point(world.workspace.bounds.max)},
         {"floor_friction", world.workspace.floor_friction}}},
-      {"robot",
-       {{"radius", world.robot.radius},
-        {"mass", world.robot.mass},
-        {"max_force", world.robot.max_force},
-        {"max_speed", world.robot.max_speed},
-        {"friction", world.robot.friction},
-        {"start", point(world.robot.start)}}},
+      {"robot", robot_json(world.robot)},
       {"bodies", bodies},
       {"regions", regions},
       {"formula", world.task.formula},

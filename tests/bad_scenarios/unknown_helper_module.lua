@@ -1,4 +1,4 @@
--- expect: 8: no helper module 'nonexistent_helpers'
+-- expect: 8: no helper module 'nonexistent_helpers' in
 workspace { bounds = { { 0, 0 }, { 10, 10 } } }
 robot { radius = 0.25, start = { 1, 1 } }
 fixed { name = "wall", center = { 5, 5 }, size = { 1, 4 } }

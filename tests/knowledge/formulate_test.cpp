@@ -75,16 +75,17 @@ TEST(Formulate, AuthoredMRegionDepthOverridesTheDefault) {
   EXPECT_NEAR(mregion(formulate(w).movable_bodies[0], Side::kPlusY).strip.half_extents.y(), 0.4, 1e-12);
 }
 
-TEST(Formulate, PushForceIsTheForceBoundMinusTheRobotsOwnFloorFriction) {
-  const auto k = formulate(open_world());
-  // sqrt(0.5 * 0.5) * 1 kg * 9.81 m/s^2
-  EXPECT_NEAR(k.robot.floor_friction_force, 4.905, 1e-9);
-  EXPECT_NEAR(k.robot.push_force, 20.0 - 4.905, 1e-9);
+// The robot rolls on its wheels: its drive's whole force bound is there to push with, as the physics
+// applies it (physics::Simulation).
+TEST(Formulate, PushForceIsTheDrivesWholeForceBound) {
+  auto w = open_world();
+  w.robot.max_force = 12.5;
+  EXPECT_EQ(formulate(w).robot.push_force, 12.5);
 }
 
 TEST(Formulate, BodyTooHeavyForTheRobotIsTreatedAsFixedWithTheForcesInTheReason) {
   auto w = open_world();
-  add_box(w, "Safe", {0, 0}, {0.5, 0.5}, /*mass=*/10.0);  // 0.5 * 10 * 9.81 = 49.05 N > 15.1 N
+  add_box(w, "Safe", {0, 0}, {0.5, 0.5}, /*mass=*/10.0);  // 0.5 * 10 * 9.81 = 49.05 N > 20 N
   const auto knowledge = formulate(w);
   const auto& safe = knowledge.movable_bodies[0];
   EXPECT_EQ(safe.body_class, BodyClass::kFixed);
@@ -95,12 +96,12 @@ TEST(Formulate, BodyTooHeavyForTheRobotIsTreatedAsFixedWithTheForcesInTheReason)
 
 TEST(Formulate, FloorFrictionCombinesTheBodysAndTheFloorsCoefficients) {
   auto w = open_world();
-  auto& b = add_box(w, "B", {0, 0}, {0.5, 0.5}, /*mass=*/3.0);  // 0.5 * 3 * 9.81 = 14.7 N < 15.1 N
+  auto& b = add_box(w, "B", {0, 0}, {0.5, 0.5}, /*mass=*/3.8);  // 0.5 * 3.8 * 9.81 = 18.6 N < 20 N
   b.friction = 0.5;
   EXPECT_EQ(formulate(w).movable_bodies[0].body_class, BodyClass::kFreelyMovable);
-  w.workspace.floor_friction = 0.6;  // sqrt(0.5 * 0.6) * 3 * 9.81 = 16.1 N, but the robot slides harder too
+  w.workspace.floor_friction = 0.6;  // sqrt(0.5 * 0.6) * 3.8 * 9.81 = 20.4 N
   const auto k = formulate(w);
-  EXPECT_NEAR(k.movable_bodies[0].floor_friction_force, std::sqrt(0.3) * 3.0 * 9.81, 1e-9);
+  EXPECT_NEAR(k.movable_bodies[0].floor_friction_force, std::sqrt(0.3) * 3.8 * 9.81, 1e-9);
   EXPECT_EQ(k.movable_bodies[0].body_class, BodyClass::kFixed);
 }
 

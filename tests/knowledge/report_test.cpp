@@ -63,7 +63,8 @@ TEST(KnowledgeJson, HoldsRobotCapabilitiesClassesAndMRegionTemplates) {
   testing::add_box(w, "Safe", {0, 0}, {0.5, 0.5}, /*mass=*/10.0);
   testing::add_box(w, "B", {1, 1}, {0.5, 0.5});
   const json j = to_json(formulate(w));
-  EXPECT_NEAR(j["robot"]["push_force"].get<double>(), 15.095, 1e-9);
+  EXPECT_EQ(j["robot"]["push_force"].get<double>(), 20.0);
+  EXPECT_EQ(j["robot"]["drive"], "holonomic");
   EXPECT_EQ(entry(j["bodies"], "Safe")["class"], "fixed");
   EXPECT_TRUE(entry(j["bodies"], "Safe")["mregions"].empty());
   const json& b = entry(j["bodies"], "B");

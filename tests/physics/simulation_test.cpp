@@ -4,7 +4,9 @@
 
 #include <stdexcept>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <thread>
 
 namespace physltl::physics {
@@ -32,14 +34,15 @@ scenario::World small_world(double box_mass = 0.5) {
 
 std::vector<scenario::RobotContact> contacts;
 
-void push(Simulation& sim, Vec2 force, int steps) {
-  for (int i = 0; i < steps; ++i) sim.step(force, contacts);
+// Drives the robot towards the set-point `velocity` (m/s) for `steps` physics steps.
+void push(Simulation& sim, Vec2 velocity, int steps) {
+  for (int i = 0; i < steps; ++i) sim.step(velocity, contacts);
 }
 
 TEST(Simulation, PushingABoxMovesItAlongThePush) {
   const auto world = small_world();
   Simulation sim(world);
-  push(sim, {20, 0}, 60);  // 3 s
+  push(sim, {1, 0}, 60);  // 3 s
   const auto e = sim.environment();
   EXPECT_GT(e.movable_poses[0].position.x(), 3.5);
   EXPECT_NEAR(e.movable_poses[0].position.y(), 5.0, 0.05);
@@ -51,7 +54,7 @@ TEST(Simulation, RobotTouchingTheBoxReportsAMovableContact) {
   Simulation sim(world);
   bool touched = false;
   for (int i = 0; i < 40 && !touched; ++i) {
-    sim.step({20, 0}, contacts);
+    sim.step({1, 0}, contacts);
     for (const auto& c : contacts) touched = touched || (c.body == scenario::RobotContact::Body::kMovable && c.index == 0);
   }
   EXPECT_TRUE(touched);
@@ -64,7 +67,7 @@ TEST(Simulation, AWallStopsTheRobotWithoutTunnelling) {
   Simulation sim(world);
   bool touched_wall = false;
   for (int i = 0; i < 200; ++i) {
-    sim.step({20, 0}, contacts);
+    sim.step({5, 0}, contacts);
     for (const auto& c : contacts) touched_wall = touched_wall || c.body == scenario::RobotContact::Body::kFixed;
   }
   EXPECT_TRUE(touched_wall);
@@ -72,18 +75,129 @@ TEST(Simulation, AWallStopsTheRobotWithoutTunnelling) {
 }
 
 TEST(Simulation, FloorFrictionHoldsAHeavyBoxAgainstTheRobot) {
-  const auto world = small_world(1000.0);  // needs ~2.4 kN to slide, the robot has 20 N
+  const auto world = small_world(1000.0);  // needs ~2.4 kN to slide, the robot's drive has 20 N
   Simulation sim(world);
-  push(sim, {20, 0}, 100);
+  push(sim, {1, 0}, 100);
   EXPECT_NEAR(sim.environment().movable_poses[0].position.x(), 3.0, 1e-3);
 }
 
-TEST(Simulation, SpeedSaturatesAtTheRobotsMaxSpeed) {
+TEST(Simulation, TheStrongestControlHeldForFiveSecondsNeverExceedsMaxSpeed) {
   auto world = small_world();
   world.movable_bodies.clear();
+  world.robot.max_speed = 0.5;
+  for (const Vec2 direction : {Vec2(0, 1), Vec2(-1, 0), Vec2(1, 1).normalized(), Vec2(-3, 1).normalized()}) {
+    Simulation sim(world);
+    double fastest = 0.0;
+    for (int i = 0; i < 100; ++i) {  // 5 s
+      sim.step(world.robot.max_speed * direction, contacts);
+      fastest = std::max(fastest, sim.environment().robot_velocity.norm());
+      ASSERT_LE(sim.environment().robot_velocity.norm(), world.robot.max_speed * (1 + 1e-12)) << "step " << i;
+    }
+    EXPECT_NEAR(fastest, world.robot.max_speed, 1e-9);  // and it gets there
+  }
+}
+
+TEST(Simulation, PushingABoxNeverTakesTheRobotPastMaxSpeed) {
+  auto world = small_world();
+  world.robot.max_speed = 0.5;
   Simulation sim(world);
-  push(sim, {0, 20}, 30);
-  EXPECT_LE(sim.environment().robot_velocity.norm(), world.robot.max_speed + 1e-12);
+  bool pushed = false;
+  for (int i = 0; i < 100; ++i) {
+    sim.step({world.robot.max_speed, 0.0}, contacts);
+    pushed |= !contacts.empty();
+    ASSERT_LE(sim.environment().robot_velocity.norm(), world.robot.max_speed * 1.01) << "step " << i;
+  }
+  EXPECT_TRUE(pushed);
+}
+
+// max_force bounds the drive force's length: a diagonal start gets max_force, not 1.41 times it.
+TEST(Simulation, TheDriveForceIsBoundedInNormNotPerAxis) {
+  auto world = small_world();
+  world.movable_bodies.clear();
+  world.robot.max_force = 5.0;
+  Simulation sim(world);
+  sim.step({0.7, 0.7}, contacts);  // needs 19.8 N to reach in one step
+  EXPECT_NEAR(sim.last_drive().force.norm(), 5.0, 1e-12);
+  EXPECT_NEAR(sim.last_drive().force.x(), sim.last_drive().force.y(), 1e-12);
+  EXPECT_NEAR(sim.environment().robot_velocity.norm(), 5.0 * 0.05 / 1.0, 1e-9);  // F dt / m
+}
+
+TEST(Simulation, APushedAndReleasedBoxStopsByFloorFriction) {
+  const auto world = small_world();
+  Simulation sim(world);
+  push(sim, {1, 0}, 40);
+  const double sliding = sim.environment().movable_velocities[0].x();
+  ASSERT_GT(sliding, 0.5);
+  push(sim, {0, 0}, 1);  // the robot brakes and falls behind
+  // Coulomb friction mu g = 0.5 * 9.81 takes the box's speed off at ~4.9 m/s^2: at rest within ~0.2 s.
+  int steps_to_rest = 0;
+  for (; steps_to_rest < 20 && sim.environment().movable_velocities[0] != Vec2::Zero(); ++steps_to_rest) {
+    push(sim, {0, 0}, 1);
+  }
+  EXPECT_LE(steps_to_rest, static_cast<int>(std::ceil(sliding / (0.5 * 9.81) / 0.05)) + 1);
+  EXPECT_EQ(sim.environment().movable_velocities[0], Vec2::Zero());
+}
+
+scenario::World differential_world() {
+  auto world = small_world();
+  world.robot.drive = scenario::Drive::kDifferential;
+  world.robot.max_turn_rate = std::numbers::pi / 2;
+  return world;
+}
+
+TEST(Simulation, ADifferentialRobotMovesOnlyAlongItsHeading) {
+  auto world = differential_world();
+  world.movable_bodies.clear();
+  Simulation sim(world);
+  push(sim, {1, 0}, 10);
+  for (int i = 0; i < 40; ++i) {  // a quarter turn on the move, then straight on
+    sim.step({1.0, i < 20 ? world.robot.max_turn_rate : 0.0}, contacts);
+    const auto e = sim.environment();
+    const Vec2 across(-std::sin(e.robot_yaw), std::cos(e.robot_yaw));
+    ASSERT_LT(std::abs(e.robot_velocity.dot(across)), 1e-4) << "step " << i;  // ODE's soft constraints
+    ASSERT_LE(std::abs(e.robot_turn_rate), world.robot.max_turn_rate * (1 + 1e-12));
+    ASSERT_LE(e.robot_velocity.norm(), world.robot.max_speed * (1 + 1e-6));  // the grip's softness again
+  }
+  EXPECT_NEAR(sim.environment().robot_yaw, std::numbers::pi / 2, 0.1);
+}
+
+TEST(Simulation, ADifferentialRobotDoesNotSlideSidewaysWhenAsked) {
+  auto world = differential_world();
+  world.movable_bodies.clear();
+  Simulation sim(world);
+  // Heading +x: no set-point moves it along y; turning in place leaves it where it is.
+  for (int i = 0; i < 20; ++i) sim.step({0.0, world.robot.max_turn_rate}, contacts);
+  EXPECT_NEAR((sim.environment().robot_position - world.robot.start).norm(), 0.0, 1e-9);
+  EXPECT_NEAR(sim.environment().robot_yaw, std::numbers::pi / 2, 0.05);
+}
+
+TEST(Simulation, ADifferentialRobotResistsASidewaysShoveWithItsWheelGrip) {
+  auto world = differential_world();
+  world.robot.start_yaw = std::numbers::pi / 2;  // facing +y, the box to its right
+  Simulation sim(world);
+  PhysicsState state = sim.save();
+  state.values[4] = 1.0;  // moving sideways at 1 m/s, as a shove would leave it
+  sim.restore(state);
+  push(sim, {0, 0}, 5);
+  // Grip mu g = 4.9 m/s^2 takes 0.245 m/s off per step: the sideways motion stops within 0.25 s.
+  EXPECT_NEAR(sim.environment().robot_velocity.norm(), 0.0, 1e-5);  // ODE's constraints are slightly soft
+}
+
+TEST(Simulation, ADifferentialRobotSavesAndRestoresItsHeadingAndTurnRateExactly) {
+  const auto world = differential_world();
+  Simulation continuous(world), interrupted(world);
+  for (int i = 0; i < 300; ++i) {
+    const Vec2 setpoint(std::cos(i * 0.05), std::sin(i * 0.031) * world.robot.max_turn_rate);
+    continuous.step(setpoint, contacts);
+    const PhysicsState s = interrupted.save();
+    interrupted.restore(s);
+    interrupted.step(setpoint, contacts);
+    ASSERT_EQ(continuous.save(), interrupted.save()) << "step " << i;
+  }
+  EXPECT_NE(continuous.environment().robot_yaw, 0.0);
+  Simulation again(world);
+  for (int i = 0; i < 300; ++i) again.step({std::cos(i * 0.05), std::sin(i * 0.031) * world.robot.max_turn_rate}, contacts);
+  EXPECT_EQ(again.save(), continuous.save());
 }
 
 // Boxes at rest are skipped by a step; one that a moving body reaches must still take part, including a
@@ -98,7 +212,7 @@ TEST(Simulation, APushedBoxPushesTheBoxInFrontOfItAndLeavesADistantOneExactlyWhe
   world.movable_bodies.push_back(second);
   world.movable_bodies.push_back(distant);
   Simulation sim(world);
-  push(sim, {20, 0}, 80);
+  push(sim, {1, 0}, 80);
   const auto e = sim.environment();
   EXPECT_GT(e.movable_poses[1].position.x(), 4.0);  // C was pushed on by B
   EXPECT_EQ(e.movable_poses[2].position, Vec2(3, 1));
@@ -108,13 +222,13 @@ TEST(Simulation, APushedBoxPushesTheBoxInFrontOfItAndLeavesADistantOneExactlyWhe
 TEST(Simulation, APushedBoxComesToRestExactlyOnceThePushEnds) {
   const auto world = small_world();
   Simulation sim(world);
-  push(sim, {20, 0}, 40);
+  push(sim, {1, 0}, 40);
   ASSERT_GT(sim.environment().movable_velocities[0].norm(), 0.1);  // sliding
-  push(sim, {-20, 0}, 40);  // the robot backs off; floor friction stops the box
+  push(sim, {-1, 0}, 40);  // the robot backs off; floor friction stops the box
   const auto e = sim.environment();
   EXPECT_EQ(e.movable_velocities[0], Vec2::Zero());
   const PhysicsState before = sim.save();
-  push(sim, {-20, 0}, 1);
+  push(sim, {-1, 0}, 1);
   EXPECT_EQ(sim.environment().movable_poses[0].position, e.movable_poses[0].position);
   EXPECT_NE(sim.save(), before);  // the robot still moves
 }
@@ -122,13 +236,13 @@ TEST(Simulation, APushedBoxComesToRestExactlyOnceThePushEnds) {
 TEST(Simulation, RestoringAStateContinuesBitForBit) {
   const auto world = small_world();
   Simulation a(world), b(world);
-  push(a, {20, 3}, 25);  // mid-push, in contact
+  push(a, {1, 0.15}, 25);  // mid-push, in contact
   const PhysicsState mid = a.save();
-  push(a, {15, -4}, 20);
+  push(a, {0.75, -0.2}, 20);
 
-  push(b, {-5, 5}, 13);  // a different history
+  push(b, {-0.25, 0.25}, 13);  // a different history
   b.restore(mid);
-  push(b, {15, -4}, 20);
+  push(b, {0.75, -0.2}, 20);
   EXPECT_EQ(a.save(), b.save());
 }
 
@@ -136,13 +250,13 @@ TEST(Simulation, RestoringAStateContinuesBitForBit) {
 TEST(Simulation, RestoringAStateThatMovedOnlyTheRobotContinuesBitForBit) {
   const auto world = small_world();
   Simulation a(world), b(world);
-  push(a, {-10, 4}, 10);  // away from the box
+  push(a, {-0.5, 0.2}, 10);  // away from the box
   const PhysicsState moved = a.save();
-  push(a, {20, -3}, 60);  // then into it
+  push(a, {1, -0.15}, 60);  // then into it
   ASSERT_NE(a.environment().movable_poses[0].position, world.movable_bodies[0].footprint.pose.position);
 
   b.restore(moved);
-  push(b, {20, -3}, 60);
+  push(b, {1, -0.15}, 60);
   EXPECT_EQ(a.save(), b.save());
 }
 
@@ -169,11 +283,11 @@ TEST(Simulation, SaveAndRestoreAtEveryStepChangesNothing) {
   const auto world = small_world();
   Simulation continuous(world), interrupted(world);
   for (int i = 0; i < 300; ++i) {
-    const Vec2 force(20 * std::cos(i * 0.05), 20 * std::sin(i * 0.031) + 3);
-    continuous.step(force, contacts);
+    const Vec2 setpoint(0.8 * std::cos(i * 0.05), 0.8 * std::sin(i * 0.031) + 0.15);
+    continuous.step(setpoint, contacts);
     const PhysicsState s = interrupted.save();
     interrupted.restore(s);
-    interrupted.step(force, contacts);
+    interrupted.step(setpoint, contacts);
     ASSERT_EQ(continuous.save(), interrupted.save()) << "step " << i;
   }
   EXPECT_NE(interrupted.environment().movable_poses[0].yaw, 0.0);  // the box did turn
@@ -185,7 +299,7 @@ TEST(Simulation, SimulationsOnTwoThreadsAgree) {
   auto run = [&](int k) {
     Simulation sim(world);
     std::vector<scenario::RobotContact> local;
-    for (int i = 0; i < 80; ++i) sim.step({20, 2}, local);
+    for (int i = 0; i < 80; ++i) sim.step({1, 0.1}, local);
     results[k] = sim.save();
   };
   std::thread t0(run, 0), t1(run, 1);

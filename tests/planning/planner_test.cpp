@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace physltl::planning {
 namespace {
 
@@ -24,7 +27,7 @@ TEST(Planner, SameSeedGivesTheSamePlanBitForBit) {
   ASSERT_TRUE(a.solved);
   ASSERT_EQ(a.plan.controls.size(), b.plan.controls.size());
   for (size_t i = 0; i < a.plan.controls.size(); ++i) {
-    EXPECT_EQ(a.plan.controls[i].force, b.plan.controls[i].force);
+    EXPECT_EQ(a.plan.controls[i].setpoint, b.plan.controls[i].setpoint);
     EXPECT_EQ(a.plan.controls[i].steps, b.plan.controls[i].steps);
     EXPECT_EQ(a.plan.states[i], b.plan.states[i]);
   }
@@ -42,11 +45,63 @@ TEST(Replay, ATamperedPlanIsRejected) {
   const TestProblem p("ordered.lua");
   PlanResult result = p.solve(3);
   ASSERT_TRUE(result.solved);
-  result.plan.controls[result.plan.controls.size() / 2].force.x() += 1.0;
+  result.plan.controls[result.plan.controls.size() / 2].setpoint.x() += 1.0;
   const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
   EXPECT_FALSE(r.reproduces_plan);
   EXPECT_FALSE(r.validated());
   EXPECT_FALSE(r.failure.empty());
+}
+
+TEST(Replay, AValidatedPlanKeepsTheRobotsLimitsAtEveryStep) {
+  const TestProblem p("rooms.lua");
+  const PlanResult result = p.solve(2);
+  ASSERT_TRUE(result.solved) << result.stop_reason;
+  const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+  ASSERT_TRUE(r.validated()) << r.failure;
+  EXPECT_TRUE(r.within_limits);
+  double fastest = 0.0;
+  for (const auto& s : r.states) fastest = std::max(fastest, s.robot_velocity.norm());
+  EXPECT_LE(fastest, p.world.robot.max_speed * (1 + knowledge::kLimitTolerance));
+  EXPECT_EQ(r.peak_speed, fastest);
+}
+
+// A plan whose controls were edited to drive faster than the robot can is not the robot's plan, even
+// where the physics would carry it out.
+TEST(Replay, APlanEditedToExceedTheSpeedLimitIsRejected) {
+  const TestProblem p("ordered.lua");
+  PlanResult result = p.solve(3);
+  ASSERT_TRUE(result.solved);
+  for (Control& c : result.plan.controls) c.setpoint = 1.5 * p.world.robot.max_speed * c.setpoint.normalized();
+  const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+  EXPECT_FALSE(r.within_limits);
+  EXPECT_FALSE(r.validated());
+  EXPECT_NE(r.failure.find("above max_speed"), std::string::npos) << r.failure;
+}
+
+TEST(Replay, AControlAskingForMoreThanTheRobotsLimitsIsNamed) {
+  const TestProblem p("rooms_differential.lua");
+  EXPECT_EQ(control_out_of_bounds(p.world, {{1.0, 1.5}, 5}), "");
+  EXPECT_NE(control_out_of_bounds(p.world, {{1.2, 0.0}, 5}).find("beyond max_speed"), std::string::npos);
+  EXPECT_NE(control_out_of_bounds(p.world, {{0.5, 2.0}, 5}).find("beyond max_turn_rate_deg 90"), std::string::npos);
+  EXPECT_NE(control_out_of_bounds(p.world, {{0.5, 0.0}, 0}).find("outside 1..max_steps"), std::string::npos);
+}
+
+TEST(Planner, ADifferentialRobotSolvesRoomsTurningWithinItsLimits) {
+  const TestProblem p("rooms_differential.lua");
+  const PlanResult result = p.solve(1);
+  ASSERT_TRUE(result.solved) << result.stop_reason;
+  const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+  ASSERT_TRUE(r.validated()) << r.failure;
+  EXPECT_GT(r.pushes, 0);
+  bool turned = false;
+  for (const auto& s : r.states) {
+    const Vec2 across(-std::sin(s.robot_yaw), std::cos(s.robot_yaw));
+    EXPECT_LE(std::abs(s.robot_turn_rate), p.world.robot.max_turn_rate * (1 + knowledge::kLimitTolerance));
+    turned |= std::abs(s.robot_yaw - p.world.robot.start_yaw) > 0.5;
+    // Sideways only as far as a push shoves it against its wheels' grip.
+    EXPECT_LT(std::abs(s.robot_velocity.dot(across)), 0.3);
+  }
+  EXPECT_TRUE(turned);
 }
 
 TEST(Replay, AnEmptyPlanDoesNotSatisfyAVisitTask) {

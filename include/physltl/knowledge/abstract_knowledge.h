@@ -17,11 +17,15 @@ enum class BodyClass { kFixed, kFreelyMovable, kConstraintOriented };
 const char* class_name(BodyClass body_class);  // "fixed", "freely-movable", "constraint-oriented"
 
 struct RobotCapabilities {
+  scenario::Drive drive = scenario::Drive::kHolonomic;
   double radius = 0.0;
   double mass = 0.0;
-  double max_force = 0.0;             // N, per axis of the force control
-  double floor_friction_force = 0.0;  // N the robot spends dragging itself along the floor
-  double push_force = 0.0;            // N left over for a body: max_force - floor_friction_force
+  double max_force = 0.0;      // N, the drive's bound (docs/physics.md)
+  double max_speed = 0.0;      // m/s, at every physics step
+  double max_turn_rate = 0.0;  // rad/s, differential drive only
+  // N the drive can put on a body it pushes: all of max_force, since the robot rolls on its wheels and
+  // spends nothing on floor friction of its own.
+  double push_force = 0.0;
   geometry::Vec2 start = geometry::Vec2::Zero();
 };
 

@@ -12,12 +12,13 @@ namespace physltl::knowledge {
 
 enum class ValidityMode {
   kKnowledge,  // every rule below
-  kBaseline,   // plain physics-based planning (--baseline): only fixed-body contacts and leaving the
-               // workspace count, and kappa is not read (an empty Kappa will do)
+  kBaseline,   // plain physics-based planning (--baseline): only the robot's limits, fixed-body contacts
+               // and leaving the workspace count, and kappa is not read (an empty Kappa will do)
 };
 
 enum class Violation {
   kNone,
+  kExceedsRobotLimits,          // faster than max_speed or turning faster than max_turn_rate
   kLeftWorkspace,               // the robot or a movable body is (partly) outside the workspace
   kTouchesFixedBody,            // a wall or other fixed body
   kTouchesImmovableBody,        // a movable body kappa types immovable (blocked on all sides, or too heavy)
@@ -37,6 +38,12 @@ struct Validity {
 // How far a body may poke out of the workspace before it counts as having left (contact solvers let
 // bodies sink into walls by a fraction of a millimetre).
 inline constexpr double kWorkspaceTolerance = 1e-3;  // m
+// How much faster than its declared limits the robot may move: ODE's contact correction can add a little
+// velocity of its own (physics::Simulation), and the integrator rounds.
+inline constexpr double kLimitTolerance = 0.01;  // relative
+
+// Whether the robot's speed and turn rate in `state` keep the limits in K (within kLimitTolerance).
+bool within_robot_limits(const RobotCapabilities& robot, const scenario::EnvironmentState& state);
 
 Validity check_validity(const AbstractKnowledge& knowledge, const Kappa& kappa,
                         const scenario::EnvironmentState& state,

@@ -1,6 +1,7 @@
 #pragma once
-// The physics of a World, on ODE: the paper's PROPAGATOR. Planar motion: the robot sphere and the boxes
-// slide on the floor (plane-2D joints), floor friction acts as Coulomb friction inside the solver, and
+// The physics of a World, on ODE: the paper's PROPAGATOR. Planar motion: the robot drives on its wheels
+// and the boxes slide on the floor (plane-2D joints), floor friction acts as Coulomb friction inside the
+// solver, the robot's drive tracks a velocity set-point with a bounded force (docs/physics.md), and
 // contacts are found in a fixed order, so the same state and control give bit-identical results. A box
 // slower than 0.1 mm/s is at rest, and a step leaves out the boxes at rest that no moving body can reach,
 // so ODE's solver and contact tests work on the bodies in motion, not on the whole World.
@@ -21,6 +22,15 @@ struct PhysicsState {
   bool operator==(const PhysicsState&) const = default;
 };
 
+using scenario::Vec2;
+
+// What the robot's drive applied during a step: the planar force on the robot (N) and, for a
+// differential drive, the torque about the vertical axis (N m).
+struct DriveEffort {
+  Vec2 force = Vec2::Zero();
+  double torque = 0.0;
+};
+
 class Simulation {
  public:
   explicit Simulation(const scenario::World& world);
@@ -32,9 +42,13 @@ class Simulation {
   void save(PhysicsState& out) const;  // reuses out's storage: the planner saves after every step
   void restore(const PhysicsState& state);
 
-  // Pushes the robot with `force` (each component clamped to the robot's max_force) for one step of the
-  // World's step_size. `contacts` receives the robot's contacts during the step.
-  void step(const scenario::Vec2& force, std::vector<scenario::RobotContact>& contacts);
+  // One step of the World's step_size with the drive tracking `setpoint`: (vx, vy) in m/s for a holonomic
+  // robot, (forward speed m/s, turn rate rad/s) for a differential one. The set-point is not clamped:
+  // one beyond the robot's limits is what the drive is asked, and replay reports it. `contacts` receives
+  // the robot's contacts during the step.
+  void step(const Vec2& setpoint, std::vector<scenario::RobotContact>& contacts);
+  // What the drive applied during the last step (zero before the first).
+  const DriveEffort& last_drive() const;
 
   void read_environment(scenario::EnvironmentState& out) const;  // reuses out's storage
   scenario::EnvironmentState environment() const;

@@ -11,9 +11,10 @@ namespace physltl::planning {
 
 using scenario::Vec2;
 
-// A constant force on the robot for a number of physics steps.
+// A constant drive set-point for a number of physics steps: (vx, vy) in m/s for a holonomic robot,
+// (forward speed m/s, turn rate rad/s) for a differential one (physics::Simulation::step).
 struct Control {
-  Vec2 force = Vec2::Zero();
+  Vec2 setpoint = Vec2::Zero();
   int steps = 1;
 };
 

@@ -23,14 +23,21 @@ struct Replay {
   bool reproduces_plan = false;  // every state after a control equals the planned one, bit for bit
   bool valid = false;            // every step passes the validity rules of the mode it was planned in
   bool accepted = false;         // the region trace is a good prefix of the formula
+  // Every control's set-point and step count lie within the robot's and the planner's bounds, the drive
+  // never applied more than max_force, and at every step the robot kept max_speed (and max_turn_rate).
+  bool within_limits = false;
+  double peak_speed = 0.0;       // m/s, the robot's fastest step
   std::string failure;           // why not, for people; empty when validated
-  bool validated() const { return reproduces_plan && valid && accepted; }
+  bool validated() const { return reproduces_plan && valid && accepted && within_limits; }
 };
 
 // Replays `plan` and checks it against `formula` (the task as written, not the simplified one the search
 // used) and against the validity rules of `mode`.
 Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomaton& formula,
               const knowledge::AbstractKnowledge& knowledge, knowledge::ValidityMode mode);
+
+// Why `control` is outside what the robot can be asked, or "" when it is within its bounds.
+std::string control_out_of_bounds(const scenario::World& world, const Control& control);
 
 // Region names along the trace ("p0" outside every region), as plan.json stores them.
 std::vector<std::string> region_names(const scenario::World& world, const std::vector<int>& region_trace);

@@ -12,6 +12,8 @@ namespace physltl::scenario {
 struct EnvironmentState {
   Vec2 robot_position = Vec2::Zero();
   Vec2 robot_velocity = Vec2::Zero();
+  double robot_yaw = 0.0;        // rad; constant for a holonomic robot
+  double robot_turn_rate = 0.0;  // rad/s
   std::vector<geometry::Pose2> movable_poses;  // same order as World::movable_bodies
   std::vector<Vec2> movable_velocities;        // linear, same order
 

@@ -6,6 +6,7 @@
 #include "physltl/scenario/diagnostic.h"
 
 #include <cstdint>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,14 +21,23 @@ struct Workspace {
   Location where;
 };
 
-// A sphere pushed by a planar force: the paper's mobile robot.
+// How the robot moves. Both drives track a velocity set-point with a force bounded by max_force
+// (docs/physics.md): holonomic in any direction without turning; differential only along its heading,
+// turning in place or on the move, its wheels gripping the floor sideways.
+enum class Drive { kHolonomic, kDifferential };
+const char* drive_name(Drive drive);  // "holonomic", "differential"
+
+// The paper's mobile robot: a disc on the floor (drawn as a sphere) with a velocity-tracking drive.
 struct Robot {
+  Drive drive = Drive::kHolonomic;
   double radius = 0.25;     // m
   double mass = 1.0;        // kg
-  double max_force = 20.0;  // N, bound on each component of the planar force control
-  double max_speed = 1.0;   // m/s; the drive saturates here, which also keeps contacts from tunnelling
+  double max_force = 20.0;  // N: Euclidean norm of the drive force (holonomic), forward traction (differential)
+  double max_speed = 1.0;   // m/s, never exceeded at any physics step
+  double max_turn_rate = 0.5 * std::numbers::pi;  // rad/s, differential only
   double friction = 0.5;
   Vec2 start = Vec2::Zero();
+  double start_yaw = 0.0;  // rad, differential only
   Location where;
 };
 
