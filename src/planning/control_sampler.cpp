@@ -79,11 +79,12 @@ Control ControlSampler::sample(const scenario::EnvironmentState& state, const kn
   }
   const Vec2 heading = unit(target - state.robot_position);
   Vec2 direction;
-  double speed = 0.0;
+  // Free moves go at full speed, the way to the next region is what matters; pushes vary their speed so
+  // that a box can be nudged as well as shoved.
+  double speed = 1.0;
   if (push_towards(state, kappa, heading, random, direction)) {
     speed = random.uniform(0.7, 1.0);
   } else {
-    speed = random.uniform(0.4, 1.0);
     direction = unit(heading + 0.6 * random_unit(random));
   }
   control.setpoint = along(state, direction, speed * world_.robot.max_speed, control.steps);
