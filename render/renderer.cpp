@@ -181,10 +181,11 @@ struct Renderer::Impl {
     add_mesh(vertices, sphere, body_transform({state.robot_position, 0.0}, r, Vector3f::Constant(r)),
              palette::kRobot);
     if (world.robot.drive == scenario::Drive::kDifferential) {
-      // A nose on the robot's front, sticking out of the sphere, so the heading shows from above and aside.
+      // A dark bar over the top of the sphere from its centre past its front, so the heading shows from
+      // above and from the side.
       const Vec2 heading(std::cos(state.robot_yaw), std::sin(state.robot_yaw));
-      const geometry::Pose2 nose{state.robot_position + 0.75 * world.robot.radius * heading, state.robot_yaw};
-      add_mesh(vertices, cube, body_transform(nose, 1.4f * r, Vector3f(0.7f * r, 0.35f * r, 0.35f * r)),
+      const geometry::Pose2 nose{state.robot_position + 0.6 * world.robot.radius * heading, state.robot_yaw};
+      add_mesh(vertices, cube, body_transform(nose, 1.95f * r, Vector3f(1.3f * r, 0.35f * r, 0.2f * r)),
                palette::kRobotNose);
     }
     return vertices;

@@ -47,6 +47,18 @@ TEST(RendererGolden, RoomsSearchTreeFromAbove) {
   EXPECT_TRUE(matches_golden(draw(paper_world("rooms"), test::synthetic_tree_of_rooms(), View::kTop), "rooms_tree"));
 }
 
+// A differential robot shows where it faces: a dark bar from its centre past its front.
+TEST(RendererGolden, DifferentialRobotShowsItsHeading) {
+  scenario::World world;
+  world.workspace.bounds = {{-2, -1.5}, {2, 1.5}};
+  world.robot.drive = scenario::Drive::kDifferential;
+  world.robot.radius = 0.5;
+  EnvironmentState state = EnvironmentState::initial(world);
+  state.robot_yaw = 0.5;  // rad, up and to the right
+  Renderer renderer(world, kGoldenWidth, kGoldenHeight);
+  EXPECT_TRUE(matches_golden(renderer.draw(state, Overlay{}, View::kTop), "differential_robot_heading"));
+}
+
 TEST(Renderer, DrawsTheSameBytesTwice) {
   const scenario::World world = paper_world("rooms");
   const Overlay overlay = test::synthetic_tree_of_rooms();
