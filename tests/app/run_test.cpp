@@ -11,6 +11,8 @@
 #include <sys/wait.h>
 
 #include <chrono>
+#include <cmath>
+#include <numbers>
 #include <thread>
 
 namespace {
@@ -45,6 +47,24 @@ TEST(Run, SolvesOrderedAndWritesAValidatedReportAndPlan) {
   EXPECT_LT(first("p3"), first("p4"));
   EXPECT_LT(first("p4"), trace.size());
   EXPECT_FALSE(fs::exists(out / "ordered" / "frames"));  // no --render
+}
+
+TEST(Run, ADifferentialRobotsPlanCarriesItsHeadingAndKeepsItsLimits) {
+  const fs::path out = fresh_out_dir();
+  const Result r = run(kSource + "/scenarios/rooms_differential.lua --seed 2 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto report = nlohmann::json::parse(slurp(out / "rooms_differential" / "report.json"));
+  EXPECT_EQ(report["validation"]["within_limits"], true);
+  EXPECT_LE(report["validation"]["peak_speed"].get<double>(), 1.0 * 1.01);
+  const auto plan = nlohmann::json::parse(slurp(out / "rooms_differential" / "plan.json"));
+  EXPECT_EQ(plan["drive"], "differential");
+  const auto& start = plan["states"].front()["robot"];
+  ASSERT_EQ(start.size(), 3u);  // x, y, yaw
+  EXPECT_NEAR(start[2].get<double>(), std::numbers::pi / 2, 1e-12);  // start_yaw_deg = 90
+  for (const auto& control : plan["controls"]) {
+    EXPECT_LE(std::abs(control["forward_speed"].get<double>()), 1.0);
+    EXPECT_LE(std::abs(control["turn_rate"].get<double>()), std::numbers::pi / 2 + 1e-12);
+  }
 }
 
 // Threads change how soon a plan is found, never which plan.

@@ -31,7 +31,7 @@ struct Constructor {
 // What the reader accepts (src/scenario/read_world.cpp); the generator also misspells and invents keys.
 const std::array<Constructor, 8> kConstructors = {{
     {"workspace", {"bounds", "floor_friction"}},
-    {"robot", {"radius", "mass", "max_force", "max_speed", "friction", "start"}},
+    {"robot", {"drive", "radius", "mass", "max_force", "max_speed", "max_turn_rate_deg", "start_yaw_deg", "friction", "start"}},
     {"fixed", {"name", "center", "size", "yaw_deg", "height", "mesh"}},
     {"movable", {"name", "center", "size", "yaw_deg", "height", "mass", "friction", "push_from", "mregion_depth"}},
     {"region", {"name", "rect", "polygon"}},
