@@ -61,6 +61,8 @@ void print_check_report(std::ostream& out, const scenario::World& world, const R
   for (const knowledge::InvalidProposition& p : r.feasibility.invalid) fmt::print(out, "invalid    {}\n", p.reason);
   if (const std::optional<ltl::Formula> simplified = r.simplified_formula()) {
     fmt::print(out, "simplified {}\n", ltl::to_string(*simplified));
+    fmt::print(out, "class      {}: {}\n", ltl::class_name(r.task.task_class), ltl::semantics_of(r.task.task_class));
+    if (r.task.unsatisfiable) fmt::print(out, "infeasible {}\n", *r.task.unsatisfiable);
   } else {
     fmt::print(out, "simplified infeasible: {}\n", r.task.semantic->explanation);
   }
@@ -86,6 +88,8 @@ json check_report_json(const scenario::World& world, const Reasoning& r) {
   report["simplified_formula"] = simplified ? json(ltl::to_string(*simplified)) : json(nullptr);
   report["invalid_propositions"] = knowledge["invalid_propositions"];
   report["feasible"] = r.feasible();
+  report["infeasible_reason"] = r.feasible() ? json(nullptr) : json(r.task.infeasibility());
+  report["task_class"] = ltl::class_name(r.task.task_class);
   report["normal_form"] = ltl::to_string(r.task.normal_form);
   report["simplification"] = r.task.semantic ? simplification_json(*r.task.semantic) : json(nullptr);
   report["paper_simplification"] = r.task.by_lists ? simplification_json(*r.task.by_lists) : json(nullptr);

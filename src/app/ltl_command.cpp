@@ -27,7 +27,7 @@ CommandRunner add_ltl_command(CLI::App& app) {
     std::vector<std::string> invalid;
   };
   auto o = std::make_shared<Options>();
-  app.add_option("formula", o->formula, "The co-safe task, e.g. 'F(p1 & F p2)'")->required();
+  app.add_option("formula", o->formula, "The task, e.g. 'F(p1 & F p2)' or 'F goal & G !hazard'")->required();
   app.add_flag("--hoa", o->hoa, "Print only the automaton, in HOA v1 (as Spot writes it)");
   app.add_option("--invalid", o->invalid, "Propositions the robot can never make true, e.g. p3,p5")
       ->delimiter(',');
@@ -38,14 +38,19 @@ CommandRunner add_ltl_command(CLI::App& app) {
         return ltl::analyse(o->formula, o->invalid);
       } catch (const ltl::ParseError& e) {
         throw BadInput(std::string("bad formula: ") + e.what() + pointing_at(o->formula, e.column()));
-      } catch (const ltl::NotCoSafeError& e) {
-        throw BadInput(e.what() + pointing_at(o->formula, e.violation().origin.column));
       }
     }();
     if (o->hoa) {
       if (!analysis.dfa) {
-        std::cerr << "physltl-studio: the task is infeasible: " << analysis.semantic->explanation << "\n";
+        std::cerr << "physltl-studio: the task is infeasible: " << analysis.infeasibility() << "\n";
         return kExitNoPlan;
+      }
+      if (analysis.dfa->acceptance != ltl::Acceptance::kGoodPrefix) {
+        throw BadInput(std::string("--hoa writes co-safe tasks only, whose automaton accepts good prefixes as Spot's "
+                                   "does; this task is ") +
+                       ltl::class_name(analysis.task_class) +
+                       ", and its automaton accepts a finite run that stops and stays, which HOA has no "
+                       "acceptance condition for (docs/ltl.md)");
       }
       ltl::write_hoa(std::cout, *analysis.dfa);
       return kExitOk;

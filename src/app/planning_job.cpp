@@ -1,15 +1,14 @@
 #include "planning_job.h"
 
 #include "physltl/ltl/parser.h"
-#include "physltl/ltl/translate.h"
 
 namespace physltl::app {
 
 PreparedRun::PreparedRun(const scenario::World& world, const Reasoning& reasoning)
     : world_(world),
       reasoning_(reasoning),
-      simplified_(planning::TaskAutomaton::make(*reasoning.task.dfa, world)),
-      as_written_(planning::TaskAutomaton::make(ltl::translate(ltl::parse(world.task.formula)), world)),
+      simplified_(planning::TaskAutomaton::make(*reasoning.simplified_formula(), *reasoning.task.dfa, world)),
+      as_written_(planning::TaskAutomaton::make(ltl::parse(world.task.formula), world)),
       decomposition_(decomposition::Decomposition::build(world)) {}
 
 const planning::TaskAutomaton& PreparedRun::search_task(planning::Guidance guidance) const {

@@ -30,8 +30,8 @@ struct Reasoning {
   std::optional<ltl::Formula> simplified_formula() const;
 };
 
-// Pure and deterministic. Expects a World that passed scenario validation (its formula is co-safe over its
-// regions); otherwise throws ltl::ParseError or ltl::NotCoSafeError.
+// Pure and deterministic. Expects a World that passed scenario validation (its formula parses and names
+// only its regions); otherwise throws ltl::ParseError.
 Reasoning reason_about(const scenario::World& world);
 
 }  // namespace physltl::app

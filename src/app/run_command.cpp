@@ -69,7 +69,7 @@ int run(const RunArgs& args) {
   const Reasoning reasoning = reason_about(world);
   for (const auto& p : reasoning.feasibility.invalid) say("invalid    " + p.reason);
   if (!reasoning.feasible()) {
-    std::cerr << "physltl-studio: the task is infeasible: " << reasoning.task.semantic->explanation << "\n";
+    std::cerr << "physltl-studio: the task is infeasible: " << reasoning.task.infeasibility() << "\n";
     return kExitNoPlan;
   }
   // Made before planning so that an unwritable --out fails at once, not after minutes of search; it is

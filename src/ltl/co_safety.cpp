@@ -1,7 +1,5 @@
 #include "physltl/ltl/co_safety.h"
 
-#include "physltl/ltl/normal_form.h"
-
 namespace physltl::ltl {
 
 namespace {
@@ -73,20 +71,9 @@ std::string CoSafetyViolation::message() const {
   } else {
     what = written + where + ": " + reading(op);
   }
-  return what +
-         ". The planner needs tasks that a finite run completes (syntactically co-safe: after pushing "
-         "negations inward only X, F, U, M, &, | over literals)";
+  return what;
 }
-
-NotCoSafeError::NotCoSafeError(const CoSafetyViolation& v)
-    : std::runtime_error("not a co-safe formula: " + v.message()), violation_(v) {}
 
 std::optional<CoSafetyViolation> find_co_safety_violation(const Formula& pnf) { return find(pnf); }
-
-Formula require_co_safe(const Formula& f) {
-  Formula pnf = positive_normal_form(f);
-  if (auto v = find_co_safety_violation(pnf)) throw NotCoSafeError(*v);
-  return pnf;
-}
 
 }  // namespace physltl::ltl

@@ -1,8 +1,8 @@
 #include "physltl/ltl/translate.h"
 
 #include "decision_diagram.h"
-#include "physltl/ltl/co_safety.h"
 #include "physltl/ltl/normal_form.h"
+#include "physltl/ltl/task_class.h"
 
 #include <algorithm>
 #include <deque>
@@ -54,17 +54,30 @@ void normalise(Dnf& d) {
   d = std::move(kept);
 }
 
+// A state of the automaton before minimisation is a key: for good-prefix acceptance the DNF id of the
+// formula still to satisfy; for stop-and-stay acceptance twice that id plus one bit, whether the run
+// read so far satisfies the task if it stops and stays (the formula before the last letter, evaluated on
+// that letter repeated forever: what progression reads next is all that letter).
 class Translator {
  public:
-  explicit Translator(std::vector<std::string> props) : props_(std::move(props)) {
+  Translator(std::vector<std::string> props, Acceptance acceptance)
+      : props_(std::move(props)), stop_and_stay_(acceptance == Acceptance::kStopAndStay) {
     intern_dnf(Dnf{});        // kFalse: no term
     intern_dnf(Dnf{Term{}});  // kTrue: the empty term
   }
 
   Dfa run(const Formula& pnf) {
-    explore(dnf_of(pnf));
-    const std::vector<bool> good = good_states();
-    return minimise(good);
+    const int formula = dnf_of(pnf);
+    explore(stop_and_stay_ ? 2 * formula : formula);  // the empty run does not stop anywhere: not accepting
+    std::vector<bool> accepting;
+    if (stop_and_stay_) {
+      for (int key : state_keys_) accepting.push_back(key % 2 == 1);
+    } else {
+      accepting = good_states();
+    }
+    Dfa dfa = minimise(accepting);
+    dfa.acceptance = stop_and_stay_ ? Acceptance::kStopAndStay : Acceptance::kGoodPrefix;
+    return dfa;
   }
 
  private:
@@ -207,12 +220,100 @@ class Translator {
         result = apply(false, progress_formula(f.child(1)), apply(true, progress_formula(f.child(0)), self));
         break;
       case Op::StrongRelease:  // a M b = b & (a | X(a M b))
+      case Op::Release:        // a R b = b & (a | X(a R b))
         result = apply(true, progress_formula(f.child(1)), apply(false, progress_formula(f.child(0)), self));
         break;
-      default: throw std::logic_error("translate: operator outside the co-safe class");
+      case Op::Globally:  // G a = a & X G a
+        result = apply(true, progress_formula(f.child(0)), self);
+        break;
+      case Op::WeakUntil:  // a W b = b | (a & X(a W b))
+        result = apply(false, progress_formula(f.child(1)), apply(true, progress_formula(f.child(0)), self));
+        break;
+      default: throw std::logic_error("translate: operator not in positive normal form");
     }
     atom_progress_[id] = result;
     return result;
+  }
+
+  // ---- the truth of a formula on the word that repeats one letter forever, for all letters at once ----
+  // On a constant word X f, F f and G f mean f; f U g and f R g mean g; f W g means f | g, f M g f & g.
+
+  Node stay_formula(const Formula& f) {
+    switch (f.op()) {
+      case Op::True: return dd_.leaf(kTrue);
+      case Op::False: return dd_.leaf(kFalse);
+      case Op::And:
+      case Op::Or: {
+        const bool conjunction = f.op() == Op::And;
+        Node acc = dd_.leaf(conjunction ? kTrue : kFalse);
+        for (const Formula& c : f.children()) acc = apply(conjunction, acc, stay_formula(c));
+        return acc;
+      }
+      case Op::Equiv:
+      case Op::Xor: {
+        const bool exclusive = f.op() == Op::Xor;
+        const Node a = stay_formula(f.child(0));
+        const Node b = stay_formula(f.child(1));
+        const Node na = stay_formula(negated_normal_form(f.child(0)));
+        const Node nb = stay_formula(negated_normal_form(f.child(1)));
+        return apply(false, apply(true, a, exclusive ? nb : b), apply(true, na, exclusive ? b : nb));
+      }
+      default: return stay_atom(intern_atom(f));
+    }
+  }
+
+  Node stay_atom(int id) {
+    if (atom_stay_.size() <= static_cast<std::size_t>(id)) atom_stay_.resize(atoms_.size());
+    if (atom_stay_[id]) return *atom_stay_[id];
+    const Formula f = atoms_[id];
+    Node result;
+    switch (f.op()) {
+      case Op::Atom:
+      case Op::Not: result = progress_atom(id); break;  // a literal: true or false at once
+      case Op::Next:
+      case Op::Finally:
+      case Op::Globally: result = stay_formula(f.child(0)); break;
+      case Op::Until:
+      case Op::Release: result = stay_formula(f.child(1)); break;
+      case Op::WeakUntil: result = apply(false, stay_formula(f.child(0)), stay_formula(f.child(1))); break;
+      case Op::StrongRelease: result = apply(true, stay_formula(f.child(0)), stay_formula(f.child(1))); break;
+      default: throw std::logic_error("translate: operator not in positive normal form");
+    }
+    atom_stay_[id] = result;
+    return result;
+  }
+
+  Node stay_state(int dnf) {
+    Node acc = dd_.leaf(kFalse);
+    for (const Term& t : *dnfs_[dnf]) {
+      Node term = dd_.leaf(kTrue);
+      for (int atom : t) term = apply(true, term, stay_atom(atom));
+      acc = apply(false, acc, term);
+    }
+    return acc;
+  }
+
+  // The successor keys of a stop-and-stay state: leaf d of `successors` and leaf b of `stays` for the
+  // same letter make the key 2d + b.
+  Node pair_keys(Node successors, Node stays) {
+    if (dd_.is_leaf(successors) && dd_.is_leaf(stays)) {
+      return dd_.leaf(2 * dd_.value(successors) + (dd_.value(stays) == kTrue ? 1 : 0));
+    }
+    const std::uint64_t key = pair_key(successors, stays);
+    if (auto it = pair_nodes_.find(key); it != pair_nodes_.end()) return it->second;
+    const int v = std::min(dd_.var(successors), dd_.var(stays));
+    const Node low = pair_keys(dd_.low_for(successors, v), dd_.low_for(stays, v));
+    const Node high = pair_keys(dd_.high_for(successors, v), dd_.high_for(stays, v));
+    const Node result = dd_.branch(v, low, high);
+    pair_nodes_.emplace(key, result);
+    return result;
+  }
+
+  // The successors of a state by letter, as a diagram whose leaves are state keys.
+  Node successor_keys(int key) {
+    if (!stop_and_stay_) return progress_state(key);
+    const int dnf = key / 2;
+    return pair_keys(progress_state(dnf), stay_state(dnf));
   }
 
   Node progress_state(int dnf) {
@@ -228,15 +329,15 @@ class Translator {
   // ---- the automaton ----
 
   void explore(int initial) {
-    state_of_dnf_.emplace(initial, 0);
-    state_dnfs_.push_back(initial);
-    for (std::size_t s = 0; s < state_dnfs_.size(); ++s) {
-      const Node root = progress_state(state_dnfs_[s]);
+    state_of_key_.emplace(initial, 0);
+    state_keys_.push_back(initial);
+    for (std::size_t s = 0; s < state_keys_.size(); ++s) {
+      const Node root = successor_keys(state_keys_[s]);
       roots_.push_back(root);
       std::vector<int> successors;
-      for (int dnf : dd_.leaf_values(root)) {
-        auto [it, inserted] = state_of_dnf_.try_emplace(dnf, static_cast<int>(state_dnfs_.size()));
-        if (inserted) state_dnfs_.push_back(dnf);
+      for (int key : dd_.leaf_values(root)) {
+        auto [it, inserted] = state_of_key_.try_emplace(key, static_cast<int>(state_keys_.size()));
+        if (inserted) state_keys_.push_back(key);
         successors.push_back(it->second);
       }
       successors_.push_back(std::move(successors));
@@ -247,7 +348,7 @@ class Translator {
   // the state `true`: for co-safe formulas a word is a model exactly when some finite prefix of it
   // progresses the formula to true. Least fixpoint: `true`, then states all of whose successors are good.
   std::vector<bool> good_states() const {
-    const std::size_t n = state_dnfs_.size();
+    const std::size_t n = state_keys_.size();
     std::vector<std::vector<int>> predecessors(n);
     std::vector<int> pending(n, 0);  // successors not yet known to be good
     for (std::size_t s = 0; s < n; ++s) {
@@ -258,7 +359,7 @@ class Translator {
     }
     std::vector<bool> good(n, false);
     std::deque<int> queue;
-    if (auto it = state_of_dnf_.find(kTrue); it != state_of_dnf_.end()) {
+    if (auto it = state_of_key_.find(kTrue); it != state_of_key_.end()) {
       good[it->second] = true;
       queue.push_back(it->second);
     }
@@ -277,7 +378,7 @@ class Translator {
   // Moore partition refinement on the symbolic transition functions: two states stay together while
   // they are in the same class and their diagrams, with leaves replaced by classes, are the same node.
   Dfa minimise(const std::vector<bool>& good) {
-    const std::size_t n = state_dnfs_.size();
+    const std::size_t n = state_keys_.size();
     std::vector<int> cls(n);
     std::size_t classes = 0;
     {
@@ -309,7 +410,7 @@ class Translator {
 
   Node relabel(Node n, const std::vector<int>& cls, DecisionDiagram& out, std::unordered_map<Node, Node>& memo) {
     if (auto it = memo.find(n); it != memo.end()) return it->second;
-    const Node r = dd_.is_leaf(n) ? out.leaf(cls[state_of_dnf_.at(dd_.value(n))])
+    const Node r = dd_.is_leaf(n) ? out.leaf(cls[state_of_key_.at(dd_.value(n))])
                                   : out.branch(dd_.var(n), relabel(dd_.low(n), cls, out, memo),
                                                relabel(dd_.high(n), cls, out, memo));
     memo.emplace(n, r);
@@ -411,6 +512,7 @@ class Translator {
   }
 
   std::vector<std::string> props_;
+  bool stop_and_stay_;
   std::vector<Formula> atoms_;
   std::unordered_map<Formula, int> atom_ids_;
   std::vector<std::optional<Node>> atom_progress_;
@@ -421,8 +523,10 @@ class Translator {
   DecisionDiagram dd_;
   std::unordered_map<std::uint64_t, Node> and_nodes_;
   std::unordered_map<std::uint64_t, Node> or_nodes_;
-  std::unordered_map<int, int> state_of_dnf_;
-  std::vector<int> state_dnfs_;
+  std::unordered_map<std::uint64_t, Node> pair_nodes_;
+  std::vector<std::optional<Node>> atom_stay_;
+  std::unordered_map<int, int> state_of_key_;
+  std::vector<int> state_keys_;
   std::vector<Node> roots_;                   // per state: its successor by letter, as a diagram
   std::vector<std::vector<int>> successors_;  // per state: its distinct successors
 };
@@ -430,8 +534,10 @@ class Translator {
 }  // namespace
 
 Dfa translate(const Formula& f) {
-  const Formula pnf = require_co_safe(f);
-  return Translator(propositions(f)).run(pnf);
+  const Formula pnf = positive_normal_form(f);
+  const Acceptance acceptance =
+      classify(pnf) == TaskClass::kCoSafe ? Acceptance::kGoodPrefix : Acceptance::kStopAndStay;
+  return Translator(propositions(f), acceptance).run(pnf);
 }
 
 }  // namespace physltl::ltl

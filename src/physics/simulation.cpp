@@ -25,9 +25,9 @@ constexpr int kValuesPerBody = 10;          // position 3, yaw 1, linear velocit
 constexpr double kMaxCorrectingSpeed = 0.1;  // m/s
 // A holonomic robot keeps its heading: the plane-2D joint's angular motor holds it with this torque bound.
 constexpr double kHeadingHoldTorque = 1e3;  // N m
-// A box slower than this is at rest: floor friction takes ~0.2 m/s off a sliding box per step, so a box
-// this slow would stop within the step anyway, and calling it stopped lets the step skip it.
-constexpr double kRestSpeed = 1e-4;         // m/s, and rad/s for turning
+// A box slower than scenario::kRestSpeed is at rest: floor friction takes ~0.2 m/s off a sliding box per
+// step, so a box this slow would stop within the step anyway, and calling it stopped lets the step skip it.
+using scenario::kRestSpeed;
 
 // Coulomb friction of two materials, as Box2D and most engines combine it.
 double mix_friction(double a, double b) { return std::sqrt(a * b); }

@@ -214,6 +214,12 @@ class Search {
       closest_to_accept_ = std::min(closest_to_accept_, graph_.distance_to_accept(growth.motion->automaton_state));
       motions_.push_back(std::move(*growth.motion));
       failed_starts_.push_back(0);
+      if (growth.accepted && growth.braking) {
+        growth.braking->parent = index;
+        motions_.push_back(std::move(*growth.braking));
+        failed_starts_.push_back(0);
+        return index + 1;
+      }
       if (growth.accepted) return index;
     }
     return -1;

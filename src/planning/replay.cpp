@@ -1,6 +1,7 @@
 #include "physltl/planning/replay.h"
 
 #include "physltl/knowledge/kappa.h"
+#include "physltl/ltl/lasso.h"
 #include "physltl/physics/simulation.h"
 
 #include <fmt/format.h>
@@ -92,8 +93,17 @@ Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomato
       fail(r.reproduces_plan, fmt::format("control {} ends in a different state than planned", c));
     }
   }
-  r.accepted = formula.dfa.accepting[r.automaton_trace.back()];
+  std::vector<std::vector<std::string>> letters;
+  letters.reserve(r.region_trace.size());
+  for (int region : r.region_trace) {
+    letters.push_back(region < 0 ? std::vector<std::string>{} : std::vector<std::string>{world.regions[region].name});
+  }
+  const bool good_prefix = formula.dfa.acceptance == ltl::Acceptance::kGoodPrefix;
+  r.accepted = ltl::holds_when_staying(formula.formula, letters) &&
+               (!good_prefix || formula.dfa.accepting[r.automaton_trace.back()]);
   if (!r.accepted && r.failure.empty()) r.failure = "the region trace does not satisfy the formula";
+  r.ends_at_rest = !formula.ends_at_rest() || r.states.back().at_rest();
+  if (!r.ends_at_rest && r.failure.empty()) r.failure = "the plan does not end with the robot and the boxes at rest";
   return r;
 }
 

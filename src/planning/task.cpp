@@ -1,9 +1,15 @@
 #include "physltl/planning/task.h"
 
+#include "physltl/ltl/translate.h"
+
 namespace physltl::planning {
 
-TaskAutomaton TaskAutomaton::make(const ltl::Dfa& dfa, const scenario::World& world) {
-  TaskAutomaton task{dfa, {}, {}};
+TaskAutomaton TaskAutomaton::make(const ltl::Formula& formula, const scenario::World& world) {
+  return make(formula, ltl::translate(formula), world);
+}
+
+TaskAutomaton TaskAutomaton::make(const ltl::Formula& formula, const ltl::Dfa& dfa, const scenario::World& world) {
+  TaskAutomaton task{formula, dfa, {}, {}};
   for (const auto& region : world.regions) task.proposition_of_region.push_back(dfa.proposition_index(region.name));
   const int letters = static_cast<int>(world.regions.size()) + 1;
   task.successors.resize(dfa.size() * static_cast<size_t>(letters));

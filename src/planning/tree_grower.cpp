@@ -3,7 +3,16 @@
 #include "physltl/knowledge/kappa.h"
 #include "random.h"
 
+#include <cmath>
+
 namespace physltl::planning {
+namespace {
+
+// Longer than any robot and box need to stop: the drive stops the robot within a step or two, and floor
+// friction a sliding box within a fraction of a second.
+constexpr double kMaxBrakingTime = 3.0;  // s
+
+}  // namespace
 
 TreeGrower::TreeGrower(const scenario::World& world, const TaskAutomaton& task,
                        const knowledge::AbstractKnowledge& knowledge, const decomposition::Decomposition& decomposition,
@@ -14,6 +23,7 @@ TreeGrower::TreeGrower(const scenario::World& world, const TaskAutomaton& task,
       graph_(graph),
       mode_(use_knowledge ? knowledge::ValidityMode::kKnowledge : knowledge::ValidityMode::kBaseline),
       sampler_(world, knowledge, use_knowledge),
+      max_braking_steps_(static_cast<int>(std::ceil(kMaxBrakingTime / world.planner.step_size))),
       regions_(world),
       simulation_(world) {}
 
@@ -26,19 +36,24 @@ void TreeGrower::grow(const Motion& from, const Vec2& target, std::uint64_t seed
   propagate(sampler_.sample(environment_, kappa_, target, random), from.automaton_state, growth);
 }
 
+bool TreeGrower::valid_step(const Vec2& setpoint, Growth& growth) {
+  simulation_.step(setpoint, contacts_);
+  ++growth.physics_steps;
+  simulation_.read_environment(environment_);
+  // VALIDITYCHECKER(E_new, kappa_j), then kappa_{j+1} = INFERENCE(E_new, kappa_j).
+  if (!knowledge::is_valid(knowledge_, kappa_, environment_, contacts_, mode_)) {
+    growth.stopped_by_invalid_step = true;
+    return false;
+  }
+  if (mode_ == knowledge::ValidityMode::kKnowledge) update_kappa();
+  return true;
+}
+
 void TreeGrower::propagate(const Control& control, int automaton_state, Growth& growth) {
   int valid_steps = 0;
   bool accepted = false;
   for (int step = 1; step <= control.steps; ++step) {
-    simulation_.step(control.setpoint, contacts_);
-    ++growth.physics_steps;
-    simulation_.read_environment(environment_);
-    // VALIDITYCHECKER(E_new, kappa_j), then kappa_{j+1} = INFERENCE(E_new, kappa_j).
-    if (!knowledge::is_valid(knowledge_, kappa_, environment_, contacts_, mode_)) {
-      growth.stopped_by_invalid_step = true;
-      break;
-    }
-    if (mode_ == knowledge::ValidityMode::kKnowledge) update_kappa();
+    if (!valid_step(control.setpoint, growth)) break;
     const int next = task_.step(automaton_state, regions_.at(environment_.robot_position));
     if (graph_.dead(next)) break;
     automaton_state = next;
@@ -50,14 +65,34 @@ void TreeGrower::propagate(const Control& control, int automaton_state, Growth& 
     }
   }
   if (valid_steps == 0) return;
+  growth.motion = make_motion({control.setpoint, valid_steps}, automaton_state);
+  // The simulation stands at the motion's end unless a later step failed; braking starts from there.
+  growth.accepted = accepted && (!task_.ends_at_rest() || brake(automaton_state, growth));
+}
 
-  Motion& motion = growth.motion.emplace();
+bool TreeGrower::brake(int automaton_state, Growth& growth) {
+  const Vec2 stop = Vec2::Zero();
+  for (int step = 1; step <= max_braking_steps_; ++step) {
+    if (!valid_step(stop, growth)) return false;
+    automaton_state = task_.step(automaton_state, regions_.at(environment_.robot_position));
+    if (graph_.dead(automaton_state)) return false;
+    if (!environment_.at_rest()) continue;
+    if (!task_.dfa.accepting[automaton_state]) return false;
+    simulation_.save(last_valid_);
+    growth.braking = make_motion({stop, step}, automaton_state);
+    return true;
+  }
+  return false;
+}
+
+Motion TreeGrower::make_motion(const Control& control, int automaton_state) const {
+  Motion motion;
   motion.state = last_valid_;
   motion.robot = Vec2(last_valid_.values[0], last_valid_.values[1]);  // the robot's x, y come first
-  motion.control = {control.setpoint, valid_steps};
+  motion.control = control;
   motion.automaton_state = automaton_state;
   motion.product_state = graph_.id(decomposition_.locate(motion.robot), automaton_state);
-  growth.accepted = accepted;
+  return motion;
 }
 
 void TreeGrower::update_kappa() {

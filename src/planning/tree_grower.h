@@ -33,7 +33,10 @@ struct Motion {
 // in), unless the first step was already invalid.
 struct Growth {
   std::optional<Motion> motion;
-  bool accepted = false;  // the motion reached an accepting automaton state
+  // A task that ends at rest: after a motion that reached acceptance, the robot braking until it and the
+  // boxes stand still, still accepted (a child of `motion`).
+  std::optional<Motion> braking;
+  bool accepted = false;  // the motion (and the braking, where the task needs it) reached acceptance
   int physics_steps = 0;
   bool stopped_by_invalid_step = false;
 };
@@ -51,6 +54,12 @@ class TreeGrower {
   // Applies `control` from the simulation's current state until the end, an invalid step, a dead
   // automaton state or acceptance; the valid steps make the growth's motion.
   void propagate(const Control& control, int automaton_state, Growth& growth);
+  // From an accepting motion's end: the drive's set-point zero until the robot and the boxes are at rest,
+  // every step valid and the automaton still accepting at the end. Whether that worked.
+  bool brake(int automaton_state, Growth& growth);
+  // One valid step under `control`, then INFERENCE; false when the step was invalid.
+  bool valid_step(const Vec2& setpoint, Growth& growth);
+  Motion make_motion(const Control& control, int automaton_state) const;
   // kappa_ = INFERENCE(environment_), redone only for the bodies a move since the last call can affect.
   void update_kappa();
 
@@ -60,6 +69,7 @@ class TreeGrower {
   const ProductGraph& graph_;
   const knowledge::ValidityMode mode_;
   const ControlSampler sampler_;
+  const int max_braking_steps_;
   const RegionMap regions_;
   physics::Simulation simulation_;
   // Scratch space reused by every step, so the hot loop does not allocate.

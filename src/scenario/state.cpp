@@ -1,5 +1,8 @@
 #include "physltl/scenario/state.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace physltl::scenario {
 
 EnvironmentState EnvironmentState::initial(const World& world) {
@@ -11,6 +14,12 @@ EnvironmentState EnvironmentState::initial(const World& world) {
     s.movable_velocities.push_back(Vec2::Zero());
   }
   return s;
+}
+
+bool EnvironmentState::at_rest() const {
+  const auto stopped = [](const Vec2& v) { return v == Vec2::Zero(); };
+  return robot_velocity.norm() < kRestSpeed && std::abs(robot_turn_rate) < kRestSpeed &&
+         std::all_of(movable_velocities.begin(), movable_velocities.end(), stopped);
 }
 
 geometry::OrientedBox footprint_at(const MovableBody& body, const geometry::Pose2& pose) {

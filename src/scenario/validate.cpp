@@ -1,6 +1,5 @@
 #include "physltl/scenario/load.h"
 
-#include "physltl/ltl/co_safety.h"
 #include "physltl/ltl/parser.h"
 
 #include <algorithm>
@@ -225,11 +224,6 @@ class Validator {
         error(t.where, what + " names unknown region '" + p + "' (" +
                            (known.empty() ? "the scenario has no regions" : "known regions: " + known) + ")");
       }
-    }
-    try {
-      ltl::require_co_safe(*formula);
-    } catch (const ltl::NotCoSafeError& e) {
-      error(t.where, what + " is " + e.what());
     }
   }
 

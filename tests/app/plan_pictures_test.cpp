@@ -30,9 +30,9 @@ class FixedPlan : public testing::Test {
     world_->render.fps = 10;
     reasoning_ = new Reasoning(reason_about(*world_));
     decomposition_ = new decomposition::Decomposition(decomposition::Decomposition::build(*world_));
-    const auto task = planning::TaskAutomaton::make(*reasoning_->task.dfa, *world_);
+    const auto task = planning::TaskAutomaton::make(*reasoning_->simplified_formula(), *reasoning_->task.dfa, *world_);
     as_written_ = new planning::TaskAutomaton(
-        planning::TaskAutomaton::make(ltl::translate(ltl::parse(world_->task.formula)), *world_));
+        planning::TaskAutomaton::make(ltl::parse(world_->task.formula), *world_));
     planning::PlannerOptions options;
     options.seed = 3;
     result_ = new planning::PlanResult(planning::plan(*world_, task, reasoning_->knowledge, *decomposition_, options));

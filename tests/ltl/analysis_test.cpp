@@ -21,7 +21,8 @@ TEST(Analysis, SummarisesAFormulaWithoutInvalidPropositions) {
   EXPECT_EQ(summary("p1 -> F p2"),
             "input:       p1 -> F p2\n"
             "normal form: !p1 | F p2\n"
-            "class:       syntactically co-safe\n"
+            "class:       co-safe\n"
+            "semantics:   a plan satisfies it once every continuation would (the first good prefix)\n"
             "automaton:   3 states, 5 edges, 1 accepting, over 2 propositions\n");
 }
 
@@ -49,9 +50,47 @@ TEST(Analysis, ReportsAnInfeasibleTaskWithoutAnAutomaton) {
   EXPECT_NE(out.str().find("automaton:   none, the task is infeasible"), std::string::npos);
 }
 
-TEST(Analysis, PassesSyntaxAndClassErrorsOnToTheCaller) {
-  EXPECT_THROW(analyse("F(p1 &", {}), ParseError);
-  EXPECT_THROW(analyse("G p1", {}), NotCoSafeError);
+TEST(Analysis, PassesSyntaxErrorsOnToTheCaller) { EXPECT_THROW(analyse("F(p1 &", {}), ParseError); }
+
+TEST(Analysis, NamesTheClassOfEveryKindOfTask) {
+  EXPECT_EQ(analyse("F(p1 & F p2)", {}).task_class, TaskClass::kCoSafe);
+  EXPECT_EQ(analyse("G !hazard", {}).task_class, TaskClass::kSafety);
+  EXPECT_EQ(analyse("F goal & G !hazard", {}).task_class, TaskClass::kCoSafeAndSafety);
+  EXPECT_EQ(analyse("G(a -> F b)", {}).task_class, TaskClass::kGeneral);
+  EXPECT_EQ(analyse("F G home", {}).task_class, TaskClass::kGeneral);
+  std::ostringstream out;
+  write_summary(out, analyse("F goal & G !hazard", {}));
+  EXPECT_NE(out.str().find("class:       co-safe and safety"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("stopping and staying"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("not co-safe: G at column 10"), std::string::npos) << out.str();
+}
+
+// Regions are disjoint: the robot is never in two at once, so some tasks have no run at all.
+TEST(Analysis, ATaskNoRunAmongDisjointRegionsSatisfiesIsInfeasibleWithoutSearching) {
+  const Analysis both = analyse("F G a & F G b", {});
+  EXPECT_FALSE(both.feasible());
+  EXPECT_FALSE(both.dfa);
+  EXPECT_NE(both.infeasibility().find("at most one region at a time"), std::string::npos) << both.infeasibility();
+  EXPECT_FALSE(analyse("F(a & b)", {}).feasible());
+  EXPECT_TRUE(analyse("F a & F b", {}).feasible());
+}
+
+TEST(Analysis, APatrolIsInfeasibleBecauseTheRobotStopsAndStays) {
+  const Analysis patrol = analyse("G F a & G F b", {});
+  EXPECT_FALSE(patrol.feasible());
+  const std::string why = patrol.infeasibility();
+  EXPECT_NE(why.find("stops and stays"), std::string::npos) << why;
+  EXPECT_NE(why.find("a run that never stops could satisfy it"), std::string::npos) << why;
+  EXPECT_TRUE(analyse("G F a", {}).feasible());  // ends in a
+}
+
+// The polarity rule: an unreachable region is never entered, so avoiding it always holds.
+TEST(Analysis, AnUnreachableRegionInANeverPartMakesThatPartTrue) {
+  const std::vector<std::string> invalid{"p3"};
+  const Analysis a = analyse("(F p1 | F p2) & G !p3", invalid);
+  ASSERT_TRUE(a.feasible());
+  EXPECT_EQ(to_string(*a.semantic->formula), "F p1 | F p2");
+  EXPECT_EQ(a.task_class, TaskClass::kCoSafe);
 }
 
 }  // namespace

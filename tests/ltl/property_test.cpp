@@ -7,12 +7,14 @@
 //    trace gets a concrete counterexample continuation, an accepted one is tried on random ones.
 // It also minimises the residual graph over explicit letters to check the automaton's size is minimal.
 
+#include "physltl/ltl/lasso.h"
 #include "physltl/ltl/translate.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <map>
 #include <random>
 #include <unordered_map>
@@ -24,9 +26,9 @@ constexpr int kProps = 3;  // a, b, c; a letter is a bit mask
 constexpr int kLetters = 1 << kProps;
 const char* const kNames[kProps] = {"a", "b", "c"};
 
-// ---- random syntactically co-safe formulas in positive normal form ----
+// ---- random formulas in positive normal form: co-safe ones, and any (with G, R, W too) ----
 
-Formula random_formula(std::mt19937_64& rng, int depth) {
+Formula random_formula(std::mt19937_64& rng, int depth, bool full_ltl = false) {
   std::uniform_int_distribution<int> pick(0, 99);
   if (depth == 0 || pick(rng) < 25) {
     const int r = pick(rng);
@@ -36,7 +38,13 @@ Formula random_formula(std::mt19937_64& rng, int depth) {
     return r % 2 ? atom : Formula::unary(Op::Not, atom);
   }
   const int r = pick(rng);
-  auto sub = [&] { return random_formula(rng, depth - 1); };
+  auto sub = [&] { return random_formula(rng, depth - 1, full_ltl); };
+  if (full_ltl && r >= 70) {
+    const int kind = r % 3;
+    if (kind == 0) return Formula::unary(Op::Globally, sub());
+    if (kind == 1) return Formula::binary(Op::Release, sub(), sub());
+    return Formula::binary(Op::WeakUntil, sub(), sub());
+  }
   if (r < 18) return Formula::nary(Op::And, {sub(), sub()});
   if (r < 36) return Formula::nary(Op::Or, {sub(), sub()});
   if (r < 52) return Formula::unary(Op::Next, sub());
@@ -83,7 +91,11 @@ Formula progress(const Formula& f, int letter) {
     case Op::Until:
       return junction(Op::Or, {progress(f.child(1), letter), junction(Op::And, {progress(f.child(0), letter), f})});
     case Op::StrongRelease:
+    case Op::Release:
       return junction(Op::And, {progress(f.child(1), letter), junction(Op::Or, {progress(f.child(0), letter), f})});
+    case Op::Globally: return junction(Op::And, {progress(f.child(0), letter), f});
+    case Op::WeakUntil:
+      return junction(Op::Or, {progress(f.child(1), letter), junction(Op::And, {progress(f.child(0), letter), f})});
     default: throw std::logic_error("operator not generated");
   }
 }
@@ -241,6 +253,28 @@ std::vector<bool> satisfied(const Formula& f, const Lasso& w) {
       case Op::And: out[i] = std::ranges::all_of(kids, [&](const auto& k) { return static_cast<bool>(k[i]); }); break;
       case Op::Or: out[i] = std::ranges::any_of(kids, [&](const auto& k) { return static_cast<bool>(k[i]); }); break;
       case Op::Next: out[i] = kids[0][w.succ(i)]; break;
+      case Op::Globally:
+      case Op::Release:
+      case Op::WeakUntil: {
+        // The dual walk: the position is good unless the walk meets a failure first.
+        const std::vector<bool>& left = kids[0];
+        const std::vector<bool>& right = f.op() == Op::Globally ? kids[0] : kids[1];
+        bool result = true;
+        std::size_t p = i;
+        for (std::size_t k = 0; k <= n; ++k, p = w.succ(p)) {
+          if (f.op() == Op::Globally) {
+            if (!left[p]) { result = false; break; }
+          } else if (f.op() == Op::Release) {  // b holds up to and including a position where a holds, or forever
+            if (!right[p]) { result = false; break; }
+            if (left[p]) break;
+          } else {  // a W b: a holds until b, or forever
+            if (right[p]) break;
+            if (!left[p]) { result = false; break; }
+          }
+        }
+        out[i] = result;
+        break;
+      }
       case Op::Finally:
       case Op::Until:
       case Op::StrongRelease: {
@@ -327,6 +361,111 @@ TEST(TranslateProperty, AcceptsExactlyTheGoodPrefixesOfRandomCoSafeFormulas) {
   // Both verdicts occur often enough for the comparison to mean something.
   EXPECT_GT(accepted, kFormulas * kTraces / 10);
   EXPECT_GT(rejected, kFormulas * kTraces / 10);
+}
+
+// ---- stop and stay: tasks that are not co-safe ----
+
+// The minimal size of the stop-and-stay automaton, by explicit Moore refinement over the reference's
+// residuals paired with "the run stopping here satisfies the task" (the residual before the last letter
+// evaluated on that letter repeated forever).
+std::size_t minimal_stop_and_stay_size(const Formula& f) {
+  std::vector<std::string> keys;
+  std::vector<Formula> residuals;
+  std::unordered_map<std::string, int> index;
+  auto residual_id = [&](const Formula& g) {
+    std::string key = canonical_key(g);
+    auto [it, inserted] = index.try_emplace(key, static_cast<int>(residuals.size()));
+    if (inserted) residuals.push_back(g);
+    return it->second;
+  };
+  std::map<std::pair<int, bool>, int> state_of;
+  std::vector<std::pair<int, bool>> states;
+  std::vector<std::array<int, kLetters>> next;
+  auto state_id = [&](std::pair<int, bool> s) {
+    auto [it, inserted] = state_of.try_emplace(s, static_cast<int>(states.size()));
+    if (inserted) states.push_back(s);
+    return it->second;
+  };
+  state_id({residual_id(f), false});
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    if (states.size() > 20000) throw std::runtime_error("reference did not converge for " + to_string(f));
+    std::array<int, kLetters> succ{};
+    for (int l = 0; l < kLetters; ++l) {
+      const Formula& r = residuals[static_cast<std::size_t>(states[i].first)];
+      const bool stays = holds(r, {}, {l}, 0);
+      succ[l] = state_id({residual_id(progress(r, l)), stays});
+    }
+    next.push_back(succ);
+  }
+  std::vector<int> cls(states.size());
+  for (std::size_t i = 0; i < states.size(); ++i) cls[i] = states[i].second;
+  std::size_t count = 0;
+  while (true) {
+    std::map<std::vector<int>, int> ids;
+    std::vector<int> next_cls(states.size());
+    for (std::size_t i = 0; i < states.size(); ++i) {
+      std::vector<int> sig{cls[i]};
+      for (int t : next[i]) sig.push_back(cls[t]);
+      next_cls[i] = ids.try_emplace(sig, static_cast<int>(ids.size())).first->second;
+    }
+    cls = next_cls;
+    if (ids.size() == count) return count;
+    count = ids.size();
+  }
+}
+
+// Regions are disjoint: a letter has at most one proposition.
+constexpr int kRegionLetters[] = {0, 1, 2, 4};
+
+TEST(TranslateProperty, AcceptsExactlyTheRunsThatSatisfyRandomFormulasWhenTheRobotStopsAndStays) {
+  std::mt19937_64 rng(20261201);
+  std::uniform_int_distribution<int> letter(0, 3);
+  std::uniform_int_distribution<int> length(1, 10);
+  constexpr int kFormulas = 300;
+  constexpr int kTraces = 2000;
+  int stop_and_stay = 0, accepted = 0, rejected = 0;
+  for (int i = 0; i < kFormulas; ++i) {
+    const Formula f = random_formula(rng, 4, true);
+    SCOPED_TRACE(to_string(f));
+    const Dfa dfa = translate(f);
+    if (dfa.acceptance != Acceptance::kStopAndStay) continue;  // co-safe: the test above
+    ++stop_and_stay;
+    ASSERT_EQ(dfa.size(), minimal_stop_and_stay_size(f));
+    for (int t = 0; t < kTraces; ++t) {
+      std::vector<int> trace(static_cast<std::size_t>(length(rng)));
+      for (int& l : trace) l = kRegionLetters[letter(rng)];
+      const std::vector<int> prefix(trace.begin(), trace.end() - 1);
+      const bool expected = holds(f, prefix, {trace.back()}, 0);  // the last letter forever
+      ASSERT_EQ(dfa_accepts(dfa, trace), expected) << "trace of length " << trace.size();
+      (expected ? accepted : rejected) += 1;
+      if (t % 10 != 0) continue;  // the evaluator replay uses, against this one
+      std::vector<std::vector<std::string>> named;
+      for (int l : trace) named.push_back(l == 0 ? std::vector<std::string>{} : std::vector<std::string>{kNames[std::countr_zero(static_cast<unsigned>(l))]});
+      ASSERT_EQ(holds_when_staying(f, named), expected);
+    }
+  }
+  EXPECT_GT(stop_and_stay, kFormulas / 3);
+  EXPECT_GT(accepted, stop_and_stay * kTraces / 10);
+  EXPECT_GT(rejected, stop_and_stay * kTraces / 10);
+}
+
+// For co-safe tasks the two readings agree when the formula has no X: a good prefix, with its last
+// letter repeated, satisfies the formula (stutter invariance gives the converse for the first good prefix).
+TEST(TranslateProperty, AGoodPrefixAlsoSatisfiesTheTaskWhenTheRobotStopsAndStays) {
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<int> letter(0, 3);
+  std::uniform_int_distribution<int> length(1, 8);
+  for (int i = 0; i < 200; ++i) {
+    const Formula f = random_formula(rng, 3);
+    const Dfa dfa = translate(f);
+    for (int t = 0; t < 200; ++t) {
+      std::vector<int> trace(static_cast<std::size_t>(length(rng)));
+      for (int& l : trace) l = kRegionLetters[letter(rng)];
+      if (!dfa_accepts(dfa, trace)) continue;
+      const std::vector<int> prefix(trace.begin(), trace.end() - 1);
+      ASSERT_TRUE(holds(f, prefix, {trace.back()}, 0)) << to_string(f);
+    }
+  }
 }
 
 }  // namespace

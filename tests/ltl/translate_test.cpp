@@ -98,8 +98,33 @@ TEST(Translate, UsesTheFormulasPropositionsAsAlphabetInOrder) {
   EXPECT_EQ(dfa_of("F(kitchen & F(hall | kitchen))").propositions, (std::vector<std::string>{"kitchen", "hall"}));
 }
 
-TEST(Translate, RefusesAFormulaOutsideTheCoSafeClass) {
-  EXPECT_THROW(dfa_of("G a"), NotCoSafeError);
+bool accepts(const Dfa& dfa, std::vector<std::vector<int>> trace) { return dfa.accepts(trace); }
+
+TEST(Translate, NeverGivesAStopAndStayAutomatonThatPrunesTheHazard) {
+  const Dfa dfa = dfa_of("G !hazard");
+  EXPECT_EQ(dfa.acceptance, Acceptance::kStopAndStay);
+  EXPECT_EQ(dfa.size(), 3u);  // start, safe so far, entered the hazard (dead)
+  EXPECT_TRUE(accepts(dfa, {{}, {}, {}}));
+  EXPECT_FALSE(accepts(dfa, {{}, {0}, {}}));
+}
+
+TEST(Translate, CoSafeTasksKeepTheGoodPrefixAutomaton) {
+  EXPECT_EQ(dfa_of("F(a & F b)").acceptance, Acceptance::kGoodPrefix);
+}
+
+TEST(Translate, EventuallyAlwaysAcceptsARunThatEndsInTheRegion) {
+  const Dfa dfa = dfa_of("F G home");
+  EXPECT_TRUE(accepts(dfa, {{}, {0}}));
+  EXPECT_FALSE(accepts(dfa, {{0}, {}}));
+  EXPECT_TRUE(accepts(dfa, {{0}, {}, {0}}));
+}
+
+TEST(Translate, AResponseLeavesNoRequestUnanswered) {
+  const Dfa dfa = dfa_of("G(a -> F b)");  // propositions a, b
+  EXPECT_TRUE(accepts(dfa, {{}, {}}));
+  EXPECT_FALSE(accepts(dfa, {{0}, {}}));
+  EXPECT_TRUE(accepts(dfa, {{0}, {}, {1}}));
+  EXPECT_FALSE(accepts(dfa, {{0}, {1}, {0}}));
 }
 
 }  // namespace

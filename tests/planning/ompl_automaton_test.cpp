@@ -16,7 +16,7 @@ namespace {
 TEST(OmplAutomaton, AgreesWithTheTaskAutomatonOnRandomRegionTraces) {
   const auto world = scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/scenarios/rooms.lua");
   for (const char* formula : {"F(p1 & F(p2 & F(p3 | p4)))", "F p1 & F p2 & !p3 U p4", "F(p2 & X F p1)"}) {
-    const TaskAutomaton task = TaskAutomaton::make(ltl::translate(ltl::parse(formula)), world);
+    const TaskAutomaton task = TaskAutomaton::make(ltl::parse(formula), world);
     const auto ompl_automaton = to_ompl_automaton(task);
     ASSERT_EQ(ompl_automaton->numStates(), task.dfa.size());
     std::mt19937 random(7);

@@ -121,7 +121,7 @@ TEST(Planner, GivesUpAtItsTimeLimitOnAnImpossibleTask) {
     if (b.name == "B4") b.mass = 1e4;
   }
   p.knowledge = knowledge::formulate(p.world);
-  const TaskAutomaton task = TaskAutomaton::make(ltl::translate(ltl::parse("F p4")), p.world);
+  const TaskAutomaton task = TaskAutomaton::make(ltl::parse("F p4"), p.world);
   PlannerOptions options;
   options.time_limit = 0.3;
   const PlanResult result = plan(p.world, task, p.knowledge, p.decomposition, options);
@@ -137,7 +137,7 @@ TEST(Planner, ATaskAlreadyLostAtTheStartHasNoLead) {
   for (const auto& region : p.world.regions) {
     if (region.name == "p2") p.world.robot.start = region.polygon.centroid();
   }
-  const TaskAutomaton task = TaskAutomaton::make(ltl::translate(ltl::parse("!p2 U p1")), p.world);
+  const TaskAutomaton task = TaskAutomaton::make(ltl::parse("!p2 U p1"), p.world);
   PlannerOptions options;
   options.time_limit = 5;
   const PlanResult result = plan(p.world, task, p.knowledge, p.decomposition, options);

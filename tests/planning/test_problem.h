@@ -30,9 +30,9 @@ struct TestProblem {
 
   TaskAutomaton make_task(bool simplified) const {
     const ltl::Formula phi = ltl::parse(world.task.formula);
-    if (!simplified) return TaskAutomaton::make(ltl::translate(phi), world);
+    if (!simplified) return TaskAutomaton::make(phi, world);
     const auto invalid = knowledge::evaluate_feasibility(knowledge).invalid_names();
-    return TaskAutomaton::make(ltl::translate(*ltl::simplify_semantically(phi, invalid).formula), world);
+    return TaskAutomaton::make(*ltl::simplify_semantically(phi, invalid).formula, world);
   }
 
   Problem problem() const { return {world, task, original, knowledge, decomposition}; }

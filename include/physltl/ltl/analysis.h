@@ -5,6 +5,7 @@
 #include "physltl/ltl/dfa.h"
 #include "physltl/ltl/formula.h"
 #include "physltl/ltl/simplify.h"
+#include "physltl/ltl/task_class.h"
 
 #include <iosfwd>
 #include <optional>
@@ -16,16 +17,22 @@ namespace physltl::ltl {
 
 struct Analysis {
   Formula input;
-  Formula normal_form;                     // positive normal form, co-safe
+  Formula normal_form;                     // positive normal form
+  TaskClass task_class = TaskClass::kCoSafe;  // of the task the planner gets (of the input when infeasible)
   std::vector<std::string> invalid;        // as given
   std::optional<Simplification> by_lists;  // the paper's Simplify, when `invalid` is not empty
   std::optional<Simplification> semantic;  // the planner's, when `invalid` is not empty
   std::optional<Dfa> dfa;                  // of the task the planner gets; empty when infeasible
+  // Set when no run can satisfy the task because the robot is in at most one region at a time (the
+  // propositions are disjoint regions), found on the automaton without any search: why, for people.
+  std::optional<std::string> unsatisfiable;
 
-  bool feasible() const { return !semantic || semantic->feasible(); }
+  bool feasible() const { return (!semantic || semantic->feasible()) && !unsatisfiable; }
+  // Why the task is infeasible; empty when it is feasible.
+  std::string infeasibility() const;
 };
 
-// Throws ParseError for a syntax error and NotCoSafeError for a formula outside the class.
+// Any LTL formula over propositions that are disjoint regions. Throws ParseError for a syntax error.
 Analysis analyse(std::string_view text, std::span<const std::string> invalid);
 
 // Human-readable lines: input, normal form, class, simplifications, automaton size.

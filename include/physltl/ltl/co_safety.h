@@ -1,6 +1,7 @@
 #pragma once
-// The syntactically co-safe class: the formulas the planner can take, because every run that
-// satisfies them does so after a finite prefix (a good prefix the search can stop at).
+// The syntactically co-safe class: the formulas every run of which that satisfies them does so after a
+// finite prefix (a good prefix the search can stop at). Other tasks are read as "stop and stay"
+// (task_class.h).
 //
 // In positive normal form such a formula uses only literals, true, false, &, |, X, F, U and M; `<->` and
 // `^` are accepted between operands made of literals, constants, &, |, X and themselves (their negations
@@ -11,7 +12,6 @@
 
 #include <cstdint>
 #include <optional>
-#include <stdexcept>
 #include <string>
 
 namespace physltl::ltl {
@@ -25,17 +25,5 @@ struct CoSafetyViolation {
 };
 
 std::optional<CoSafetyViolation> find_co_safety_violation(const Formula& pnf);
-
-class NotCoSafeError : public std::runtime_error {
- public:
-  explicit NotCoSafeError(const CoSafetyViolation& v);
-  const CoSafetyViolation& violation() const { return violation_; }
-
- private:
-  CoSafetyViolation violation_;
-};
-
-// The positive normal form of `f`, or NotCoSafeError.
-Formula require_co_safe(const Formula& f);
 
 }  // namespace physltl::ltl

@@ -34,7 +34,14 @@ struct Edge {
   Condition condition;
 };
 
+// What an accepting state says about the finite trace that reached it (docs/ltl.md).
+enum class Acceptance {
+  kGoodPrefix,   // co-safe tasks: every infinite continuation of the trace satisfies the formula
+  kStopAndStay,  // other tasks: the trace followed by its last letter forever satisfies the formula
+};
+
 struct Dfa {
+  Acceptance acceptance = Acceptance::kGoodPrefix;
   std::vector<std::string> propositions;  // the alphabet's atomic propositions, by index
   int start = 0;
   std::vector<bool> accepting;            // per state

@@ -22,17 +22,23 @@ struct Replay {
 
   bool reproduces_plan = false;  // every state after a control equals the planned one, bit for bit
   bool valid = false;            // every step passes the validity rules of the mode it was planned in
-  bool accepted = false;         // the region trace is a good prefix of the formula
+  // The region trace satisfies the formula as written, by direct LTL semantics on the trace followed by
+  // its last region forever (ltl::holds_when_staying); a co-safe task's trace must also be a good prefix.
+  bool accepted = false;
+  // A task read as "stop and stay" ends with the robot and every box at rest; true for co-safe tasks.
+  bool ends_at_rest = false;
   // Every control's set-point and step count lie within the robot's and the planner's bounds, the drive
   // never applied more than max_force, and at every step the robot kept max_speed (and max_turn_rate).
   bool within_limits = false;
   double peak_speed = 0.0;       // m/s, the robot's fastest step
   std::string failure;           // why not, for people; empty when validated
-  bool validated() const { return reproduces_plan && valid && accepted && within_limits; }
+  bool validated() const { return reproduces_plan && valid && accepted && within_limits && ends_at_rest; }
 };
 
 // Replays `plan` and checks it against `formula` (the task as written, not the simplified one the search
-// used) and against the validity rules of `mode`.
+// used) and against the validity rules of `mode`. The automaton of `formula` only labels the trace for
+// pictures and, for a co-safe task, says whether it is a good prefix; the verdict on the formula comes
+// from its semantics.
 Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomaton& formula,
               const knowledge::AbstractKnowledge& knowledge, knowledge::ValidityMode mode);
 

@@ -3,6 +3,7 @@
 // how regions of the World map to its propositions.
 
 #include "physltl/ltl/dfa.h"
+#include "physltl/ltl/formula.h"
 #include "physltl/scenario/world.h"
 
 #include <vector>
@@ -10,6 +11,7 @@
 namespace physltl::planning {
 
 struct TaskAutomaton {
+  ltl::Formula formula;  // the task the automaton was made from
   ltl::Dfa dfa;
   // For each World region, the index of its proposition in dfa.propositions, or -1 when the formula
   // does not mention it (the region then reads as the paper's p0).
@@ -18,7 +20,10 @@ struct TaskAutomaton {
   // and for every edge of its lead search. Indexed [state * (regions + 1) + region + 1].
   std::vector<int> successors;
 
-  static TaskAutomaton make(const ltl::Dfa& dfa, const scenario::World& world);
+  static TaskAutomaton make(const ltl::Formula& formula, const ltl::Dfa& dfa, const scenario::World& world);
+  static TaskAutomaton make(const ltl::Formula& formula, const scenario::World& world);  // translates it
+  // Whether a plan must end with the robot and the boxes at rest: tasks read as "stop and stay".
+  bool ends_at_rest() const { return dfa.acceptance == ltl::Acceptance::kStopAndStay; }
   // The automaton's state after it reads the region the robot is in (-1: no region).
   int step(int state, int region) const;
 };

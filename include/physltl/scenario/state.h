@@ -9,6 +9,9 @@
 
 namespace physltl::scenario {
 
+// A body slower than this is at rest (m/s, and rad/s for turning): the physics stops boxes below it.
+inline constexpr double kRestSpeed = 1e-4;
+
 struct EnvironmentState {
   Vec2 robot_position = Vec2::Zero();
   Vec2 robot_velocity = Vec2::Zero();
@@ -19,6 +22,8 @@ struct EnvironmentState {
 
   // The state a World starts in: robot at its start, bodies where the script put them, all at rest.
   static EnvironmentState initial(const World& world);
+  // The robot below kRestSpeed (moving and turning) and every box stopped.
+  bool at_rest() const;
 };
 
 // A contact of the robot with a body during one physics step.

@@ -1,7 +1,0 @@
--- expect: 7: is not a co-safe formula: G at column 1
-workspace { bounds = { { 0, 0 }, { 10, 10 } } }
-robot { radius = 0.25, start = { 1, 1 } }
-fixed { name = "wall", center = { 5, 5 }, size = { 1, 4 } }
-movable { name = "B1", center = { 3, 3 }, size = { 0.5, 0.5 } }
-region { name = "p1", rect = { { 7, 7 }, { 8, 8 } } }
-task { formula = "G F p1" }
