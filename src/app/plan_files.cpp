@@ -39,6 +39,7 @@ json report_json(const RunSummary& run) {
       {"invalid_propositions", invalid},
       {"invalid_reasons", reasons},
       {"automaton_states", reasoning.task.dfa ? json(reasoning.task.dfa->size()) : json(nullptr)},
+      {"task_class", ltl::class_name(reasoning.task.task_class)},
       {"solved", r.solved && run.replay != nullptr && run.replay->validated()},
       {"validated", run.replay != nullptr && run.replay->validated()},
       {"stop_reason", r.stop_reason},
@@ -54,6 +55,7 @@ json report_json(const RunSummary& run) {
         {"valid_states", run.replay->valid},
         {"satisfies_formula", run.replay->accepted},
         {"within_limits", run.replay->within_limits},
+        {"ends_at_rest", run.replay->ends_at_rest},
         {"peak_speed", run.replay->peak_speed},
         {"failure", run.replay->failure.empty() ? json(nullptr) : json(run.replay->failure)},
     };

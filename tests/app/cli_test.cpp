@@ -67,6 +67,31 @@ TEST(Cli, CheckOfAWorldWhoseOnlyGoalIsEnclosedExitsOneAfterTheReport) {
   EXPECT_EQ(j["invalid_propositions"], nlohmann::json::array({"goal"}));
 }
 
+TEST(Cli, CheckNamesTheTaskClassAndRefusesATaskNoRunCanSatisfy) {
+  const std::string scenario = kSource + "/scenarios/avoid.lua";
+  const Result ok = run("check " + scenario + " --json --no-preview");
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_EQ(nlohmann::json::parse(ok.out)["task_class"], "co-safe and safety");
+  const Result both = run("check " + scenario + " --set \"task=F G goal & F G hazard\" --no-preview");
+  EXPECT_EQ(both.exit_code, 1) << both.err;
+  EXPECT_NE(both.out.find("infeasible no run satisfies it: the robot is in at most one region at a time"),
+            std::string::npos) << both.out;
+  const Result json = run("check " + scenario + " --set \"task=F G goal & F G hazard\" --json --no-preview");
+  const auto j = nlohmann::json::parse(json.out);
+  EXPECT_EQ(j["feasible"], false);
+  EXPECT_NE(j["infeasible_reason"].get<std::string>().find("stops and stays"), std::string::npos);
+}
+
+TEST(Cli, LtlTakesAlwaysAndNeverAndSaysHowAPlanSatisfiesThem) {
+  const Result r = run("ltl \"F goal & G !hazard\"");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("class:       co-safe and safety"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("stopping and staying"), std::string::npos) << r.out;
+  const Result hoa = run("ltl \"G !hazard\" --hoa");
+  EXPECT_EQ(hoa.exit_code, 2);
+  EXPECT_NE(hoa.err.find("--hoa writes co-safe tasks only"), std::string::npos) << hoa.err;
+}
+
 TEST(Cli, CheckWritesPreviewPngAtTheScenariosRenderSize) {
   const fs::path out = fresh_out_dir();
   const Result r = run("check " + kSource + "/scenarios/ordered.lua --out " + out.string());

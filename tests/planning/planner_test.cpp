@@ -104,6 +104,56 @@ TEST(Planner, ADifferentialRobotSolvesRoomsTurningWithinItsLimits) {
   EXPECT_TRUE(turned);
 }
 
+// "F goal & G !hazard": the search never grows into the hazard (its automaton state is dead), and the
+// plan brakes so that the robot stays in the goal.
+TEST(Planner, ANeverTaskKeepsOutOfTheHazardAndEndsAtRestInTheGoal) {
+  const TestProblem p("avoid.lua");
+  ASSERT_TRUE(p.task.ends_at_rest());
+  for (std::uint64_t seed : {1, 2, 3}) {
+    const PlanResult result = p.solve(seed);
+    ASSERT_TRUE(result.solved) << result.stop_reason;
+    const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+    ASSERT_TRUE(r.validated()) << r.failure;
+    const std::vector<std::string> names = region_names(p.world, r.region_trace);
+    EXPECT_EQ(std::ranges::count(names, "hazard"), 0);
+    EXPECT_EQ(names.back(), "goal");
+    EXPECT_TRUE(r.states.back().at_rest());
+    EXPECT_EQ(result.plan.controls.back().setpoint, Vec2::Zero());  // the braking segment
+  }
+}
+
+TEST(Replay, AStopAndStayPlanCutBeforeItsBrakingIsRejected) {
+  const TestProblem p("avoid.lua");
+  PlanResult result = p.solve(1);
+  ASSERT_TRUE(result.solved);
+  result.plan.controls.pop_back();
+  result.plan.states.pop_back();
+  const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+  EXPECT_TRUE(r.accepted);  // it did reach the goal without entering the hazard
+  EXPECT_FALSE(r.ends_at_rest);
+  EXPECT_FALSE(r.validated());
+  EXPECT_EQ(r.failure, "the plan does not end with the robot and the boxes at rest");
+}
+
+// The replay judges the formula by its semantics, not by the automaton it was given.
+TEST(Replay, AStopAndStayTraceThatEntersTheHazardIsRejected) {
+  const TestProblem p("avoid.lua");
+  const TaskAutomaton reach_only = TaskAutomaton::make(ltl::parse("F goal"), p.world);
+  const PlanResult result = plan(p.world, reach_only, p.knowledge, p.decomposition, [] {
+    PlannerOptions o;
+    o.seed = 4;
+    o.time_limit = 20;
+    return o;
+  }());
+  ASSERT_TRUE(result.solved);
+  const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+  const std::vector<std::string> names = region_names(p.world, r.region_trace);
+  ASSERT_GT(std::ranges::count(names, "hazard"), 0);  // straight through: nothing kept it out
+  EXPECT_EQ(names.back(), "goal");
+  EXPECT_FALSE(r.accepted);
+  EXPECT_FALSE(r.validated());
+}
+
 TEST(Replay, AnEmptyPlanDoesNotSatisfyAVisitTask) {
   const TestProblem p("ordered.lua");
   const Replay r = replay(p.world, Plan{}, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
