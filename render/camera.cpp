@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace physltl::render {
@@ -66,6 +67,32 @@ CameraView top_view(const geometry::Rect& bounds, double top_height, int width, 
   return view;
 }
 
+// Moves the projected workspace box to the middle of the picture and, with `fill`, scales it to fill the
+// margin along the tighter side: an off-axis view of the same camera, like cropping its film.
+void frame_workspace(CameraView& view, const geometry::Rect& bounds, double top_height, bool fill) {
+  Eigen::Vector2f low = Eigen::Vector2f::Constant(std::numeric_limits<float>::max());
+  Eigen::Vector2f high = -low;
+  for (double x : {bounds.min.x(), bounds.max.x()}) {
+    for (double y : {bounds.min.y(), bounds.max.y()}) {
+      for (double z : {0.0, top_height}) {
+        const Eigen::Vector4f clip = view.view_projection * Eigen::Vector4f(static_cast<float>(x), static_cast<float>(y),
+                                                                            static_cast<float>(z), 1.0f);
+        const Eigen::Vector2f ndc = clip.head<2>() / clip.w();
+        low = low.cwiseMin(ndc);
+        high = high.cwiseMax(ndc);
+      }
+    }
+  }
+  const Eigen::Vector2f centre = 0.5f * (low + high);
+  const float scale = fill ? 2 * kMargin / (high - low).maxCoeff() : 1.0f;
+  Matrix4f crop = Matrix4f::Identity();  // ndc' = scale * (ndc - centre), depth unchanged
+  crop(0, 0) = crop(1, 1) = scale;
+  crop(0, 3) = -scale * centre.x();
+  crop(1, 3) = -scale * centre.y();
+  view.view_projection = crop * view.view_projection;
+  view.metres_per_pixel /= scale;
+}
+
 CameraView perspective_view(const scenario::World& world, double top_height, int width, int height) {
   const scenario::Camera& camera = world.render.camera;
   const float aspect = static_cast<float>(width) / height;
@@ -75,7 +102,9 @@ CameraView perspective_view(const scenario::World& world, double top_height, int
   const Vector3f forward = -towards_camera;
   const Vector3f right = forward.cross(Vector3f::UnitZ()).normalized();
   const Vector3f up = right.cross(forward);
-  const Vector3f target(static_cast<float>(camera.target.x()), static_cast<float>(camera.target.y()), 0.0f);
+  const geometry::Rect& bounds = world.workspace.bounds;
+  const geometry::Vec2 aim = camera.target.value_or(geometry::Vec2(0.5 * (bounds.min + bounds.max)));
+  const Vector3f target(static_cast<float>(aim.x()), static_cast<float>(aim.y()), 0.0f);
   const float tan_y = std::tan(radians(camera.fov_deg) / 2), tan_x = tan_y * aspect;
 
   float distance = static_cast<float>(camera.distance);
@@ -102,6 +131,10 @@ CameraView perspective_view(const scenario::World& world, double top_height, int
   view.view_projection = perspective(radians(camera.fov_deg), aspect, near, far) * look_at(eye, forward, right, up);
   view.metres_per_pixel = 2 * distance * tan_y / height;
   view.towards_camera = towards_camera;
+  // Perspective draws the near side larger than the far one, so a picture aimed at the workspace's centre
+  // shows the workspace off centre. Unless the author chose the target (or the distance), shift (and
+  // scale) the image plane so that the projected workspace is centred (and fills the frame's margin).
+  if (!camera.target) frame_workspace(view, world.workspace.bounds, top_height, camera.distance <= 0);
   return view;
 }
 

@@ -139,7 +139,7 @@ void read_render(TableReader& r, RenderSettings& s) {
   s.height = r.integer("height", s.height);
   s.fps = r.integer("fps", s.fps);
   if (auto c = r.nested("camera")) {
-    s.camera.target = c->point("target", s.camera.target);
+    if (c->has("target")) s.camera.target = c->point("target");
     s.camera.distance = c->number("distance", s.camera.distance);
     s.camera.elevation_deg = c->number("elevation_deg", s.camera.elevation_deg);
     s.camera.azimuth_deg = c->number("azimuth_deg", s.camera.azimuth_deg);

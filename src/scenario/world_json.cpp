@@ -88,7 +88,7 @@ nlohmann::ordered_json to_json(const World& world) {
         {"height", rs.height},
         {"fps", rs.fps},
         {"camera",
-         {{"target", point(rs.camera.target)},
+         {{"target", rs.camera.target ? point(*rs.camera.target) : nlohmann::ordered_json(nullptr)},
           {"distance", rs.camera.distance},
           {"elevation_deg", rs.camera.elevation_deg},
           {"azimuth_deg", rs.camera.azimuth_deg},

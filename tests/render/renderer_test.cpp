@@ -7,7 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
+#include <string>
+#include <utility>
 
 namespace physltl::render {
 namespace {
@@ -57,6 +60,72 @@ TEST(RendererGolden, DifferentialRobotShowsItsHeading) {
   state.robot_yaw = 0.5;  // rad, up and to the right
   Renderer renderer(world, kGoldenWidth, kGoldenHeight);
   EXPECT_TRUE(matches_golden(renderer.draw(state, Overlay{}, View::kTop), "differential_robot_heading"));
+}
+
+scenario::World off_origin_world() {
+  return scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/tests/render/data/off_origin.lua");
+}
+
+TEST(RendererGolden, OffOriginPreview) {
+  const scenario::World world = off_origin_world();
+  Overlay overlay;
+  overlay.legend = {world.task.formula};
+  EXPECT_TRUE(matches_golden(draw(world, overlay, View::kPerspective), "off_origin_preview"));
+}
+
+TEST(RendererGolden, OffOriginTreeFromAbove) {
+  const scenario::World world = off_origin_world();
+  Overlay overlay;
+  const Color colour{0.35f, 0.45f, 0.75f};
+  Vec2 previous(1, 1);
+  for (int i = 1; i <= 12; ++i) {  // a fan of segments from the start towards the doorway and beyond
+    const Vec2 next(1 + 0.6 * i, 1 + 0.45 * i);
+    overlay.segments.push_back({previous, next, colour});
+    overlay.segments.push_back({previous, {next.x(), 1.0}, colour});
+    previous = next;
+  }
+  overlay.path = {{1, 1}, {4.5, 6.5}, {8.8, 6.8}};
+  overlay.legend = {"search tree"};
+  EXPECT_TRUE(matches_golden(draw(world, overlay, View::kTop), "off_origin_tree"));
+}
+
+// The pixels that differ from the picture's corner, which is background in every framed picture.
+struct DrawnBox {
+  int left, top, right, bottom;
+};
+DrawnBox drawn_box(const Image& image) {
+  DrawnBox box{image.width, image.height, -1, -1};
+  const std::uint8_t* corner = image.rgb.data();
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.rgb.data() + 3 * (static_cast<std::size_t>(y) * image.width + x);
+      if (std::abs(p[0] - corner[0]) + std::abs(p[1] - corner[1]) + std::abs(p[2] - corner[2]) < 12) continue;
+      box = {std::min(box.left, x), std::min(box.top, y), std::max(box.right, x), std::max(box.bottom, y)};
+    }
+  }
+  return box;
+}
+
+// Whatever the workspace's place and shape, the default camera shows all of it, centred, filling most of
+// the frame along its tighter side.
+TEST(Renderer, TheDefaultCameraFramesAnyWorkspaceCentred) {
+  const std::pair<Vec2, Vec2> workspaces[] = {{{0, 0}, {10, 8}}, {{-1, 0}, {2, 14}}, {{-20, 30}, {20, 34}}};
+  for (const auto& [low, high] : workspaces) {
+    scenario::World world;
+    world.workspace.bounds = {low, high};
+    world.robot.start = 0.5 * (low + high);
+    for (View view : {View::kPerspective, View::kTop}) {
+      SCOPED_TRACE(testing::Message() << "workspace " << low.transpose() << " .. " << high.transpose()
+                                      << (view == View::kTop ? ", top" : ", perspective"));
+      const Image image = draw(world, Overlay{}, view);
+      const DrawnBox box = drawn_box(image);
+      ASSERT_GE(box.right, box.left);
+      const double width = box.right - box.left + 1, height = box.bottom - box.top + 1;
+      EXPECT_GE(std::max(width / image.width, height / image.height), 0.8);
+      EXPECT_LE(std::abs(0.5 * (box.left + box.right + 1) - 0.5 * image.width), 0.02 * image.width);
+      EXPECT_LE(std::abs(0.5 * (box.top + box.bottom + 1) - 0.5 * image.height), 0.02 * image.height);
+    }
+  }
 }
 
 TEST(Renderer, DrawsTheSameBytesTwice) {

@@ -86,8 +86,8 @@ struct PlannerSettings {
 };
 
 struct Camera {
-  Vec2 target = Vec2::Zero();
-  double distance = 0.0;  // 0: fit the workspace
+  std::optional<Vec2> target;  // unset: the workspace's centre, and the picture centred on the workspace
+  double distance = 0.0;       // 0: fit the workspace
   double elevation_deg = 55.0;
   double azimuth_deg = -90.0;
   double fov_deg = 45.0;
