@@ -17,8 +17,7 @@ workspace { bounds = { { 0, 0 }, { 8, 6 } }, floor_friction = 0.5 }
 robot { radius = 0.25, mass = 1.0, max_force = 20, max_speed = 1.0, start = { 1, 1 } }
 P.boundary { min = { 0, 0 }, max = { 8, 6 }, thickness = 0.2 }
 
-P.block { name = "divider_south", min = { 5.4, 0.2 }, max = { 5.6, 2.5 } }
-P.block { name = "divider_north", min = { 5.4, 3.5 }, max = { 5.6, 5.8 } }
+P.wall_with_doors_y { name = "divider", x0 = 5.4, x1 = 5.6, y0 = 0.2, y1 = 5.8, doors = { { 2.5, 3.5 } } }
 P.box { name = "B1", at = { 5.5, 3.0 }, size = { 0.4, 0.9 }, mass = 0.5 }
 
 P.area("p1", { 0.6, 4.4 }, { 1.6, 5.4 })

@@ -86,7 +86,19 @@ TEST_F(Sandbox, MemoryCapStopsAHugeTable) {
   EXPECT_NE(first_message(path, options).find("memory limit of 8 MiB exceeded"), std::string::npos);
 }
 
-TEST_F(Sandbox, HelpersAreRequiredFromTheLuaFolderOnly) {
+// Variants of a world share its file: `require` finds a module beside the scenario after the helpers.
+TEST_F(Sandbox, AScenarioRequiresAModuleBesideItAfterTheHelpers) {
+  const std::string shared = write(minimal_world("region { name = 'shared', rect = { { 5, 5 }, { 6, 6 } } }\n"));
+  const std::string stem = std::filesystem::path(shared).stem().string();
+  const auto variant = std::filesystem::path(shared).parent_path() / "variant.lua";
+  std::ofstream(variant) << "params.anything = 1\nrequire '" << stem << "'\n";
+  const World world = load_scenario(variant.string());
+  ASSERT_EQ(world.regions.size(), 1u);
+  EXPECT_EQ(world.regions[0].name, "shared");
+  EXPECT_EQ(world.regions[0].where.file, shared);  // the line is the shared file's
+}
+
+TEST_F(Sandbox, HelpersAreRequiredByModuleNameOnly) {
   EXPECT_EQ(load_scenario(write(minimal_world("local P = require 'physltl'\nP.box { name = 'B', at = { 3, 3 } }\n")))
                 .movable_bodies.size(),
             1u);

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <stdexcept>
 
 namespace physltl::scenario {
 namespace {
@@ -83,6 +85,72 @@ TEST(ScenarioFiles, OrderedHasBoxesOnP1AndP3) {
   EXPECT_EQ(w.task.formula, "F(p1 & F(p3 & F(p2 & F p4)))");
   EXPECT_TRUE(region(w, "p1").polygon.contains(movable(w, "B1").footprint.pose.position));
   EXPECT_TRUE(region(w, "p3").polygon.contains(movable(w, "B2").footprint.pose.position));
+}
+
+World world_from(const std::string& name, const std::string& lua) {
+  const auto dir = std::filesystem::path(PHYSLTL_TEST_OUTPUT_DIR) / "helpers";
+  std::filesystem::create_directories(dir);
+  const auto path = dir / (name + ".lua");
+  std::ofstream(path) << "local P = require 'physltl'\n"
+                         "workspace { bounds = { { 0, 0 }, { 12, 10 } } }\n"
+                         "robot { start = { 6, 5 } }\n"
+                         "task { formula = 'F true' }\n"
+                      << lua;
+  return load_scenario(path.string());
+}
+
+const FixedBody& fixed_named(const World& world, const std::string& name) {
+  for (const FixedBody& f : world.fixed_bodies) {
+    if (f.name == name) return f;
+  }
+  throw std::runtime_error("no fixed body " + name);
+}
+
+geometry::Rect bounds_of(const FixedBody& f) {
+  return {f.footprint.pose.position - f.footprint.half_extents, f.footprint.pose.position + f.footprint.half_extents};
+}
+
+TEST(ScenarioHelpers, ARoomHasFourWallsAndDoorwaysOnAnySide) {
+  const World world = world_from("room", "P.room { name = 'lab', min = { 1, 1 }, max = { 11, 9 }, thickness = 0.2,\n"
+                                         "  doors = { north = { { 3, 4 }, { 7, 8 } }, west = { { 4, 5 } } } }\n");
+  std::vector<std::string> names;
+  for (const FixedBody& f : world.fixed_bodies) names.push_back(f.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"lab_south", "lab_north_1", "lab_north_2", "lab_north_3", "lab_west_1",
+                                             "lab_west_2", "lab_east"}));
+  EXPECT_TRUE(bounds_of(fixed_named(world, "lab_south")).min.isApprox(Vec2(1, 1)));
+  EXPECT_TRUE(bounds_of(fixed_named(world, "lab_south")).max.isApprox(Vec2(11, 1.2)));
+  EXPECT_TRUE(bounds_of(fixed_named(world, "lab_north_2")).min.isApprox(Vec2(4, 8.8)));
+  EXPECT_TRUE(bounds_of(fixed_named(world, "lab_north_2")).max.isApprox(Vec2(7, 9)));
+  EXPECT_TRUE(bounds_of(fixed_named(world, "lab_west_1")).min.isApprox(Vec2(1, 1.2)));
+  EXPECT_TRUE(bounds_of(fixed_named(world, "lab_west_1")).max.isApprox(Vec2(1.2, 4)));
+  EXPECT_TRUE(bounds_of(fixed_named(world, "lab_east")).max.isApprox(Vec2(11, 8.8)));
+}
+
+TEST(ScenarioHelpers, AVerticalWallWithDoorsLeavesItsDoorwaysOpen) {
+  const World world = world_from("wall_y", "P.wall_with_doors_y { name = 'divider', x0 = 8.9, x1 = 9.1, y0 = 0, y1 = 10,\n"
+                                           "  doors = { { 6, 7 }, { 2, 3 } } }\n");
+  ASSERT_EQ(world.fixed_bodies.size(), 3u);
+  EXPECT_TRUE(bounds_of(fixed_named(world, "divider_1")).max.isApprox(Vec2(9.1, 2)));
+  EXPECT_TRUE(bounds_of(fixed_named(world, "divider_2")).min.isApprox(Vec2(8.9, 3)));
+  EXPECT_TRUE(bounds_of(fixed_named(world, "divider_2")).max.isApprox(Vec2(9.1, 6)));
+  EXPECT_TRUE(bounds_of(fixed_named(world, "divider_3")).min.isApprox(Vec2(8.9, 7)));
+}
+
+TEST(ScenarioHelpers, AMisplacedDoorwayNamesTheAuthorsLine) {
+  try {
+    world_from("bad_door", "\nP.room { min = { 1, 1 }, max = { 11, 9 }, doors = { south = { { 10, 13 } } } }\n");
+    FAIL();
+  } catch (const ScenarioError& e) {
+    EXPECT_EQ(e.diagnostics().front().where.line, 6) << e.what();
+    EXPECT_NE(std::string(e.what()).find("room south: doorway out of order or outside the wall"), std::string::npos) << e.what();
+  }
+  try {
+    world_from("bad_side", "P.room { min = { 1, 1 }, max = { 11, 9 }, doors = { up = { { 3, 4 } } } }\n");
+    FAIL();
+  } catch (const ScenarioError& e) {
+    EXPECT_EQ(e.diagnostics().front().where.line, 5) << e.what();
+    EXPECT_NE(std::string(e.what()).find("not 'up'"), std::string::npos) << e.what();
+  }
 }
 
 TEST(ScenarioFiles, ElementsKeepTheLineOfTheAuthorsCallEvenThroughHelpers) {
