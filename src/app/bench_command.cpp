@@ -36,6 +36,7 @@ struct BenchArgs {
   std::optional<std::string> sweep;  // key=v1,v2,...
   std::string log_file;
   std::string out_dir = "out/bench";
+  bool quiet = false;
 };
 
 BenchRun measure(const PreparedRun& prepared, const SolveOptions& options) {
@@ -195,7 +196,10 @@ int bench(const BenchArgs& args) {
   for (auto& c : cases) c->results.first_seed = first_seed;
 
   StopSignal stop;
-  const bool show_progress = isatty(STDERR_FILENO);
+  const bool show_progress = !args.quiet && isatty(STDERR_FILENO);
+  // --quiet prints only errors; the files are written all the same.
+  std::ostringstream silenced;
+  std::ostream& out_text = args.quiet ? silenced : std::cout;
   // Interleaved (seed S: knowledge, baseline, each thread count, each swept value; then seed S+1, ...) so
   // that drift in the machine's speed hits every configuration alike.
   for (int i = 0; i < args.runs; ++i) {
@@ -229,7 +233,7 @@ int bench(const BenchArgs& args) {
   std::vector<std::string> written;
   std::vector<std::unique_ptr<OutputFolder>> folders;
   for (const auto& c : cases) {
-    std::cout << bench_table(c->results);
+    out_text << bench_table(c->results);
     auto& out = folders.emplace_back(std::make_unique<OutputFolder>(
         std::filesystem::path(args.out_dir) / folder_name(c->world.name, c->results.settings)));
     write_bench_json(out->path() / "bench.json", bench_json(c->results));
@@ -238,7 +242,7 @@ int bench(const BenchArgs& args) {
   if (sweep) {
     Sweep result{sweep->key, args.scenario.settings, {}};
     for (const auto& c : cases) result.points.push_back({c->swept_value, c->results});
-    std::cout << sweep_table(result);
+    out_text << sweep_table(result);
     std::vector<std::string> folder_settings = args.scenario.settings;
     folder_settings.push_back("sweep=" + sweep->key);
     auto& out = folders.emplace_back(std::make_unique<OutputFolder>(
@@ -256,7 +260,7 @@ int bench(const BenchArgs& args) {
   }
   for (auto& out : folders) out->commit();
   logs.commit();
-  std::cout << "outputs    " << fmt::format("{}", fmt::join(written, ", ")) << "\n";
+  out_text << "outputs    " << fmt::format("{}", fmt::join(written, ", ")) << "\n";
   return kExitOk;
 }
 
@@ -281,6 +285,7 @@ CommandRunner add_bench_command(CLI::App& app) {
                  "interleaved; reports how the time grows");
   app.add_option("--log", args->log_file, "Also write an OMPL benchmark log (for ompl_benchmark_statistics.py)");
   app.add_option("--out", args->out_dir, "Folder for outputs; writes <out>/<scenario>/bench.json")->capture_default_str();
+  app.add_flag("--quiet", args->quiet, "Print only errors (no progress, no table); the files are written");
   return [args] { return bench(*args); };
 }
 

@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -121,9 +122,11 @@ int run(const RunArgs& args) {
   if (args.render) {
     write_tree_picture(world, prepared.decomposition(), result, &replay, out.path() / "tree.png");
     const int automaton_states = static_cast<int>(prepared.as_written().dfa.size());
+    const auto frames_started = std::chrono::steady_clock::now();
     const int frames = write_plan_frames(world, reasoning, replay, automaton_states, out.path() / "frames",
                                          [&](int done, int total) {
-      progress.show(fmt::format("frames {}/{}", done, total));
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - frames_started).count();
+      progress.show(fmt::format("frames {}/{}, {:.0f} s left", done, total, elapsed / done * (total - done)));
     });
     progress.show("encoding plan.mp4 ...");
     const auto video = render::encode_video(out.path() / "frames", world.render.fps, out.path() / "plan.mp4");

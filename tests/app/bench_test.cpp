@@ -50,6 +50,14 @@ TEST(Bench, WithoutCompareRunsOnlyTheKnowledgePlanner) {
   EXPECT_EQ(r.out.find("baseline"), std::string::npos);
 }
 
+TEST(Bench, QuietPrintsNothingAndStillWritesTheResults) {
+  const fs::path out = fresh_out_dir();
+  const Result r = run("bench " + kSource + "/scenarios/ordered.lua --runs 1 --quiet --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(nlohmann::json::parse(slurp(out / "ordered" / "bench.json"))["runs"], 1);
+}
+
 TEST(Bench, SeveralThreadCountsAreMeasuredOnTheSameSeedsWithTheSamePlans) {
   const fs::path out = fresh_out_dir();
   const Result r = run("bench " + kSource + "/scenarios/ordered.lua --runs 2 --threads 1,2 --out " + out.string());
