@@ -2,6 +2,7 @@
 
 #include "triangulate.h"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -53,10 +54,18 @@ void FlatGeometry::polyline(const std::vector<Vec2>& points, double width, const
 
 void FlatGeometry::disc(const Vec2& centre, double radius, const Color& color) {
   constexpr int kSides = 12;
+  // The polygon's corners on the unit circle, computed once: a path has a disc at every physics step.
+  static const std::array<Vec2, kSides + 1> corners = [] {
+    std::array<Vec2, kSides + 1> c;
+    for (int i = 0; i <= kSides; ++i) {
+      const double a = 2 * std::numbers::pi * i / kSides;
+      c[static_cast<std::size_t>(i)] = Vec2(std::cos(a), std::sin(a));
+    }
+    return c;
+  }();
   for (int i = 0; i < kSides; ++i) {
-    const double a0 = 2 * std::numbers::pi * i / kSides, a1 = 2 * std::numbers::pi * (i + 1) / kSides;
-    triangle(centre, centre + radius * Vec2(std::cos(a0), std::sin(a0)),
-             centre + radius * Vec2(std::cos(a1), std::sin(a1)), color);
+    triangle(centre, centre + radius * corners[static_cast<std::size_t>(i)],
+             centre + radius * corners[static_cast<std::size_t>(i) + 1], color);
   }
 }
 

@@ -17,7 +17,7 @@ namespace physltl::render {
 struct FrameWriter::Impl {
   struct Job {
     int index;
-    Image frame;
+    std::shared_ptr<const Image> frame;
   };
 
   std::filesystem::path folder;
@@ -43,7 +43,7 @@ struct FrameWriter::Impl {
       lock.unlock();
       std::exception_ptr failure;
       try {
-        write_png(job.frame, frame_path(folder, job.index));
+        write_png(*job.frame, frame_path(folder, job.index));
       } catch (...) {
         failure = std::current_exception();
       }
@@ -72,7 +72,9 @@ FrameWriter::~FrameWriter() {
   for (std::thread& worker : impl_->workers) worker.join();
 }
 
-void FrameWriter::add(Image frame) {
+void FrameWriter::add(Image frame) { add(std::make_shared<const Image>(std::move(frame))); }
+
+void FrameWriter::add(std::shared_ptr<const Image> frame) {
   std::unique_lock lock(impl_->mutex);
   impl_->changed.wait(lock, [&] { return impl_->queue.size() < impl_->max_queued; });
   impl_->queue.push_back({impl_->added++, std::move(frame)});

@@ -84,4 +84,47 @@ void GlMesh::draw(GLenum mode) const {
   glDrawArrays(mode, 0, vertices_);
 }
 
+GlFramebuffer::GlFramebuffer(int width, int height) : width_(width), height_(height) {
+  glGenTextures(1, &color_);
+  glBindTexture(GL_TEXTURE_2D, color_);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glGenTextures(1, &depth_);
+  glBindTexture(GL_TEXTURE_2D, depth_);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, width, height, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
+  for (GLuint texture : {color_, depth_}) {
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+  glGenFramebuffers(1, &fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_, 0);
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    release();
+    throw std::runtime_error("the OpenGL driver cannot make a " + std::to_string(width) + "x" + std::to_string(height) +
+                             " framebuffer (status " + std::to_string(status) + ")");
+  }
+}
+
+GlFramebuffer::~GlFramebuffer() { release(); }
+
+void GlFramebuffer::release() {
+  glDeleteFramebuffers(1, &fbo_);
+  glDeleteTextures(1, &color_);
+  glDeleteTextures(1, &depth_);
+  fbo_ = color_ = depth_ = 0;
+}
+
+void copy_framebuffer(GLuint from, int from_width, int from_height, GLuint to, int to_width, int to_height,
+                      GLbitfield mask, GLenum filter) {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, from);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
+  glBlitFramebuffer(0, 0, from_width, from_height, 0, 0, to_width, to_height, mask, filter);
+  const GLenum error = glGetError();
+  if (error != GL_NO_ERROR) throw std::runtime_error("OpenGL refused to copy a framebuffer (error " + std::to_string(error) + ")");
+}
+
 }  // namespace physltl::render

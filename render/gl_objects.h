@@ -41,4 +41,31 @@ class GlMesh {
   GLsizei vertices_ = 0;
 };
 
+// An offscreen framebuffer with an RGBA8 colour and a 24-bit depth texture.
+class GlFramebuffer {
+ public:
+  GlFramebuffer(int width, int height);  // throws when the driver cannot complete it
+  ~GlFramebuffer();
+  GlFramebuffer(const GlFramebuffer&) = delete;
+  GlFramebuffer& operator=(const GlFramebuffer&) = delete;
+
+  GLuint id() const { return fbo_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ private:
+  void release();
+
+  GLuint fbo_ = 0;
+  GLuint color_ = 0;
+  GLuint depth_ = 0;
+  int width_;
+  int height_;
+};
+
+// Copies `mask` (GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT) from one framebuffer to the whole of another,
+// scaling with `filter`; throws when the driver refuses (e.g. depth formats that differ).
+void copy_framebuffer(GLuint from, int from_width, int from_height, GLuint to, int to_width, int to_height,
+                      GLbitfield mask, GLenum filter);
+
 }  // namespace physltl::render

@@ -1,9 +1,11 @@
-// Draw order (depth testing only for the bodies, everything else is painted in layers):
-//   floor, grid, decomposition, regions, mRegions -> drop shadows -> tree segments -> bodies (depth tested)
-//   -> solution path -> label and legend panels -> text.
-// Straight into the context's framebuffer: on llvmpipe a multisampled framebuffer object made every pass
-// several times slower (20 ms instead of 5 ms per 640x480 frame, with the resolve), so edges are not
-// multisampled; text is anti-aliased by its glyph coverage.
+// Two parts. What never changes while one camera looks at one World is drawn once, supersampled 2x2 and
+// averaged down, and kept with its depth: floor, grid, decomposition, regions, the fixed bodies' shadows, the
+// search tree's segments and the fixed bodies; the solution path is painted over it as it grows. Every
+// picture starts as a copy of it (colour and depth), then draws what moves:
+//   mRegions, shadows of the moving bodies (flat on the floor, depth tested so that walls in front hide
+//   them) -> movable boxes and the robot (depth tested) -> label and legend panels -> text.
+// So the static scene is anti-aliased at no cost per frame (multisampling every frame cost 4x on llvmpipe,
+// docs/rendering.md), and a frame costs what moves. Text is anti-aliased by its glyph coverage.
 
 #include "physltl/render/renderer.h"
 
@@ -18,7 +20,12 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
+#include <memory>
+#include <optional>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -39,6 +46,7 @@ constexpr double kPathWidth = 3.0;
 constexpr double kPathHaloWidth = 6.0;
 constexpr float kPanelPadding = 3.0f;
 constexpr float kShadowStrength = 0.5f;  // alpha of black at the shadow's centre
+constexpr int kSupersampling = 2;         // the static scene is drawn this many times larger each way
 
 Vector3f towards_light() { return Vector3f(-0.35f, -0.5f, 0.8f).normalized(); }
 
@@ -69,6 +77,15 @@ Matrix4f pixel_transform(int width, int height) {
   m(1, 1) = -2.0f / height;
   m(1, 3) = 1;
   return m;
+}
+
+// RGBA -> RGB for one row of `pixels`. GCC vectorises this byte loop into shuffles; word tricks were slower.
+void strip_alpha(const std::uint8_t* rgba, std::uint8_t* rgb, int pixels) {
+  for (int x = 0; x < pixels; ++x, rgba += 4, rgb += 3) {
+    rgb[0] = rgba[0];
+    rgb[1] = rgba[1];
+    rgb[2] = rgba[2];
+  }
 }
 
 void set_color(GLint location, const Color& c) { glUniform4f(location, c.r, c.g, c.b, c.a); }
@@ -121,9 +138,11 @@ struct Renderer::Impl {
   const TriangleMesh cube = unit_cube_mesh();
   const TriangleMesh sphere = unit_sphere_mesh(32, 16);
   GlMesh fixed_layer{3, 3, 4};  // the fixed bodies never move: built once
+  GlMesh static_floor_layer{3, 4};
+  GlMesh static_shadow_layer{3, 2, 4, 1};
+  GlMesh mregion_layer{3, 4};
   // One buffer per layer, all filled before the first draw call of a frame: refilling a buffer that queued
   // draw calls still read would make the driver finish those first.
-  GlMesh floor_layer{3, 4};
   GlMesh moving_layer{3, 3, 4};  // movable boxes and the robot
   GlMesh shadow_layer{3, 2, 4, 1};
   GlMesh segment_layer{3, 4};
@@ -133,6 +152,23 @@ struct Renderer::Impl {
 
   FontAtlas font;
   GLuint font_texture = 0;
+
+  // The static scene for one view: its picture and depth, and what it was drawn for. The travelled path
+  // is painted into it as it grows (frames of a plan extend it by a step or two each), so a frame does not
+  // draw the whole path again; moving bodies pass over it.
+  struct Background {
+    View view;
+    std::vector<std::array<Vec2, 3>> decomposition;
+    std::vector<SegmentOverlay> segments;
+    std::unique_ptr<GlFramebuffer> framebuffer;
+    std::vector<Vec2> path;  // the path painted so far
+  };
+  std::optional<Background> background;
+  // Every picture is drawn here, not into the context's own buffer: copying the background into a
+  // framebuffer of the very same formats is a plain memory copy for llvmpipe, and reading it back skips
+  // OSMesa's copy into its client buffer.
+  std::unique_ptr<GlFramebuffer> frame;
+  std::vector<std::uint8_t> rgba;  // read_frame's buffer, kept to avoid allocating every frame
 
   Impl(const scenario::World& w, std::unique_ptr<OffscreenContext> c)
       : world(w),
@@ -225,6 +261,11 @@ struct Renderer::Impl {
       paint.polygon(region.polygon, palette::kRegion);
       paint.outline(region.polygon, kEdgeWidth * metres_per_pixel, palette::kRegionEdge);
     }
+    return paint;
+  }
+
+  static FlatGeometry mregion_paint(const Overlay& overlay, double metres_per_pixel) {
+    FlatGeometry paint;
     for (const MRegionOverlay& m : overlay.mregions) {
       paint.polygon(m.polygon, m.active ? palette::kActiveMRegion : palette::kInactiveMRegion);
       paint.outline(m.polygon, kEdgeWidth * metres_per_pixel,
@@ -233,11 +274,16 @@ struct Renderer::Impl {
     return paint;
   }
 
-  ShadowGeometry shadows(const scenario::EnvironmentState& state) const {
+  ShadowGeometry fixed_shadows() const {
     ShadowGeometry result;
     for (const scenario::FixedBody& body : world.fixed_bodies) {
       result.add(body.footprint.pose, body.footprint.half_extents, 0.0, body.height);
     }
+    return result;
+  }
+
+  ShadowGeometry moving_shadows(const scenario::EnvironmentState& state) const {
+    ShadowGeometry result;
     for (std::size_t i = 0; i < world.movable_bodies.size(); ++i) {
       const geometry::OrientedBox footprint = scenario::footprint_at(world.movable_bodies[i], state.movable_poses[i]);
       result.add(footprint.pose, footprint.half_extents, 0.0, world.movable_bodies[i].height);
@@ -295,19 +341,102 @@ struct Renderer::Impl {
 
   void upload_layers(const scenario::EnvironmentState& state, const Overlay& overlay, const CameraView& view) {
     const double metres_per_pixel = view.metres_per_pixel;
-    upload(floor_layer, floor_paint(overlay, metres_per_pixel));
+    upload(mregion_layer, mregion_paint(overlay, metres_per_pixel));
     const std::vector<float> bodies = moving_bodies(state);
     moving_layer.upload(bodies.data(), bodies.size());
-    const ShadowGeometry shadow_geometry = shadows(state);
+    const ShadowGeometry shadow_geometry = moving_shadows(state);
     shadow_layer.upload(shadow_geometry.floats().data(), shadow_geometry.floats().size());
-    FlatGeometry segments;
-    for (const SegmentOverlay& s : overlay.segments) segments.line(s.from, s.to, kSegmentWidth * metres_per_pixel, s.color);
-    upload(segment_layer, segments);
-    FlatGeometry path;
-    path.polyline(overlay.path, kPathHaloWidth * metres_per_pixel, palette::kPathHalo);
-    path.polyline(overlay.path, kPathWidth * metres_per_pixel, palette::kPath);
-    upload(path_layer, path);
     upload_text(view, overlay);
+  }
+
+  void draw_shadows(const GlMesh& layer, const CameraView& view) {
+    shadow.use();
+    glUniformMatrix4fv(shadow.uniform("transform"), 1, GL_FALSE, view.view_projection.data());
+    layer.draw(GL_TRIANGLES);
+  }
+
+  void draw_lit(const GlMesh& layer, const CameraView& view) {
+    lit.use();
+    glUniformMatrix4fv(lit.uniform("view_projection"), 1, GL_FALSE, view.view_projection.data());
+    const Vector3f light = towards_light();
+    glUniform3f(lit.uniform("towards_light"), light.x(), light.y(), light.z());
+    layer.draw(GL_TRIANGLES);
+  }
+
+  void clear(GLuint framebuffer, int w, int h) {
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glViewport(0, 0, w, h);
+    const Color& bg = palette::kBackground;
+    glClearColor(bg.r, bg.g, bg.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  }
+
+  // The static scene for `view`, drawn at twice the size in each direction and averaged down; its depth
+  // is the fixed bodies' at the picture's own size, so that moving things are hidden exactly where the
+  // copied picture shows a wall.
+  const GlFramebuffer& static_scene(View view_kind, const CameraView& view, const Overlay& overlay) {
+    if (!background || background->view != view_kind || background->decomposition != overlay.decomposition ||
+        background->segments != overlay.segments || !extends(overlay.path, background->path)) {
+      draw_static_scene(view_kind, view, overlay);
+    }
+    paint_path(overlay.path, view);
+    return *background->framebuffer;
+  }
+
+  static bool extends(const std::vector<Vec2>& path, const std::vector<Vec2>& prefix) {
+    return path.size() >= prefix.size() && std::equal(prefix.begin(), prefix.end(), path.begin());
+  }
+
+  // The part of `path` beyond what the background shows: its halo from the last painted point on, then its
+  // line from as far back as that halo reaches, so the new halo hides no part of the line already there.
+  void paint_path(const std::vector<Vec2>& path, const CameraView& view) {
+    std::vector<Vec2>& painted = background->path;
+    if (path.size() == painted.size()) return;
+    const double halo = kPathHaloWidth * view.metres_per_pixel;
+    const std::size_t joint = painted.empty() ? 0 : painted.size() - 1;
+    std::size_t covered = joint;
+    while (covered > 0 && (path[covered - 1] - path[joint]).norm() < halo) --covered;
+    const auto from = [&](std::size_t first) {
+      return std::vector<Vec2>(path.begin() + static_cast<std::ptrdiff_t>(first), path.end());
+    };
+    FlatGeometry paint;
+    paint.polyline(from(joint), halo, palette::kPathHalo);
+    paint.polyline(from(covered), kPathWidth * view.metres_per_pixel, palette::kPath);
+    upload(path_layer, paint);
+    glBindFramebuffer(GL_FRAMEBUFFER, background->framebuffer->id());
+    glViewport(0, 0, width, height);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDisable(GL_DEPTH_TEST);
+    draw_flat(path_layer, view.view_projection);
+    painted.insert(painted.end(), path.begin() + static_cast<std::ptrdiff_t>(painted.size()), path.end());
+  }
+
+  void draw_static_scene(View view_kind, const CameraView& view, const Overlay& overlay) {
+    upload(static_floor_layer, floor_paint(overlay, view.metres_per_pixel));
+    FlatGeometry segments;
+    for (const SegmentOverlay& s : overlay.segments) segments.line(s.from, s.to, kSegmentWidth * view.metres_per_pixel, s.color);
+    upload(segment_layer, segments);
+    const ShadowGeometry shadows = fixed_shadows();
+    static_shadow_layer.upload(shadows.floats().data(), shadows.floats().size(), GL_STATIC_DRAW);
+
+    const GlFramebuffer supersampled(kSupersampling * width, kSupersampling * height);
+    clear(supersampled.id(), supersampled.width(), supersampled.height());
+    glDisable(GL_DEPTH_TEST);
+    draw_flat(static_floor_layer, view.view_projection);
+    draw_shadows(static_shadow_layer, view);
+    draw_flat(segment_layer, view.view_projection);
+    glEnable(GL_DEPTH_TEST);
+    draw_lit(fixed_layer, view);
+
+    auto framebuffer = std::make_unique<GlFramebuffer>(width, height);
+    clear(framebuffer->id(), width, height);
+    draw_lit(fixed_layer, view);  // the depth; its colour is replaced next
+    copy_framebuffer(supersampled.id(), supersampled.width(), supersampled.height(), framebuffer->id(), width, height,
+                     GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    background = Background{view_kind, overlay.decomposition, overlay.segments, std::move(framebuffer), {}};
   }
 
   Image draw(const scenario::EnvironmentState& state, const Overlay& overlay, View view_kind) {
@@ -318,33 +447,26 @@ struct Renderer::Impl {
     }
     context->make_current();
     const CameraView view = make_camera_view(world, top_height, view_kind, width, height);
+    const GlFramebuffer& scene = static_scene(view_kind, view, overlay);
     upload_layers(state, overlay, view);
 
-    glBindFramebuffer(GL_FRAMEBUFFER, context->framebuffer());
+    if (!frame) frame = std::make_unique<GlFramebuffer>(width, height);
+    copy_framebuffer(scene.id(), width, height, frame->id(), width, height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT,
+                     GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, frame->id());
     glViewport(0, 0, width, height);
-    const Color& bg = palette::kBackground;
-    glClearColor(bg.r, bg.g, bg.b, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glDisable(GL_DEPTH_TEST);
 
-    draw_flat(floor_layer, view.view_projection);
-    shadow.use();
-    glUniformMatrix4fv(shadow.uniform("transform"), 1, GL_FALSE, view.view_projection.data());
-    shadow_layer.draw(GL_TRIANGLES);
-    draw_flat(segment_layer, view.view_projection);
-
+    // Flat things on the floor: depth tested against the walls in the copied depth, never written.
     glEnable(GL_DEPTH_TEST);
-    lit.use();
-    glUniformMatrix4fv(lit.uniform("view_projection"), 1, GL_FALSE, view.view_projection.data());
-    const Vector3f light = towards_light();
-    glUniform3f(lit.uniform("towards_light"), light.x(), light.y(), light.z());
-    fixed_layer.draw(GL_TRIANGLES);
-    moving_layer.draw(GL_TRIANGLES);
+    glDepthMask(GL_FALSE);
+    draw_flat(mregion_layer, view.view_projection);
+    draw_shadows(shadow_layer, view);
+    glDepthMask(GL_TRUE);
+    draw_lit(moving_layer, view);
     glDisable(GL_DEPTH_TEST);
 
-    draw_flat(path_layer, view.view_projection);
     const Matrix4f pixels = pixel_transform(width, height);
     draw_flat(panel_layer, pixels);
     text.use();
@@ -355,8 +477,21 @@ struct Renderer::Impl {
     glUniform1i(text.uniform("atlas"), 0);
     glyph_layer.draw(GL_TRIANGLES);
 
-    Image image;
-    context->read(image);
+    return read_frame();
+  }
+
+  // The frame's colour, rows from top to bottom. Read as RGBA, which llvmpipe hands over as it stores it;
+  // asking OpenGL for RGB made it convert pixel by pixel at several times the cost.
+  Image read_frame() {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, frame->id());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    rgba.resize(static_cast<std::size_t>(width) * height * 4);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    Image image(width, height);
+    for (int y = 0; y < height; ++y) {  // OpenGL's rows go upwards
+      const std::uint8_t* in = rgba.data() + static_cast<std::size_t>(height - 1 - y) * width * 4;
+      strip_alpha(in, image.rgb.data() + static_cast<std::size_t>(y) * width * 3, width);
+    }
     return image;
   }
 };

@@ -41,8 +41,9 @@ render::Color automaton_state_color(int state, int states) {
   return {0.15f + 0.85f * t, 0.35f + 0.25f * t * (1 - t), 0.95f - 0.85f * t, 1.0f};
 }
 
-int write_plan_frames(const scenario::World& world, const Reasoning& reasoning, const planning::Replay& replay,
-                      int automaton_states, const std::filesystem::path& folder, const Progress& progress) {
+PlanFrames write_plan_frames(const scenario::World& world, const Reasoning& reasoning, const planning::Replay& replay,
+                             int automaton_states, const std::filesystem::path& folder,
+                             const std::filesystem::path& video, const Progress& progress) {
   std::filesystem::create_directories(folder);
   const double dt = world.planner.step_size;
   const double duration = dt * static_cast<double>(replay.states.size() - 1);
@@ -51,6 +52,7 @@ int write_plan_frames(const scenario::World& world, const Reasoning& reasoning, 
 
   render::Renderer renderer(world, world.render.width, world.render.height);
   render::FrameWriter writer(folder);
+  render::VideoEncoder encoder(video, world.render.width, world.render.height, world.render.fps);
   knowledge::Kappa kappa;
   // One overlay for all frames: the travelled path only grows, so it is extended, not rebuilt per frame.
   render::Overlay overlay;
@@ -70,10 +72,13 @@ int write_plan_frames(const scenario::World& world, const Reasoning& reasoning, 
                       fmt::format("automaton state {} of {}{}", q, automaton_states,
                                   q == replay.automaton_trace.back() && replay.accepted ? " (accepting)" : "")};
     while (overlay.path.size() <= i) overlay.path.push_back(replay.states[overlay.path.size()].robot_position);
-    writer.add(renderer.draw(state, overlay, render::View::kPerspective));
+    const auto frame = std::make_shared<const render::Image>(renderer.draw(state, overlay, render::View::kPerspective));
+    encoder.add(frame);
+    writer.add(frame);
     if (progress) progress(f + 1, frames);
   }
-  return writer.finish();
+  const int written = writer.finish();
+  return {written, encoder.finish()};
 }
 
 void write_tree_picture(const scenario::World& world, const decomposition::Decomposition& decomposition,

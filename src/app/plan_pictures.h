@@ -5,6 +5,7 @@
 #include "physltl/planning/planner.h"
 #include "physltl/planning/replay.h"
 #include "physltl/render/scene.h"
+#include "physltl/render/video.h"
 #include "reasoning.h"
 
 #include <filesystem>
@@ -16,11 +17,17 @@ namespace physltl::app {
 // Called with (done, total) while frames are drawn, for progress on a terminal.
 using Progress = std::function<void(int, int)>;
 
+struct PlanFrames {
+  int frames = 0;
+  render::VideoResult video;
+};
+
 // frames/frame_00000.png ... at the World's fps, linearly interpolated between physics steps so boxes
-// glide as they were pushed. Returns the number of frames.
+// glide as they were pushed, and the same frames as `video` (plan.mp4), encoded alongside.
 // `automaton_states` is the size of the automaton the replay's trace runs on.
-int write_plan_frames(const scenario::World& world, const Reasoning& reasoning, const planning::Replay& replay,
-                      int automaton_states, const std::filesystem::path& folder, const Progress& progress);
+PlanFrames write_plan_frames(const scenario::World& world, const Reasoning& reasoning, const planning::Replay& replay,
+                             int automaton_states, const std::filesystem::path& folder,
+                             const std::filesystem::path& video, const Progress& progress);
 
 // tree.png: the decomposition faintly, the tree's edges coloured by automaton state, the path on top.
 void write_tree_picture(const scenario::World& world, const decomposition::Decomposition& decomposition,

@@ -123,16 +123,17 @@ int run(const RunArgs& args) {
     write_tree_picture(world, prepared.decomposition(), result, &replay, out.path() / "tree.png");
     const int automaton_states = static_cast<int>(prepared.as_written().dfa.size());
     const auto frames_started = std::chrono::steady_clock::now();
-    const int frames = write_plan_frames(world, reasoning, replay, automaton_states, out.path() / "frames",
-                                         [&](int done, int total) {
-      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - frames_started).count();
-      progress.show(fmt::format("frames {}/{}, {:.0f} s left", done, total, elapsed / done * (total - done)));
-    });
-    progress.show("encoding plan.mp4 ...");
-    const auto video = render::encode_video(out.path() / "frames", world.render.fps, out.path() / "plan.mp4");
+    const PlanFrames pictures = write_plan_frames(
+        world, reasoning, replay, automaton_states, out.path() / "frames", out.path() / "plan.mp4", [&](int done, int total) {
+          const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - frames_started).count();
+          progress.show(fmt::format("frames {}/{}, {:.0f} s left", done, total, elapsed / done * (total - done)));
+        });
     progress.done();
-    say(fmt::format("render     {} frames, tree.png{}", frames, video.written ? ", plan.mp4" : ""));
-    if (!video.written) std::cerr << "physltl-studio: no video: " << video.message << "\n";
+    say(fmt::format("render     {} frames, tree.png{}", pictures.frames, pictures.video.written ? ", plan.mp4" : ""));
+    if (!pictures.video.written) {
+      std::cerr << "physltl-studio: no video: " << pictures.video.message << "; the frames are in "
+                << (out.final_path() / "frames").string() << "\n";
+    }
   }
   if (stop.received()) {
     std::cerr << "physltl-studio: interrupted; nothing written\n";

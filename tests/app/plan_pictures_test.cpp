@@ -74,8 +74,10 @@ planning::Replay* FixedPlan::replay_;
 TEST_F(FixedPlan, FramesCoverThePlanAtTheScenariosFrameRate) {
   ASSERT_TRUE(replay_->validated()) << replay_->failure;
   const fs::path frames = output("frames");
-  const int written = write_plan_frames(*world_, *reasoning_, *replay_, static_cast<int>(as_written_->dfa.size()),
-                                        frames, nullptr);
+  const PlanFrames pictures = write_plan_frames(*world_, *reasoning_, *replay_, static_cast<int>(as_written_->dfa.size()),
+                                                frames, output("video") / "plan.mp4", nullptr);
+  const int written = pictures.frames;
+  EXPECT_TRUE(pictures.video.written) << pictures.video.message;
   const double seconds = world_->planner.step_size * static_cast<double>(replay_->states.size() - 1);
   EXPECT_EQ(written, static_cast<int>(std::floor(seconds * world_->render.fps)) + 1);
   EXPECT_TRUE(fs::exists(render::FrameWriter::frame_path(frames, written - 1)));

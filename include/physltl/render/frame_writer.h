@@ -20,6 +20,7 @@ class FrameWriter {
   FrameWriter& operator=(const FrameWriter&) = delete;
 
   void add(Image frame);
+  void add(std::shared_ptr<const Image> frame);  // shared with another consumer, such as VideoEncoder
   // Waits until every added frame is on disk; rethrows the first error. Returns the number of frames added.
   int finish();
 

@@ -14,6 +14,7 @@ using geometry::Vec2;
 
 struct Color {
   float r = 0, g = 0, b = 0, a = 1;  // 0..1, not premultiplied
+  friend bool operator==(const Color&, const Color&) = default;
 };
 
 // A manipulation region of a movable body; active ones are those the robot may push from now.
@@ -26,6 +27,7 @@ struct SegmentOverlay {
   Vec2 from = Vec2::Zero();
   Vec2 to = Vec2::Zero();
   Color color;
+  friend bool operator==(const SegmentOverlay&, const SegmentOverlay&) = default;
 };
 
 struct Overlay {
@@ -34,7 +36,7 @@ struct Overlay {
   std::vector<std::array<Vec2, 3>> decomposition;
   // Search-tree edges, on the floor.
   std::vector<SegmentOverlay> segments;
-  // The solution path, drawn last, above the bodies.
+  // The solution path (or the travelled part of it), on the floor above the tree; moving bodies pass over it.
   std::vector<Vec2> path;
   // Lines of text in the top-left corner: formula, automaton state, time, ...
   std::vector<std::string> legend;
