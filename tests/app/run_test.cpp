@@ -68,7 +68,7 @@ TEST(Run, ADifferentialRobotsPlanCarriesItsHeadingAndKeepsItsLimits) {
 }
 
 // Threads change how soon a plan is found, never which plan.
-TEST(Run, SameSeedGivesByteIdenticalPlanAndFramesWithOneOrTwoThreads) {
+TEST(Run, SameSeedGivesByteIdenticalPlanFramesAndVideoWithOneOrTwoThreads) {
   const fs::path scenario = small_ordered(test_dir("scenario"));
   const fs::path a = test_dir("a"), b = test_dir("b");
   fs::remove_all(a);
@@ -83,6 +83,9 @@ TEST(Run, SameSeedGivesByteIdenticalPlanAndFramesWithOneOrTwoThreads) {
   }
   EXPECT_GT(frames, 10);
   EXPECT_TRUE(fs::exists(a / "ordered" / "tree.png"));
+  if (fs::exists(a / "ordered" / "plan.mp4")) {  // ffmpeg is there: the video is the same bytes too
+    EXPECT_EQ(slurp(a / "ordered" / "plan.mp4"), slurp(b / "ordered" / "plan.mp4"));
+  }
 }
 
 TEST(Run, AnInfeasibleTaskExitsOneAndLeavesThePreviousOutputsAlone) {
