@@ -1,5 +1,5 @@
-// OffscreenContext on OSMesa: llvmpipe renders into a buffer we own. With OSMESA_Y_UP off, row 0 of that
-// buffer is the top of the picture, so read() is a plain RGBA -> RGB copy.
+// OffscreenContext on OSMesa. OSMesa needs a client buffer for its default framebuffer even though the
+// renderer draws into framebuffer objects of its own; this one is never read.
 
 #include "physltl/render/context.h"
 
@@ -31,7 +31,6 @@ class OsmesaContext final : public OffscreenContext {
     context_ = OSMesaCreateContextAttribs(attributes, nullptr);
     if (context_ == nullptr) throw std::runtime_error("OSMesa could not create an OpenGL 3.3 core context");
     make_current();
-    OSMesaPixelStore(OSMESA_Y_UP, 0);
   }
 
   ~OsmesaContext() override { OSMesaDestroyContext(context_); }
@@ -42,19 +41,6 @@ class OsmesaContext final : public OffscreenContext {
   void make_current() override {
     if (!OSMesaMakeCurrent(context_, rgba_.data(), GL_UNSIGNED_BYTE, width_, height_)) {
       throw std::runtime_error("OSMesaMakeCurrent failed");
-    }
-  }
-
-  unsigned framebuffer() const override { return 0; }  // OSMesa's buffer is the default framebuffer
-
-  void read(Image& image) override {
-    glFinish();
-    image = Image(width_, height_);
-    const std::size_t pixels = static_cast<std::size_t>(width_) * height_;
-    for (std::size_t i = 0; i < pixels; ++i) {
-      image.rgb[3 * i + 0] = rgba_[4 * i + 0];
-      image.rgb[3 * i + 1] = rgba_[4 * i + 1];
-      image.rgb[3 * i + 2] = rgba_[4 * i + 2];
     }
   }
 

@@ -1,9 +1,8 @@
 #pragma once
-// The one place that knows how an OpenGL context without a display is made. Drawing code draws into
-// framebuffer() and calls read(); nothing else. OSMesa is deprecated upstream (gone from Mesa 25.1): an EGL
-// surfaceless implementation of this interface can replace it without touching the drawing code.
-
-#include "physltl/render/image.h"
+// The one place that knows how an OpenGL context without a display is made. Drawing code makes it current
+// and draws into framebuffer objects of its own; nothing else. OSMesa is deprecated upstream (gone from
+// Mesa 25.1): an EGL surfaceless implementation of this interface can replace it without touching the
+// drawing code.
 
 #include <memory>
 
@@ -13,14 +12,11 @@ class OffscreenContext {
  public:
   virtual ~OffscreenContext() = default;
 
+  // The size of the pictures drawn with it.
   virtual int width() const = 0;
   virtual int height() const = 0;
   // Makes this OpenGL 3.3 core context current on the calling thread.
   virtual void make_current() = 0;
-  // The framebuffer to draw into: width x height, 8-bit RGBA colour and a 24-bit depth buffer.
-  virtual unsigned framebuffer() const = 0;
-  // Waits for OpenGL to finish and copies that framebuffer's colour, rows top to bottom.
-  virtual void read(Image& image) = 0;
 };
 
 // OSMesa (Mesa's llvmpipe on the CPU). Throws std::runtime_error when no 3.3 core context can be made.
