@@ -64,37 +64,23 @@ class LassoWord {
       case Op::Globally: return fixpoint(eval(f.child(0)), Truth(n, 0), true);
       case Op::Until: return fixpoint(eval(f.child(0)), eval(f.child(1)), false);
       case Op::WeakUntil: return fixpoint(eval(f.child(0)), eval(f.child(1)), true);
-      case Op::Release: return release(eval(f.child(0)), eval(f.child(1)), true);
-      case Op::StrongRelease: return release(eval(f.child(0)), eval(f.child(1)), false);
+      case Op::Release: return fixpoint(eval(f.child(0)), eval(f.child(1)), true, false);
+      case Op::StrongRelease: return fixpoint(eval(f.child(0)), eval(f.child(1)), false, false);
     }
     return out;
   }
 
  private:
-  // x = b | (a & X x): from all false (least: U, F) or all true (greatest: W, G), sweeps backwards until
-  // nothing changes; each sweep settles at least one more position of the loop.
-  Truth fixpoint(const Truth& a, const Truth& b, bool greatest) const {
+  // x = b | (a & X x) (`until`), or x = b & (a | X x): the least solution from all false (U, F, M), the
+  // greatest from all true (W, G, R). Sweeps backwards until nothing changes; each sweep settles at least
+  // one more position of the loop.
+  Truth fixpoint(const Truth& a, const Truth& b, bool greatest, bool until = true) const {
     const std::size_t n = size();
     Truth x(n, greatest ? 1 : 0);
     for (bool changed = true; changed;) {
       changed = false;
       for (std::size_t k = n; k-- > 0;) {
-        const char value = b[k] || (a[k] && x[next(k)]);
-        changed |= value != x[k];
-        x[k] = value;
-      }
-    }
-    return x;
-  }
-
-  // x = b & (a | X x): greatest for R, least for M.
-  Truth release(const Truth& a, const Truth& b, bool greatest) const {
-    const std::size_t n = size();
-    Truth x(n, greatest ? 1 : 0);
-    for (bool changed = true; changed;) {
-      changed = false;
-      for (std::size_t k = n; k-- > 0;) {
-        const char value = b[k] && (a[k] || x[next(k)]);
+        const char value = until ? (b[k] || (a[k] && x[next(k)])) : (b[k] && (a[k] || x[next(k)]));
         changed |= value != x[k];
         x[k] = value;
       }

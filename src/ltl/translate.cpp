@@ -174,7 +174,10 @@ class Translator {
     return result;
   }
 
-  Node progress_formula(const Formula& f) {
+  // The diagram of a PNF formula's Boolean structure over its atoms, `atom(id)` giving each atom's diagram:
+  // progression and the stay evaluation differ only in that.
+  template <typename AtomDiagram>
+  Node combine(const Formula& f, AtomDiagram atom) {
     switch (f.op()) {
       case Op::True: return dd_.leaf(kTrue);
       case Op::False: return dd_.leaf(kFalse);
@@ -182,20 +185,36 @@ class Translator {
       case Op::Or: {
         const bool conjunction = f.op() == Op::And;
         Node acc = dd_.leaf(conjunction ? kTrue : kFalse);
-        for (const Formula& c : f.children()) acc = apply(conjunction, acc, progress_formula(c));
+        for (const Formula& c : f.children()) acc = apply(conjunction, acc, combine(c, atom));
         return acc;
       }
       case Op::Equiv:
       case Op::Xor: {
         const bool exclusive = f.op() == Op::Xor;
-        const Node a = progress_formula(f.child(0));
-        const Node b = progress_formula(f.child(1));
-        const Node na = progress_formula(negated_normal_form(f.child(0)));
-        const Node nb = progress_formula(negated_normal_form(f.child(1)));
+        const Node a = combine(f.child(0), atom);
+        const Node b = combine(f.child(1), atom);
+        const Node na = combine(negated_normal_form(f.child(0)), atom);
+        const Node nb = combine(negated_normal_form(f.child(1)), atom);
         return apply(false, apply(true, a, exclusive ? nb : b), apply(true, na, exclusive ? b : nb));
       }
-      default: return progress_atom(intern_atom(f));
+      default: return atom(intern_atom(f));
     }
+  }
+
+  // The same over a state's DNF.
+  template <typename AtomDiagram>
+  Node combine_state(int dnf, AtomDiagram atom) {
+    Node acc = dd_.leaf(kFalse);
+    for (const Term& t : *dnfs_[dnf]) {
+      Node term = dd_.leaf(kTrue);
+      for (int id : t) term = apply(true, term, atom(id));
+      acc = apply(false, acc, term);
+    }
+    return acc;
+  }
+
+  Node progress_formula(const Formula& f) {
+    return combine(f, [this](int id) { return progress_atom(id); });
   }
 
   Node progress_atom(int id) {
@@ -239,27 +258,7 @@ class Translator {
   // On a constant word X f, F f and G f mean f; f U g and f R g mean g; f W g means f | g, f M g f & g.
 
   Node stay_formula(const Formula& f) {
-    switch (f.op()) {
-      case Op::True: return dd_.leaf(kTrue);
-      case Op::False: return dd_.leaf(kFalse);
-      case Op::And:
-      case Op::Or: {
-        const bool conjunction = f.op() == Op::And;
-        Node acc = dd_.leaf(conjunction ? kTrue : kFalse);
-        for (const Formula& c : f.children()) acc = apply(conjunction, acc, stay_formula(c));
-        return acc;
-      }
-      case Op::Equiv:
-      case Op::Xor: {
-        const bool exclusive = f.op() == Op::Xor;
-        const Node a = stay_formula(f.child(0));
-        const Node b = stay_formula(f.child(1));
-        const Node na = stay_formula(negated_normal_form(f.child(0)));
-        const Node nb = stay_formula(negated_normal_form(f.child(1)));
-        return apply(false, apply(true, a, exclusive ? nb : b), apply(true, na, exclusive ? b : nb));
-      }
-      default: return stay_atom(intern_atom(f));
-    }
+    return combine(f, [this](int id) { return stay_atom(id); });
   }
 
   Node stay_atom(int id) {
@@ -283,16 +282,6 @@ class Translator {
     return result;
   }
 
-  Node stay_state(int dnf) {
-    Node acc = dd_.leaf(kFalse);
-    for (const Term& t : *dnfs_[dnf]) {
-      Node term = dd_.leaf(kTrue);
-      for (int atom : t) term = apply(true, term, stay_atom(atom));
-      acc = apply(false, acc, term);
-    }
-    return acc;
-  }
-
   // The successor keys of a stop-and-stay state: leaf d of `successors` and leaf b of `stays` for the
   // same letter make the key 2d + b.
   Node pair_keys(Node successors, Node stays) {
@@ -313,17 +302,11 @@ class Translator {
   Node successor_keys(int key) {
     if (!stop_and_stay_) return progress_state(key);
     const int dnf = key / 2;
-    return pair_keys(progress_state(dnf), stay_state(dnf));
+    return pair_keys(progress_state(dnf), combine_state(dnf, [this](int id) { return stay_atom(id); }));
   }
 
   Node progress_state(int dnf) {
-    Node acc = dd_.leaf(kFalse);
-    for (const Term& t : *dnfs_[dnf]) {
-      Node term = dd_.leaf(kTrue);
-      for (int atom : t) term = apply(true, term, progress_atom(atom));
-      acc = apply(false, acc, term);
-    }
-    return acc;
+    return combine_state(dnf, [this](int id) { return progress_atom(id); });
   }
 
   // ---- the automaton ----
