@@ -1,5 +1,5 @@
--- A scalable family after paper scenario A: N rooms (--set rooms=N; 2, 4, 8 or 16, default 4) along a
--- hall, each behind a doorway blocked by a box; visit them in order: F(r1 & F(r2 & ... F rN)).
+-- A scalable family after paper scenario A: N rooms (--set rooms=N; any even number from 2 to 64, default
+-- 4) along a hall, each behind a doorway blocked by a box; visit them in order: F(r1 & F(r2 & ... F rN)).
 --
 -- Rooms face each other in columns, odd ones north of the hall and even ones south, so the robot walks
 -- east once:
@@ -18,8 +18,8 @@
 local P = require "physltl"
 
 local n = params.rooms or 4
-if n ~= 2 and n ~= 4 and n ~= 8 and n ~= 16 then
-  error("params.rooms must be 2, 4, 8 or 16, got " .. tostring(n))
+if math.type(n) ~= "integer" or n < 2 or n > 64 or n % 2 ~= 0 then
+  error("params.rooms must be an even number from 2 to 64, got " .. tostring(n))
 end
 
 local t = 0.2          -- wall thickness (m)

@@ -2,6 +2,7 @@
 
 #include "drive.h"
 #include "ode_runtime.h"
+#include "physltl/geometry/point_grid.h"
 #include "physltl/geometry/rect_grid.h"
 
 #include <ode/ode.h>
@@ -65,9 +66,17 @@ struct Simulation::Impl {
   // quaternion it is given, and normalising is not idempotent in the last bit, so a saved quaternion
   // would not restore exactly; the yaw it was made from does.
   std::vector<double> state;
-  std::vector<char> awake;    // per dynamic body, this step: it is integrated and collided
-  std::vector<char> enabled;  // per dynamic body, as ODE has it now
-  std::vector<size_t> woken;  // wake_bodies' work list, kept to avoid allocating every step
+  // Where the dynamic bodies are, kept up to date by set_body(): which of them a body may touch is a lookup
+  // among the bodies near it, not a scan of the World.
+  geometry::PointGrid dynamic_near;
+  double largest_bound_radius = 0.0;  // of the dynamic bodies
+  std::vector<char> awake;      // per dynamic body, this step: it is integrated and collided
+  std::vector<char> enabled;    // per dynamic body, as ODE has it now
+  std::vector<int> woken;       // this step's awake bodies, ascending after wake_bodies()
+  std::vector<int> enabled_boxes;  // the boxes ODE has enabled now
+  std::vector<char> in_motion;  // per dynamic body: a box with some velocity (the robot is always awake)
+  std::vector<int> moving_boxes;   // the boxes in_motion marks, in no particular order
+  std::vector<int> candidates;  // scratch for grid lookups
   DriveBody drive;
   DriveEffort last_drive;
   dJointID wheel_grip = nullptr;  // differential drive only
@@ -127,6 +136,11 @@ struct Simulation::Impl {
     for (const Geom& g : dynamic) reach = std::max(reach, g.bound_radius);
     fixed_near = geometry::RectGrid(fixed_bounds, reach);
     reset();
+    largest_bound_radius = reach;
+    std::vector<Vec2> positions;
+    for (size_t i = 0; i < dynamic.size(); ++i) positions.push_back(position(i));
+    dynamic_near = geometry::PointGrid(w.workspace.bounds, 2.0 * reach, positions);
+    for (size_t i = 1; i < dynamic.size(); ++i) enabled_boxes.push_back(static_cast<int>(i));
   }
 
   ~Impl() {
@@ -165,8 +179,9 @@ struct Simulation::Impl {
     planar_joints.push_back(joint);
     dynamic.push_back(g);
     state.resize(state.size() + kValuesPerBody, 0.0);
-    awake.push_back(1);
+    awake.push_back(0);
     enabled.push_back(1);
+    in_motion.push_back(0);
   }
 
   // The wheels of a differential robot grip the floor sideways: a velocity constraint across the heading,
@@ -193,6 +208,15 @@ struct Simulation::Impl {
     dBodySetLinearVel(body, v[4], v[5], v[6]);
     dBodySetAngularVel(body, v[7], v[8], v[9]);
     std::copy(v, v + kValuesPerBody, values(i));
+    if (dynamic_near.size() == dynamic.size()) dynamic_near.move(static_cast<int>(i), {v[0], v[1]});
+    const char moving = i > 0 && !at_rest(i);
+    if (moving == in_motion[i]) return;
+    in_motion[i] = moving;
+    if (moving) {
+      moving_boxes.push_back(static_cast<int>(i));
+    } else {
+      moving_boxes.erase(std::find(moving_boxes.begin(), moving_boxes.end(), static_cast<int>(i)));
+    }
   }
 
   void set_pose(size_t i, const geometry::Pose2& pose) {
@@ -229,25 +253,27 @@ struct Simulation::Impl {
   // or pushed out of a wall it slightly overlaps. The choice depends only on the state, so restoring a
   // state restores it too.
   void wake_bodies() {
-    woken.clear();
-    for (size_t i = 0; i < dynamic.size(); ++i) {
-      awake[i] = i == 0 || !at_rest(i);
-      if (awake[i]) woken.push_back(i);
-    }
+    for (int i : woken) awake[static_cast<size_t>(i)] = 0;
+    woken.assign(1, 0);
+    awake[0] = 1;
+    for (int i : moving_boxes) awake[static_cast<size_t>(i)] = 1, woken.push_back(i);
     for (size_t next = 0; next < woken.size(); ++next) {
-      const size_t mover = woken[next];
-      for (size_t j = 1; j < dynamic.size(); ++j) {
-        if (!awake[j] && may_touch(mover, j)) awake[j] = 1, woken.push_back(j);
+      const auto mover = static_cast<size_t>(woken[next]);
+      dynamic_near.near(position(mover), dynamic[mover].bound_radius + largest_bound_radius, candidates);
+      for (int j : candidates) {
+        const auto box = static_cast<size_t>(j);
+        if (!awake[box] && may_touch(mover, box)) awake[box] = 1, woken.push_back(j);
       }
     }
-    for (size_t i = 1; i < dynamic.size(); ++i) {
-      if (awake[i] == enabled[i]) continue;
-      enabled[i] = awake[i];
-      if (awake[i]) {
-        dBodyEnable(dynamic[i].body);
-      } else {
-        dBodyDisable(dynamic[i].body);
-      }
+    std::sort(woken.begin(), woken.end());
+    for (int i : enabled_boxes) {
+      if (!awake[static_cast<size_t>(i)]) enabled[static_cast<size_t>(i)] = 0, dBodyDisable(dynamic[static_cast<size_t>(i)].body);
+    }
+    enabled_boxes.clear();
+    for (int i : woken) {
+      if (i == 0) continue;
+      if (!enabled[static_cast<size_t>(i)]) enabled[static_cast<size_t>(i)] = 1, dBodyEnable(dynamic[static_cast<size_t>(i)].body);
+      enabled_boxes.push_back(i);
     }
   }
 
@@ -323,12 +349,16 @@ struct Simulation::Impl {
     // out of reach of every awake one (wake_bodies woke those) and of every other sleeping one's motion,
     // so only awake bodies have pairs to test. The grid only leaves out fixed bodies too far away to
     // touch, in index order, so the contacts are those of testing every pair.
-    for (size_t i = 0; i < dynamic.size(); ++i) {
-      if (!awake[i]) continue;
+    for (int awake_index : woken) {
+      const auto i = static_cast<size_t>(awake_index);
       const scenario::Vec2 p = position(i);
       const double radius = dynamic[i].bound_radius;
-      for (size_t j = i + 1; j < dynamic.size(); ++j) {
-        if (within_reach(p, radius, position(j), dynamic[j].bound_radius)) collide(dynamic[i], dynamic[j], robot_contacts);
+      dynamic_near.near(p, radius + largest_bound_radius, candidates);
+      for (int other : candidates) {
+        const auto j = static_cast<size_t>(other);
+        if (j > i && within_reach(p, radius, position(j), dynamic[j].bound_radius)) {
+          collide(dynamic[i], dynamic[j], robot_contacts);
+        }
       }
       for (int f : fixed_near.near(p)) {
         const Geom& g = fixed[static_cast<size_t>(f)];
@@ -337,9 +367,7 @@ struct Simulation::Impl {
     }
     dWorldStep(ode_world, world.planner.step_size);
     dJointGroupEmpty(contact_group);
-    for (size_t i = 0; i < dynamic.size(); ++i) {
-      if (awake[i]) settle(i);
-    }
+    for (int i : woken) settle(static_cast<size_t>(i));
   }
 };
 

@@ -131,7 +131,7 @@ TEST(Bench, ABadSweepIsRefusedBeforeAnyRun) {
       {"--sweep rooms=2,,4", "--sweep: an empty value"},
       {"--sweep rooms=2,4,2", "--sweep: rooms=2 is given twice"},
       {"--sweep rooms=2,4 --set rooms=8", "--sweep rooms is also given to --set"},
-      {"--sweep rooms=2,3", "params.rooms must be 2, 4, 8 or 16, got 3"},
+      {"--sweep rooms=2,3", "params.rooms must be an even number from 2 to 64, got 3"},
       {"--sweep rooms=2,../4", "--sweep: a value may not contain / or \\, got '../4'"},
       {"--sweep rooms=2,4 --log /nonexistent/rooms.log", "cannot write /nonexistent/rooms-rooms-2.log"},
   };

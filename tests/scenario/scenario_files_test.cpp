@@ -43,7 +43,7 @@ TEST(ScenarioFiles, EveryShippedScenarioLoadsAndValidates) {
 }
 
 TEST(ScenarioFiles, RoomsNLoadsForEveryRoomCountWithABoxPerDoorwayAndASequencingTask) {
-  for (const int n : {2, 4, 8, 16}) {
+  for (const int n : {2, 4, 8, 16, 30, 64}) {
     LoadOptions options;
     options.params["rooms"] = std::to_string(n);
     const World w = load_scenario(kScenarios + "/rooms_n.lua", options);
@@ -56,13 +56,17 @@ TEST(ScenarioFiles, RoomsNLoadsForEveryRoomCountWithABoxPerDoorwayAndASequencing
 }
 
 TEST(ScenarioFiles, RoomsNRejectsOtherRoomCountsWithAClearMessage) {
-  LoadOptions options;
-  options.params["rooms"] = "5";
-  try {
-    load_scenario(kScenarios + "/rooms_n.lua", options);
-    ADD_FAILURE() << "rooms=5 loaded";
-  } catch (const ScenarioError& e) {
-    EXPECT_NE(std::string(e.what()).find("params.rooms must be 2, 4, 8 or 16, got 5"), std::string::npos) << e.what();
+  for (const char* bad : {"5", "0", "66", "2.5"}) {
+    LoadOptions options;
+    options.params["rooms"] = bad;
+    try {
+      load_scenario(kScenarios + "/rooms_n.lua", options);
+      ADD_FAILURE() << "rooms=" << bad << " loaded";
+    } catch (const ScenarioError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("params.rooms must be an even number from 2 to 64, got ") + bad),
+                std::string::npos)
+          << e.what();
+    }
   }
 }
 

@@ -1,0 +1,41 @@
+#pragma once
+// Points that move, bucketed on a uniform grid: which of them lie near a place costs what the points near
+// it cost, not a scan of all of them. The physics step asks it which boxes a moving body may touch, and
+// INFERENCE which boxes stand near a contact segment; moving a point moves it between buckets.
+
+#include "physltl/geometry/shapes.h"
+
+#include <span>
+#include <vector>
+
+namespace physltl::geometry {
+
+class PointGrid {
+ public:
+  PointGrid() = default;  // no points
+  // `area`: where the points mostly are (points outside it land in the border cells); `cell`: the side of
+  // a bucket, about the radius of the usual query.
+  PointGrid(const Rect& area, double cell, std::span<const Vec2> points);
+
+  std::size_t size() const { return points_.size(); }
+  const Vec2& position(int i) const { return points_[static_cast<std::size_t>(i)]; }
+  void move(int i, const Vec2& p);
+
+  // Replaces `out` with the indices, ascending, of every point within `radius` of `centre` in x and in y.
+  void near(const Vec2& centre, double radius, std::vector<int>& out) const;
+
+ private:
+  int column(double x) const;
+  int row(double y) const;
+  int cell_of(const Vec2& p) const { return row(p.y()) * columns_ + column(p.x()); }
+
+  Vec2 origin_ = Vec2::Zero();
+  double cell_ = 1.0;
+  int columns_ = 1;
+  int rows_ = 1;
+  std::vector<std::vector<int>> cells_;
+  std::vector<int> cell_of_point_;
+  std::vector<Vec2> points_;
+};
+
+}  // namespace physltl::geometry

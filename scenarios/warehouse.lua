@@ -1,0 +1,51 @@
+-- A warehouse: columns of boxes (0.8 m x 0.5 m) with 1 m aisles between the columns and free margins
+-- around them; visit three corners in order, F(a & F(b & F c)), from the fourth. A route exists that
+-- touches no box at all, so a good plan pushes nothing.
+--   --set columns=10 rows=20   200 boxes on a 20 m x 20 m floor
+--   default columns=4 rows=8    32 boxes
+--
+--   +------------------------------+
+--   | c                          b |
+--   |   []  []  []  []  []  []     |
+--   |   []  []  []  []  []  []     |
+--   |   []  []  []  []  []  []     |
+--   | robot                      a |
+--   +------------------------------+
+
+local P = require "physltl"
+
+local function count(name, default)
+  local v = params[name] or default
+  if math.type(v) ~= "integer" or v < 1 or v > 40 then
+    error("params." .. name .. " must be a whole number from 1 to 40, got " .. tostring(v))
+  end
+  return v
+end
+local columns, rows = count("columns", 4), count("rows", 8)
+
+local box_x, box_y = 0.8, 0.5  -- m, one box
+local gap = 0.25               -- m between the boxes of a column
+local aisle = 1.0              -- m between columns
+local margin_x, margin_y = 1.5, 2.5
+local width = 2 * margin_x + columns * box_x + (columns - 1) * aisle
+local height = 2 * margin_y + rows * box_y + (rows - 1) * gap
+
+workspace { bounds = { { 0, 0 }, { width, height } }, floor_friction = 0.5 }
+robot { radius = 0.25, mass = 1.0, max_force = 20, max_speed = 1.0, start = { 0.8, 0.8 } }
+P.boundary { min = { 0, 0 }, max = { width, height }, thickness = 0.2 }
+
+for c = 1, columns do
+  local x = margin_x + (c - 1) * (box_x + aisle) + box_x / 2
+  for r = 1, rows do
+    local y = margin_y + (r - 1) * (box_y + gap) + box_y / 2
+    P.box { name = "B" .. c .. "_" .. r, at = { x, y }, size = { box_x, box_y }, mass = 0.5 }
+  end
+end
+
+P.area("a", { width - 1.4, 0.4 }, { width - 0.4, 1.4 })
+P.area("b", { width - 1.4, height - 1.4 }, { width - 0.4, height - 0.4 })
+P.area("c", { 0.4, height - 1.4 }, { 1.4, height - 0.4 })
+
+task { formula = "F(a & F(b & F c))" }
+planner { time_limit = 60, step_size = 0.05, min_steps = 2, max_steps = 30, seed = 1 }
+render { width = 640, height = 640, fps = 30 }
