@@ -104,7 +104,11 @@ AbstractKnowledge formulate(const scenario::World& world, const FormulationSetti
   for (const auto& f : world.fixed_bodies) {
     k.fixed_bodies.push_back({f.name, f.footprint, geometry::Polygon::from_box(f.footprint).bounds()});
   }
-  for (const auto& m : world.movable_bodies) k.movable_bodies.push_back(movable_knowledge(m, world, k.robot, settings));
+  for (const auto& m : world.movable_bodies) {
+    k.movable_bodies.push_back(movable_knowledge(m, world, k.robot, settings));
+    k.largest_bound_radius = std::max(k.largest_bound_radius, k.movable_bodies.back().bound_radius);
+    k.largest_contact_reach = std::max(k.largest_contact_reach, k.movable_bodies.back().contact_reach);
+  }
   for (const auto& region : world.regions) k.propositions.push_back({region.name, region.polygon});
 
   // A contact segment lies within half its length of its midpoint, and the robot on it within its radius.

@@ -38,8 +38,23 @@ struct ContactSegment {
 
 // The stretches of the segment on which the robot would overlap an obstacle: a fixed body or any other
 // movable body near the segment.
-void blocked_stretches(const AbstractKnowledge& k, const scenario::EnvironmentState& state, size_t pushed,
-                       const ContactSegment& segment, std::vector<Interval>& blocked) {
+// Scratch space of the inferences on one thread.
+struct Scratch {
+  std::vector<size_t> moved;
+  std::vector<int> nearby;
+  std::vector<int> affected;
+  std::vector<geometry::Vec2> before;
+  std::vector<Interval> blocked;
+};
+
+Scratch& scratch() {
+  thread_local Scratch s;
+  return s;
+}
+
+void blocked_stretches(const AbstractKnowledge& k, const scenario::EnvironmentState& state,
+                       const BodyLocator& bodies, size_t pushed, const ContactSegment& segment,
+                       std::vector<Interval>& blocked) {
   const double r = k.robot.radius;
   auto add = [&](const geometry::OrientedBox& box) {
     const Interval stretch = Obstacle(box).closer_than(segment.from, segment.direction, r);
@@ -51,7 +66,10 @@ void blocked_stretches(const AbstractKnowledge& k, const scenario::EnvironmentSt
     const FixedBodyKnowledge& fixed = k.fixed_bodies[static_cast<size_t>(f)];
     if (segment.may_reach(fixed.bounds, r)) add(fixed.footprint);
   }
-  for (size_t j = 0; j < k.movable_bodies.size(); ++j) {
+  std::vector<int>& nearby = scratch().nearby;
+  bodies.near(middle, 0.5 * segment.length + k.largest_bound_radius + r, nearby);
+  for (int body : nearby) {
+    const auto j = static_cast<size_t>(body);
     const auto& other = k.movable_bodies[j];
     const geometry::Pose2& pose = state.movable_poses[j];
     const double near = 0.5 * segment.length + other.bound_radius + r;
@@ -63,8 +81,8 @@ void blocked_stretches(const AbstractKnowledge& k, const scenario::EnvironmentSt
 
 // Whether the robot can stand somewhere along the segment: inside the workspace and clear of obstacles.
 // `blocked` is scratch space, reused so that the planner's inference after every step does not allocate.
-bool has_free_stretch(const AbstractKnowledge& k, const scenario::EnvironmentState& state, size_t pushed,
-                      const ContactSegment& segment, std::vector<Interval>& blocked) {
+bool has_free_stretch(const AbstractKnowledge& k, const scenario::EnvironmentState& state, const BodyLocator& bodies,
+                      size_t pushed, const ContactSegment& segment, std::vector<Interval>& blocked) {
   const Vec2 workspace_center = 0.5 * (k.workspace.min + k.workspace.max);
   const Vec2 room_for_centre = 0.5 * k.workspace.size() - Vec2::Constant(k.robot.radius);
   if (room_for_centre.minCoeff() <= 0.0) return false;
@@ -72,7 +90,7 @@ bool has_free_stretch(const AbstractKnowledge& k, const scenario::EnvironmentSta
       inside_rectangle(segment.from - workspace_center, segment.direction, room_for_centre);
   const double end = std::min(segment.length, in_workspace.hi);
   blocked.clear();
-  blocked_stretches(k, state, pushed, segment, blocked);
+  blocked_stretches(k, state, bodies, pushed, segment, blocked);
   std::sort(blocked.begin(), blocked.end(), [](const Interval& a, const Interval& b) { return a.lo < b.lo; });
   // Sweep t forward past every blocked stretch that covers [t, t + kMinFreeStretch). In order of their
   // starts, the first stretch that starts beyond that window leaves it free, and so do all later ones.
@@ -93,8 +111,8 @@ BodyType type_of(const MovableBodyKnowledge& body, SideSet active) {
   return active.is_all() ? BodyType::kFree : BodyType::kConstraintOriented;
 }
 
-BodyKappa infer_body(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, size_t i,
-                     std::vector<Interval>& blocked) {
+BodyKappa infer_body(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state,
+                     const BodyLocator& bodies, size_t i, std::vector<Interval>& blocked) {
   const MovableBodyKnowledge& body = knowledge.movable_bodies[i];
   const geometry::Pose2& pose = state.movable_poses[i];
   const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
@@ -103,22 +121,11 @@ BodyKappa infer_body(const AbstractKnowledge& knowledge, const scenario::Environ
     const Vec2 from = to_world(pose, c, s, m.contact_from);
     const Vec2 along = to_world(pose, c, s, m.contact_to) - from;
     const double length = along.norm();
-    if (length > 0.0 && has_free_stretch(knowledge, state, i, {from, along / length, length}, blocked)) {
+    if (length > 0.0 && has_free_stretch(knowledge, state, bodies, i, {from, along / length, length}, blocked)) {
       active.insert(m.side);
     }
   }
   return {type_of(body, active), active};
-}
-
-// Scratch space of the inferences on one thread.
-struct Scratch {
-  std::vector<size_t> moved;
-  std::vector<Interval> blocked;
-};
-
-Scratch& scratch() {
-  thread_local Scratch s;
-  return s;
 }
 
 void check_body_count(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state) {
@@ -140,38 +147,81 @@ const char* type_name(BodyType type) {
 
 void infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, Kappa& kappa) {
   check_body_count(knowledge, state);
-  kappa.bodies.resize(knowledge.movable_bodies.size());
-  std::vector<Interval>& blocked = scratch().blocked;
-  for (size_t i = 0; i < kappa.bodies.size(); ++i) kappa.bodies[i] = infer_body(knowledge, state, i, blocked);
+  infer(knowledge, state, BodyLocator(knowledge, state.movable_poses), kappa);
 }
 
-void reinfer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state,
-             std::span<const geometry::Pose2> inferred_for, Kappa& kappa) {
+void infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, const BodyLocator& bodies,
+           Kappa& kappa) {
+  check_body_count(knowledge, state);
+  kappa.bodies.resize(knowledge.movable_bodies.size());
+  std::vector<Interval>& blocked = scratch().blocked;
+  for (size_t i = 0; i < kappa.bodies.size(); ++i) kappa.bodies[i] = infer_body(knowledge, state, bodies, i, blocked);
+}
+
+namespace {
+
+// Cells about the size of the largest lookup: a contact segment's half length plus a body and the robot.
+double locator_cell(const AbstractKnowledge& knowledge) {
+  return std::max(knowledge.largest_contact_reach + knowledge.robot.radius, 0.1);
+}
+
+std::vector<geometry::Vec2> centres(std::span<const geometry::Pose2> poses) {
+  std::vector<geometry::Vec2> c;
+  c.reserve(poses.size());
+  for (const auto& p : poses) c.push_back(p.position);
+  return c;
+}
+
+}  // namespace
+
+BodyLocator::BodyLocator(const AbstractKnowledge& knowledge, std::span<const geometry::Pose2> poses, double cell)
+    : poses_(poses.begin(), poses.end()),
+      grid_(knowledge.workspace, cell > 0.0 ? cell : locator_cell(knowledge), centres(poses)) {}
+
+void BodyLocator::move(std::size_t body, const geometry::Pose2& pose) {
+  poses_[body] = pose;
+  grid_.move(static_cast<int>(body), pose.position);
+}
+
+void reinfer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, BodyLocator& inferred_for,
+             Kappa& kappa) {
   check_body_count(knowledge, state);
   const size_t n = knowledge.movable_bodies.size();
-  if (inferred_for.size() != n || kappa.bodies.size() != n) {
+  if (inferred_for.poses().size() != n || kappa.bodies.size() != n) {
     throw std::invalid_argument("reinfer: kappa was inferred for a different number of movable bodies");
   }
-  std::vector<size_t>& moved = scratch().moved;
-  moved.clear();
+  Scratch& s = scratch();
+  s.moved.clear();
   for (size_t j = 0; j < n; ++j) {
     const geometry::Pose2& now = state.movable_poses[j];
-    if (now.position != inferred_for[j].position || now.yaw != inferred_for[j].yaw) moved.push_back(j);
+    const geometry::Pose2& was = inferred_for.poses()[j];
+    if (now.position != was.position || now.yaw != was.yaw) s.moved.push_back(j);
   }
-  if (moved.empty()) return;
+  if (s.moved.empty()) return;
+  // A moved body changes i's mRegions only if it comes, before or after the move, within a robot's
+  // diameter of a contact segment of i. The locator then holds the new positions, which are i's centres.
   const double r = knowledge.robot.radius;
-  std::vector<Interval>& blocked = scratch().blocked;
-  for (size_t i = 0; i < n; ++i) {
-    const Vec2& centre = state.movable_poses[i].position;
-    // A moved body changes i's mRegions only if it comes, before or after the move, within a robot's
-    // diameter of a contact segment of i.
-    const bool affected = std::any_of(moved.begin(), moved.end(), [&](size_t j) {
-      if (j == i) return true;
-      const double reach = knowledge.movable_bodies[i].contact_reach + 2.0 * r + knowledge.movable_bodies[j].bound_radius;
-      return (inferred_for[j].position - centre).squaredNorm() < reach * reach ||
-             (state.movable_poses[j].position - centre).squaredNorm() < reach * reach;
-    });
-    if (affected) kappa.bodies[i] = infer_body(knowledge, state, i, blocked);
+  s.affected.clear();
+  s.before.clear();
+  for (size_t j : s.moved) s.before.push_back(inferred_for.poses()[j].position);
+  for (size_t j : s.moved) inferred_for.move(j, state.movable_poses[j]);
+  for (size_t m = 0; m < s.moved.size(); ++m) {
+    const size_t j = s.moved[m];
+    s.affected.push_back(static_cast<int>(j));
+    const double widest = knowledge.largest_contact_reach + 2.0 * r + knowledge.movable_bodies[j].bound_radius;
+    for (const geometry::Vec2& at : {s.before[m], state.movable_poses[j].position}) {
+      inferred_for.near(at, widest, s.nearby);
+      for (int candidate : s.nearby) {
+        const auto i = static_cast<size_t>(candidate);
+        const double reach = knowledge.movable_bodies[i].contact_reach + 2.0 * r + knowledge.movable_bodies[j].bound_radius;
+        if ((at - state.movable_poses[i].position).squaredNorm() < reach * reach) s.affected.push_back(candidate);
+      }
+    }
+  }
+  std::sort(s.affected.begin(), s.affected.end());
+  s.affected.erase(std::unique(s.affected.begin(), s.affected.end()), s.affected.end());
+  for (int i : s.affected) {
+    kappa.bodies[static_cast<size_t>(i)] = infer_body(knowledge, state, inferred_for, static_cast<size_t>(i), s.blocked);
   }
 }
 

@@ -100,9 +100,9 @@ void TreeGrower::update_kappa() {
     knowledge::reinfer(knowledge_, environment_, kappa_poses_, kappa_);
   } else {
     knowledge::infer(knowledge_, environment_, kappa_);
+    kappa_poses_ = knowledge::BodyLocator(knowledge_, environment_.movable_poses);
     kappa_valid_ = true;
   }
-  kappa_poses_ = environment_.movable_poses;
 }
 
 }  // namespace physltl::planning

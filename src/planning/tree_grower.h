@@ -75,7 +75,7 @@ class TreeGrower {
   // Scratch space reused by every step, so the hot loop does not allocate.
   scenario::EnvironmentState environment_;
   knowledge::Kappa kappa_;
-  std::vector<geometry::Pose2> kappa_poses_;  // the poses kappa_ was inferred for
+  knowledge::BodyLocator kappa_poses_;  // the poses kappa_ was inferred for
   bool kappa_valid_ = false;
   std::vector<scenario::RobotContact> contacts_;
   physics::PhysicsState last_valid_;

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <numbers>
 #include <random>
 #include <string>
@@ -159,8 +161,8 @@ TEST(Reinfer, EqualsFreshInferenceAlongRandomMovesInACrowdedRoom) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> step(-0.15, 0.15), anywhere(-2.2, 2.2);
   int changes = 0;
+  BodyLocator inferred_for(k, state.movable_poses);
   for (int i = 0; i < 3000; ++i) {
-    const auto before = state.movable_poses;
     const Kappa kappa_before = kappa;
     for (int moves = 1 + static_cast<int>(random() % 3); moves > 0; --moves) {
       auto& pose = state.movable_poses[random() % state.movable_poses.size()];
@@ -171,8 +173,13 @@ TEST(Reinfer, EqualsFreshInferenceAlongRandomMovesInACrowdedRoom) {
         pose.yaw += 0.3 * step(random);
       }
     }
-    reinfer(k, state, before, kappa);
-    ASSERT_EQ(kappa, infer(k, state)) << "move " << i;
+    reinfer(k, state, inferred_for, kappa);
+    // Against every body scanned: one grid cell as large as the workspace.
+    Kappa scanned;
+    infer(k, state, BodyLocator(k, state.movable_poses, k.workspace.size().maxCoeff()), scanned);
+    ASSERT_EQ(kappa, scanned) << "move " << i;
+    ASSERT_TRUE(std::equal(inferred_for.poses().begin(), inferred_for.poses().end(), state.movable_poses.begin(),
+                           [](const auto& a, const auto& b) { return a.position == b.position && a.yaw == b.yaw; }));
     changes += kappa != kappa_before;
   }
   EXPECT_GT(changes, 300);  // the moves did block and free mRegions
@@ -184,7 +191,8 @@ TEST(Reinfer, WithNothingMovedKeepsKappa) {
   const auto k = formulate(w);
   const auto state = scenario::EnvironmentState::initial(w);
   Kappa kappa{{{BodyType::kImmovable, {}}}};  // deliberately not this state's: nothing moved, nothing redone
-  reinfer(k, state, state.movable_poses, kappa);
+  BodyLocator inferred_for(k, state.movable_poses);
+  reinfer(k, state, inferred_for, kappa);
   EXPECT_EQ(kappa.bodies[0].type, BodyType::kImmovable);
 }
 

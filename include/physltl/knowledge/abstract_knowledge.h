@@ -75,6 +75,8 @@ struct AbstractKnowledge {
   // segment could touch them.
   geometry::RectGrid fixed_near;
   std::vector<MovableBodyKnowledge> movable_bodies;  // World::movable_bodies order
+  double largest_bound_radius = 0.0;  // of the movable bodies' footprints
+  double largest_contact_reach = 0.0;  // of the movable bodies' contact_reach
   std::vector<Proposition> propositions;             // World::regions order
 };
 
