@@ -64,7 +64,6 @@ void PointGrid::near(const Vec2& centre, double radius, std::vector<int>& out) c
       }
     }
   }
-  std::sort(out.begin(), out.end());
 }
 
 }  // namespace physltl::geometry

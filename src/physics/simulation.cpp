@@ -354,6 +354,7 @@ struct Simulation::Impl {
       const scenario::Vec2 p = position(i);
       const double radius = dynamic[i].bound_radius;
       dynamic_near.near(p, radius + largest_bound_radius, candidates);
+      std::sort(candidates.begin(), candidates.end());  // contacts in index order, as testing every pair
       for (int other : candidates) {
         const auto j = static_cast<size_t>(other);
         if (j > i && within_reach(p, radius, position(j), dynamic[j].bound_radius)) {

@@ -21,7 +21,8 @@ class PointGrid {
   const Vec2& position(int i) const { return points_[static_cast<std::size_t>(i)]; }
   void move(int i, const Vec2& p);
 
-  // Replaces `out` with the indices, ascending, of every point within `radius` of `centre` in x and in y.
+  // Replaces `out` with the indices of every point within `radius` of `centre` in x and in y, in no
+  // particular order (sort them where the order matters).
   void near(const Vec2& centre, double radius, std::vector<int>& out) const;
 
  private:

@@ -39,7 +39,7 @@ class BodyLocator {
 
   std::span<const geometry::Pose2> poses() const { return poses_; }
   void move(std::size_t body, const geometry::Pose2& pose);
-  // Replaces `out` with the bodies, ascending, whose centres lie within `radius` of `p` in x and in y.
+  // Replaces `out` with the bodies whose centres lie within `radius` of `p` in x and in y, in no order.
   void near(const geometry::Vec2& p, double radius, std::vector<int>& out) const { grid_.near(p, radius, out); }
 
  private:
