@@ -54,6 +54,7 @@ BenchRun measure(const PreparedRun& prepared, const SolveOptions& options) {
   if (run.solved) {
     run.controls = static_cast<int>(result.plan.controls.size());
     run.pushes = solution.replay->pushes;
+    run.bodies_moved = static_cast<int>(solution.replay->moved_bodies.size());
     run.solution_duration_s = result.plan.total_steps() * prepared.world().planner.step_size;
   }
   return run;

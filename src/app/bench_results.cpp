@@ -47,6 +47,7 @@ std::map<std::string, std::string> ompl_run(const BenchRun& run, double counted_
   if (run.solved) {
     values["solution segments INTEGER"] = std::to_string(run.controls);
     values["pushes INTEGER"] = std::to_string(run.pushes);
+    values["bodies moved INTEGER"] = std::to_string(run.bodies_moved);
     values["solution duration REAL"] = fmt::format("{}", run.solution_duration_s);
   }
   return values;
@@ -56,7 +57,7 @@ std::map<std::string, std::string> ompl_run(const BenchRun& run, double counted_
 
 PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
   PlannerSummary s;
-  std::vector<double> nodes, pushes, durations;
+  std::vector<double> nodes, pushes, moved, durations;
   double wall = 0.0, propagations = 0.0;
   for (const auto& run : planner.runs) {
     s.solved += run.solved;
@@ -66,6 +67,7 @@ PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
     propagations += static_cast<double>(run.propagations);
     if (run.solved) {
       pushes.push_back(run.pushes);
+      moved.push_back(run.bodies_moved);
       durations.push_back(run.solution_duration_s);
     }
   }
@@ -76,6 +78,7 @@ PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
   s.tree_nodes_median = statistics::median(nodes);
   s.propagations_per_s = wall > 0.0 ? propagations / wall : 0.0;
   s.pushes_median = statistics::median(pushes);
+  s.bodies_moved_median = statistics::median(moved);
   s.solution_duration_median_s = statistics::median(durations);
   return s;
 }
@@ -111,14 +114,14 @@ std::string planner_label(const BenchResults& results, const PlannerRuns& planne
 std::string bench_table(const BenchResults& r) {
   std::string text = fmt::format("{}: {} runs ({}), time limit {:g} s, {}\n", r.scenario, r.runs, seeds_text(r),
                                  r.time_limit_s, threads_text(r.threads));
-  text += fmt::format("{:<12} {:>7} {:>9} {:>8} {:>8} {:>8} {:>7} {:>8} {:>7} {:>10}\n", "planner", "solved",
-                      "median_s", "mean_s", "p90_s", "max_s", "nodes", "prop/s", "pushes", "duration_s");
+  text += fmt::format("{:<12} {:>7} {:>9} {:>8} {:>8} {:>8} {:>7} {:>8} {:>7} {:>6} {:>10}\n", "planner", "solved",
+                      "median_s", "mean_s", "p90_s", "max_s", "nodes", "prop/s", "pushes", "moved", "duration_s");
   for (const auto& p : r.planners) {
     const PlannerSummary s = summarize(p, r.time_limit_s);
-    text += fmt::format("{:<12} {:>7} {:>9.3f} {:>8.3f} {:>8.3f} {:>8.3f} {:>7.0f} {:>8.0f} {:>7.1f} {:>10.2f}\n",
+    text += fmt::format("{:<12} {:>7} {:>9.3f} {:>8.3f} {:>8.3f} {:>8.3f} {:>7.0f} {:>8.0f} {:>7.1f} {:>6.1f} {:>10.2f}\n",
                         planner_label(r, p), fmt::format("{}/{}", s.solved, p.runs.size()), s.median_s,
                         s.mean_s, s.p90_s, s.max_s, s.tree_nodes_median, s.propagations_per_s, s.pushes_median,
-                        s.solution_duration_median_s);
+                        s.bodies_moved_median, s.solution_duration_median_s);
   }
   if (const auto ratio = ratio_of_medians(r)) {
     text += fmt::format("ratio of medians (baseline / knowledge): {:.2f}\n", *ratio);
@@ -126,7 +129,7 @@ std::string bench_table(const BenchResults& r) {
   for (const auto& [threads, ratio] : threads_ratios(r)) {
     text += fmt::format("ratio of medians (knowledge x{} / knowledge x{}): {:.2f}\n", threads, r.threads[0], ratio);
   }
-  text += "times count unsolved runs at the time limit; pushes and duration are medians over solved runs\n";
+  text += "times count unsolved runs at the time limit; pushes, moved (bodies) and duration are medians over solved runs\n";
   return text;
 }
 
@@ -146,6 +149,7 @@ json bench_json(const BenchResults& r) {
       if (run.solved) {
         entry["controls"] = run.controls;
         entry["pushes"] = run.pushes;
+        entry["bodies_moved"] = run.bodies_moved;
         entry["solution_duration_s"] = run.solution_duration_s;
       }
       runs.push_back(std::move(entry));
@@ -161,6 +165,7 @@ json bench_json(const BenchResults& r) {
                         {"tree_nodes_median", s.tree_nodes_median},
                         {"propagations_per_s", s.propagations_per_s},
                         {"pushes_median", s.pushes_median},
+                        {"bodies_moved_median", s.bodies_moved_median},
                         {"solution_duration_median_s", s.solution_duration_median_s},
                         {"per_run", std::move(runs)}});
   }

@@ -24,6 +24,7 @@ struct BenchRun {
   long long physics_steps = 0;
   int controls = 0;            // solved runs only
   int pushes = 0;
+  int bodies_moved = 0;
   double solution_duration_s = 0.0;
 };
 
@@ -55,6 +56,7 @@ struct PlannerSummary {
   double tree_nodes_median = 0.0;
   double propagations_per_s = 0.0;  // all propagations over all wall time
   double pushes_median = 0.0;       // over solved runs
+  double bodies_moved_median = 0.0;  // over solved runs
   double solution_duration_median_s = 0.0;  // over solved runs
 };
 

@@ -9,11 +9,6 @@ using json = nlohmann::ordered_json;
 
 json point(const scenario::Vec2& p) { return {p.x(), p.y()}; }
 
-// A body moved when the replay left it more than a centimetre or a degree from where it started.
-bool moved(const geometry::Pose2& from, const geometry::Pose2& to) {
-  return (to.position - from.position).norm() > 0.01 || std::abs(to.yaw - from.yaw) > 0.0175;
-}
-
 }  // namespace
 
 const char* guidance_name(planning::Guidance guidance) {
@@ -61,6 +56,7 @@ json report_json(const RunSummary& run) {
     };
     report["controls"] = r.plan.controls.size();
     report["pushes"] = run.replay->pushes;
+    report["bodies_moved"] = run.replay->moved_bodies.size();
     report["solution_duration_s"] = r.plan.total_steps() * run.world.planner.step_size;
   }
   return report;
@@ -88,11 +84,7 @@ json plan_json(const RunSummary& run) {
     states.push_back({{"robot", robot}, {"bodies", bodies}});
   }
   json moved_bodies = json::array();
-  for (size_t b = 0; b < world.movable_bodies.size(); ++b) {
-    if (moved(replay.states.front().movable_poses[b], replay.states.back().movable_poses[b])) {
-      moved_bodies.push_back(world.movable_bodies[b].name);
-    }
-  }
+  for (int b : replay.moved_bodies) moved_bodies.push_back(world.movable_bodies[static_cast<size_t>(b)].name);
   return {
       {"scenario", world.source_file},
       {"seed", world.planner.seed},

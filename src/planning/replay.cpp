@@ -103,8 +103,15 @@ Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomato
                (!good_prefix || formula.dfa.accepting[r.automaton_trace.back()]);
   if (!r.accepted && r.failure.empty()) r.failure = "the region trace does not satisfy the formula";
   r.ends_at_rest = !formula.ends_at_rest() || r.states.back().at_rest();
+  for (size_t b = 0; b < world.movable_bodies.size(); ++b) {
+    if (moved(r.states.front().movable_poses[b], r.states.back().movable_poses[b])) r.moved_bodies.push_back(static_cast<int>(b));
+  }
   if (!r.ends_at_rest && r.failure.empty()) r.failure = "the plan does not end with the robot and the boxes at rest";
   return r;
+}
+
+bool moved(const geometry::Pose2& from, const geometry::Pose2& to) {
+  return (to.position - from.position).norm() > 0.01 || std::abs(std::remainder(to.yaw - from.yaw, 2 * std::numbers::pi)) > 0.0175;
 }
 
 std::vector<std::string> region_names(const scenario::World& world, const std::vector<int>& region_trace) {

@@ -33,6 +33,8 @@ TEST(Run, SolvesOrderedAndWritesAValidatedReportAndPlan) {
   EXPECT_EQ(report["invalid_propositions"], nlohmann::json::array());
   EXPECT_GT(report["planning_time_s"].get<double>(), 0.0);
   const auto plan = nlohmann::json::parse(slurp(out / "ordered" / "plan.json"));
+  EXPECT_GE(report["bodies_moved"].get<int>(), 1);  // the boxes on p1 and p3
+  EXPECT_EQ(report["bodies_moved"].get<std::size_t>(), plan["moved_bodies"].size());
   const auto& trace = plan["region_trace"];
   EXPECT_EQ(trace.front(), "p0");
   EXPECT_EQ(trace.size(), plan["states"].size());

@@ -19,6 +19,8 @@ struct Replay {
   std::vector<int> automaton_trace;  // state of the formula's automaton after reading each region
   std::vector<bool> pushing;         // the robot touched a movable body during the step into this state
   int pushes = 0;                    // controls during which the robot touched a movable body
+  // Movable bodies the plan left more than a centimetre or a degree from where they started, World order.
+  std::vector<int> moved_bodies;
 
   bool reproduces_plan = false;  // every state after a control equals the planned one, bit for bit
   bool valid = false;            // every step passes the validity rules of the mode it was planned in
@@ -44,6 +46,9 @@ Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomato
 
 // Why `control` is outside what the robot can be asked, or "" when it is within its bounds.
 std::string control_out_of_bounds(const scenario::World& world, const Control& control);
+
+// Whether a body at `to` counts as moved from `from`: more than a centimetre or a degree away.
+bool moved(const geometry::Pose2& from, const geometry::Pose2& to);
 
 // Region names along the trace ("p0" outside every region), as plan.json stores them.
 std::vector<std::string> region_names(const scenario::World& world, const std::vector<int>& region_trace);
