@@ -37,7 +37,8 @@ std::vector<int> distances_to_accept(const TaskAutomaton& task) {
 
 }  // namespace
 
-ProductGraph::ProductGraph(const decomposition::Decomposition& decomposition, const TaskAutomaton& task)
+ProductGraph::ProductGraph(const decomposition::Decomposition& decomposition, const TaskAutomaton& task,
+                           std::span<const double> triangle_weight)
     : task_(task),
       automaton_states_(static_cast<int>(task.dfa.size())),
       distance_to_accept_(distances_to_accept(task)),
@@ -55,23 +56,29 @@ ProductGraph::ProductGraph(const decomposition::Decomposition& decomposition, co
     const int distance = distance_to_accept_[automaton_state_of(i)];
     volume_per_distance_[id] = distance < 0 ? 0.0 : decomposition.triangles()[triangle_of(i)].area / (distance + 1.0);
   }
+  lead_scale_.assign(decomposition.size(), 1.0);
+  if (!triangle_weight.empty()) std::copy(triangle_weight.begin(), triangle_weight.end(), lead_scale_.begin());
   entry_cost_.resize(motions_.size());
-  for (size_t id = 0; id < motions_.size(); ++id) entry_cost_[id] = 1.0 / weight(static_cast<int>(id));
+  for (size_t id = 0; id < motions_.size(); ++id) update_entry_cost(static_cast<int>(id));
+}
+
+void ProductGraph::update_entry_cost(int id) {
+  entry_cost_[id] = 1.0 / (weight(id) * lead_scale_[static_cast<size_t>(triangle_of(id))]);
 }
 
 void ProductGraph::add_motion(int id, int motion) {
   motions_[id].push_back(motion);
-  entry_cost_[id] = 1.0 / weight(id);
+  update_entry_cost(id);
 }
 
 void ProductGraph::remove_motion(int id, int motion) {
   std::erase(motions_[id], motion);
-  entry_cost_[id] = 1.0 / weight(id);
+  update_entry_cost(id);
 }
 
 void ProductGraph::count_selection(int id) {
   ++selections_[id];
-  entry_cost_[id] = 1.0 / weight(id);
+  update_entry_cost(id);
 }
 
 std::vector<int> ProductGraph::lead(int start, int horizon) {

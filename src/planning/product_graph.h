@@ -5,6 +5,7 @@
 #include "physltl/decomposition/decomposition.h"
 #include "physltl/planning/task.h"
 
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -12,7 +13,10 @@ namespace physltl::planning {
 
 class ProductGraph {
  public:
-  ProductGraph(const decomposition::Decomposition& decomposition, const TaskAutomaton& task);
+  // `triangle_weight`, when given, scales each triangle's weight in the lead search only (1: as Bhatia et
+  // al.; less: the lead avoids it); where to grow keeps the plain weights.
+  ProductGraph(const decomposition::Decomposition& decomposition, const TaskAutomaton& task,
+               std::span<const double> triangle_weight = {});
 
   int id(int triangle, int automaton_state) const { return triangle * automaton_states_ + automaton_state; }
   int triangle_of(int id) const { return id / automaton_states_; }
@@ -53,7 +57,9 @@ class ProductGraph {
   std::vector<double> volume_per_distance_;
   std::vector<std::vector<int>> motions_;
   std::vector<int> selections_;
-  std::vector<double> entry_cost_;  // 1 / weight, kept up to date: the lead search reads it for every edge
+  void update_entry_cost(int id);
+  std::vector<double> lead_scale_;  // per triangle
+  std::vector<double> entry_cost_;  // 1 / (weight * lead scale), kept up to date: the lead search reads it for every edge
   std::vector<double> lead_cost_;
   std::vector<int> lead_previous_;
   std::vector<std::pair<double, int>> lead_open_;
