@@ -26,7 +26,13 @@ Vec2 random_unit(Random& random) {
 
 ControlSampler::ControlSampler(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
                                bool use_knowledge)
-    : world_(world), knowledge_(knowledge), use_knowledge_(use_knowledge) {}
+    : world_(world), knowledge_(knowledge), use_knowledge_(use_knowledge) {
+  for (const auto& body : knowledge.movable_bodies) {
+    double reach = 0.0;
+    for (const auto& m : body.mregions) reach = std::max(reach, m.strip.pose.position.norm() + m.strip.half_extents.norm());
+    mregion_reach_.push_back(reach);
+  }
+}
 
 Vec2 ControlSampler::uniform_setpoint(Random& random) const {
   const auto& robot = world_.robot;
@@ -53,6 +59,7 @@ bool ControlSampler::push_towards(const scenario::EnvironmentState& state, const
   for (size_t b = 0; b < knowledge_.movable_bodies.size(); ++b) {
     const auto& body = knowledge_.movable_bodies[b];
     const auto& pose = state.movable_poses[b];
+    if ((pose.position - state.robot_position).squaredNorm() > mregion_reach_[b] * mregion_reach_[b]) continue;
     for (const auto& mregion : body.mregions) {
       if (!kappa.bodies[b].active_sides.contains(mregion.side)) continue;
       if (!knowledge::mregion_at(mregion, pose).contains(state.robot_position)) continue;

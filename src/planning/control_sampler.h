@@ -31,6 +31,9 @@ class ControlSampler {
   const scenario::World& world_;
   const knowledge::AbstractKnowledge& knowledge_;
   bool use_knowledge_;
+  // Per movable body, how far from its centre any point of its mRegions lies: a body farther than that
+  // from the robot has no mRegion the robot stands in, which saves placing them.
+  std::vector<double> mregion_reach_;
 };
 
 }  // namespace physltl::planning
