@@ -57,7 +57,7 @@ std::map<std::string, std::string> ompl_run(const BenchRun& run, double counted_
 
 PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
   PlannerSummary s;
-  std::vector<double> nodes, pushes, moved, durations;
+  std::vector<double> nodes, pushes, moved, durations, improve, first_pushes, first_durations;
   double wall = 0.0, propagations = 0.0;
   for (const auto& run : planner.runs) {
     s.solved += run.solved;
@@ -68,6 +68,9 @@ PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
     if (run.solved) {
       pushes.push_back(run.pushes);
       moved.push_back(run.bodies_moved);
+      improve.push_back(run.improve_s);
+      first_pushes.push_back(run.first_pushes);
+      first_durations.push_back(run.first_duration_s);
       durations.push_back(run.solution_duration_s);
     }
   }
@@ -79,6 +82,9 @@ PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
   s.propagations_per_s = wall > 0.0 ? propagations / wall : 0.0;
   s.pushes_median = statistics::median(pushes);
   s.bodies_moved_median = statistics::median(moved);
+  s.improve_median_s = statistics::median(improve);
+  s.first_pushes_median = statistics::median(first_pushes);
+  s.first_duration_median_s = statistics::median(first_durations);
   s.solution_duration_median_s = statistics::median(durations);
   return s;
 }
@@ -129,7 +135,15 @@ std::string bench_table(const BenchResults& r) {
   for (const auto& [threads, ratio] : threads_ratios(r)) {
     text += fmt::format("ratio of medians (knowledge x{} / knowledge x{}): {:.2f}\n", threads, r.threads[0], ratio);
   }
-  text += "times count unsolved runs at the time limit; pushes, moved (bodies) and duration are medians over solved runs\n";
+  if (r.improve > 0) {
+    for (const auto& p : r.planners) {
+      const PlannerSummary s = summarize(p, r.time_limit_s);
+      text += fmt::format("{}: improving ({} candidates) took a median {:.3f} s: duration {:.2f} -> {:.2f} s, pushes {:.1f} -> {:.1f}\n",
+                          planner_label(r, p), r.improve, s.improve_median_s, s.first_duration_median_s,
+                          s.solution_duration_median_s, s.first_pushes_median, s.pushes_median);
+    }
+  }
+  text += "times (of the first validated plan) count unsolved runs at the time limit; pushes, moved (bodies) and duration are medians over solved runs\n";
   return text;
 }
 
@@ -150,6 +164,9 @@ json bench_json(const BenchResults& r) {
         entry["controls"] = run.controls;
         entry["pushes"] = run.pushes;
         entry["bodies_moved"] = run.bodies_moved;
+        entry["improve_s"] = run.improve_s;
+        entry["first_pushes"] = run.first_pushes;
+        entry["first_duration_s"] = run.first_duration_s;
         entry["solution_duration_s"] = run.solution_duration_s;
       }
       runs.push_back(std::move(entry));
@@ -166,6 +183,9 @@ json bench_json(const BenchResults& r) {
                         {"propagations_per_s", s.propagations_per_s},
                         {"pushes_median", s.pushes_median},
                         {"bodies_moved_median", s.bodies_moved_median},
+                        {"improve_median_s", s.improve_median_s},
+                        {"first_pushes_median", s.first_pushes_median},
+                        {"first_duration_median_s", s.first_duration_median_s},
                         {"solution_duration_median_s", s.solution_duration_median_s},
                         {"per_run", std::move(runs)}});
   }
@@ -178,6 +198,7 @@ json bench_json(const BenchResults& r) {
           {"runs", r.runs},
           {"first_seed", r.first_seed},
           {"time_limit_s", r.time_limit_s},
+          {"improve", r.improve},
           {"threads", r.threads},
           {"started_at", r.started_at},
           {"total_duration_s", r.total_duration_s},

@@ -18,14 +18,17 @@ struct BenchRun {
   std::uint64_t seed = 0;
   bool solved = false;         // a plan that replay validated
   std::string stop_reason;
-  double wall_s = 0.0;         // planning and validating, as measured
+  double wall_s = 0.0;         // planning and validating the first plan, as measured
+  double improve_s = 0.0;      // shortening it afterwards (--improve), measured apart
   long long tree_nodes = 0;
   long long propagations = 0;
   long long physics_steps = 0;
   int controls = 0;            // solved runs only
   int pushes = 0;
   int bodies_moved = 0;
-  double solution_duration_s = 0.0;
+  double solution_duration_s = 0.0;  // of the plan bench ends with (improved, with --improve)
+  int first_pushes = 0;              // of the first validated plan
+  double first_duration_s = 0.0;
 };
 
 // One planner with one thread count.
@@ -36,6 +39,7 @@ struct PlannerRuns {
 };
 
 struct BenchResults {
+  int improve = 0;             // --improve candidates per run
   std::string scenario;       // the World's name
   std::string scenario_file;
   std::vector<std::string> settings;  // --set key=value
@@ -57,6 +61,9 @@ struct PlannerSummary {
   double propagations_per_s = 0.0;  // all propagations over all wall time
   double pushes_median = 0.0;       // over solved runs
   double bodies_moved_median = 0.0;  // over solved runs
+  double improve_median_s = 0.0;     // over solved runs
+  double first_pushes_median = 0.0;  // over solved runs: the first validated plans
+  double first_duration_median_s = 0.0;
   double solution_duration_median_s = 0.0;  // over solved runs
 };
 

@@ -57,6 +57,17 @@ json report_json(const RunSummary& run) {
     report["controls"] = r.plan.controls.size();
     report["pushes"] = run.replay->pushes;
     report["bodies_moved"] = run.replay->moved_bodies.size();
+    if (run.improvement != nullptr) {
+      const auto measures = [](const planning::PlanMeasures& m) {
+        return json{{"duration_s", m.duration_s}, {"pushes", m.pushes}, {"bodies_moved", m.bodies_moved},
+                    {"path_length_m", m.path_length_m}};
+      };
+      report["improvement"] = {{"candidates", run.improvement->candidates},
+                               {"accepted", run.improvement->accepted},
+                               {"time_s", run.improvement->time_s},
+                               {"first", measures(run.improvement->first)},
+                               {"improved", measures(run.improvement->improved)}};
+    }
     report["solution_duration_s"] = r.plan.total_steps() * run.world.planner.step_size;
   }
   return report;

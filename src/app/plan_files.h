@@ -3,6 +3,7 @@
 // docs/outputs.md; the ones named there as stable stay.
 
 #include "physltl/planning/planner.h"
+#include "physltl/planning/validated_plan.h"
 #include "physltl/planning/replay.h"
 #include "physltl/scenario/world.h"
 #include "reasoning.h"
@@ -19,6 +20,7 @@ struct RunSummary {
   planning::Guidance guidance;
   const planning::PlanResult& result;
   const planning::Replay* replay;  // null when nothing was solved
+  const planning::Improvement* improvement = nullptr;  // when the plan was improved
 };
 
 nlohmann::ordered_json report_json(const RunSummary& run);

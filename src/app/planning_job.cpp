@@ -22,6 +22,7 @@ planning::ValidatedPlan solve(const PreparedRun& run, const SolveOptions& option
   planner.time_limit = options.time_limit;
   planner.stop = options.stop;
   planner.threads = options.threads;
+  planner.improve = options.improve;
   const planning::Problem problem{run.world(), run.search_task(options.guidance), run.as_written(),
                                   run.reasoning().knowledge, run.decomposition()};
   return planning::plan_and_validate(problem, planner);

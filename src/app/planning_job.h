@@ -40,6 +40,7 @@ struct SolveOptions {
   std::uint64_t seed = 1;
   double time_limit = 60.0;
   int threads = 1;
+  int improve = 0;  // candidates spent shortening the first validated plan
   const std::atomic<bool>* stop = nullptr;  // Ctrl-C
 };
 

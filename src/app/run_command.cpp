@@ -25,6 +25,8 @@
 namespace physltl::app {
 namespace {
 
+constexpr int kDefaultImprove = 100;
+
 struct RunArgs {
   ScenarioArgs scenario;
   bool render = false;
@@ -33,6 +35,8 @@ struct RunArgs {
   std::string out_dir = "out";
   bool baseline = false;
   bool quiet = false;
+  // Shortening the first validated plan (docs/planner.md).
+  int improve = kDefaultImprove;
   // One per core: threads change how soon the plan is found, never which plan (bench defaults to one
   // thread, the fair figure).
   int threads = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
@@ -90,6 +94,7 @@ int run(const RunArgs& args) {
                                                             .seed = world.planner.seed,
                                                             .time_limit = world.planner.time_limit,
                                                             .threads = args.threads,
+                                                            .improve = args.improve,
                                                             .stop = &stop.flag()});
   progress.done();
   const planning::PlanResult& result = solution.result;
@@ -113,10 +118,15 @@ int run(const RunArgs& args) {
               << "; nothing written\n";
     return kExitNoPlan;
   }
+  if (const auto& improved = solution.improvement) {
+    say(fmt::format("improve    {} of {} candidates kept in {:.2f} s: {:.1f} -> {:.1f} s of motion, {} -> {} pushes",
+                    improved->accepted, improved->candidates, improved->time_s, improved->first.duration_s,
+                    improved->improved.duration_s, improved->first.pushes, improved->improved.pushes));
+  }
   say(fmt::format("plan       {} controls, {:.1f} s of motion, {} pushes, validated by replay",
                   result.plan.controls.size(), result.plan.total_steps() * world.planner.step_size, replay.pushes));
 
-  const RunSummary summary{world, reasoning, guidance, result, &replay};
+  const RunSummary summary{world, reasoning, guidance, result, &replay, solution.improvement ? &*solution.improvement : nullptr};
   write_json(out.path() / "report.json", report_json(summary));
   write_json(out.path() / "plan.json", plan_json(summary));
   if (args.render) {
@@ -156,6 +166,10 @@ CommandRunner add_run_command(CLI::App& app) {
   app.add_option("--out", args->out_dir, "Folder for outputs; each scenario writes <out>/<name>/")->capture_default_str();
   app.add_flag("--baseline", args->baseline, "Plan without knowledge: the paper's simple physics-based LTL planner");
   app.add_flag("--quiet", args->quiet, "Print only errors");
+  app.add_option("--improve", args->improve,
+                 "Candidates spent shortening the first validated plan (0: keep it as found; same seed, same plan)")
+      ->check(CLI::Range(0, 1000000))
+      ->capture_default_str();
   app.add_option("--threads", args->threads,
                  "Threads growing the search tree (default: one per core; the same plan with any number)")
       ->check(CLI::Range(1, 64))

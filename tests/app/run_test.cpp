@@ -34,6 +34,10 @@ TEST(Run, SolvesOrderedAndWritesAValidatedReportAndPlan) {
   EXPECT_GT(report["planning_time_s"].get<double>(), 0.0);
   const auto plan = nlohmann::json::parse(slurp(out / "ordered" / "plan.json"));
   EXPECT_GE(report["bodies_moved"].get<int>(), 1);  // the boxes on p1 and p3
+  const auto& improvement = report["improvement"];  // 100 candidates by default
+  EXPECT_EQ(improvement["candidates"], 100);
+  EXPECT_LE(improvement["improved"]["duration_s"].get<double>(), improvement["first"]["duration_s"].get<double>());
+  EXPECT_NEAR(improvement["improved"]["duration_s"].get<double>(), report["solution_duration_s"].get<double>(), 1e-9);
   EXPECT_EQ(report["bodies_moved"].get<std::size_t>(), plan["moved_bodies"].size());
   const auto& trace = plan["region_trace"];
   EXPECT_EQ(trace.front(), "p0");
@@ -67,6 +71,15 @@ TEST(Run, ADifferentialRobotsPlanCarriesItsHeadingAndKeepsItsLimits) {
     EXPECT_LE(std::abs(control["forward_speed"].get<double>()), 1.0);
     EXPECT_LE(std::abs(control["turn_rate"].get<double>()), std::numbers::pi / 2 + 1e-12);
   }
+}
+
+TEST(Run, ImproveZeroKeepsThePlanTheSearchFound) {
+  const fs::path out = fresh_out_dir();
+  const Result r = run(kSource + "/scenarios/ordered.lua --seed 3 --improve 0 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto report = nlohmann::json::parse(slurp(out / "ordered" / "report.json"));
+  EXPECT_FALSE(report.contains("improvement"));
+  EXPECT_EQ(run(kSource + "/scenarios/ordered.lua --improve -1").exit_code, 2);
 }
 
 // Threads change how soon a plan is found, never which plan.

@@ -1,3 +1,4 @@
+#include "physltl/planning/improve.h"
 #include "physltl/planning/planner.h"
 #include "physltl/planning/replay.h"
 
@@ -166,6 +167,52 @@ TEST(Planner, TheKnowledgePlannerGoesRoundABoxInTheOpen) {
     EXPECT_EQ(r.pushes, 0) << "seed " << seed;
     EXPECT_TRUE(r.moved_bodies.empty()) << "seed " << seed;
   }
+}
+
+ValidatedPlan solve_and_improve(const TestProblem& p, std::uint64_t seed, int improve) {
+  PlannerOptions options;
+  options.seed = seed;
+  options.time_limit = 20;
+  options.improve = improve;
+  return plan_and_validate(p.problem(), options);
+}
+
+void expect_same_plan(const Plan& a, const Plan& b) {
+  ASSERT_EQ(a.controls.size(), b.controls.size());
+  for (size_t i = 0; i < a.controls.size(); ++i) {
+    EXPECT_EQ(a.controls[i].setpoint, b.controls[i].setpoint);
+    EXPECT_EQ(a.controls[i].steps, b.controls[i].steps);
+    EXPECT_EQ(a.states[i], b.states[i]);
+  }
+}
+
+TEST(Improve, NoBudgetKeepsTheFirstValidatedPlanAsItWas) {
+  const TestProblem p("ordered.lua");
+  const ValidatedPlan kept = solve_and_improve(p, 4, 0);
+  ASSERT_TRUE(kept.solved());
+  EXPECT_FALSE(kept.improvement);
+  expect_same_plan(kept.result.plan, p.solve(4).plan);
+}
+
+TEST(Improve, TheImprovedPlanValidatesIsNeverWorseAndFollowsFromTheSeed) {
+  const TestProblem p("rooms.lua");
+  bool shortened = false;
+  for (std::uint64_t seed : {1, 2, 3}) {
+    const ValidatedPlan improved = solve_and_improve(p, seed, 60);
+    ASSERT_TRUE(improved.solved()) << improved.result.stop_reason;
+    ASSERT_TRUE(improved.improvement);
+    const Improvement& m = *improved.improvement;
+    EXPECT_EQ(m.candidates, 60);
+    EXPECT_LE(m.improved.duration_s, m.first.duration_s);
+    if (m.improved.duration_s == m.first.duration_s) EXPECT_LE(m.improved.pushes, m.first.pushes);
+    shortened |= m.improved.duration_s < m.first.duration_s;
+    // What it reports is the plan it returns, which a fresh replay validates.
+    const Replay again = replay(p.world, improved.result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+    EXPECT_TRUE(again.validated()) << again.failure;
+    EXPECT_NEAR(improved.result.plan.total_steps() * p.world.planner.step_size, m.improved.duration_s, 1e-9);
+    expect_same_plan(improved.result.plan, solve_and_improve(p, seed, 60).result.plan);
+  }
+  EXPECT_TRUE(shortened);  // the budget found something on the paper's scenario A
 }
 
 TEST(Replay, AnEmptyPlanDoesNotSatisfyAVisitTask) {

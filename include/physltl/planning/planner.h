@@ -37,6 +37,8 @@ struct PlannerOptions {
   // Threads growing the one tree, each with its own ODE world. The plan does not depend on it: a seed
   // gives the same plan with any number of threads, only sooner.
   int threads = 1;
+  // Candidates plan_and_validate spends shortening the first validated plan (improve.h); 0: none.
+  int improve = 0;
 };
 
 struct PlannerStats {
