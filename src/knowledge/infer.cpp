@@ -183,20 +183,25 @@ void BodyLocator::move(std::size_t body, const geometry::Pose2& pose) {
   grid_.move(static_cast<int>(body), pose.position);
 }
 
-void reinfer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, BodyLocator& inferred_for,
-             Kappa& kappa) {
+namespace {
+
+bool pose_changed(const geometry::Pose2& now, const geometry::Pose2& was) {
+  return now.position != was.position || now.yaw != was.yaw;
+}
+
+void check_reinfer_sizes(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state,
+                         const BodyLocator& inferred_for, const Kappa& kappa) {
   check_body_count(knowledge, state);
   const size_t n = knowledge.movable_bodies.size();
   if (inferred_for.poses().size() != n || kappa.bodies.size() != n) {
     throw std::invalid_argument("reinfer: kappa was inferred for a different number of movable bodies");
   }
+}
+
+// reinfer once the bodies whose pose changed are in scratch().moved.
+void reinfer_moved(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state,
+                   BodyLocator& inferred_for, Kappa& kappa) {
   Scratch& s = scratch();
-  s.moved.clear();
-  for (size_t j = 0; j < n; ++j) {
-    const geometry::Pose2& now = state.movable_poses[j];
-    const geometry::Pose2& was = inferred_for.poses()[j];
-    if (now.position != was.position || now.yaw != was.yaw) s.moved.push_back(j);
-  }
   if (s.moved.empty()) return;
   // A moved body changes i's mRegions only if it comes, before or after the move, within a robot's
   // diameter of a contact segment of i. The locator then holds the new positions, which are i's centres.
@@ -223,6 +228,31 @@ void reinfer(const AbstractKnowledge& knowledge, const scenario::EnvironmentStat
   for (int i : s.affected) {
     kappa.bodies[static_cast<size_t>(i)] = infer_body(knowledge, state, inferred_for, static_cast<size_t>(i), s.blocked);
   }
+}
+
+}  // namespace
+
+void reinfer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, BodyLocator& inferred_for,
+             Kappa& kappa) {
+  check_reinfer_sizes(knowledge, state, inferred_for, kappa);
+  Scratch& s = scratch();
+  s.moved.clear();
+  for (size_t j = 0; j < knowledge.movable_bodies.size(); ++j) {
+    if (pose_changed(state.movable_poses[j], inferred_for.poses()[j])) s.moved.push_back(j);
+  }
+  reinfer_moved(knowledge, state, inferred_for, kappa);
+}
+
+void reinfer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, BodyLocator& inferred_for,
+             Kappa& kappa, std::span<const int> maybe_moved) {
+  check_reinfer_sizes(knowledge, state, inferred_for, kappa);
+  Scratch& s = scratch();
+  s.moved.clear();
+  for (int body : maybe_moved) {
+    const auto j = static_cast<size_t>(body);
+    if (pose_changed(state.movable_poses[j], inferred_for.poses()[j])) s.moved.push_back(j);
+  }
+  reinfer_moved(knowledge, state, inferred_for, kappa);
 }
 
 Kappa infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state) {

@@ -35,8 +35,12 @@ const char* violation_name(Violation violation) {
   return "?";
 }
 
-Validity check_validity(const AbstractKnowledge& knowledge, const Kappa& kappa, const scenario::EnvironmentState& state,
-                        std::span<const scenario::RobotContact> contacts, ValidityMode mode) {
+namespace {
+
+// check_validity's rules with the workspace test of the movable bodies in `tested` only.
+template <typename Bodies>
+Validity check(const AbstractKnowledge& knowledge, const Kappa& kappa, const scenario::EnvironmentState& state,
+               std::span<const scenario::RobotContact> contacts, ValidityMode mode, const Bodies& tested) {
   const size_t n = knowledge.movable_bodies.size();
   const bool uses_kappa = mode == ValidityMode::kKnowledge;
   if (state.movable_poses.size() != n || (uses_kappa && kappa.bodies.size() != n)) {
@@ -44,7 +48,8 @@ Validity check_validity(const AbstractKnowledge& knowledge, const Kappa& kappa, 
   }
   if (!within_robot_limits(knowledge.robot, state)) return {Violation::kExceedsRobotLimits, -1};
   if (!robot_inside_workspace(knowledge, state.robot_position)) return {Violation::kLeftWorkspace, -1};
-  for (size_t i = 0; i < n; ++i) {
+  for (const auto body : tested) {
+    const auto i = static_cast<size_t>(body);
     const geometry::OrientedBox footprint{state.movable_poses[i], knowledge.movable_bodies[i].footprint.half_extents};
     if (!geometry::inside(footprint, knowledge.workspace, kWorkspaceTolerance)) {
       return {Violation::kLeftWorkspace, static_cast<int>(i)};
@@ -63,6 +68,31 @@ Validity check_validity(const AbstractKnowledge& knowledge, const Kappa& kappa, 
     }
   }
   return {};
+}
+
+// 0, 1, ..., n - 1 without storing them.
+struct AllBodies {
+  std::size_t n;
+  struct Iterator {
+    std::size_t i;
+    std::size_t operator*() const { return i; }
+    Iterator& operator++() { return ++i, *this; }
+    bool operator!=(const Iterator& other) const { return i != other.i; }
+  };
+  Iterator begin() const { return {0}; }
+  Iterator end() const { return {n}; }
+};
+
+}  // namespace
+
+Validity check_validity(const AbstractKnowledge& knowledge, const Kappa& kappa, const scenario::EnvironmentState& state,
+                        std::span<const scenario::RobotContact> contacts, ValidityMode mode) {
+  return check(knowledge, kappa, state, contacts, mode, AllBodies{state.movable_poses.size()});
+}
+
+bool is_valid_after_step(const AbstractKnowledge& knowledge, const Kappa& kappa, const scenario::EnvironmentState& state,
+                         std::span<const scenario::RobotContact> contacts, ValidityMode mode, std::span<const int> moved) {
+  return check(knowledge, kappa, state, contacts, mode, moved).valid();
 }
 
 bool within_robot_limits(const RobotCapabilities& robot, const scenario::EnvironmentState& state) {

@@ -77,6 +77,7 @@ struct Simulation::Impl {
   std::vector<char> in_motion;  // per dynamic body: a box with some velocity (the robot is always awake)
   std::vector<int> moving_boxes;   // the boxes in_motion marks, in no particular order
   std::vector<int> candidates;  // scratch for grid lookups
+  std::vector<int> movers;      // last step's awake boxes as World indices
   DriveBody drive;
   DriveEffort last_drive;
   dJointID wheel_grip = nullptr;  // differential drive only
@@ -266,6 +267,10 @@ struct Simulation::Impl {
       }
     }
     std::sort(woken.begin(), woken.end());
+    movers.clear();
+    for (int i : woken) {
+      if (i > 0) movers.push_back(i - 1);
+    }
     for (int i : enabled_boxes) {
       if (!awake[static_cast<size_t>(i)]) enabled[static_cast<size_t>(i)] = 0, dBodyDisable(dynamic[static_cast<size_t>(i)].body);
     }
@@ -397,6 +402,21 @@ void Simulation::step(const Vec2& setpoint, std::vector<scenario::RobotContact>&
 }
 
 const DriveEffort& Simulation::last_drive() const { return impl_->last_drive; }
+
+std::span<const int> Simulation::last_step_movers() const { return impl_->movers; }
+
+void Simulation::update_environment(scenario::EnvironmentState& out) const {
+  const double* v = impl_->values(0);
+  out.robot_position = {v[0], v[1]};
+  out.robot_velocity = {v[4], v[5]};
+  out.robot_yaw = v[3];
+  out.robot_turn_rate = v[9];
+  for (int i : impl_->movers) {
+    v = impl_->values(static_cast<size_t>(i) + 1);
+    out.movable_poses[static_cast<size_t>(i)] = {{v[0], v[1]}, v[3]};
+    out.movable_velocities[static_cast<size_t>(i)] = {v[4], v[5]};
+  }
+}
 
 void Simulation::read_environment(scenario::EnvironmentState& out) const {
   const size_t bodies = impl_->dynamic.size();

@@ -39,13 +39,15 @@ void TreeGrower::grow(const Motion& from, const Vec2& target, std::uint64_t seed
 bool TreeGrower::valid_step(const Vec2& setpoint, Growth& growth) {
   simulation_.step(setpoint, contacts_);
   ++growth.physics_steps;
-  simulation_.read_environment(environment_);
+  // Only the robot and the bodies the step integrated changed: read, test and infer for those.
+  simulation_.update_environment(environment_);
+  const std::span<const int> movers = simulation_.last_step_movers();
   // VALIDITYCHECKER(E_new, kappa_j), then kappa_{j+1} = INFERENCE(E_new, kappa_j).
-  if (!knowledge::is_valid(knowledge_, kappa_, environment_, contacts_, mode_)) {
+  if (!knowledge::is_valid_after_step(knowledge_, kappa_, environment_, contacts_, mode_, movers)) {
     growth.stopped_by_invalid_step = true;
     return false;
   }
-  if (mode_ == knowledge::ValidityMode::kKnowledge) update_kappa();
+  if (mode_ == knowledge::ValidityMode::kKnowledge) knowledge::reinfer(knowledge_, environment_, kappa_poses_, kappa_, movers);
   return true;
 }
 

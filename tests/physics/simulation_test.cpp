@@ -293,6 +293,35 @@ TEST(Simulation, SaveAndRestoreAtEveryStepChangesNothing) {
   EXPECT_NE(interrupted.environment().movable_poses[0].yaw, 0.0);  // the box did turn
 }
 
+// The planner reads only what a step moved; that must be all that changed.
+TEST(Simulation, UpdatingTheEnvironmentFromTheMoversEqualsReadingItWhole) {
+  auto world = small_world();
+  for (int k = 0; k < 6; ++k) {
+    scenario::MovableBody box = world.movable_bodies[0];
+    box.name = "C" + std::to_string(k);
+    box.footprint.pose.position = {3.8 + 0.6 * (k % 3), 4.2 + 0.8 * (k / 3)};
+    world.movable_bodies.push_back(box);
+  }
+  Simulation sim(world);
+  scenario::EnvironmentState incremental = sim.environment();
+  bool some_moved = false;
+  for (int i = 0; i < 200; ++i) {
+    sim.step({std::cos(i * 0.02), 0.3 * std::sin(i * 0.05)}, contacts);
+    sim.update_environment(incremental);
+    const scenario::EnvironmentState whole = sim.environment();
+    ASSERT_EQ(incremental.robot_position, whole.robot_position) << "step " << i;
+    ASSERT_EQ(incremental.robot_velocity, whole.robot_velocity);
+    for (size_t b = 0; b < whole.movable_poses.size(); ++b) {
+      ASSERT_EQ(incremental.movable_poses[b].position, whole.movable_poses[b].position) << "step " << i << " body " << b;
+      ASSERT_EQ(incremental.movable_poses[b].yaw, whole.movable_poses[b].yaw);
+      ASSERT_EQ(incremental.movable_velocities[b], whole.movable_velocities[b]);
+    }
+    some_moved |= sim.last_step_movers().size() > 1;
+    EXPECT_LT(sim.last_step_movers().size(), whole.movable_poses.size());  // sleeping bodies are left out
+  }
+  EXPECT_TRUE(some_moved);
+}
+
 TEST(Simulation, SimulationsOnTwoThreadsAgree) {
   const auto world = small_world();
   PhysicsState results[2];

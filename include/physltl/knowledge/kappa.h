@@ -63,6 +63,10 @@ void infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState&
 // bodies the World has (plus a comparison of every pose). The result equals infer(knowledge, state).
 void reinfer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, BodyLocator& inferred_for,
              Kappa& kappa);
+// The same when only the bodies `maybe_moved` (indices) can differ from `inferred_for`: the others are
+// not compared, so a step costs what its moving bodies cost.
+void reinfer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, BodyLocator& inferred_for,
+             Kappa& kappa, std::span<const int> maybe_moved);
 
 // The world-frame directions a body at `pose` can be pushed in now, one per active side.
 std::vector<geometry::Vec2> allowed_push_directions(const MovableBodyKnowledge& body, const BodyKappa& kappa,

@@ -11,6 +11,7 @@
 #include "physltl/scenario/world.h"
 
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace physltl::physics {
@@ -51,6 +52,11 @@ class Simulation {
   const DriveEffort& last_drive() const;
 
   void read_environment(scenario::EnvironmentState& out) const;  // reuses out's storage
+  // The movable bodies (World indices, ascending) the last step integrated: every other one kept its
+  // state bit for bit.
+  std::span<const int> last_step_movers() const;
+  // `out` held the environment before the last step: brings the robot and last_step_movers() up to date.
+  void update_environment(scenario::EnvironmentState& out) const;
   scenario::EnvironmentState environment() const;
   double step_size() const;
 
