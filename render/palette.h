@@ -15,6 +15,8 @@ inline constexpr Color kRobot{0.20f, 0.72f, 0.30f};
 inline constexpr Color kRobotNose{0.08f, 0.30f, 0.12f};  // a differential robot's heading
 inline constexpr Color kRegion{1.00f, 0.85f, 0.10f, 0.55f};
 inline constexpr Color kRegionEdge{0.80f, 0.62f, 0.00f};
+inline constexpr Color kAvoidedRegion{0.90f, 0.20f, 0.25f, 0.40f};  // a region the task never enters
+inline constexpr Color kAvoidedRegionEdge{0.70f, 0.05f, 0.10f};
 inline constexpr Color kActiveMRegion{1.00f, 0.50f, 0.00f, 0.45f};
 inline constexpr Color kActiveMRegionEdge{0.85f, 0.35f, 0.00f};
 inline constexpr Color kInactiveMRegion{0.45f, 0.45f, 0.52f, 0.22f};

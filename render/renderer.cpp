@@ -160,6 +160,7 @@ struct Renderer::Impl {
     View view;
     std::vector<std::array<Vec2, 3>> decomposition;
     std::vector<SegmentOverlay> segments;
+    std::vector<std::string> avoided_regions;
     std::unique_ptr<GlFramebuffer> framebuffer;
     std::vector<Vec2> path;  // the path painted so far
   };
@@ -258,8 +259,10 @@ struct Renderer::Impl {
                     palette::kDecomposition);
     }
     for (const scenario::Region& region : world.regions) {
-      paint.polygon(region.polygon, palette::kRegion);
-      paint.outline(region.polygon, kEdgeWidth * metres_per_pixel, palette::kRegionEdge);
+      const bool avoided = std::find(overlay.avoided_regions.begin(), overlay.avoided_regions.end(), region.name) !=
+                           overlay.avoided_regions.end();
+      paint.polygon(region.polygon, avoided ? palette::kAvoidedRegion : palette::kRegion);
+      paint.outline(region.polygon, kEdgeWidth * metres_per_pixel, avoided ? palette::kAvoidedRegionEdge : palette::kRegionEdge);
     }
     return paint;
   }
@@ -378,7 +381,8 @@ struct Renderer::Impl {
   // copied picture shows a wall.
   const GlFramebuffer& static_scene(View view_kind, const CameraView& view, const Overlay& overlay) {
     if (!background || background->view != view_kind || background->decomposition != overlay.decomposition ||
-        background->segments != overlay.segments || !extends(overlay.path, background->path)) {
+        background->segments != overlay.segments || background->avoided_regions != overlay.avoided_regions ||
+        !extends(overlay.path, background->path)) {
       draw_static_scene(view_kind, view, overlay);
     }
     paint_path(overlay.path, view);
@@ -436,7 +440,8 @@ struct Renderer::Impl {
     draw_lit(fixed_layer, view);  // the depth; its colour is replaced next
     copy_framebuffer(supersampled.id(), supersampled.width(), supersampled.height(), framebuffer->id(), width, height,
                      GL_COLOR_BUFFER_BIT, GL_LINEAR);
-    background = Background{view_kind, overlay.decomposition, overlay.segments, std::move(framebuffer), {}};
+    background = Background{view_kind, overlay.decomposition, overlay.segments, overlay.avoided_regions,
+                            std::move(framebuffer), {}};
   }
 
   Image draw(const scenario::EnvironmentState& state, const Overlay& overlay, View view_kind) {

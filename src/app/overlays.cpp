@@ -21,11 +21,13 @@ std::vector<render::MRegionOverlay> mregion_overlays(const knowledge::AbstractKn
 render::Overlay preview_overlay(const Reasoning& r) {
   render::Overlay overlay;
   overlay.mregions = mregion_overlays(r.knowledge, r.initial_kappa, r.initial_state);
+  overlay.avoided_regions = ltl::avoided_propositions(r.task.normal_form);
   overlay.legend.push_back("task: " + ltl::to_string(r.task.input));
   for (const knowledge::InvalidProposition& p : r.feasibility.invalid) overlay.legend.push_back("unreachable " + p.reason);
   const std::optional<ltl::Formula> simplified = r.simplified_formula();
   overlay.legend.push_back(simplified ? "planned: " + ltl::to_string(*simplified) : "infeasible");
   if (!overlay.mregions.empty()) overlay.legend.push_back("mRegions: coloured = the robot may push from there, grey = blocked");
+  if (!overlay.avoided_regions.empty()) overlay.legend.push_back("red: regions the task never enters");
   return overlay;
 }
 

@@ -56,6 +56,7 @@ PlanFrames write_plan_frames(const scenario::World& world, const Reasoning& reas
   knowledge::Kappa kappa;
   // One overlay for all frames: the travelled path only grows, so it is extended, not rebuilt per frame.
   render::Overlay overlay;
+  overlay.avoided_regions = ltl::avoided_propositions(reasoning.task.normal_form);
   for (int f = 0; f < frames; ++f) {
     const double time = static_cast<double>(f) / world.render.fps;
     const double index = std::min(time / dt, static_cast<double>(replay.states.size() - 1));

@@ -250,4 +250,31 @@ std::vector<std::string> propositions(const Formula& f) {
   return out;
 }
 
+std::vector<std::string> avoided_propositions(const Formula& pnf) {
+  std::vector<std::string> negated, positive;
+  const auto note = [](std::vector<std::string>& list, const std::string& name) {
+    if (std::find(list.begin(), list.end(), name) == list.end()) list.push_back(name);
+  };
+  const auto walk = [&](const auto& self, const Formula& f, bool both) -> void {
+    if (f.op() == Op::Atom) {
+      note(positive, f.name());
+      if (both) note(negated, f.name());
+      return;
+    }
+    if (f.op() == Op::Not && f.child(0).op() == Op::Atom) {
+      note(negated, f.child(0).name());
+      if (both) note(positive, f.child(0).name());
+      return;
+    }
+    const bool self_dual = f.op() == Op::Equiv || f.op() == Op::Xor;
+    for (const Formula& c : f.children()) self(self, c, both || self_dual);
+  };
+  walk(walk, pnf, false);
+  std::vector<std::string> avoided;
+  for (const std::string& name : negated) {
+    if (std::find(positive.begin(), positive.end(), name) == positive.end()) avoided.push_back(name);
+  }
+  return avoided;
+}
+
 }  // namespace physltl::ltl

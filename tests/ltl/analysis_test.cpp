@@ -1,5 +1,6 @@
 #include "physltl/ltl/analysis.h"
 #include "physltl/ltl/co_safety.h"
+#include "physltl/ltl/normal_form.h"
 #include "physltl/ltl/parser.h"
 
 #include <gtest/gtest.h>
@@ -63,6 +64,16 @@ TEST(Analysis, NamesTheClassOfEveryKindOfTask) {
   EXPECT_NE(out.str().find("class:       co-safe and safety"), std::string::npos) << out.str();
   EXPECT_NE(out.str().find("stopping and staying"), std::string::npos) << out.str();
   EXPECT_NE(out.str().find("not co-safe: G at column 10"), std::string::npos) << out.str();
+}
+
+TEST(Formula, TheRegionsATaskAvoidsAreThoseItMentionsOnlyNegated) {
+  const auto avoided = [](const char* text) { return avoided_propositions(positive_normal_form(parse(text))); };
+  EXPECT_EQ(avoided("F goal & G !hazard"), std::vector<std::string>{"hazard"});
+  EXPECT_EQ(avoided("!hazard U goal"), std::vector<std::string>{"hazard"});
+  EXPECT_EQ(avoided("(F p1 | F p2) & G !p3"), std::vector<std::string>{"p3"});
+  EXPECT_EQ(avoided("!F p3 & F p1"), std::vector<std::string>{"p3"});  // a negated visit is an avoidance
+  EXPECT_TRUE(avoided("F a & !a").empty());  // visited too
+  EXPECT_TRUE(avoided("F(a <-> !b)").empty());  // both polarities
 }
 
 // Regions are disjoint: the robot is never in two at once, so some tasks have no run at all.

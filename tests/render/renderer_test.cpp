@@ -50,6 +50,15 @@ TEST(RendererGolden, RoomsSearchTreeFromAbove) {
   EXPECT_TRUE(matches_golden(draw(paper_world("rooms"), test::synthetic_tree_of_rooms(), View::kTop), "rooms_tree"));
 }
 
+// A region the task never enters is drawn in red, not in the goals' yellow.
+TEST(RendererGolden, AvoidedRegionInRed) {
+  const scenario::World world = paper_world("avoid");
+  Overlay overlay;
+  overlay.avoided_regions = {"hazard"};
+  overlay.legend = {world.task.formula};
+  EXPECT_TRUE(matches_golden(draw(world, overlay, View::kPerspective), "avoid_preview"));
+}
+
 // A differential robot shows where it faces: a dark bar from its centre past its front.
 TEST(RendererGolden, DifferentialRobotShowsItsHeading) {
   scenario::World world;

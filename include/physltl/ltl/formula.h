@@ -86,6 +86,10 @@ std::ostream& operator<<(std::ostream& out, const Formula& f);
 // The atomic propositions of `f`, each once, in order of first occurrence from left to right.
 std::vector<std::string> propositions(const Formula& f);
 
+// The propositions that a formula in positive normal form mentions only negated (`!hazard`): the regions a
+// task avoids, in order of first occurrence. Operands of `<->` and `^` count as both.
+std::vector<std::string> avoided_propositions(const Formula& pnf);
+
 }  // namespace physltl::ltl
 
 template <>

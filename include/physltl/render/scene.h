@@ -38,6 +38,8 @@ struct Overlay {
   std::vector<SegmentOverlay> segments;
   // The solution path (or the travelled part of it), on the floor above the tree; moving bodies pass over it.
   std::vector<Vec2> path;
+  // Regions the task avoids (by name): drawn in a warning colour instead of the goals' yellow.
+  std::vector<std::string> avoided_regions;
   // Lines of text in the top-left corner: formula, automaton state, time, ...
   std::vector<std::string> legend;
 };
