@@ -82,10 +82,11 @@ PlanFrames write_plan_frames(const scenario::World& world, const Reasoning& reas
   return {written, encoder.finish()};
 }
 
-void write_tree_picture(const scenario::World& world, const decomposition::Decomposition& decomposition,
-                        const planning::PlanResult& result, const planning::Replay* replay,
-                        const std::filesystem::path& file) {
+void write_tree_picture(const scenario::World& world, const Reasoning& reasoning,
+                        const decomposition::Decomposition& decomposition, const planning::PlanResult& result,
+                        const planning::Replay* replay, const std::filesystem::path& file) {
   render::Overlay overlay;
+  overlay.avoided_regions = ltl::avoided_propositions(reasoning.task.normal_form);
   for (const auto& t : decomposition.triangles()) overlay.decomposition.push_back(t.corners);
   int states = 1;
   for (const auto& e : result.tree) states = std::max(states, e.automaton_state + 1);

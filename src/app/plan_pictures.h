@@ -29,10 +29,11 @@ PlanFrames write_plan_frames(const scenario::World& world, const Reasoning& reas
                              int automaton_states, const std::filesystem::path& folder,
                              const std::filesystem::path& video, const Progress& progress);
 
-// tree.png: the decomposition faintly, the tree's edges coloured by automaton state, the path on top.
-void write_tree_picture(const scenario::World& world, const decomposition::Decomposition& decomposition,
-                        const planning::PlanResult& result, const planning::Replay* replay,
-                        const std::filesystem::path& file);
+// tree.png: the decomposition faintly, the tree's edges coloured by automaton state, the path on top;
+// `reasoning` names the regions the task avoids.
+void write_tree_picture(const scenario::World& world, const Reasoning& reasoning,
+                        const decomposition::Decomposition& decomposition, const planning::PlanResult& result,
+                        const planning::Replay* replay, const std::filesystem::path& file);
 
 // A colour per automaton state, from start (cool) to accepting (warm).
 render::Color automaton_state_color(int state, int states);

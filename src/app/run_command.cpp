@@ -130,7 +130,7 @@ int run(const RunArgs& args) {
   write_json(out.path() / "report.json", report_json(summary));
   write_json(out.path() / "plan.json", plan_json(summary));
   if (args.render) {
-    write_tree_picture(world, prepared.decomposition(), result, &replay, out.path() / "tree.png");
+    write_tree_picture(world, reasoning, prepared.decomposition(), result, &replay, out.path() / "tree.png");
     const int automaton_states = static_cast<int>(prepared.as_written().dfa.size());
     const auto frames_started = std::chrono::steady_clock::now();
     const PlanFrames pictures = write_plan_frames(

@@ -93,7 +93,7 @@ TEST_F(FixedPlan, FramesCoverThePlanAtTheScenariosFrameRate) {
 
 TEST_F(FixedPlan, TreePictureShowsTheSearchAndThePath) {
   const fs::path file = output("tree") / "tree.png";
-  write_tree_picture(*world_, *decomposition_, *result_, replay_, file);
+  write_tree_picture(*world_, *reasoning_, *decomposition_, *result_, replay_, file);
   EXPECT_TRUE(render::matches_golden(render::read_png(file), "ordered_plan_tree"));
 }
 
