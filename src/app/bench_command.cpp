@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <ctime>
 #include <fstream>
@@ -90,11 +91,16 @@ std::string cpu_info() {
 }
 
 // Outputs of one scenario and its settings: <out>/<name>[-key-value...].
+// One path component whatever the settings hold: `=` becomes `-`, and any character but letters, digits,
+// `.`, `_` and `-` becomes `_`, so `--set task='!hazard U goal'` or a value with `/` or `..` stays inside --out.
 std::string folder_name(const std::string& scenario, const std::vector<std::string>& settings) {
   std::string name = scenario;
-  for (auto setting : settings) {
-    std::replace(setting.begin(), setting.end(), '=', '-');
-    name += "-" + setting;
+  for (const auto& setting : settings) {
+    name += "-";
+    for (const char c : setting) {
+      const bool plain = std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-';
+      name += c == '=' ? '-' : plain ? c : '_';
+    }
   }
   return name;
 }

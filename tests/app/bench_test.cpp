@@ -60,6 +60,18 @@ TEST(Bench, QuietPrintsNothingAndStillWritesTheResults) {
   EXPECT_EQ(nlohmann::json::parse(slurp(out / "ordered" / "bench.json"))["runs"], 1);
 }
 
+// A setting names the output folder, but never leaves it: no separators, no "..", no spaces.
+TEST(Bench, ASettingWithSeparatorsStaysOneFolderInsideOut) {
+  const fs::path out = fresh_out_dir();
+  const Result r = run("bench " + kSource + "/scenarios/avoid.lua --runs 1 --quiet --set \"task=!hazard U goal\" --set x=../.. --out " +
+                       out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out / "avoid-task-_hazard_U_goal-x-.._.." / "bench.json"));
+  int entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(out)) ++entries;
+  EXPECT_EQ(entries, 1);
+}
+
 TEST(Bench, SeveralThreadCountsAreMeasuredOnTheSameSeedsWithTheSamePlans) {
   const fs::path out = fresh_out_dir();
   const Result r = run("bench " + kSource + "/scenarios/ordered.lua --runs 2 --threads 1,2 --out " + out.string());
