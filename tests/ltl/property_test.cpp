@@ -148,6 +148,24 @@ std::string canonical_key(const Formula& f) {
   return essential_key;
 }
 
+// The number of states of the minimal automaton: Moore refinement over explicit letters, from the classes
+// "accepting" (1) and not (0).
+std::size_t moore_size(std::vector<int> cls, const std::vector<std::array<int, kLetters>>& next) {
+  std::size_t count = 0;
+  while (true) {
+    std::map<std::vector<int>, int> ids;
+    std::vector<int> next_cls(cls.size());
+    for (std::size_t i = 0; i < cls.size(); ++i) {
+      std::vector<int> sig{cls[i]};
+      for (int t : next[i]) sig.push_back(cls[t]);
+      next_cls[i] = ids.try_emplace(sig, static_cast<int>(ids.size())).first->second;
+    }
+    cls = next_cls;
+    if (ids.size() == count) return count;
+    count = ids.size();
+  }
+}
+
 // The residual graph of a formula over explicit letters, with good = "valid on every infinite word".
 struct Reference {
   std::vector<Formula> nodes;
@@ -208,24 +226,7 @@ struct Reference {
     }
   }
 
-  // Moore minimisation over explicit letters.
-  std::size_t minimal_size() const {
-    std::vector<int> cls(nodes.size());
-    for (std::size_t i = 0; i < nodes.size(); ++i) cls[i] = good[i];
-    std::size_t count = 0;
-    while (true) {
-      std::map<std::vector<int>, int> ids;
-      std::vector<int> next_cls(nodes.size());
-      for (std::size_t i = 0; i < nodes.size(); ++i) {
-        std::vector<int> sig{cls[i]};
-        for (int t : next[i]) sig.push_back(cls[t]);
-        next_cls[i] = ids.try_emplace(sig, static_cast<int>(ids.size())).first->second;
-      }
-      cls = next_cls;
-      if (ids.size() == count) return count;
-      count = ids.size();
-    }
-  }
+  std::size_t minimal_size() const { return moore_size(std::vector<int>(good.begin(), good.end()), next); }
 };
 
 // ---- direct LTL semantics on the lasso word u v^omega ----
@@ -397,21 +398,9 @@ std::size_t minimal_stop_and_stay_size(const Formula& f) {
     }
     next.push_back(succ);
   }
-  std::vector<int> cls(states.size());
-  for (std::size_t i = 0; i < states.size(); ++i) cls[i] = states[i].second;
-  std::size_t count = 0;
-  while (true) {
-    std::map<std::vector<int>, int> ids;
-    std::vector<int> next_cls(states.size());
-    for (std::size_t i = 0; i < states.size(); ++i) {
-      std::vector<int> sig{cls[i]};
-      for (int t : next[i]) sig.push_back(cls[t]);
-      next_cls[i] = ids.try_emplace(sig, static_cast<int>(ids.size())).first->second;
-    }
-    cls = next_cls;
-    if (ids.size() == count) return count;
-    count = ids.size();
-  }
+  std::vector<int> accepting(states.size());
+  for (std::size_t i = 0; i < states.size(); ++i) accepting[i] = states[i].second;
+  return moore_size(std::move(accepting), next);
 }
 
 // Regions are disjoint: a letter has at most one proposition.

@@ -16,7 +16,7 @@ TEST(Planner, SolvesOrderedAndTheReplayValidatesThePlan) {
   const TestProblem p("ordered.lua");
   const PlanResult result = p.solve(3);
   ASSERT_TRUE(result.solved) << result.stop_reason;
-  const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+  const Replay r = p.check(result.plan);
   EXPECT_TRUE(r.validated()) << r.failure;
   EXPECT_GT(r.pushes, 0);  // p1 and p3 are under boxes
   EXPECT_EQ(r.states.size(), static_cast<size_t>(result.plan.total_steps()) + 1);
@@ -47,7 +47,7 @@ TEST(Replay, ATamperedPlanIsRejected) {
   PlanResult result = p.solve(3);
   ASSERT_TRUE(result.solved);
   result.plan.controls[result.plan.controls.size() / 2].setpoint.x() += 1.0;
-  const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+  const Replay r = p.check(result.plan);
   EXPECT_FALSE(r.reproduces_plan);
   EXPECT_FALSE(r.validated());
   EXPECT_FALSE(r.failure.empty());
@@ -57,7 +57,7 @@ TEST(Replay, AValidatedPlanKeepsTheRobotsLimitsAtEveryStep) {
   const TestProblem p("rooms.lua");
   const PlanResult result = p.solve(2);
   ASSERT_TRUE(result.solved) << result.stop_reason;
-  const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+  const Replay r = p.check(result.plan);
   ASSERT_TRUE(r.validated()) << r.failure;
   EXPECT_TRUE(r.within_limits);
   double fastest = 0.0;
@@ -73,7 +73,7 @@ TEST(Replay, APlanEditedToExceedTheSpeedLimitIsRejected) {
   PlanResult result = p.solve(3);
   ASSERT_TRUE(result.solved);
   for (Control& c : result.plan.controls) c.setpoint = 1.5 * p.world.robot.max_speed * c.setpoint.normalized();
-  const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+  const Replay r = p.check(result.plan);
   EXPECT_FALSE(r.within_limits);
   EXPECT_FALSE(r.validated());
   EXPECT_NE(r.failure.find("above max_speed"), std::string::npos) << r.failure;
@@ -91,7 +91,7 @@ TEST(Planner, ADifferentialRobotSolvesRoomsTurningWithinItsLimits) {
   const TestProblem p("rooms_differential.lua");
   const PlanResult result = p.solve(1);
   ASSERT_TRUE(result.solved) << result.stop_reason;
-  const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+  const Replay r = p.check(result.plan);
   ASSERT_TRUE(r.validated()) << r.failure;
   EXPECT_GT(r.pushes, 0);
   bool turned = false;
@@ -113,7 +113,7 @@ TEST(Planner, ANeverTaskKeepsOutOfTheHazardAndEndsAtRestInTheGoal) {
   for (std::uint64_t seed : {1, 2, 3}) {
     const PlanResult result = p.solve(seed);
     ASSERT_TRUE(result.solved) << result.stop_reason;
-    const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+    const Replay r = p.check(result.plan);
     ASSERT_TRUE(r.validated()) << r.failure;
     const std::vector<std::string> names = region_names(p.world, r.region_trace);
     EXPECT_EQ(std::ranges::count(names, "hazard"), 0);
@@ -129,7 +129,7 @@ TEST(Replay, AStopAndStayPlanCutBeforeItsBrakingIsRejected) {
   ASSERT_TRUE(result.solved);
   result.plan.controls.pop_back();
   result.plan.states.pop_back();
-  const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+  const Replay r = p.check(result.plan);
   EXPECT_TRUE(r.accepted);  // it did reach the goal without entering the hazard
   EXPECT_FALSE(r.ends_at_rest);
   EXPECT_FALSE(r.validated());
@@ -147,7 +147,7 @@ TEST(Replay, AStopAndStayTraceThatEntersTheHazardIsRejected) {
     return o;
   }());
   ASSERT_TRUE(result.solved);
-  const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+  const Replay r = p.check(result.plan);
   const std::vector<std::string> names = region_names(p.world, r.region_trace);
   ASSERT_GT(std::ranges::count(names, "hazard"), 0);  // straight through: nothing kept it out
   EXPECT_EQ(names.back(), "goal");
@@ -162,7 +162,7 @@ TEST(Planner, TheKnowledgePlannerGoesRoundABoxInTheOpen) {
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     const PlanResult result = p.solve(seed);
     ASSERT_TRUE(result.solved) << result.stop_reason;
-    const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+    const Replay r = p.check(result.plan);
     ASSERT_TRUE(r.validated()) << r.failure;
     EXPECT_EQ(r.pushes, 0) << "seed " << seed;
     EXPECT_TRUE(r.moved_bodies.empty()) << "seed " << seed;
@@ -207,7 +207,7 @@ TEST(Improve, TheImprovedPlanValidatesIsNeverWorseAndFollowsFromTheSeed) {
     if (m.improved.duration_s == m.first.duration_s) EXPECT_LE(m.improved.pushes, m.first.pushes);
     shortened |= m.improved.duration_s < m.first.duration_s;
     // What it reports is the plan it returns, which a fresh replay validates.
-    const Replay again = replay(p.world, improved.result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+    const Replay again = p.check(improved.result.plan);
     EXPECT_TRUE(again.validated()) << again.failure;
     EXPECT_NEAR(improved.result.plan.total_steps() * p.world.planner.step_size, m.improved.duration_s, 1e-9);
     expect_same_plan(improved.result.plan, solve_and_improve(p, seed, 60).result.plan);
@@ -217,7 +217,7 @@ TEST(Improve, TheImprovedPlanValidatesIsNeverWorseAndFollowsFromTheSeed) {
 
 TEST(Replay, AnEmptyPlanDoesNotSatisfyAVisitTask) {
   const TestProblem p("ordered.lua");
-  const Replay r = replay(p.world, Plan{}, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge);
+  const Replay r = p.check(Plan{});
   EXPECT_FALSE(r.accepted);
   EXPECT_EQ(r.failure, "the region trace does not satisfy the formula");
   ASSERT_EQ(r.region_trace.size(), 1u);  // the start is labelled

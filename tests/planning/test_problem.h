@@ -6,6 +6,7 @@
 #include "physltl/ltl/simplify.h"
 #include "physltl/ltl/translate.h"
 #include "physltl/planning/planner.h"
+#include "physltl/planning/replay.h"
 #include "physltl/planning/validated_plan.h"
 #include "physltl/scenario/load.h"
 
@@ -36,6 +37,11 @@ struct TestProblem {
   }
 
   Problem problem() const { return {world, task, original, knowledge, decomposition}; }
+
+  // The knowledge planner's replay of `plan` against the formula as written.
+  Replay check(const Plan& plan) const {
+    return replay(world, plan, original, knowledge, knowledge::ValidityMode::kKnowledge);
+  }
 
   PlanResult solve(std::uint64_t seed, Guidance guidance = Guidance::kKnowledge) const {
     PlannerOptions options;
