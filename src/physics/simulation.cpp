@@ -333,6 +333,20 @@ struct Simulation::Impl {
     set_body(i, settled);
   }
 
+  // The robot's and movable body `box`'s part of an EnvironmentState, from `state`.
+  void write_robot(scenario::EnvironmentState& out) const {
+    const double* v = values(0);
+    out.robot_position = {v[0], v[1]};
+    out.robot_velocity = {v[4], v[5]};
+    out.robot_yaw = v[3];
+    out.robot_turn_rate = v[9];
+  }
+  void write_box(size_t box, scenario::EnvironmentState& out) const {
+    const double* v = values(box + 1);
+    out.movable_poses[box] = {{v[0], v[1]}, v[3]};
+    out.movable_velocities[box] = {v[4], v[5]};
+  }
+
   // The drive's effort for this step; a differential robot's grip turns with it.
   DriveEffort drive_effort(const Vec2& setpoint) {
     const double* robot = values(0);
@@ -406,32 +420,16 @@ const DriveEffort& Simulation::last_drive() const { return impl_->last_drive; }
 std::span<const int> Simulation::last_step_movers() const { return impl_->movers; }
 
 void Simulation::update_environment(scenario::EnvironmentState& out) const {
-  const double* v = impl_->values(0);
-  out.robot_position = {v[0], v[1]};
-  out.robot_velocity = {v[4], v[5]};
-  out.robot_yaw = v[3];
-  out.robot_turn_rate = v[9];
-  for (int i : impl_->movers) {
-    v = impl_->values(static_cast<size_t>(i) + 1);
-    out.movable_poses[static_cast<size_t>(i)] = {{v[0], v[1]}, v[3]};
-    out.movable_velocities[static_cast<size_t>(i)] = {v[4], v[5]};
-  }
+  impl_->write_robot(out);
+  for (int i : impl_->movers) impl_->write_box(static_cast<size_t>(i), out);
 }
 
 void Simulation::read_environment(scenario::EnvironmentState& out) const {
-  const size_t bodies = impl_->dynamic.size();
-  const double* v = impl_->values(0);
-  out.robot_position = {v[0], v[1]};
-  out.robot_velocity = {v[4], v[5]};
-  out.robot_yaw = v[3];
-  out.robot_turn_rate = v[9];
-  out.movable_poses.resize(bodies - 1);
-  out.movable_velocities.resize(bodies - 1);
-  for (size_t i = 1; i < bodies; ++i) {
-    v = impl_->values(i);
-    out.movable_poses[i - 1] = {{v[0], v[1]}, v[3]};
-    out.movable_velocities[i - 1] = {v[4], v[5]};
-  }
+  const size_t boxes = impl_->dynamic.size() - 1;
+  impl_->write_robot(out);
+  out.movable_poses.resize(boxes);
+  out.movable_velocities.resize(boxes);
+  for (size_t i = 0; i < boxes; ++i) impl_->write_box(i, out);
 }
 
 scenario::EnvironmentState Simulation::environment() const {
