@@ -35,12 +35,17 @@ double mix_friction(double a, double b) { return std::sqrt(a * b); }
 
 struct Geom {
   dGeomID id = nullptr;
-  dBodyID body = nullptr;  // null for fixed bodies
+  dBodyID body = nullptr;  // null for fixed bodies, and for dynamic ones ODE does not hold now
+  dJointID planar = nullptr;  // a dynamic body's plane-2D joint while ODE holds the body
   scenario::RobotContact::Body kind = scenario::RobotContact::Body::kFixed;
   int index = 0;           // into the World's list of its kind; -1 for the robot
   double friction = 0.5;
   double bound_radius = 0.0;  // of the footprint, for a cheap test before dCollide
   scenario::Vec2 position = scenario::Vec2::Zero();  // fixed bodies only: they never move
+  // What a dynamic body is made of in ODE, to make it again.
+  dMass mass{};
+  double floor_force = 0.0;
+  double floor_torque = 0.0;
 };
 
 // Positions within the sum of two bounding radii: only then can two bodies touch.
@@ -59,7 +64,6 @@ struct Simulation::Impl {
   std::vector<Geom> dynamic;  // robot first, then movables in World order
   std::vector<Geom> fixed;
   geometry::RectGrid fixed_near;  // the fixed bodies' bounds, within reach of the largest dynamic body
-  std::vector<dJointID> planar_joints;
   // The PhysicsState of the dynamic bodies, kept equal to what ODE holds: every change goes through
   // set_body(). Reading it costs a copy; reading ODE costs calls into bodies spread over memory, and a
   // World with many boxes is read after every step. It also keeps each body's yaw: ODE normalises every
@@ -71,9 +75,9 @@ struct Simulation::Impl {
   geometry::PointGrid dynamic_near;
   double largest_bound_radius = 0.0;  // of the dynamic bodies
   std::vector<char> awake;      // per dynamic body, this step: it is integrated and collided
-  std::vector<char> enabled;    // per dynamic body, as ODE has it now
   std::vector<int> woken;       // this step's awake bodies, ascending after wake_bodies()
-  std::vector<int> enabled_boxes;  // the boxes ODE has enabled now
+  // The boxes ODE holds now, ascending: this step's awake ones. See hold_awake().
+  std::vector<int> held_boxes;
   std::vector<char> in_motion;  // per dynamic body: a box with some velocity (the robot is always awake)
   std::vector<int> moving_boxes;   // the boxes in_motion marks, in no particular order
   std::vector<int> candidates;  // scratch for grid lookups
@@ -141,7 +145,6 @@ struct Simulation::Impl {
     std::vector<Vec2> positions;
     for (size_t i = 0; i < dynamic.size(); ++i) positions.push_back(position(i));
     dynamic_near = geometry::PointGrid(w.workspace.bounds, 2.0 * reach, positions);
-    for (size_t i = 1; i < dynamic.size(); ++i) enabled_boxes.push_back(static_cast<int>(i));
   }
 
   ~Impl() {
@@ -159,30 +162,48 @@ struct Simulation::Impl {
     dGeomSetRotation(geom, rotation);
   }
 
+  // Boxes start outside ODE (hold_awake() brings them in); the robot is made at once and stays.
   void add_dynamic(dGeomID geom, const dMass& mass, double friction, double bound_radius, int index,
                    double floor_force, double floor_torque) {
     Geom g;
     g.id = geom;
-    g.body = dBodyCreate(ode_world);
-    dBodySetMass(g.body, &mass);
-    dGeomSetBody(geom, g.body);
     g.kind = scenario::RobotContact::Body::kMovable;
     g.index = index;
     g.friction = friction;
     g.bound_radius = bound_radius;
-    // The plane-2D joint keeps the body on the floor; its motors, driven to zero velocity with a force
-    // bound, are the floor's Coulomb friction (static and kinetic) solved together with the contacts.
-    dJointID joint = dJointCreatePlane2D(ode_world, nullptr);
-    dJointAttach(joint, g.body, nullptr);
-    dJointSetPlane2DXParam(joint, dParamFMax, floor_force);
-    dJointSetPlane2DYParam(joint, dParamFMax, floor_force);
-    dJointSetPlane2DAngleParam(joint, dParamFMax, floor_torque);
-    planar_joints.push_back(joint);
+    g.mass = mass;
+    g.floor_force = floor_force;
+    g.floor_torque = floor_torque;
     dynamic.push_back(g);
     state.resize(state.size() + kValuesPerBody, 0.0);
     awake.push_back(0);
-    enabled.push_back(1);
     in_motion.push_back(0);
+    if (index < 0) make_body(dynamic.size() - 1);
+  }
+
+  // Puts dynamic body i into ODE, in the state `state` holds for it.
+  void make_body(size_t i) {
+    Geom& g = dynamic[i];
+    g.body = dBodyCreate(ode_world);
+    dBodySetMass(g.body, &g.mass);
+    dGeomSetBody(g.id, g.body);
+    // The plane-2D joint keeps the body on the floor; its motors, driven to zero velocity with a force
+    // bound, are the floor's Coulomb friction (static and kinetic) solved together with the contacts.
+    g.planar = dJointCreatePlane2D(ode_world, nullptr);
+    dJointAttach(g.planar, g.body, nullptr);
+    dJointSetPlane2DXParam(g.planar, dParamFMax, g.floor_force);
+    dJointSetPlane2DYParam(g.planar, dParamFMax, g.floor_force);
+    dJointSetPlane2DAngleParam(g.planar, dParamFMax, g.floor_torque);
+    write_body(i);
+  }
+
+  // Takes dynamic body i out of ODE; `state` keeps it, and its geom stays where the body was.
+  void remove_body(size_t i) {
+    Geom& g = dynamic[i];
+    dJointDestroy(g.planar);
+    dBodyDestroy(g.body);  // detaches the geom
+    g.planar = nullptr;
+    g.body = nullptr;
   }
 
   // The wheels of a differential robot grip the floor sideways: a velocity constraint across the heading,
@@ -200,15 +221,21 @@ struct Simulation::Impl {
   const double* values(size_t i) const { return state.data() + i * kValuesPerBody; }
   scenario::Vec2 position(size_t i) const { return {values(i)[0], values(i)[1]}; }
 
-  // Sets body i in ODE and in `state` to `v`, in PhysicsState's layout.
-  void set_body(size_t i, const double* v) {
+  // Brings body i in ODE to the values `state` holds for it.
+  void write_body(size_t i) {
     const dBodyID body = dynamic[i].body;
+    const double* v = values(i);
     dBodySetPosition(body, v[0], v[1], v[2]);
     const dQuaternion q = {std::cos(v[3] / 2), 0, 0, std::sin(v[3] / 2)};
     dBodySetQuaternion(body, q);
     dBodySetLinearVel(body, v[4], v[5], v[6]);
     dBodySetAngularVel(body, v[7], v[8], v[9]);
+  }
+
+  // Sets body i in `state`, and in ODE if it holds it, to `v`, in PhysicsState's layout.
+  void set_body(size_t i, const double* v) {
     std::copy(v, v + kValuesPerBody, values(i));
+    if (dynamic[i].body != nullptr) write_body(i);
     if (dynamic_near.size() == dynamic.size()) dynamic_near.move(static_cast<int>(i), {v[0], v[1]});
     const char moving = i > 0 && !at_rest(i);
     if (moving == in_motion[i]) return;
@@ -271,14 +298,30 @@ struct Simulation::Impl {
     for (int i : woken) {
       if (i > 0) movers.push_back(i - 1);
     }
-    for (int i : enabled_boxes) {
-      if (!awake[static_cast<size_t>(i)]) enabled[static_cast<size_t>(i)] = 0, dBodyDisable(dynamic[static_cast<size_t>(i)].body);
-    }
-    enabled_boxes.clear();
-    for (int i : woken) {
-      if (i == 0) continue;
-      if (!enabled[static_cast<size_t>(i)]) enabled[static_cast<size_t>(i)] = 1, dBodyEnable(dynamic[static_cast<size_t>(i)].body);
-      enabled_boxes.push_back(i);
+    hold_awake();
+  }
+
+  // ODE holds the awake bodies and no others: its step walks every body and joint it holds, and a World of
+  // hundreds of sleeping boxes would cost that walk at every step. The result must not depend on which
+  // bodies ODE held before: ODE builds each island from the first of its bodies in its list of bodies,
+  // where a new body goes first, so the bodies it holds are kept in the order of making them, ascending by
+  // index, as if all had been made at the start. A box that joins below the highest one held has those
+  // above it made again after it; a body made again from `state` is the body it was, since every step
+  // ends by setting each awake body from `state` (settle()).
+  void hold_awake() {
+    std::erase_if(held_boxes, [&](int i) {
+      if (awake[static_cast<size_t>(i)]) return false;
+      remove_body(static_cast<size_t>(i));
+      return true;
+    });
+    size_t keep = 0;  // held boxes below the first box that joins: they stay as they are
+    size_t next = 1;  // woken[0] is the robot
+    while (keep < held_boxes.size() && held_boxes[keep] == woken[next]) ++keep, ++next;
+    for (size_t k = keep; k < held_boxes.size(); ++k) remove_body(static_cast<size_t>(held_boxes[k]));
+    held_boxes.resize(keep);
+    for (; next < woken.size(); ++next) {
+      make_body(static_cast<size_t>(woken[next]));
+      held_boxes.push_back(woken[next]);
     }
   }
 

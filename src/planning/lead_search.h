@@ -2,8 +2,9 @@
 // The lead of Algorithm 3, kept up to date at a fraction of the cost of searching it from the start every
 // time. The lead runs through the stages the tree has done (automaton states it has left behind) and
 // then the frontier's. Only the frontier part changes much between two leads: the tree grows there. So
-// most updates search again only from where the lead enters the frontier's automaton state and keep the
-// part before it; every few updates, and whenever the horizon moves, the whole lead is searched again.
+// most updates search again only from where the lead enters the frontier's automaton state (to the
+// current horizon, which may have moved on) and keep the part before it; every few updates the whole lead
+// is searched again, less often when that costs more than the updates in between.
 
 #include "product_graph.h"
 
@@ -24,7 +25,9 @@ class LeadSearch {
   // The last whole lead up to and including its first state in the frontier's automaton state.
   std::vector<int> prefix_;
   int horizon_ = -1;
-  int updates_until_whole_ = 0;
+  int updates_since_whole_ = 0;
+  long long whole_work_ = 0;     // product states the last whole search settled
+  long long frontier_work_ = 0;  // and the frontier searches since
 };
 
 }  // namespace physltl::planning

@@ -59,6 +59,9 @@ ProductGraph::ProductGraph(const decomposition::Decomposition& decomposition, co
   lead_scale_.assign(decomposition.size(), 1.0);
   if (!triangle_weight.empty()) std::copy(triangle_weight.begin(), triangle_weight.end(), lead_scale_.begin());
   entry_cost_.resize(motions_.size());
+  lead_cost_.resize(motions_.size());
+  lead_previous_.resize(motions_.size());
+  lead_stamps_.assign(motions_.size(), 0u);
   for (size_t id = 0; id < motions_.size(); ++id) update_entry_cost(static_cast<int>(id));
 }
 
@@ -82,14 +85,18 @@ void ProductGraph::count_selection(int id) {
 }
 
 std::vector<int> ProductGraph::lead(int start, int horizon) {
-  // Dijkstra; the buffers are members because the planner asks for a lead dozens of times a second.
+  // Dijkstra; the buffers are members because the planner asks for a lead dozens of times a second, and a
+  // state's cost counts only if it was set in this search (its stamp): resetting every state of a large
+  // product would cost more than searching the part of it the lead needs.
+  if (++lead_stamp_ == 0) std::fill(lead_stamps_.begin(), lead_stamps_.end(), 0u), lead_stamp_ = 1;
+  auto reached = [&](int v) { return lead_stamps_[static_cast<size_t>(v)] == lead_stamp_; };
   std::vector<double>& cost = lead_cost_;
   std::vector<int>& previous = lead_previous_;
   std::vector<std::pair<double, int>>& open = lead_open_;  // a min-heap
-  cost.assign(motions_.size(), std::numeric_limits<double>::infinity());
-  previous.assign(motions_.size(), -1);
   open.clear();
+  lead_stamps_[static_cast<size_t>(start)] = lead_stamp_;
   cost[start] = 0.0;
+  previous[start] = -1;
   open.push_back({0.0, start});
   int goal = -1;
   while (!open.empty()) {
@@ -97,6 +104,7 @@ std::vector<int> ProductGraph::lead(int start, int horizon) {
     const auto [c, u] = open.back();
     open.pop_back();
     if (c > cost[u]) continue;
+    ++lead_work_;
     const int q = automaton_state_of(u);
     if (!dead(q) && distance_to_accept_[q] <= horizon) {
       goal = u;
@@ -108,7 +116,8 @@ std::vector<int> ProductGraph::lead(int start, int horizon) {
       if (dead(next_q)) continue;
       const int v = id(neighbours_[n].triangle, next_q);
       const double next_cost = c + entry_cost_[v];
-      if (next_cost < cost[v]) {
+      if (!reached(v) || next_cost < cost[v]) {
+        lead_stamps_[static_cast<size_t>(v)] = lead_stamp_;
         cost[v] = next_cost;
         previous[v] = u;
         open.push_back({next_cost, v});

@@ -41,6 +41,8 @@ class ProductGraph {
   // Product states from `start` to the first one whose automaton state is at most `horizon` steps from
   // acceptance (0: an accepting one), cheapest under 1/weight; empty if none.
   std::vector<int> lead(int start, int horizon = 0);
+  // Product states settled by every lead search so far: their cost, which grows with the world.
+  long long lead_work() const { return lead_work_; }
 
  private:
   const TaskAutomaton& task_;
@@ -62,6 +64,9 @@ class ProductGraph {
   std::vector<double> entry_cost_;  // 1 / (weight * lead scale), kept up to date: the lead search reads it for every edge
   std::vector<double> lead_cost_;
   std::vector<int> lead_previous_;
+  std::vector<unsigned> lead_stamps_;  // per state: the search that last set its cost
+  unsigned lead_stamp_ = 0;
+  long long lead_work_ = 0;
   std::vector<std::pair<double, int>> lead_open_;
 };
 

@@ -246,6 +246,29 @@ TEST(Simulation, RestoringAStateContinuesBitForBit) {
   EXPECT_EQ(a.save(), b.save());
 }
 
+// The robot pushes the box of the higher index into the one of the lower index, so the lower one starts
+// moving second: the physics must not depend on the order in which the boxes started moving.
+TEST(Simulation, ABoxThatStartsMovingAfterAHigherOneContinuesBitForBitAfterARestore) {
+  auto world = small_world();
+  world.movable_bodies[0].footprint.pose.position = {4.2, 5};  // index 0, the far box
+  scenario::MovableBody near = world.movable_bodies[0];
+  near.name = "N";
+  near.footprint.pose.position = {3, 5};  // index 1, in front of the robot
+  world.movable_bodies.push_back(near);
+  Simulation a(world), b(world);
+  push(a, {1, 0}, 70);
+  const auto e = a.environment();
+  ASSERT_GT(e.movable_velocities[0].norm(), 0.0);  // both boxes slide
+  ASSERT_GT(e.movable_velocities[1].norm(), 0.0);
+  const PhysicsState both_moving = a.save();
+  push(a, {1, 0.1}, 30);
+
+  push(b, {0, 1}, 10);  // a history without the boxes
+  b.restore(both_moving);
+  push(b, {1, 0.1}, 30);
+  EXPECT_EQ(a.save(), b.save());
+}
+
 // A restore rewrites only the bodies that differ: here the robot, not the box still at its start.
 TEST(Simulation, RestoringAStateThatMovedOnlyTheRobotContinuesBitForBit) {
   const auto world = small_world();
