@@ -20,7 +20,8 @@ namespace {
 constexpr double kGravity = 9.81;           // m/s^2, for floor friction only: motion is planar
 constexpr double kCollisionHeight = 1.0;    // m; every body spans z = ±0.5 so contact normals stay horizontal
 constexpr int kMaxContactsPerPair = 4;
-constexpr int kValuesPerBody = 10;          // position 3, yaw 1, linear velocity 3, angular velocity 3
+constexpr std::size_t kValuesPerBody = PhysicsState::kValuesPerBody;
+constexpr std::size_t kBodiesPerBlock = PhysicsState::kBodiesPerBlock;
 // ODE pushes overlapping bodies apart at up to this speed. The robot's speed limit holds at every step
 // only if this correction stays well below it (docs/physics.md measures what remains).
 constexpr double kMaxCorrectingSpeed = 0.1;  // m/s
@@ -70,6 +71,10 @@ struct Simulation::Impl {
   // quaternion it is given, and normalising is not idempotent in the last bit, so a saved quaternion
   // would not restore exactly; the yaw it was made from does.
   std::vector<double> state;
+  // The blocks of the state last saved or restored, which `state` equals except in the blocks marked
+  // changed: saving copies only those, and restoring skips the blocks it would not change.
+  mutable std::vector<std::shared_ptr<const PhysicsState::Block>> blocks;
+  mutable std::vector<char> block_changed;
   // Where the dynamic bodies are, kept up to date by set_body(): which of them a body may touch is a lookup
   // among the bodies near it, not a scan of the World.
   geometry::PointGrid dynamic_near;
@@ -176,6 +181,8 @@ struct Simulation::Impl {
     g.floor_torque = floor_torque;
     dynamic.push_back(g);
     state.resize(state.size() + kValuesPerBody, 0.0);
+    blocks.resize((dynamic.size() + kBodiesPerBlock - 1) / kBodiesPerBlock);
+    block_changed.resize(blocks.size(), 1);
     awake.push_back(0);
     in_motion.push_back(0);
     if (index < 0) make_body(dynamic.size() - 1);
@@ -235,6 +242,7 @@ struct Simulation::Impl {
   // Sets body i in `state`, and in ODE if it holds it, to `v`, in PhysicsState's layout.
   void set_body(size_t i, const double* v) {
     std::copy(v, v + kValuesPerBody, values(i));
+    block_changed[i / kBodiesPerBlock] = 1;
     if (dynamic[i].body != nullptr) write_body(i);
     if (dynamic_near.size() == dynamic.size()) dynamic_near.move(static_cast<int>(i), {v[0], v[1]});
     const char moving = i > 0 && !at_rest(i);
@@ -257,11 +265,32 @@ struct Simulation::Impl {
     for (size_t i = 0; i < world.movable_bodies.size(); ++i) set_pose(i + 1, world.movable_bodies[i].footprint.pose);
   }
 
+  void save(PhysicsState& out) const {
+    for (size_t b = 0; b < blocks.size(); ++b) {
+      if (!block_changed[b]) continue;
+      auto block = std::make_shared<PhysicsState::Block>();
+      const size_t first = b * kBodiesPerBlock * kValuesPerBody;
+      const size_t count = std::min(block->values.size(), state.size() - first);
+      std::copy_n(state.begin() + static_cast<std::ptrdiff_t>(first), count, block->values.begin());
+      blocks[b] = std::move(block);
+      block_changed[b] = 0;
+    }
+    out.bodies_ = dynamic.size();
+    out.blocks_ = blocks;
+  }
+
   // Bodies whose values already match bit for bit (-0.0 is not 0.0 here) are left alone: a restore usually
   // differs from the current state in the robot and a box or two.
-  void restore(const double* v) {
-    for (size_t i = 0; i < dynamic.size(); ++i, v += kValuesPerBody) {
-      if (std::memcmp(v, values(i), kValuesPerBody * sizeof(double)) != 0) set_body(i, v);
+  void restore(const PhysicsState& s) {
+    for (size_t b = 0; b < blocks.size(); ++b) {
+      if (s.blocks_[b] == blocks[b] && !block_changed[b]) continue;
+      const double* v = s.blocks_[b]->values.data();
+      const size_t end = std::min(dynamic.size(), (b + 1) * kBodiesPerBlock);
+      for (size_t i = b * kBodiesPerBlock; i < end; ++i, v += kValuesPerBody) {
+        if (std::memcmp(v, values(i), kValuesPerBody * sizeof(double)) != 0) set_body(i, v);
+      }
+      blocks[b] = s.blocks_[b];
+      block_changed[b] = 0;
     }
   }
 
@@ -445,13 +474,40 @@ PhysicsState Simulation::save() const {
   return s;
 }
 
-void Simulation::save(PhysicsState& s) const { s.values = impl_->state; }
+void Simulation::save(PhysicsState& s) const { impl_->save(s); }
 
 void Simulation::restore(const PhysicsState& s) {
-  if (s.values.size() != impl_->state.size()) {
+  if (s.bodies_ != impl_->dynamic.size()) {
     throw std::invalid_argument("Simulation::restore: the state is of a World with other bodies");
   }
-  impl_->restore(s.values.data());
+  impl_->restore(s);
+}
+
+double PhysicsState::value(std::size_t body, std::size_t k) const {
+  return blocks_[body / kBodiesPerBlock]->values[(body % kBodiesPerBlock) * kValuesPerBody + k];
+}
+
+void PhysicsState::set_value(std::size_t body, std::size_t k, double v) {
+  auto& shared = blocks_[body / kBodiesPerBlock];
+  auto copy = std::make_shared<Block>(*shared);
+  copy->values[(body % kBodiesPerBlock) * kValuesPerBody + k] = v;
+  shared = std::move(copy);
+}
+
+std::size_t PhysicsState::blocks_shared_with(const PhysicsState& other) const {
+  std::size_t shared = 0;
+  for (std::size_t b = 0; b < std::min(blocks_.size(), other.blocks_.size()); ++b) shared += blocks_[b] == other.blocks_[b];
+  return shared;
+}
+
+bool PhysicsState::operator==(const PhysicsState& other) const {
+  if (bodies_ != other.bodies_) return false;
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    const Block& x = *blocks_[b];
+    const Block& y = *other.blocks_[b];
+    if (&x != &y && std::memcmp(x.values.data(), y.values.data(), sizeof(x.values)) != 0) return false;
+  }
+  return true;
 }
 
 void Simulation::step(const Vec2& setpoint, std::vector<scenario::RobotContact>& contacts) {

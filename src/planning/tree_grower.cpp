@@ -90,7 +90,7 @@ bool TreeGrower::brake(int automaton_state, Growth& growth) {
 Motion TreeGrower::make_motion(const Control& control, int automaton_state) const {
   Motion motion;
   motion.state = last_valid_;
-  motion.robot = Vec2(last_valid_.values[0], last_valid_.values[1]);  // the robot's x, y come first
+  motion.robot = last_valid_.robot_position();
   motion.control = control;
   motion.automaton_state = automaton_state;
   motion.product_state = graph_.id(decomposition_.locate(motion.robot), automaton_state);

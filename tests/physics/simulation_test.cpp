@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <thread>
 
 namespace physltl::physics {
@@ -176,7 +177,7 @@ TEST(Simulation, ADifferentialRobotResistsASidewaysShoveWithItsWheelGrip) {
   world.robot.start_yaw = std::numbers::pi / 2;  // facing +y, the box to its right
   Simulation sim(world);
   PhysicsState state = sim.save();
-  state.values[4] = 1.0;  // moving sideways at 1 m/s, as a shove would leave it
+  state.set_value(0, 4, 1.0);  // the robot moving sideways at 1 m/s, as a shove would leave it
   sim.restore(state);
   push(sim, {0, 0}, 5);
   // Grip mu g = 4.9 m/s^2 takes 0.245 m/s off per step: the sideways motion stops within 0.25 s.
@@ -269,6 +270,28 @@ TEST(Simulation, ABoxThatStartsMovingAfterAHigherOneContinuesBitForBitAfterARest
   EXPECT_EQ(a.save(), b.save());
 }
 
+// A search tree keeps a state per node: one saved after a step shares with the state before it every block
+// of bodies the step did not move.
+TEST(Simulation, AStateSavedAfterAStepSharesTheBlocksOfTheBodiesItDidNotMove) {
+  auto world = small_world();
+  for (int i = 0; i < 40; ++i) {  // boxes along the top, far from the robot and from each other
+    scenario::MovableBody box = world.movable_bodies[0];
+    box.name = "far" + std::to_string(i);
+    box.footprint.pose.position = {0.5 + 0.2 * i, 9.5};
+    world.movable_bodies.push_back(box);
+  }
+  Simulation sim(world);
+  const PhysicsState before = sim.save();
+  push(sim, {1, 0}, 3);
+  const PhysicsState after = sim.save();
+  ASSERT_EQ(after.blocks(), 6u);  // 42 bodies, 8 a block
+  EXPECT_EQ(after.blocks_shared_with(before), 5u);  // all but the robot's
+  EXPECT_NE(after, before);
+  sim.restore(before);
+  EXPECT_EQ(sim.save(), before);
+  EXPECT_EQ(sim.save().blocks_shared_with(before), 6u);
+}
+
 // A restore rewrites only the bodies that differ: here the robot, not the box still at its start.
 TEST(Simulation, RestoringAStateThatMovedOnlyTheRobotContinuesBitForBit) {
   const auto world = small_world();
@@ -286,10 +309,10 @@ TEST(Simulation, RestoringAStateThatMovedOnlyTheRobotContinuesBitForBit) {
 TEST(Simulation, RestoringTellsMinusZeroFromZero) {
   Simulation sim(small_world());
   PhysicsState state = sim.save();
-  ASSERT_FALSE(std::signbit(state.values[4]));  // the robot's x velocity, +0.0 at rest
-  state.values[4] = -0.0;
+  ASSERT_FALSE(std::signbit(state.value(0, 4)));  // the robot's x velocity, +0.0 at rest
+  state.set_value(0, 4, -0.0);
   sim.restore(state);
-  EXPECT_TRUE(std::signbit(sim.save().values[4]));
+  EXPECT_TRUE(std::signbit(sim.save().value(0, 4)));
 }
 
 TEST(Simulation, RestoringAStateOfAnotherWorldIsRefused) {

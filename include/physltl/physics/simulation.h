@@ -3,27 +3,54 @@
 // and the boxes slide on the floor (plane-2D joints), floor friction acts as Coulomb friction inside the
 // solver, the robot's drive tracks a velocity set-point with a bounded force (docs/physics.md), and
 // contacts are found in a fixed order, so the same state and control give bit-identical results. A box
-// slower than 0.1 mm/s is at rest, and a step leaves out the boxes at rest that no moving body can reach,
-// so ODE's solver and contact tests work on the bodies in motion, not on the whole World.
+// slower than 0.1 mm/s is at rest, and a step leaves out the boxes at rest that no moving body can reach:
+// ODE holds, solves and tests for contact the bodies in motion, not the whole World.
 // One Simulation per thread; it is the only code that mutates physical state.
 
 #include "physltl/scenario/state.h"
 #include "physltl/scenario/world.h"
 
+#include <array>
+#include <cstddef>
 #include <memory>
 #include <span>
 #include <vector>
 
 namespace physltl::physics {
 
+using scenario::Vec2;
+
 // Everything ODE integrates, for every dynamic body (robot first, then movables in World order).
 // Restoring it is exact: a restored run continues bit for bit as the original one.
-struct PhysicsState {
-  std::vector<double> values;
-  bool operator==(const PhysicsState&) const = default;
-};
+// The values are kept in blocks of a few bodies, and states share the blocks whose bodies are the same:
+// a state saved after a step copies only the blocks of the bodies the step moved, so a search tree's
+// nodes cost what their motions changed, not the whole World, and restoring a state skips the blocks
+// the simulation already holds.
+class PhysicsState {
+ public:
+  // Per body: position x, y, z, yaw, linear velocity x, y, z, angular velocity x, y, z.
+  static constexpr std::size_t kValuesPerBody = 10;
+  static constexpr std::size_t kBodiesPerBlock = 8;
+  struct Block {
+    std::array<double, kValuesPerBody * kBodiesPerBlock> values{};
+  };
 
-using scenario::Vec2;
+  std::size_t bodies() const { return bodies_; }
+  double value(std::size_t body, std::size_t k) const;
+  // Changes one value of this state only (the blocks it shares with others stay as they are).
+  void set_value(std::size_t body, std::size_t k, double v);
+  Vec2 robot_position() const { return {value(0, 0), value(0, 1)}; }
+  // Bit for bit: -0.0 is not 0.0 here.
+  bool operator==(const PhysicsState& other) const;
+  // How many blocks this state holds in memory as one with `other`, and how many it has.
+  std::size_t blocks_shared_with(const PhysicsState& other) const;
+  std::size_t blocks() const { return blocks_.size(); }
+
+ private:
+  friend class Simulation;
+  std::size_t bodies_ = 0;
+  std::vector<std::shared_ptr<const Block>> blocks_;
+};
 
 // What the robot's drive applied during a step: the planar force on the robot (N) and, for a
 // differential drive, the torque about the vertical axis (N m).
