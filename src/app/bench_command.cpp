@@ -4,6 +4,8 @@
 #include "bench_sweep.h"
 #include "command.h"
 #include "output_folder.h"
+#include "physltl/planning/improve.h"
+#include "physltl/planning/path_lower_bound.h"
 #include "plan_files.h"
 #include "planning_job.h"
 #include "scenario_args.h"
@@ -59,6 +61,7 @@ BenchRun measure(const PreparedRun& prepared, const SolveOptions& options) {
     run.pushes = solution.replay->pushes;
     run.bodies_moved = static_cast<int>(solution.replay->moved_bodies.size());
     run.solution_duration_s = result.plan.total_steps() * prepared.world().planner.step_size;
+    run.path_length_m = planning::measure(prepared.world(), result.plan, *solution.replay).path_length_m;
     run.first_pushes = solution.improvement ? solution.improvement->first.pushes : run.pushes;
     run.first_duration_s = solution.improvement ? solution.improvement->first.duration_s : run.solution_duration_s;
   }
@@ -196,6 +199,7 @@ int bench(const BenchArgs& args) {
     results.threads = args.threads;
     results.improve = args.improve;
     results.started_at = local_time_now();
+    results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->prepared->as_written());
     for (const auto guidance : {planning::Guidance::kKnowledge, planning::Guidance::kBaseline}) {
       if (guidance == planning::Guidance::kBaseline && !args.compare) continue;
       for (int threads : args.threads) results.planners.push_back({guidance, threads, {}});

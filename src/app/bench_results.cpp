@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <cmath>
+
 namespace physltl::app {
 namespace {
 
@@ -57,7 +59,7 @@ std::map<std::string, std::string> ompl_run(const BenchRun& run, double counted_
 
 PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
   PlannerSummary s;
-  std::vector<double> nodes, pushes, moved, durations, improve, first_pushes, first_durations;
+  std::vector<double> nodes, pushes, moved, durations, improve, first_pushes, first_durations, paths;
   double wall = 0.0, propagations = 0.0;
   for (const auto& run : planner.runs) {
     s.solved += run.solved;
@@ -72,6 +74,7 @@ PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
       first_pushes.push_back(run.first_pushes);
       first_durations.push_back(run.first_duration_s);
       durations.push_back(run.solution_duration_s);
+      paths.push_back(run.path_length_m);
     }
   }
   s.median_s = statistics::median(s.times_s);
@@ -86,6 +89,7 @@ PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
   s.first_pushes_median = statistics::median(first_pushes);
   s.first_duration_median_s = statistics::median(first_durations);
   s.solution_duration_median_s = statistics::median(durations);
+  s.path_length_median_m = statistics::median(paths);
   return s;
 }
 
@@ -120,14 +124,14 @@ std::string planner_label(const BenchResults& results, const PlannerRuns& planne
 std::string bench_table(const BenchResults& r) {
   std::string text = fmt::format("{}: {} runs ({}), time limit {:g} s, {}\n", r.scenario, r.runs, seeds_text(r),
                                  r.time_limit_s, threads_text(r.threads));
-  text += fmt::format("{:<12} {:>7} {:>9} {:>8} {:>8} {:>8} {:>7} {:>8} {:>7} {:>6} {:>10}\n", "planner", "solved",
-                      "median_s", "mean_s", "p90_s", "max_s", "nodes", "prop/s", "pushes", "moved", "duration_s");
+  text += fmt::format("{:<12} {:>7} {:>9} {:>8} {:>8} {:>8} {:>7} {:>8} {:>7} {:>6} {:>10} {:>7}\n", "planner", "solved",
+                      "median_s", "mean_s", "p90_s", "max_s", "nodes", "prop/s", "pushes", "moved", "duration_s", "path_m");
   for (const auto& p : r.planners) {
     const PlannerSummary s = summarize(p, r.time_limit_s);
-    text += fmt::format("{:<12} {:>7} {:>9.3f} {:>8.3f} {:>8.3f} {:>8.3f} {:>7.0f} {:>8.0f} {:>7.1f} {:>6.1f} {:>10.2f}\n",
+    text += fmt::format("{:<12} {:>7} {:>9.3f} {:>8.3f} {:>8.3f} {:>8.3f} {:>7.0f} {:>8.0f} {:>7.1f} {:>6.1f} {:>10.2f} {:>7.2f}\n",
                         planner_label(r, p), fmt::format("{}/{}", s.solved, p.runs.size()), s.median_s,
                         s.mean_s, s.p90_s, s.max_s, s.tree_nodes_median, s.propagations_per_s, s.pushes_median,
-                        s.bodies_moved_median, s.solution_duration_median_s);
+                        s.bodies_moved_median, s.solution_duration_median_s, s.path_length_median_m);
   }
   if (const auto ratio = ratio_of_medians(r)) {
     text += fmt::format("ratio of medians (baseline / knowledge): {:.2f}\n", *ratio);
@@ -143,7 +147,10 @@ std::string bench_table(const BenchResults& r) {
                           s.solution_duration_median_s, s.first_pushes_median, s.pushes_median);
     }
   }
-  text += "times (of the first validated plan) count unsolved runs at the time limit; pushes, moved (bodies) and duration are medians over solved runs\n";
+  text += std::isfinite(r.shortest_free_path_m)
+              ? fmt::format("shortest free path (no plan is shorter; no box in the way): {:.2f} m\n", r.shortest_free_path_m)
+              : std::string("shortest free path: none (the task's regions cannot be reached past the fixed bodies)\n");
+  text += "times (of the first validated plan) count unsolved runs at the time limit; pushes, moved (bodies), duration and path are medians over solved runs\n";
   return text;
 }
 
@@ -168,6 +175,7 @@ json bench_json(const BenchResults& r) {
         entry["first_pushes"] = run.first_pushes;
         entry["first_duration_s"] = run.first_duration_s;
         entry["solution_duration_s"] = run.solution_duration_s;
+        entry["path_length_m"] = run.path_length_m;
       }
       runs.push_back(std::move(entry));
     }
@@ -187,6 +195,7 @@ json bench_json(const BenchResults& r) {
                         {"first_pushes_median", s.first_pushes_median},
                         {"first_duration_median_s", s.first_duration_median_s},
                         {"solution_duration_median_s", s.solution_duration_median_s},
+                        {"path_length_median_m", s.path_length_median_m},
                         {"per_run", std::move(runs)}});
   }
   const auto ratio = ratio_of_medians(r);
@@ -202,6 +211,7 @@ json bench_json(const BenchResults& r) {
           {"threads", r.threads},
           {"started_at", r.started_at},
           {"total_duration_s", r.total_duration_s},
+          {"shortest_free_path_m", std::isfinite(r.shortest_free_path_m) ? json(r.shortest_free_path_m) : json(nullptr)},
           {"planners", std::move(planners)},
           {"ratio_of_medians", ratio ? json(*ratio) : json(nullptr)},
           {"threads_ratios", std::move(ratios)}};

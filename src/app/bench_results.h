@@ -27,6 +27,7 @@ struct BenchRun {
   int pushes = 0;
   int bodies_moved = 0;
   double solution_duration_s = 0.0;  // of the plan bench ends with (improved, with --improve)
+  double path_length_m = 0.0;        // of the same plan: the robot's centre, step by step
   int first_pushes = 0;              // of the first validated plan
   double first_duration_s = 0.0;
 };
@@ -49,6 +50,8 @@ struct BenchResults {
   std::vector<int> threads;    // the thread counts measured, as given
   std::string started_at;      // local "YYYY-MM-DD HH:MM:SS"
   double total_duration_s = 0.0;
+  // No plan's path is shorter (planning/path_lower_bound.h); infinity when no region order is reachable.
+  double shortest_free_path_m = 0.0;
   // Knowledge with each thread count, then the baseline with each (--compare).
   std::vector<PlannerRuns> planners;
 };
@@ -65,6 +68,7 @@ struct PlannerSummary {
   double first_pushes_median = 0.0;  // over solved runs: the first validated plans
   double first_duration_median_s = 0.0;
   double solution_duration_median_s = 0.0;  // over solved runs
+  double path_length_median_m = 0.0;         // over solved runs
 };
 
 PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s);

@@ -1,0 +1,245 @@
+#include "physltl/geometry/free_space.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numbers>
+#include <queue>
+
+namespace physltl::geometry {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+double distance_to_segment(const Vec2& p, const Vec2& a, const Vec2& b, Vec2& closest) {
+  const Vec2 d = b - a;
+  const double length2 = d.squaredNorm();
+  const double t = length2 > 0 ? std::clamp((p - a).dot(d) / length2, 0.0, 1.0) : 0.0;
+  closest = a + t * d;
+  return (p - closest).norm();
+}
+
+bool segments_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+  const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
+}
+
+// Whether some point of segment ab lies in the interior of the convex, counter-clockwise polygon, by more
+// than a rounding error: the part of the segment left of every edge (Cyrus-Beck) is not empty.
+bool enters(const Vec2& a, const Vec2& b, const Polygon& polygon) {
+  double lo = 0.0, hi = 1.0;
+  const Vec2 d = b - a;
+  const auto& v = polygon.vertices;
+  for (size_t i = 0; i < v.size(); ++i) {
+    const Vec2 edge = v[(i + 1) % v.size()] - v[i];
+    const double margin = 1e-9 * edge.norm();
+    const double at_a = cross(edge, a - v[i]) - margin;  // > 0: a is inside this edge's half-plane
+    const double slope = cross(edge, d);
+    if (slope == 0.0) {
+      if (at_a <= 0.0) return false;
+    } else if (slope > 0.0) {
+      lo = std::max(lo, -at_a / slope);
+    } else {
+      hi = std::min(hi, -at_a / slope);
+    }
+    if (lo >= hi) return false;
+  }
+  return hi - lo > 1e-12;
+}
+
+}  // namespace
+
+Polygon grown_from_inside(const OrientedBox& box, double radius, int chords_per_corner) {
+  const Vec2 h = box.half_extents;
+  const Eigen::Rotation2Dd rotation(box.pose.yaw);
+  const std::array<Vec2, 4> corners = {Vec2(h.x(), -h.y()), Vec2(h.x(), h.y()), Vec2(-h.x(), h.y()), Vec2(-h.x(), -h.y())};
+  Polygon grown;
+  for (int c = 0; c < 4; ++c) {
+    const double start = (c - 1) * std::numbers::pi / 2;  // the arc of corner c, counter-clockwise
+    for (int k = 0; k <= chords_per_corner; ++k) {
+      const double angle = start + k * (std::numbers::pi / 2) / chords_per_corner;
+      const Vec2 local = corners[static_cast<size_t>(c)] + radius * Vec2(std::cos(angle), std::sin(angle));
+      grown.vertices.push_back(box.pose.position + rotation * local);
+    }
+  }
+  return grown;
+}
+
+double distance(const Vec2& p, const Polygon& polygon) {
+  if (polygon.vertices.size() == 1) return (p - polygon.vertices[0]).norm();
+  if (polygon.contains(p)) return 0.0;
+  double best = kInfinity;
+  Vec2 closest;
+  const auto& v = polygon.vertices;
+  for (size_t i = 0; i < v.size(); ++i) best = std::min(best, distance_to_segment(p, v[i], v[(i + 1) % v.size()], closest));
+  return best;
+}
+
+double distance(const Polygon& a, const Polygon& b, Vec2& closest_a, Vec2& closest_b) {
+  const auto& va = a.vertices;
+  const auto& vb = b.vertices;
+  // Overlapping: a vertex inside the other polygon, or two edges crossing.
+  for (const Vec2& p : va) {
+    if (vb.size() > 2 && b.contains(p)) return closest_a = closest_b = p, 0.0;
+  }
+  for (const Vec2& p : vb) {
+    if (va.size() > 2 && a.contains(p)) return closest_a = closest_b = p, 0.0;
+  }
+  double best = kInfinity;
+  Vec2 closest;
+  auto try_point = [&](const Vec2& p, const std::vector<Vec2>& other, bool p_in_a) {
+    for (size_t i = 0; i < other.size(); ++i) {
+      const double d = distance_to_segment(p, other[i], other[(i + 1) % other.size()], closest);
+      if (d < best) {
+        best = d;
+        closest_a = p_in_a ? p : closest;
+        closest_b = p_in_a ? closest : p;
+      }
+    }
+  };
+  for (const Vec2& p : va) try_point(p, vb, true);
+  for (const Vec2& p : vb) try_point(p, va, false);
+  for (size_t i = 0; i < va.size() && va.size() > 1; ++i) {
+    for (size_t j = 0; j < vb.size() && vb.size() > 1; ++j) {
+      if (segments_cross(va[i], va[(i + 1) % va.size()], vb[j], vb[(j + 1) % vb.size()])) {
+        return closest_a = closest_b = va[i], 0.0;
+      }
+    }
+  }
+  return best;
+}
+
+FreeSpace::FreeSpace(std::vector<Polygon> obstacles, const Rect& bounds) : obstacles_(std::move(obstacles)), bounds_(bounds) {
+  for (Polygon& o : obstacles_) {
+    if (o.signed_area() < 0) std::reverse(o.vertices.begin(), o.vertices.end());
+    obstacle_bounds_.push_back(o.bounds());
+  }
+  for (const Polygon& o : obstacles_) {
+    for (const Vec2& v : o.vertices) {
+      if (!bounds_.contains(v)) continue;
+      const bool buried = std::any_of(obstacles_.begin(), obstacles_.end(), [&](const Polygon& other) {
+        return &other != &o && enters(v, v, other);
+      });
+      if (!buried) corners_.push_back(v);
+    }
+  }
+  edges_.resize(corners_.size());
+  for (size_t i = 0; i < corners_.size(); ++i) {
+    for (size_t j = i + 1; j < corners_.size(); ++j) {
+      if (!free(corners_[i], corners_[j])) continue;
+      const double d = (corners_[i] - corners_[j]).norm();
+      edges_[i].push_back({static_cast<int>(j), d});
+      edges_[j].push_back({static_cast<int>(i), d});
+    }
+  }
+}
+
+bool FreeSpace::free(const Vec2& a, const Vec2& b) const {
+  if (!bounds_.contains(a) || !bounds_.contains(b)) return false;
+  const Rect span{a.cwiseMin(b), a.cwiseMax(b)};
+  for (size_t i = 0; i < obstacles_.size(); ++i) {
+    const Rect& r = obstacle_bounds_[i];
+    if (r.max.x() < span.min.x() || r.min.x() > span.max.x() || r.max.y() < span.min.y() || r.min.y() > span.max.y()) {
+      continue;
+    }
+    if (enters(a, b, obstacles_[i])) return false;
+  }
+  return true;
+}
+
+FreeSpace::Place FreeSpace::place(const Polygon& polygon) const {
+  Place p;
+  p.polygon = polygon;
+  const auto& v = polygon.vertices;
+  p.points = v;
+  const Rect r = polygon.bounds();
+  for (const Polygon& o : obstacles_) {
+    const Rect b = o.bounds();
+    if (b.max.x() < r.min.x() || b.min.x() > r.max.x() || b.max.y() < r.min.y() || b.min.y() > r.max.y()) continue;
+    const auto& w = o.vertices;
+    for (size_t j = 0; j < w.size() && v.size() >= 3; ++j) {
+      const Vec2 c = w[j], d = w[(j + 1) % w.size()];
+      p.obstacle_edges.push_back({c, d});
+      // Where the place's edges meet the obstacle's: corners of the place's free part.
+      for (size_t i = 0; i < v.size(); ++i) {
+        const Vec2 a = v[i], b2 = v[(i + 1) % v.size()];
+        const double denominator = cross(b2 - a, d - c);
+        if (denominator == 0.0) continue;
+        const double t = cross(c - a, d - c) / denominator, u = cross(c - a, b2 - a) / denominator;
+        if (t >= 0 && t <= 1 && u >= 0 && u <= 1) p.points.push_back(a + t * (b2 - a));
+      }
+    }
+  }
+  p.from_corner.reserve(corners_.size());
+  for (const Vec2& corner : corners_) p.from_corner.push_back(reach(corner, p));
+  return p;
+}
+
+double FreeSpace::reach(const Vec2& from, const Place& to) const {
+  const auto& v = to.polygon.vertices;
+  if (v.size() >= 3 && to.polygon.contains(from)) return 0.0;
+  // The nearest point of the place's free part that `from` sees is one of its corners, or the foot of a
+  // perpendicular on one of its edges (the place's own, or an obstacle's inside it).
+  double best = kInfinity;
+  const auto consider = [&](const Vec2& point) {
+    const double d = (point - from).norm();
+    if (d < best && free(from, point)) best = d;
+  };
+  for (const Vec2& point : to.points) consider(point);
+  Vec2 foot;
+  for (size_t i = 0; v.size() > 1 && i < v.size(); ++i) {
+    distance_to_segment(from, v[i], v[(i + 1) % v.size()], foot);
+    consider(foot);
+  }
+  for (const auto& [a, b] : to.obstacle_edges) {
+    distance_to_segment(from, a, b, foot);
+    if (to.polygon.contains(foot)) consider(foot);
+  }
+  return best;
+}
+
+std::vector<double> FreeSpace::distances_from(const Place& from) const {
+  std::vector<double> cost(corners_.size());
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  for (size_t i = 0; i < corners_.size(); ++i) {
+    cost[i] = from.from_corner[i];
+    open.push({cost[i], static_cast<int>(i)});
+  }
+  while (!open.empty()) {
+    const auto [c, u] = open.top();
+    open.pop();
+    if (c > cost[static_cast<size_t>(u)]) continue;
+    for (const auto& [v, length] : edges_[static_cast<size_t>(u)]) {
+      if (c + length < cost[static_cast<size_t>(v)]) {
+        cost[static_cast<size_t>(v)] = c + length;
+        open.push({c + length, v});
+      }
+    }
+  }
+  return cost;
+}
+
+double FreeSpace::distance_to(const std::vector<double>& from_corners, const Place& from, const Place& to) const {
+  // Straight from one place to the other: a segment that cannot be shortened ends at a corner of one of
+  // them, or at the point where their polygons meet.
+  Vec2 a, b;
+  double best = geometry::distance(from.polygon, to.polygon, a, b) == 0.0 && free(a, a) ? 0.0 : kInfinity;
+  for (const Vec2& point : from.points) best = std::min(best, reach(point, to));
+  for (const Vec2& point : to.points) best = std::min(best, reach(point, from));
+  for (size_t i = 0; i < corners_.size(); ++i) best = std::min(best, from_corners[i] + to.from_corner[i]);
+  return best;
+}
+
+double FreeSpace::distance(const Polygon& from, const Polygon& to) const {
+  const Place a = place(from), b = place(to);
+  return distance_to(distances_from(a), a, b);
+}
+
+}  // namespace physltl::geometry

@@ -1,0 +1,60 @@
+#include "physltl/planning/path_lower_bound.h"
+
+#include "physltl/geometry/free_space.h"
+
+#include <functional>
+#include <limits>
+#include <queue>
+
+namespace physltl::planning {
+
+// A relaxation of the task's product with the free space, small enough to search exactly: a place is the
+// start or a region, and the robot moves from a place to a region at the free-space distance between them
+// (any point of one to any point of the other), reading that region; reading "no region" is free. Any
+// path the robot can follow reads its regions in some order, each leg at least that distance long, so the
+// cheapest accepted order is a lower bound.
+double shortest_free_path_length(const scenario::World& world, const TaskAutomaton& task) {
+  const double r = world.robot.radius;
+  std::vector<geometry::Polygon> obstacles;
+  for (const auto& f : world.fixed_bodies) obstacles.push_back(geometry::grown_from_inside(f.footprint, r));
+  const geometry::Rect bounds{world.workspace.bounds.min + geometry::Vec2::Constant(r),
+                              world.workspace.bounds.max - geometry::Vec2::Constant(r)};
+  const geometry::FreeSpace space(std::move(obstacles), bounds);
+
+  const int regions = static_cast<int>(world.regions.size());
+  // Place 0 is the start, place k + 1 region k.
+  std::vector<geometry::FreeSpace::Place> places{space.place(geometry::Polygon{{world.robot.start}})};
+  for (const auto& region : world.regions) places.push_back(space.place(region.polygon));
+  std::vector<std::vector<double>> leg(places.size(), std::vector<double>(places.size(), 0.0));
+  for (size_t from = 0; from < places.size(); ++from) {
+    const std::vector<double> corners = space.distances_from(places[from]);
+    for (size_t to = 1; to < places.size(); ++to) {
+      if (to != from) leg[from][to] = space.distance_to(corners, places[from], places[to]);
+    }
+  }
+
+  const int states = static_cast<int>(task.dfa.size());
+  const auto id = [&](int place, int q) { return place * states + q; };
+  std::vector<double> cost(places.size() * static_cast<size_t>(states), std::numeric_limits<double>::infinity());
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  const RegionMap region_map(world);
+  const int start = id(0, task.step(task.dfa.start, region_map.at(world.robot.start)));
+  cost[static_cast<size_t>(start)] = 0.0;
+  open.push({0.0, start});
+  while (!open.empty()) {
+    const auto [c, u] = open.top();
+    open.pop();
+    if (c > cost[static_cast<size_t>(u)]) continue;
+    const int place = u / states, q = u % states;
+    if (task.dfa.accepting[static_cast<size_t>(q)]) return c;
+    const auto relax = [&](int v, double length) {
+      if (c + length < cost[static_cast<size_t>(v)]) cost[static_cast<size_t>(v)] = c + length, open.push({c + length, v});
+    };
+    relax(id(place, task.step(q, -1)), 0.0);
+    for (int region = 0; region < regions; ++region) relax(id(region + 1, task.step(q, region)), leg[static_cast<size_t>(place)][static_cast<size_t>(region + 1)]);
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+}  // namespace physltl::planning
