@@ -7,6 +7,7 @@
 #include "physltl/planning/improve.h"
 #include "physltl/planning/path_lower_bound.h"
 #include "plan_files.h"
+#include "planner_names.h"
 #include "planning_job.h"
 #include "scenario_args.h"
 #include "stop_signal.h"
@@ -35,6 +36,7 @@ struct BenchArgs {
   std::optional<std::uint64_t> seed;
   std::optional<double> time_limit;
   bool compare = false;
+  std::optional<std::string> planners;  // A,B,...
   std::vector<int> threads{1};
   std::optional<std::string> sweep;  // key=v1,v2,...
   std::string log_file;
@@ -65,6 +67,8 @@ BenchRun measure(const PreparedRun& prepared, const SolveOptions& options) {
     run.first_pushes = solution.improvement ? solution.improvement->first.pushes : run.pushes;
     run.first_duration_s = solution.improvement ? solution.improvement->first.duration_s : run.solution_duration_s;
   }
+  run.cell_skips_refused = result.stats.cell_skips_refused;
+  run.settings = result.settings;
   return run;
 }
 
@@ -172,6 +176,11 @@ int bench(const BenchArgs& args) {
       if (setting.rfind(sweep->key + "=", 0) == 0) throw BadInput("--sweep " + sweep->key + " is also given to --set");
     }
   }
+  std::vector<planning::PlannerKind> planners =
+      args.planners ? parse_planner_list(*args.planners) : std::vector{planning::PlannerKind::kKnowledge};
+  if (args.compare && std::find(planners.begin(), planners.end(), planning::PlannerKind::kBaseline) == planners.end()) {
+    planners.push_back(planning::PlannerKind::kBaseline);
+  }
   // Every case is loaded and reasoned about before the first run: a bad value fails at once.
   std::vector<std::unique_ptr<BenchCase>> cases;
   const std::vector<std::string> no_sweep{""};
@@ -200,9 +209,12 @@ int bench(const BenchArgs& args) {
     results.improve = args.improve;
     results.started_at = local_time_now();
     results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->prepared->as_written());
-    for (const auto guidance : {planning::Guidance::kKnowledge, planning::Guidance::kBaseline}) {
-      if (guidance == planning::Guidance::kBaseline && !args.compare) continue;
-      for (int threads : args.threads) results.planners.push_back({guidance, threads, {}});
+    for (const auto planner : planners) {
+      if (const auto why = planning::refusal(planner, c->prepared->search_task(planner))) throw BadInput(*why);
+      // OMPL's planners grow their trees on one thread.
+      for (int threads : args.threads) {
+        if (!planning::is_ompl(planner) || threads == args.threads.front()) results.planners.push_back({planner, threads, {}});
+      }
     }
     cases.push_back(std::move(c));
   }
@@ -228,7 +240,7 @@ int bench(const BenchArgs& args) {
           fmt::print(stderr, "\r{:<72}", fmt::format("run {}/{}{}: {} seed {} ...", i + 1, args.runs, where,
                                                      planner_label(c->results, planner), seed));
         }
-        planner.runs.push_back(measure(*c->prepared, {.guidance = planner.guidance,
+        planner.runs.push_back(measure(*c->prepared, {.planner = planner.planner,
                                                       .seed = seed,
                                                       .time_limit = c->world.planner.time_limit,
                                                       .threads = planner.threads,
@@ -290,6 +302,8 @@ CommandRunner add_bench_command(CLI::App& app) {
   app.add_option("--seed", args->seed, "First seed; runs use S, S+1, ... (default: the scenario's)");
   app.add_option("--time-limit", args->time_limit, "Planning time limit per run in seconds (default: the scenario's)")
       ->check(CLI::PositiveNumber);
+  app.add_option("--planners", args->planners,
+                 "Planners to measure, interleaved seed by seed (default: knowledge): " + planner_names());
   app.add_flag("--compare", args->compare, "Also run the baseline planner on the same seeds, interleaved");
   app.add_option("--improve", args->improve,
                  "Candidates spent shortening each first validated plan, timed apart from the search (default: none)")

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace physltl::app {
@@ -13,9 +14,9 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-const PlannerRuns* find_planner(const BenchResults& results, planning::Guidance guidance, int threads) {
+const PlannerRuns* find_planner(const BenchResults& results, planning::PlannerKind planner, int threads) {
   for (const auto& p : results.planners) {
-    if (p.guidance == guidance && p.threads == threads) return &p;
+    if (p.planner == planner && p.threads == threads) return &p;
   }
   return nullptr;
 }
@@ -95,8 +96,8 @@ PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
 
 std::optional<double> ratio_of_medians(const BenchResults& results) {
   if (results.threads.empty()) return std::nullopt;
-  const PlannerRuns* knowledge = find_planner(results, planning::Guidance::kKnowledge, results.threads[0]);
-  const PlannerRuns* baseline = find_planner(results, planning::Guidance::kBaseline, results.threads[0]);
+  const PlannerRuns* knowledge = find_planner(results, planning::PlannerKind::kKnowledge, results.threads[0]);
+  const PlannerRuns* baseline = find_planner(results, planning::PlannerKind::kBaseline, results.threads[0]);
   if (knowledge == nullptr || baseline == nullptr) return std::nullopt;
   const double k = median_of(results, *knowledge);
   if (k <= 0.0) return std::nullopt;
@@ -106,10 +107,10 @@ std::optional<double> ratio_of_medians(const BenchResults& results) {
 std::vector<ThreadsRatio> threads_ratios(const BenchResults& results) {
   std::vector<ThreadsRatio> ratios;
   if (results.threads.empty()) return ratios;
-  const PlannerRuns* first = find_planner(results, planning::Guidance::kKnowledge, results.threads[0]);
+  const PlannerRuns* first = find_planner(results, planning::PlannerKind::kKnowledge, results.threads[0]);
   if (first == nullptr || median_of(results, *first) <= 0.0) return ratios;
   for (size_t i = 1; i < results.threads.size(); ++i) {
-    if (const PlannerRuns* p = find_planner(results, planning::Guidance::kKnowledge, results.threads[i])) {
+    if (const PlannerRuns* p = find_planner(results, planning::PlannerKind::kKnowledge, results.threads[i])) {
       ratios.push_back({results.threads[i], median_of(results, *p) / median_of(results, *first)});
     }
   }
@@ -117,7 +118,7 @@ std::vector<ThreadsRatio> threads_ratios(const BenchResults& results) {
 }
 
 std::string planner_label(const BenchResults& results, const PlannerRuns& planner) {
-  const std::string name = guidance_name(planner.guidance);
+  const std::string name = planning::planner_name(planner.planner);
   return results.threads.size() > 1 ? fmt::format("{} x{}", name, planner.threads) : name;
 }
 
@@ -154,6 +155,20 @@ std::string bench_table(const BenchResults& r) {
   return text;
 }
 
+namespace {
+
+// How the planner was configured (the first run's settings but its seed): empty for ours.
+json settings_json(const PlannerRuns& p) {
+  json settings = json::object();
+  if (p.runs.empty()) return settings;
+  for (const auto& [key, value] : p.runs.front().settings) {
+    if (key != "seed") settings[key] = value;
+  }
+  return settings;
+}
+
+}  // namespace
+
 json bench_json(const BenchResults& r) {
   json planners = json::array();
   for (const auto& p : r.planners) {
@@ -161,6 +176,7 @@ json bench_json(const BenchResults& r) {
     json runs = json::array();
     for (const auto& run : p.runs) {
       json entry = {{"seed", run.seed},
+                    {"cell_skips_refused", run.cell_skips_refused},
                     {"solved", run.solved},
                     {"stop_reason", run.stop_reason},
                     {"wall_s", run.wall_s},
@@ -179,7 +195,7 @@ json bench_json(const BenchResults& r) {
       }
       runs.push_back(std::move(entry));
     }
-    planners.push_back({{"name", guidance_name(p.guidance)},
+    planners.push_back({{"name", planning::planner_name(p.planner)},
                         {"threads", p.threads},
                         {"solved", s.solved},
                         {"median_s", s.median_s},
@@ -196,6 +212,7 @@ json bench_json(const BenchResults& r) {
                         {"first_duration_median_s", s.first_duration_median_s},
                         {"solution_duration_median_s", s.solution_duration_median_s},
                         {"path_length_median_m", s.path_length_median_m},
+                        {"settings", settings_json(p)},
                         {"per_run", std::move(runs)}});
   }
   const auto ratio = ratio_of_medians(r);
@@ -232,9 +249,16 @@ OmplExperiment ompl_experiment(const BenchResults& r, const std::string& host, c
   e.total_duration_s = r.total_duration_s;
   for (const auto& p : r.planners) {
     OmplPlannerResults planner;
-    planner.name = std::string("physltl_") + guidance_name(p.guidance);
+    // physltl_knowledge, physltl_ompl_rrt, ...: the OMPL planners as run on our problem.
+    planner.name = "physltl_" + std::string(planning::planner_name(p.planner));
+    std::replace(planner.name.begin(), planner.name.end(), '-', '_');
     if (r.threads.size() > 1) planner.name += fmt::format("_{}threads", p.threads);
-    planner.common = {{"guidance", guidance_name(p.guidance)}, {"threads", std::to_string(p.threads)}};
+    planner.common = {{"planner", planning::planner_name(p.planner)}, {"threads", std::to_string(p.threads)}};
+    if (!p.runs.empty()) {
+      for (const auto& [key, value] : p.runs.front().settings) {
+        if (key != "seed") planner.common[key] = value;
+      }
+    }
     const PlannerSummary s = summarize(p, r.time_limit_s);
     for (size_t i = 0; i < p.runs.size(); ++i) planner.runs.push_back(ompl_run(p.runs[i], s.times_s[i]));
     e.planners.push_back(std::move(planner));

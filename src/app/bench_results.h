@@ -30,11 +30,13 @@ struct BenchRun {
   double path_length_m = 0.0;        // of the same plan: the robot's centre, step by step
   int first_pushes = 0;              // of the first validated plan
   double first_duration_s = 0.0;
+  long long cell_skips_refused = 0;  // OMPL's planners (PlannerStats)
+  std::vector<std::pair<std::string, std::string>> settings;  // how the planner was configured
 };
 
 // One planner with one thread count.
 struct PlannerRuns {
-  planning::Guidance guidance;
+  planning::PlannerKind planner;
   int threads = 1;
   std::vector<BenchRun> runs;  // one per seed, in seed order
 };

@@ -11,10 +11,6 @@ json point(const scenario::Vec2& p) { return {p.x(), p.y()}; }
 
 }  // namespace
 
-const char* guidance_name(planning::Guidance guidance) {
-  return guidance == planning::Guidance::kKnowledge ? "knowledge" : "baseline";
-}
-
 json report_json(const RunSummary& run) {
   const auto& r = run.result;
   const auto& reasoning = run.reasoning;
@@ -26,7 +22,7 @@ json report_json(const RunSummary& run) {
   const auto simplified = reasoning.simplified_formula();
   json report = {
       {"scenario", run.world.source_file},
-      {"planner", guidance_name(run.guidance)},
+      {"planner", planning::planner_name(run.planner)},
       {"seed", run.world.planner.seed},
       {"time_limit_s", run.world.planner.time_limit},
       {"formula", run.world.task.formula},

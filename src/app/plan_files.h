@@ -17,7 +17,7 @@ namespace physltl::app {
 struct RunSummary {
   const scenario::World& world;
   const Reasoning& reasoning;
-  planning::Guidance guidance;
+  planning::PlannerKind planner;
   const planning::PlanResult& result;
   const planning::Replay* replay;  // null when nothing was solved
   const planning::Improvement* improvement = nullptr;  // when the plan was improved
@@ -26,7 +26,5 @@ struct RunSummary {
 nlohmann::ordered_json report_json(const RunSummary& run);
 nlohmann::ordered_json plan_json(const RunSummary& run);  // needs a replay
 
-// "knowledge" or "baseline", as reports and benchmarks name the planners.
-const char* guidance_name(planning::Guidance guidance);
 
 }  // namespace physltl::app

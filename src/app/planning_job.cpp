@@ -11,19 +11,19 @@ PreparedRun::PreparedRun(const scenario::World& world, const Reasoning& reasonin
       as_written_(planning::TaskAutomaton::make(ltl::parse(world.task.formula), world)),
       decomposition_(decomposition::Decomposition::build(world)) {}
 
-const planning::TaskAutomaton& PreparedRun::search_task(planning::Guidance guidance) const {
-  return guidance == planning::Guidance::kBaseline ? as_written_ : simplified_;
+const planning::TaskAutomaton& PreparedRun::search_task(planning::PlannerKind planner) const {
+  return planner == planning::PlannerKind::kBaseline ? as_written_ : simplified_;
 }
 
 planning::ValidatedPlan solve(const PreparedRun& run, const SolveOptions& options) {
   planning::PlannerOptions planner;
-  planner.guidance = options.guidance;
+  planner.planner = options.planner;
   planner.seed = options.seed;
   planner.time_limit = options.time_limit;
   planner.stop = options.stop;
   planner.threads = options.threads;
   planner.improve = options.improve;
-  const planning::Problem problem{run.world(), run.search_task(options.guidance), run.as_written(),
+  const planning::Problem problem{run.world(), run.search_task(options.planner), run.as_written(),
                                   run.reasoning().knowledge, run.decomposition()};
   return planning::plan_and_validate(problem, planner);
 }

@@ -20,9 +20,10 @@ class PreparedRun {
 
   const scenario::World& world() const { return world_; }
   const Reasoning& reasoning() const { return reasoning_; }
-  // The automaton the search aims at: the simplified formula's for the knowledge planner, the formula as
-  // written for the baseline (the paper's simple planner has no reasoning).
-  const planning::TaskAutomaton& search_task(planning::Guidance guidance) const;
+  // The automaton the search aims at: the simplified formula's for the knowledge planner and OMPL's
+  // planners (all use the knowledge framework), the formula as written for the baseline (the paper's
+  // simple planner has no reasoning).
+  const planning::TaskAutomaton& search_task(planning::PlannerKind planner) const;
   // The formula as written, which every replay checks.
   const planning::TaskAutomaton& as_written() const { return as_written_; }
   const decomposition::Decomposition& decomposition() const { return decomposition_; }
@@ -36,7 +37,7 @@ class PreparedRun {
 };
 
 struct SolveOptions {
-  planning::Guidance guidance = planning::Guidance::kKnowledge;
+  planning::PlannerKind planner = planning::PlannerKind::kKnowledge;
   std::uint64_t seed = 1;
   double time_limit = 60.0;
   int threads = 1;

@@ -1,4 +1,5 @@
 #include "command.h"
+#include "planner_names.h"
 #include "output_folder.h"
 #include "physltl/ltl/formula.h"
 #include "physltl/render/video.h"
@@ -33,7 +34,8 @@ struct RunArgs {
   std::optional<std::uint64_t> seed;
   std::optional<double> time_limit;
   std::string out_dir = "out";
-  bool baseline = false;
+  std::optional<std::string> planner;
+  bool baseline = false;  // --planner baseline
   bool quiet = false;
   // Shortening the first validated plan (docs/planner.md).
   int improve = kDefaultImprove;
@@ -64,6 +66,12 @@ class ProgressLine {
 };
 
 int run(const RunArgs& args) {
+  if (args.baseline && args.planner && *args.planner != "baseline") {
+    throw BadInput("--baseline and --planner " + *args.planner + " name two planners");
+  }
+  const planning::PlannerKind planner = args.baseline  ? planning::PlannerKind::kBaseline
+                                        : args.planner ? parse_planner(*args.planner)
+                                                       : planning::PlannerKind::kKnowledge;
   scenario::World world = args.scenario.load();
   if (args.seed) world.planner.seed = *args.seed;
   if (args.time_limit) world.planner.time_limit = *args.time_limit;
@@ -80,17 +88,18 @@ int run(const RunArgs& args) {
   // Made before planning so that an unwritable --out fails at once, not after minutes of search; it is
   // removed again unless the run succeeds.
   OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
-  const auto guidance = args.baseline ? planning::Guidance::kBaseline : planning::Guidance::kKnowledge;
   const PreparedRun prepared(world, reasoning);
-  const planning::TaskAutomaton& task = prepared.search_task(guidance);
+  const planning::TaskAutomaton& task = prepared.search_task(planner);
+  if (const auto why = planning::refusal(planner, task)) throw BadInput(*why);
   say(fmt::format("task       {} ({} automaton states, {} planner, seed {})",
-                  args.baseline ? world.task.formula : ltl::to_string(*reasoning.simplified_formula()),
-                  task.dfa.size(), guidance_name(guidance), world.planner.seed));
+                  planner == planning::PlannerKind::kBaseline ? world.task.formula
+                                                              : ltl::to_string(*reasoning.simplified_formula()),
+                  task.dfa.size(), planning::planner_name(planner), world.planner.seed));
 
   StopSignal stop;  // Ctrl-C and SIGTERM end the search; nothing is written then
   ProgressLine progress(args.quiet);
   progress.show(fmt::format("planning (up to {:g} s) ...", world.planner.time_limit));
-  const planning::ValidatedPlan solution = solve(prepared, {.guidance = guidance,
+  const planning::ValidatedPlan solution = solve(prepared, {.planner = planner,
                                                             .seed = world.planner.seed,
                                                             .time_limit = world.planner.time_limit,
                                                             .threads = args.threads,
@@ -126,7 +135,7 @@ int run(const RunArgs& args) {
   say(fmt::format("plan       {} controls, {:.1f} s of motion, {} pushes, validated by replay",
                   result.plan.controls.size(), result.plan.total_steps() * world.planner.step_size, replay.pushes));
 
-  const RunSummary summary{world, reasoning, guidance, result, &replay, solution.improvement ? &*solution.improvement : nullptr};
+  const RunSummary summary{world, reasoning, planner, result, &replay, solution.improvement ? &*solution.improvement : nullptr};
   write_json(out.path() / "report.json", report_json(summary));
   write_json(out.path() / "plan.json", plan_json(summary));
   if (args.render) {
@@ -164,7 +173,8 @@ CommandRunner add_run_command(CLI::App& app) {
   app.add_option("--time-limit", args->time_limit, "Planning time limit in seconds (default: the scenario's)")
       ->check(CLI::PositiveNumber);
   app.add_option("--out", args->out_dir, "Folder for outputs; each scenario writes <out>/<name>/")->capture_default_str();
-  app.add_flag("--baseline", args->baseline, "Plan without knowledge: the paper's simple physics-based LTL planner");
+  app.add_option("--planner", args->planner, "Planner: " + planner_names() + " (default: knowledge)");
+  app.add_flag("--baseline", args->baseline, "Same as --planner baseline: the paper's simple physics-based LTL planner");
   app.add_flag("--quiet", args->quiet, "Print only errors");
   app.add_option("--improve", args->improve,
                  "Candidates spent shortening the first validated plan (0: keep it as found; same seed, same plan)")

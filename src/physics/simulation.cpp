@@ -494,6 +494,26 @@ void PhysicsState::set_value(std::size_t body, std::size_t k, double v) {
   shared = std::move(copy);
 }
 
+void PhysicsState::copy_values(std::span<double> out) const {
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    const std::size_t first = b * kBodiesPerBlock * kValuesPerBody;
+    const std::size_t count = std::min(blocks_[b]->values.size(), out.size() - first);
+    std::copy_n(blocks_[b]->values.begin(), count, out.begin() + static_cast<std::ptrdiff_t>(first));
+  }
+}
+
+PhysicsState PhysicsState::from_values(std::span<const double> values) {
+  PhysicsState s;
+  s.bodies_ = values.size() / kValuesPerBody;
+  for (std::size_t first = 0; first < values.size(); first += kBodiesPerBlock * kValuesPerBody) {
+    auto block = std::make_shared<Block>();
+    std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(first),
+                std::min(block->values.size(), values.size() - first), block->values.begin());
+    s.blocks_.push_back(std::move(block));
+  }
+  return s;
+}
+
 std::size_t PhysicsState::blocks_shared_with(const PhysicsState& other) const {
   std::size_t shared = 0;
   for (std::size_t b = 0; b < std::min(blocks_.size(), other.blocks_.size()); ++b) shared += blocks_[b] == other.blocks_[b];

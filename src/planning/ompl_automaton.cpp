@@ -2,20 +2,53 @@
 
 #include <ompl/control/planners/ltl/Automaton.h>
 
+#include <stdexcept>
+#include <vector>
+
 namespace physltl::planning {
+namespace {
+
+// The states from which no accepting state can be reached.
+std::vector<bool> dead_states(const TaskAutomaton& task, int regions) {
+  const int states = static_cast<int>(task.dfa.size());
+  std::vector<bool> alive(task.dfa.accepting.begin(), task.dfa.accepting.end());
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (int q = 0; q < states; ++q) {
+      for (int r = -1; r < regions && !alive[static_cast<std::size_t>(q)]; ++r) {
+        if (alive[static_cast<std::size_t>(task.step(q, r))]) alive[static_cast<std::size_t>(q)] = changed = true;
+      }
+    }
+  }
+  std::vector<bool> dead;
+  for (bool a : alive) dead.push_back(!a);
+  return dead;
+}
+
+}  // namespace
+
+ompl::control::World region_letter(int regions, int region) {
+  ompl::control::World letter(static_cast<unsigned>(regions));
+  for (int p = 0; p < regions; ++p) letter[static_cast<unsigned>(p)] = p == region;
+  return letter;
+}
 
 std::shared_ptr<ompl::control::Automaton> to_ompl_automaton(const TaskAutomaton& task) {
   const auto regions = static_cast<unsigned>(task.proposition_of_region.size());
   const auto states = static_cast<unsigned>(task.dfa.size());
+  const std::vector<bool> dead = dead_states(task, static_cast<int>(regions));
   auto automaton = std::make_shared<ompl::control::Automaton>(regions, states);
   automaton->setStartState(static_cast<unsigned>(task.dfa.start));
   for (unsigned q = 0; q < states; ++q) {
     automaton->setAccepting(q, task.dfa.accepting[q]);
-    automaton->addTransition(q, ompl::control::World(regions), static_cast<unsigned>(task.step(static_cast<int>(q), -1)));
-    for (unsigned r = 0; r < regions; ++r) {
-      ompl::control::World in_region(regions);
-      in_region[r] = true;
-      automaton->addTransition(q, in_region, static_cast<unsigned>(task.step(static_cast<int>(q), static_cast<int>(r))));
+    for (int r = -1; r < static_cast<int>(regions); ++r) {
+      const int next = task.step(static_cast<int>(q), r);
+      if (task.step(next, r) != next) {
+        throw std::invalid_argument("the task automaton changes state on reading the same region twice; "
+                                    "OMPL's product graph cannot follow it");
+      }
+      if (dead[static_cast<std::size_t>(next)]) continue;
+      automaton->addTransition(q, region_letter(static_cast<int>(regions), r), static_cast<unsigned>(next));
     }
   }
   return automaton;

@@ -1,6 +1,7 @@
 #include "physltl/planning/planner.h"
 
 #include "lead_search.h"
+#include "ompl_planner.h"
 #include "product_graph.h"
 #include "random.h"
 #include "tree_grower.h"
@@ -96,7 +97,7 @@ class Search {
         knowledge_(knowledge),
         decomposition_(decomposition),
         options_(options),
-        triangle_weights_(options.guidance == Guidance::kKnowledge ? clearance_weights(decomposition, knowledge)
+        triangle_weights_(options.planner == PlannerKind::kKnowledge ? clearance_weights(decomposition, knowledge)
                                                                    : std::vector<double>{}),
         graph_(decomposition, task, triangle_weights_),
         lead_search_(graph_),
@@ -224,7 +225,7 @@ class Search {
       if (task < extra) return alongside();
       // Built on the thread that uses it: ODE keeps per-thread data.
       auto& grower = growers_[static_cast<size_t>(worker)];
-      if (!grower) grower.emplace(world_, task_, knowledge_, decomposition_, graph_, options_.guidance == Guidance::kKnowledge);
+      if (!grower) grower.emplace(world_, task_, knowledge_, decomposition_, graph_, options_.planner == PlannerKind::kKnowledge);
       const Expansion& e = expansions_[static_cast<size_t>(task - extra)];
       grower->grow(motions_[static_cast<size_t>(e.from)], e.target, e.seed, growths_[static_cast<size_t>(task - extra)]);
     });
@@ -311,12 +312,59 @@ class Search {
 
 }  // namespace
 
-knowledge::ValidityMode validity_mode(Guidance guidance) {
-  return guidance == Guidance::kKnowledge ? knowledge::ValidityMode::kKnowledge : knowledge::ValidityMode::kBaseline;
+namespace {
+
+constexpr std::array<std::pair<PlannerKind, const char*>, 7> kPlannerNames = {{
+    {PlannerKind::kKnowledge, "knowledge"},
+    {PlannerKind::kBaseline, "baseline"},
+    {PlannerKind::kOmplLtl, "ompl-ltl"},
+    {PlannerKind::kOmplRrt, "ompl-rrt"},
+    {PlannerKind::kOmplKpiece, "ompl-kpiece"},
+    {PlannerKind::kOmplSst, "ompl-sst"},
+    {PlannerKind::kOmplPdst, "ompl-pdst"},
+}};
+
+}  // namespace
+
+const char* planner_name(PlannerKind planner) {
+  for (const auto& [kind, name] : kPlannerNames) {
+    if (kind == planner) return name;
+  }
+  return "?";
+}
+
+std::optional<PlannerKind> planner_from_name(std::string_view name) {
+  for (const auto& [kind, known] : kPlannerNames) {
+    if (name == known) return kind;
+  }
+  return std::nullopt;
+}
+
+const std::vector<PlannerKind>& all_planners() {
+  static const std::vector<PlannerKind> planners = [] {
+    std::vector<PlannerKind> all;
+    for (const auto& entry : kPlannerNames) all.push_back(entry.first);
+    return all;
+  }();
+  return planners;
+}
+
+bool is_ompl(PlannerKind planner) { return planner != PlannerKind::kKnowledge && planner != PlannerKind::kBaseline; }
+
+std::optional<std::string> refusal(PlannerKind planner, const TaskAutomaton& task) {
+  if (!is_ompl(planner) || !task.ends_at_rest()) return std::nullopt;
+  return std::string(planner_name(planner)) + " plans co-safe tasks only (OMPL's product graph takes co-safe tasks, " +
+         "and co-safe with safety, satisfied by a finite run), but this task is satisfied only by a plan that ends at " +
+         "rest: plan it with knowledge or baseline";
+}
+
+knowledge::ValidityMode validity_mode(PlannerKind planner) {
+  return planner == PlannerKind::kBaseline ? knowledge::ValidityMode::kBaseline : knowledge::ValidityMode::kKnowledge;
 }
 
 PlanResult plan(const scenario::World& world, const TaskAutomaton& task, const knowledge::AbstractKnowledge& knowledge,
                 const decomposition::Decomposition& decomposition, const PlannerOptions& options) {
+  if (is_ompl(options.planner)) return plan_with_ompl(world, task, knowledge, decomposition, options);
   return Search(world, task, knowledge, decomposition, options).run();
 }
 

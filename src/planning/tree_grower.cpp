@@ -1,6 +1,5 @@
 #include "tree_grower.h"
 
-#include "physltl/knowledge/kappa.h"
 #include "random.h"
 
 #include <cmath>
@@ -18,37 +17,25 @@ TreeGrower::TreeGrower(const scenario::World& world, const TaskAutomaton& task,
                        const knowledge::AbstractKnowledge& knowledge, const decomposition::Decomposition& decomposition,
                        const ProductGraph& graph, bool use_knowledge)
     : task_(task),
-      knowledge_(knowledge),
       decomposition_(decomposition),
       graph_(graph),
-      mode_(use_knowledge ? knowledge::ValidityMode::kKnowledge : knowledge::ValidityMode::kBaseline),
       sampler_(world, knowledge, use_knowledge),
       max_braking_steps_(static_cast<int>(std::ceil(kMaxBrakingTime / world.planner.step_size))),
       regions_(world),
-      simulation_(world) {}
+      simulation_(world, knowledge, use_knowledge ? knowledge::ValidityMode::kKnowledge : knowledge::ValidityMode::kBaseline) {}
 
 void TreeGrower::grow(const Motion& from, const Vec2& target, std::uint64_t seed, Growth& growth) {
   growth = Growth{};
   Random random(seed);
   simulation_.restore(from.state);
-  simulation_.read_environment(environment_);
-  update_kappa();
-  propagate(sampler_.sample(environment_, kappa_, target, random), from.automaton_state, growth);
+  propagate(sampler_.sample(simulation_.environment(), simulation_.kappa(), target, random), from.automaton_state, growth);
 }
 
 bool TreeGrower::valid_step(const Vec2& setpoint, Growth& growth) {
-  simulation_.step(setpoint, contacts_);
   ++growth.physics_steps;
-  // Only the robot and the bodies the step integrated changed: read, test and infer for those.
-  simulation_.update_environment(environment_);
-  const std::span<const int> movers = simulation_.last_step_movers();
-  // VALIDITYCHECKER(E_new, kappa_j), then kappa_{j+1} = INFERENCE(E_new, kappa_j).
-  if (!knowledge::is_valid_after_step(knowledge_, kappa_, environment_, contacts_, mode_, movers)) {
-    growth.stopped_by_invalid_step = true;
-    return false;
-  }
-  if (mode_ == knowledge::ValidityMode::kKnowledge) knowledge::reinfer(knowledge_, environment_, kappa_poses_, kappa_, movers);
-  return true;
+  if (simulation_.step(setpoint)) return true;
+  growth.stopped_by_invalid_step = true;
+  return false;
 }
 
 void TreeGrower::propagate(const Control& control, int automaton_state, Growth& growth) {
@@ -56,7 +43,7 @@ void TreeGrower::propagate(const Control& control, int automaton_state, Growth& 
   bool accepted = false;
   for (int step = 1; step <= control.steps; ++step) {
     if (!valid_step(control.setpoint, growth)) break;
-    const int next = task_.step(automaton_state, regions_.at(environment_.robot_position));
+    const int next = task_.step(automaton_state, regions_.at(simulation_.environment().robot_position));
     if (graph_.dead(next)) break;
     automaton_state = next;
     valid_steps = step;
@@ -76,9 +63,9 @@ bool TreeGrower::brake(int automaton_state, Growth& growth) {
   const Vec2 stop = Vec2::Zero();
   for (int step = 1; step <= max_braking_steps_; ++step) {
     if (!valid_step(stop, growth)) return false;
-    automaton_state = task_.step(automaton_state, regions_.at(environment_.robot_position));
+    automaton_state = task_.step(automaton_state, regions_.at(simulation_.environment().robot_position));
     if (graph_.dead(automaton_state)) return false;
-    if (!environment_.at_rest()) continue;
+    if (!simulation_.environment().at_rest()) continue;
     if (!task_.dfa.accepting[automaton_state]) return false;
     simulation_.save(last_valid_);
     growth.braking = make_motion({stop, step}, automaton_state);
@@ -95,16 +82,6 @@ Motion TreeGrower::make_motion(const Control& control, int automaton_state) cons
   motion.automaton_state = automaton_state;
   motion.product_state = graph_.id(decomposition_.locate(motion.robot), automaton_state);
   return motion;
-}
-
-void TreeGrower::update_kappa() {
-  if (kappa_valid_) {
-    knowledge::reinfer(knowledge_, environment_, kappa_poses_, kappa_);
-  } else {
-    knowledge::infer(knowledge_, environment_, kappa_);
-    kappa_poses_ = knowledge::BodyLocator(knowledge_, environment_.movable_poses);
-    kappa_valid_ = true;
-  }
 }
 
 }  // namespace physltl::planning

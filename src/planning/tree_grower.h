@@ -5,6 +5,7 @@
 // never on the grower's history, which is what lets several threads expand one tree and still give a
 // seed's plan exactly.
 
+#include "checked_simulation.h"
 #include "control_sampler.h"
 #include "physltl/decomposition/decomposition.h"
 #include "physltl/knowledge/abstract_knowledge.h"
@@ -60,24 +61,14 @@ class TreeGrower {
   // One valid step under `control`, then INFERENCE; false when the step was invalid.
   bool valid_step(const Vec2& setpoint, Growth& growth);
   Motion make_motion(const Control& control, int automaton_state) const;
-  // kappa_ = INFERENCE(environment_), redone only for the bodies a move since the last call can affect.
-  void update_kappa();
 
   const TaskAutomaton& task_;
-  const knowledge::AbstractKnowledge& knowledge_;
   const decomposition::Decomposition& decomposition_;
   const ProductGraph& graph_;
-  const knowledge::ValidityMode mode_;
   const ControlSampler sampler_;
   const int max_braking_steps_;
   const RegionMap regions_;
-  physics::Simulation simulation_;
-  // Scratch space reused by every step, so the hot loop does not allocate.
-  scenario::EnvironmentState environment_;
-  knowledge::Kappa kappa_;
-  knowledge::BodyLocator kappa_poses_;  // the poses kappa_ was inferred for
-  bool kappa_valid_ = false;
-  std::vector<scenario::RobotContact> contacts_;
+  CheckedSimulation simulation_;
   physics::PhysicsState last_valid_;
 };
 

@@ -7,12 +7,15 @@
 #include <gtest/gtest.h>
 #include <ompl/control/planners/ltl/Automaton.h>
 
+#include <limits>
 #include <random>
+#include <stdexcept>
 
 namespace physltl::planning {
 namespace {
 
-// OMPL's automaton steps exactly like ours on every trace a robot can produce.
+// OMPL's automaton steps exactly like ours on every trace a robot can produce, until ours can no longer
+// accept: OMPL's has no transition there (its product prunes such states).
 TEST(OmplAutomaton, AgreesWithTheTaskAutomatonOnRandomRegionTraces) {
   const auto world = scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/scenarios/rooms.lua");
   for (const char* formula : {"F(p1 & F(p2 & F(p3 | p4)))", "F p1 & F p2 & !p3 U p4", "F(p2 & X F p1)"}) {
@@ -25,15 +28,25 @@ TEST(OmplAutomaton, AgreesWithTheTaskAutomatonOnRandomRegionTraces) {
       int theirs = ompl_automaton->getStartState();
       for (int step = 0; step < 12; ++step) {
         const int region = static_cast<int>(random() % (world.regions.size() + 1)) - 1;
-        ompl::control::World letter(static_cast<unsigned>(world.regions.size()));
-        if (region >= 0) letter[static_cast<unsigned>(region)] = true;
+        const ompl::control::World letter = region_letter(static_cast<int>(world.regions.size()), region);
         ours = task.step(ours, region);
         theirs = ompl_automaton->step(theirs, letter);
+        if (theirs < 0) {
+          EXPECT_EQ(ompl_automaton->distFromAccepting(static_cast<unsigned>(ours)), std::numeric_limits<unsigned>::max());
+          break;
+        }
         ASSERT_EQ(theirs, ours) << formula;
         EXPECT_EQ(ompl_automaton->isAccepting(static_cast<unsigned>(theirs)), task.dfa.accepting[ours]);
       }
     }
   }
+}
+
+// OMPL steps its automaton at every propagation step but its product graph only when the region changes;
+// an automaton that moves on when it reads the same region twice would part the two.
+TEST(OmplAutomaton, RefusesAnAutomatonThatMovesOnWhenTheSameRegionIsReadTwice) {
+  const auto world = scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/scenarios/rooms.lua");
+  EXPECT_THROW(to_ompl_automaton(TaskAutomaton::make(ltl::parse("p1 & X p1"), world)), std::invalid_argument);
 }
 
 }  // namespace

@@ -37,7 +37,7 @@ TEST(Planner, SameSeedGivesTheSamePlanBitForBit) {
 
 TEST(Planner, BaselineAlsoSolvesOrderedWithoutKnowledge) {
   const TestProblem p("ordered.lua");
-  const PlanResult result = p.solve(5, Guidance::kBaseline);
+  const PlanResult result = p.solve(5, PlannerKind::kBaseline);
   ASSERT_TRUE(result.solved) << result.stop_reason;
   EXPECT_TRUE(replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kBaseline).validated());
 }

@@ -43,11 +43,11 @@ struct TestProblem {
     return replay(world, plan, original, knowledge, knowledge::ValidityMode::kKnowledge);
   }
 
-  PlanResult solve(std::uint64_t seed, Guidance guidance = Guidance::kKnowledge) const {
+  PlanResult solve(std::uint64_t seed, PlannerKind planner = PlannerKind::kKnowledge) const {
     PlannerOptions options;
     options.seed = seed;
     options.time_limit = 20;
-    options.guidance = guidance;
+    options.planner = planner;
     return plan(world, task, knowledge, decomposition, options);
   }
 };

@@ -42,6 +42,9 @@ class PhysicsState {
   Vec2 robot_position() const { return {value(0, 0), value(0, 1)}; }
   // Bit for bit: -0.0 is not 0.0 here.
   bool operator==(const PhysicsState& other) const;
+  // Every value, body after body (OMPL's state vector), and back.
+  void copy_values(std::span<double> out) const;
+  static PhysicsState from_values(std::span<const double> values);
   // How many blocks this state holds in memory as one with `other`, and how many it has.
   std::size_t blocks_shared_with(const PhysicsState& other) const;
   std::size_t blocks() const { return blocks_.size(); }

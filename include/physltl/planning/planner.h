@@ -18,18 +18,35 @@
 
 #include <atomic>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace physltl::planning {
 
-enum class Guidance {
-  kKnowledge,  // kappa-aware validity and control sampling (the paper's planner)
-  kBaseline,   // the paper's "simple physics-based LTL planner": fixed-body contacts only, uniform controls
+// Which planner searches. Ours, with or without the knowledge framework, or one of OMPL's on the same
+// problem: the same physics, the same knowledge validity checker, the same decomposition and automaton
+// (ompl_planner.cpp, docs/benchmarks.md).
+enum class PlannerKind {
+  kKnowledge,   // kappa-aware validity and control sampling (the paper's planner)
+  kBaseline,    // the paper's "simple physics-based LTL planner": fixed-body contacts only, uniform controls
+  kOmplLtl,     // OMPL's LTLPlanner (Bhatia et al.)
+  kOmplRrt,     // OMPL's control planners, searching OMPL's product of the decomposition and the automaton
+  kOmplKpiece,
+  kOmplSst,
+  kOmplPdst,
 };
 
+// "knowledge", "baseline", "ompl-ltl", "ompl-rrt", "ompl-kpiece", "ompl-sst", "ompl-pdst".
+const char* planner_name(PlannerKind planner);
+std::optional<PlannerKind> planner_from_name(std::string_view name);
+const std::vector<PlannerKind>& all_planners();
+bool is_ompl(PlannerKind planner);
+
 struct PlannerOptions {
-  Guidance guidance = Guidance::kKnowledge;
+  PlannerKind planner = PlannerKind::kKnowledge;
   std::uint64_t seed = 1;
   double time_limit = 60.0;                     // s of wall-clock planning
   const std::atomic<bool>* stop = nullptr;      // set from elsewhere (Ctrl-C, another thread's success)
@@ -47,19 +64,29 @@ struct PlannerStats {
   long long physics_steps = 0;  // ODE steps taken
   long long tree_nodes = 0;
   long long invalid_steps = 0;  // steps the validity checker refused
+  // OMPL's planners: steps refused because the robot crossed into a triangle that is not a neighbour of
+  // the one it left, which OMPL's product graph cannot follow (docs/benchmarks.md).
+  long long cell_skips_refused = 0;
 };
 
 struct PlanResult {
   bool solved = false;
-  std::string stop_reason;  // "solved", "time limit", "interrupted", "tree full", "no lead"
+  std::string stop_reason;  // "solved", "time limit", "interrupted", "tree full", "no lead", "no solution"
   Plan plan;
   std::vector<TreeEdge> tree;
   PlannerStats stats;
+  // How the planner was configured, for bench.json and the OMPL log (name, value as text).
+  std::vector<std::pair<std::string, std::string>> settings;
 };
 
 PlanResult plan(const scenario::World& world, const TaskAutomaton& task, const knowledge::AbstractKnowledge& knowledge,
                 const decomposition::Decomposition& decomposition, const PlannerOptions& options);
 
-knowledge::ValidityMode validity_mode(Guidance guidance);
+// Why `planner` cannot plan `task`, in a sentence; nothing when it can. OMPL's product takes co-safe
+// tasks (and co-safe with safety), not plans that must end at rest.
+std::optional<std::string> refusal(PlannerKind planner, const TaskAutomaton& task);
+
+// The baseline checks contacts with fixed bodies only; every other planner checks kappa.
+knowledge::ValidityMode validity_mode(PlannerKind planner);
 
 }  // namespace physltl::planning

@@ -1,0 +1,18 @@
+#pragma once
+// The planners' names on the command line: --planner NAME and bench --planners A,B,...
+
+#include "physltl/planning/planner.h"
+
+#include <string>
+#include <vector>
+
+namespace physltl::app {
+
+// "knowledge, baseline, ompl-ltl, ..."
+std::string planner_names();
+// The planner `name` names; BadInput naming it and the choices otherwise.
+planning::PlannerKind parse_planner(const std::string& name);
+// A comma-separated list, each once.
+std::vector<planning::PlannerKind> parse_planner_list(const std::string& text);
+
+}  // namespace physltl::app

@@ -1,0 +1,43 @@
+#pragma once
+// The physics as the planners see it: each step checked by the knowledge layer's VALIDITYCHECKER under
+// the kappa of the state it started from, and kappa kept up to date by INFERENCE after each valid step,
+// redone only for the bodies a move can affect. Our tree growers and the OMPL propagator both step
+// through it, so every planner is held to the same rules.
+
+#include "physltl/knowledge/abstract_knowledge.h"
+#include "physltl/knowledge/kappa.h"
+#include "physltl/knowledge/validity.h"
+#include "physltl/physics/simulation.h"
+
+#include <vector>
+
+namespace physltl::planning {
+
+class CheckedSimulation {
+ public:
+  CheckedSimulation(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
+                    knowledge::ValidityMode mode);
+
+  // Puts the world in `state` and kappa in step with it.
+  void restore(const physics::PhysicsState& state);
+  // One physics step with the drive tracking `setpoint`; false when the step was invalid (the world then
+  // stands in the invalid state).
+  bool step(const scenario::Vec2& setpoint);
+  void save(physics::PhysicsState& out) const { simulation_.save(out); }
+
+  const scenario::EnvironmentState& environment() const { return environment_; }
+  const knowledge::Kappa& kappa() const { return kappa_; }
+
+ private:
+  const knowledge::AbstractKnowledge& knowledge_;
+  const knowledge::ValidityMode mode_;
+  physics::Simulation simulation_;
+  // Scratch space reused by every step, so the hot loop does not allocate.
+  scenario::EnvironmentState environment_;
+  knowledge::Kappa kappa_;
+  knowledge::BodyLocator kappa_poses_;  // the poses kappa_ was inferred for
+  bool kappa_valid_ = false;
+  std::vector<scenario::RobotContact> contacts_;
+};
+
+}  // namespace physltl::planning
