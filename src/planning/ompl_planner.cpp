@@ -150,14 +150,15 @@ ob::StateSamplerPtr PhysicsSpace::allocDefaultStateSampler() const {
 // workspace: KPIECE1's and PDST's grid.
 class RobotPosition : public ob::ProjectionEvaluator {
  public:
-  RobotPosition(const ob::StateSpace* space, const scenario::World& world, bool product)
-      : ob::ProjectionEvaluator(space), product_(product) {
+  // `automaton_states`: 0 for the robot's own space, the automaton's states on OMPL's product.
+  RobotPosition(const ob::StateSpace* space, const scenario::World& world, int automaton_states)
+      : ob::ProjectionEvaluator(space), product_(automaton_states > 0) {
     const Vec2 size = world.workspace.bounds.size();
     std::vector<double> cells{size.x() / 20, size.y() / 20};
     ob::RealVectorBounds bounds(getDimension());
     bounds.setLow(0, world.workspace.bounds.min.x()), bounds.setHigh(0, world.workspace.bounds.max.x());
     bounds.setLow(1, world.workspace.bounds.min.y()), bounds.setHigh(1, world.workspace.bounds.max.y());
-    if (product_) cells.push_back(1.0), bounds.setLow(2, -1), bounds.setHigh(2, 1e3);
+    if (product_) cells.push_back(1.0), bounds.setLow(2, -0.5), bounds.setHigh(2, automaton_states - 0.5);
     setCellSizes(cells);
     setBounds(bounds);
   }
@@ -175,7 +176,7 @@ class RobotPosition : public ob::ProjectionEvaluator {
 };
 
 void PhysicsSpace::registerProjections() {
-  registerDefaultProjection(std::make_shared<RobotPosition>(this, world_, false));
+  registerDefaultProjection(std::make_shared<RobotPosition>(this, world_, 0));
 }
 
 // Counts what the guard against skipped cells refused.
@@ -380,7 +381,7 @@ class Seeded : public Planner {
 constexpr double kLtlExploreTime = 0.5;  // s
 
 ob::PlannerPtr make_planner(PlannerKind kind, const oc::LTLSpaceInformationPtr& si, const oc::ProductGraphPtr& product,
-                            const scenario::World& world, std::uint_fast32_t seed) {
+                            const scenario::World& world, int automaton_states, std::uint_fast32_t seed) {
   switch (kind) {
     case PlannerKind::kOmplLtl:
       return std::make_shared<Seeded<oc::LTLPlanner>>(seed, si, product, kLtlExploreTime);
@@ -388,14 +389,14 @@ ob::PlannerPtr make_planner(PlannerKind kind, const oc::LTLSpaceInformationPtr& 
       return std::make_shared<Seeded<oc::RRT>>(seed, si);
     case PlannerKind::kOmplKpiece: {
       auto planner = std::make_shared<Seeded<oc::KPIECE1>>(seed, si);
-      planner->setProjectionEvaluator(std::make_shared<RobotPosition>(si->getStateSpace().get(), world, true));
+      planner->setProjectionEvaluator(std::make_shared<RobotPosition>(si->getStateSpace().get(), world, automaton_states));
       return planner;
     }
     case PlannerKind::kOmplSst:
       return std::make_shared<Seeded<oc::SST>>(seed, si);
     case PlannerKind::kOmplPdst: {
       auto planner = std::make_shared<Seeded<oc::PDST>>(seed, si);
-      planner->setProjectionEvaluator(std::make_shared<RobotPosition>(si->getStateSpace().get(), world, true));
+      planner->setProjectionEvaluator(std::make_shared<RobotPosition>(si->getStateSpace().get(), world, automaton_states));
       return planner;
     }
     default:
@@ -472,7 +473,7 @@ PlanResult plan_with_ompl(const scenario::World& world, const TaskAutomaton& tas
     problem->setOptimizationObjective(objective);
   }
 
-  const ob::PlannerPtr planner = make_planner(options.planner, si, product, world, seeds.next());
+  const ob::PlannerPtr planner = make_planner(options.planner, si, product, world, static_cast<int>(task.dfa.size()), seeds.next());
   planner->setProblemDefinition(problem);
   planner->setup();
 
