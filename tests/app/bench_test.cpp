@@ -52,6 +52,26 @@ TEST(Bench, WithoutCompareRunsOnlyTheKnowledgePlanner) {
   EXPECT_EQ(r.out.find("baseline"), std::string::npos);
 }
 
+TEST(Bench, PlannersListsOursAndOmplsSideBySideWithOmplsSettings) {
+  const fs::path out = fresh_out_dir();
+  const fs::path log = test_dir() / "ordered.log";
+  const Result r = run("bench " + kSource + "/scenarios/ordered.lua --runs 1 --planners knowledge,ompl-rrt,ompl-sst --out " +
+                       out.string() + " --log " + log.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(slurp(out / "ordered" / "bench.json"));
+  ASSERT_EQ(j["planners"].size(), 3u);
+  EXPECT_EQ(j["planners"][1]["name"], "ompl-rrt");
+  EXPECT_EQ(j["planners"][1]["settings"]["planner"], "RRT");
+  EXPECT_EQ(j["planners"][1]["settings"]["propagation_step_size"], "0.05");
+  EXPECT_EQ(j["planners"][2]["settings"]["cost_threshold"], "infinite (stop at the first solution)");
+  EXPECT_TRUE(j["planners"][0]["settings"].empty());
+  EXPECT_TRUE(j["planners"][1]["per_run"][0]["cell_skips_refused"].is_number_integer());
+  EXPECT_NE(slurp(log).find("\nphysltl_ompl_rrt\n"), std::string::npos);
+  const Result refused = run("bench " + kSource + "/scenarios/ordered.lua --runs 1 --planners knowledge,rrt --out " + out.string());
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("'rrt'"), std::string::npos) << refused.err;
+}
+
 TEST(Bench, QuietPrintsNothingAndStillWritesTheResults) {
   const fs::path out = fresh_out_dir();
   const Result r = run("bench " + kSource + "/scenarios/ordered.lua --runs 1 --quiet --out " + out.string());

@@ -103,6 +103,30 @@ TEST(Run, SameSeedGivesByteIdenticalPlanFramesAndVideoWithOneOrTwoThreads) {
   }
 }
 
+TEST(Run, AnOmplPlannerSolvesOrderedAndTheReportNamesIt) {
+  const fs::path out = fresh_out_dir();
+  const Result r = run(kSource + "/scenarios/ordered.lua --planner ompl-kpiece --improve 0 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto report = nlohmann::json::parse(slurp(out / "ordered" / "report.json"));
+  EXPECT_EQ(report["planner"], "ompl-kpiece");
+  EXPECT_EQ(report["validated"], true);
+}
+
+TEST(Run, ABadPlannerChoiceIsExitTwoAndWritesNothing) {
+  const fs::path out = fresh_out_dir();
+  Result r = run(kSource + "/scenarios/ordered.lua --planner ompl-est --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("'ompl-est'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("ompl-kpiece"), std::string::npos) << r.err;  // the choices
+  r = run(kSource + "/scenarios/ordered.lua --baseline --planner ompl-rrt --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  // OMPL's product takes no task that must end at rest.
+  r = run(kSource + "/scenarios/avoid.lua --planner ompl-rrt --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("end"), std::string::npos) << r.err;
+  EXPECT_TRUE(!fs::exists(out) || fs::is_empty(out));
+}
+
 TEST(Run, AnInfeasibleTaskExitsOneAndLeavesThePreviousOutputsAlone) {
   const fs::path out = fresh_out_dir();
   const fs::path good = small_ordered(test_dir("good"));
