@@ -7,6 +7,7 @@
 #include "physltl/planning/improve.h"
 #include "physltl/planning/path_lower_bound.h"
 #include "plan_files.h"
+#include "physltl/render/png.h"
 #include "planner_names.h"
 #include "planning_job.h"
 #include "scenario_args.h"
@@ -266,7 +267,9 @@ int bench(const BenchArgs& args) {
     auto& out = folders.emplace_back(std::make_unique<OutputFolder>(
         std::filesystem::path(args.out_dir) / folder_name(c->world.name, c->results.settings)));
     write_bench_json(out->path() / "bench.json", bench_json(c->results));
+    render::write_png(bench_chart(c->results), out->path() / "bench.png");
     written.push_back(out->final_path().string() + "/bench.json");
+    written.push_back(out->final_path().string() + "/bench.png");
   }
   if (sweep) {
     Sweep result{sweep->key, args.scenario.settings, {}};
@@ -277,7 +280,9 @@ int bench(const BenchArgs& args) {
     auto& out = folders.emplace_back(std::make_unique<OutputFolder>(
         std::filesystem::path(args.out_dir) / folder_name(cases.front()->world.name, folder_settings)));
     write_bench_json(out->path() / "sweep.json", sweep_json(result));
+    render::write_png(sweep_chart(result), out->path() / "sweep.png");
     written.push_back(out->final_path().string() + "/sweep.json");
+    written.push_back(out->final_path().string() + "/sweep.png");
   }
   PendingLogs logs;
   if (!args.log_file.empty()) {

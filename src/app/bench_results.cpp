@@ -1,5 +1,6 @@
 #include "bench_results.h"
 
+#include "physltl/render/chart.h"
 #include "plan_files.h"
 #include "statistics.h"
 
@@ -264,6 +265,17 @@ OmplExperiment ompl_experiment(const BenchResults& r, const std::string& host, c
     e.planners.push_back(std::move(planner));
   }
   return e;
+}
+
+render::Image bench_chart(const BenchResults& r) {
+  std::vector<render::TimeSeries> series;
+  for (const auto& p : r.planners) {
+    const PlannerSummary s = summarize(p, r.time_limit_s);
+    series.push_back({planner_label(r, p), s.times_s, s.solved});
+  }
+  const std::string title = fmt::format("{}: time to the first validated plan, seeds {}..{}", r.scenario, r.first_seed,
+                                        r.first_seed + static_cast<std::uint64_t>(r.runs) - 1);
+  return render::time_box_plot(title, series, r.time_limit_s);
 }
 
 }  // namespace physltl::app

@@ -4,6 +4,7 @@
 
 #include "ompl_log.h"
 #include "physltl/planning/planner.h"
+#include "physltl/render/image.h"
 
 #include <nlohmann/json.hpp>
 
@@ -91,6 +92,8 @@ std::string planner_label(const BenchResults& results, const PlannerRuns& planne
 
 std::string bench_table(const BenchResults& results);
 nlohmann::ordered_json bench_json(const BenchResults& results);
+// bench.png: each planner's run times (log scale) and success.
+render::Image bench_chart(const BenchResults& results);
 // host and cpu_info describe the machine; they are the caller's to find out.
 OmplExperiment ompl_experiment(const BenchResults& results, const std::string& host, const std::string& cpu_info);
 

@@ -1,5 +1,7 @@
 #include "bench_sweep.h"
 
+#include "physltl/render/chart.h"
+
 #include "command.h"
 #include "plan_files.h"
 #include "statistics.h"
@@ -168,6 +170,19 @@ json sweep_json(const Sweep& sweep) {
           {"first_seed", first.first_seed},
           {"time_limit_s", first.time_limit_s},
           {"planners", std::move(planners)}};
+}
+
+render::Image sweep_chart(const Sweep& sweep) {
+  const BenchResults& first = sweep.points.front().results;
+  std::vector<render::SweepLine> lines;
+  for (size_t p = 0; p < first.planners.size(); ++p) {
+    render::SweepLine line{planner_label(first, first.planners[p]), {}};
+    for (const auto& point : sweep.points) line.medians_s.push_back(summarize(point.results.planners[p], point.results.time_limit_s).median_s);
+    lines.push_back(std::move(line));
+  }
+  std::vector<std::string> values;
+  for (const auto& point : sweep.points) values.push_back(point.value);
+  return render::sweep_chart(first.scenario + ": median time against " + sweep.key, sweep.key, values, lines);
 }
 
 }  // namespace physltl::app

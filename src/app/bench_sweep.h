@@ -4,6 +4,7 @@
 // grows with the parameter, as a table, a least-squares line and sweep.json (docs/benchmarks.md).
 
 #include "bench_results.h"
+#include "physltl/render/image.h"
 
 #include <nlohmann/json.hpp>
 
@@ -33,5 +34,7 @@ struct Sweep {
 
 std::string sweep_table(const Sweep& sweep);
 nlohmann::ordered_json sweep_json(const Sweep& sweep);
+// sweep.png: each planner's median time against the swept value.
+render::Image sweep_chart(const Sweep& sweep);
 
 }  // namespace physltl::app

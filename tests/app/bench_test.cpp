@@ -66,6 +66,7 @@ TEST(Bench, PlannersListsOursAndOmplsSideBySideWithOmplsSettings) {
   EXPECT_EQ(j["planners"][2]["settings"]["cost_threshold"], "infinite (stop at the first solution)");
   EXPECT_TRUE(j["planners"][0]["settings"].empty());
   EXPECT_TRUE(j["planners"][1]["per_run"][0]["cell_skips_refused"].is_number_integer());
+  EXPECT_TRUE(fs::exists(out / "ordered" / "bench.png"));
   EXPECT_NE(slurp(log).find("\nphysltl_ompl_rrt\n"), std::string::npos);
   const Result refused = run("bench " + kSource + "/scenarios/ordered.lua --runs 1 --planners knowledge,rrt --out " + out.string());
   EXPECT_EQ(refused.exit_code, 2);
@@ -131,6 +132,7 @@ TEST(Bench, SweepMeasuresEveryValueOnTheSameSeedsAndFitsALine) {
   EXPECT_NE(r.out.find("least squares: median_s = "), std::string::npos) << r.out;
 
   const auto j = nlohmann::json::parse(slurp(out / "rooms_n-sweep-rooms" / "sweep.json"));
+  EXPECT_TRUE(fs::exists(out / "rooms_n-sweep-rooms" / "sweep.png"));
   EXPECT_EQ(j["key"], "rooms");
   EXPECT_EQ(j["runs"], 2);
   ASSERT_EQ(j["planners"].size(), 1u);

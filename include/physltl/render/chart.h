@@ -1,0 +1,32 @@
+#pragma once
+// Charts for `bench`: box plots of planning time per planner on a log scale with each planner's success,
+// and for a sweep the median time against the swept value, one line per planner. Drawn on the CPU with
+// the renderer's font, so the same numbers give the same pixels.
+
+#include "physltl/render/image.h"
+
+#include <string>
+#include <vector>
+
+namespace physltl::render {
+
+struct TimeSeries {
+  std::string name;
+  std::vector<double> times_s;  // per run, unsolved runs at the time limit
+  int solved = 0;
+};
+
+// One box per planner: quartiles, median, whiskers to the fastest and slowest run, every run as a dot; the
+// time limit dashed; "solved k/n" under each name.
+Image time_box_plot(const std::string& title, const std::vector<TimeSeries>& planners, double time_limit_s);
+
+struct SweepLine {
+  std::string name;
+  std::vector<double> medians_s;  // one per swept value
+};
+
+// Median time (log scale) against the swept values (evenly spaced, labelled as given), one line per planner.
+Image sweep_chart(const std::string& title, const std::string& key, const std::vector<std::string>& values,
+                  const std::vector<SweepLine>& planners);
+
+}  // namespace physltl::render

@@ -1,0 +1,35 @@
+// bench.png and sweep.png: the charts bench draws, against goldens, and what a reader needs from them.
+
+#include "golden_image.h"
+#include "physltl/render/chart.h"
+
+#include <gtest/gtest.h>
+
+namespace physltl::render {
+namespace {
+
+const std::vector<TimeSeries> kPlanners = {
+    {"knowledge", {0.017, 0.02, 0.025, 0.019, 0.03}, 5},
+    {"ompl-ltl", {0.6, 0.9, 1.4, 0.55, 10.0}, 4},  // one run unsolved, at the time limit
+    {"ompl-rrt", {0.08, 0.11, 0.07, 0.09, 0.1}, 5},
+};
+
+TEST(ChartGolden, TimeBoxPlot) {
+  EXPECT_TRUE(matches_golden(time_box_plot("ordered: time to the first validated plan", kPlanners, 10.0), "chart_box_plot"));
+}
+
+TEST(ChartGolden, SweepChart) {
+  const Image image = sweep_chart("rooms_n: median time against rooms", "rooms", {"2", "4", "8", "16"},
+                                  {{"knowledge", {0.026, 0.07, 0.23, 0.6}}, {"baseline", {0.05, 0.2, 0.9, 3.1}}});
+  EXPECT_TRUE(matches_golden(image, "chart_sweep"));
+}
+
+TEST(Chart, ABoxPlotWidensWithEachPlannerAndDrawsTheSameForTheSameNumbers) {
+  const Image one = time_box_plot("t", {kPlanners[0]}, 10.0);
+  const Image three = time_box_plot("t", kPlanners, 10.0);
+  EXPECT_EQ(three.width - one.width, 2 * 120);
+  EXPECT_EQ(time_box_plot("t", kPlanners, 10.0).rgb, three.rgb);
+}
+
+}  // namespace
+}  // namespace physltl::render
