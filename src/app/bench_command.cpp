@@ -38,6 +38,7 @@ struct BenchArgs {
   std::optional<double> time_limit;
   bool compare = false;
   std::optional<std::string> planners;  // A,B,...
+  std::string ompl_sampler = "ompl";
   std::vector<int> threads{1};
   std::optional<std::string> sweep;  // key=v1,v2,...
   std::string log_file;
@@ -177,6 +178,7 @@ int bench(const BenchArgs& args) {
       if (setting.rfind(sweep->key + "=", 0) == 0) throw BadInput("--sweep " + sweep->key + " is also given to --set");
     }
   }
+  const planning::OmplControlSampler ompl_sampler = parse_ompl_sampler(args.ompl_sampler);
   std::vector<planning::PlannerKind> planners =
       args.planners ? parse_planner_list(*args.planners) : std::vector{planning::PlannerKind::kKnowledge};
   if (args.compare && std::find(planners.begin(), planners.end(), planning::PlannerKind::kBaseline) == planners.end()) {
@@ -208,6 +210,7 @@ int bench(const BenchArgs& args) {
     results.time_limit_s = c->world.planner.time_limit;
     results.threads = args.threads;
     results.improve = args.improve;
+    results.ompl_with_our_sampler = ompl_sampler == planning::OmplControlSampler::kOurs;
     results.started_at = local_time_now();
     results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->prepared->as_written());
     for (const auto planner : planners) {
@@ -242,6 +245,7 @@ int bench(const BenchArgs& args) {
                                                      planner_label(c->results, planner), seed));
         }
         planner.runs.push_back(measure(*c->prepared, {.planner = planner.planner,
+                                                      .ompl_control_sampler = ompl_sampler,
                                                       .seed = seed,
                                                       .time_limit = c->world.planner.time_limit,
                                                       .threads = planner.threads,
@@ -309,6 +313,9 @@ CommandRunner add_bench_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   app.add_option("--planners", args->planners,
                  "Planners to measure, interleaved seed by seed (default: knowledge): " + planner_names());
+  app.add_option("--ompl-sampler", args->ompl_sampler,
+                 "Control sampler of OMPL's planners: ompl (OMPL's uniform one) or ours (the knowledge planner's)")
+      ->capture_default_str();
   app.add_flag("--compare", args->compare, "Also run the baseline planner on the same seeds, interleaved");
   app.add_option("--improve", args->improve,
                  "Candidates spent shortening each first validated plan, timed apart from the search (default: none)")

@@ -135,6 +135,7 @@ std::string bench_table(const BenchResults& r) {
                         s.mean_s, s.p90_s, s.max_s, s.tree_nodes_median, s.propagations_per_s, s.pushes_median,
                         s.bodies_moved_median, s.solution_duration_median_s, s.path_length_median_m);
   }
+  if (r.ompl_with_our_sampler) text += "OMPL's planners sample controls with ours (--ompl-sampler ours)\n";
   if (const auto ratio = ratio_of_medians(r)) {
     text += fmt::format("ratio of medians (baseline / knowledge): {:.2f}\n", *ratio);
   }

@@ -44,6 +44,7 @@ struct PlannerRuns {
 
 struct BenchResults {
   int improve = 0;             // --improve candidates per run
+  bool ompl_with_our_sampler = false;  // --ompl-sampler ours
   std::string scenario;       // the World's name
   std::string scenario_file;
   std::vector<std::string> settings;  // --set key=value

@@ -32,4 +32,10 @@ std::vector<planning::PlannerKind> parse_planner_list(const std::string& text) {
   return planners;
 }
 
+planning::OmplControlSampler parse_ompl_sampler(const std::string& name) {
+  if (name == "ompl") return planning::OmplControlSampler::kOmpl;
+  if (name == "ours") return planning::OmplControlSampler::kOurs;
+  throw BadInput("--ompl-sampler: unknown sampler '" + name + "'; the samplers are ompl, ours");
+}
+
 }  // namespace physltl::app

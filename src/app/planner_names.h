@@ -14,5 +14,7 @@ std::string planner_names();
 planning::PlannerKind parse_planner(const std::string& name);
 // A comma-separated list, each once.
 std::vector<planning::PlannerKind> parse_planner_list(const std::string& text);
+// --ompl-sampler: "ompl" (OMPL's uniform control sampler, the default) or "ours".
+planning::OmplControlSampler parse_ompl_sampler(const std::string& name);
 
 }  // namespace physltl::app

@@ -18,6 +18,7 @@ const planning::TaskAutomaton& PreparedRun::search_task(planning::PlannerKind pl
 planning::ValidatedPlan solve(const PreparedRun& run, const SolveOptions& options) {
   planning::PlannerOptions planner;
   planner.planner = options.planner;
+  planner.ompl_control_sampler = options.ompl_control_sampler;
   planner.seed = options.seed;
   planner.time_limit = options.time_limit;
   planner.stop = options.stop;

@@ -38,6 +38,7 @@ class PreparedRun {
 
 struct SolveOptions {
   planning::PlannerKind planner = planning::PlannerKind::kKnowledge;
+  planning::OmplControlSampler ompl_control_sampler = planning::OmplControlSampler::kOmpl;
   std::uint64_t seed = 1;
   double time_limit = 60.0;
   int threads = 1;

@@ -35,6 +35,7 @@ struct RunArgs {
   std::optional<double> time_limit;
   std::string out_dir = "out";
   std::optional<std::string> planner;
+  std::string ompl_sampler = "ompl";
   bool baseline = false;  // --planner baseline
   bool quiet = false;
   // Shortening the first validated plan (docs/planner.md).
@@ -100,6 +101,7 @@ int run(const RunArgs& args) {
   ProgressLine progress(args.quiet);
   progress.show(fmt::format("planning (up to {:g} s) ...", world.planner.time_limit));
   const planning::ValidatedPlan solution = solve(prepared, {.planner = planner,
+                                                            .ompl_control_sampler = parse_ompl_sampler(args.ompl_sampler),
                                                             .seed = world.planner.seed,
                                                             .time_limit = world.planner.time_limit,
                                                             .threads = args.threads,
@@ -174,6 +176,9 @@ CommandRunner add_run_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   app.add_option("--out", args->out_dir, "Folder for outputs; each scenario writes <out>/<name>/")->capture_default_str();
   app.add_option("--planner", args->planner, "Planner: " + planner_names() + " (default: knowledge)");
+  app.add_option("--ompl-sampler", args->ompl_sampler,
+                 "Control sampler of OMPL's planners: ompl (OMPL's uniform one) or ours (the knowledge planner's)")
+      ->capture_default_str();
   app.add_flag("--baseline", args->baseline, "Same as --planner baseline: the paper's simple physics-based LTL planner");
   app.add_flag("--quiet", args->quiet, "Print only errors");
   app.add_option("--improve", args->improve,

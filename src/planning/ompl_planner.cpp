@@ -1,11 +1,13 @@
 #include "ompl_planner.h"
 
 #include "checked_simulation.h"
+#include "control_sampler.h"
 #include "physltl/planning/ompl_automaton.h"
 
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/DiscreteStateSpace.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/control/DirectedControlSampler.h>
 #include <ompl/control/PathControl.h>
 #include <ompl/control/PlannerData.h>
 #include <ompl/control/planners/kpiece/KPIECE1.h>
@@ -27,6 +29,7 @@
 #include <cstring>
 #include <map>
 #include <numbers>
+#include <optional>
 
 namespace physltl::planning {
 namespace {
@@ -279,6 +282,79 @@ class SeededControlSampler : public oc::RealVectorControlUniformSampler {
   }
 };
 
+// Our knowledge-guided control sampler (the knowledge planner's) for OMPL's planners, as an option: it
+// reads the world and kappa at the state a control starts from and aims at a target, pushing a body in the
+// way from an mRegion along an allowed direction.
+class OurSampling {
+ public:
+  OurSampling(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge, std::uint64_t seed)
+      : world_(world), sampler_(world, knowledge, true), simulation_(world, knowledge, knowledge::ValidityMode::kKnowledge),
+        random_(seed) {}
+
+  // Samples from `state` (a state of OMPL's product) towards `target`, or towards a point drawn at random in
+  // the workspace; writes the set-point into `control` and returns the control's steps.
+  unsigned sample(oc::Control* control, const ob::State* state, const std::optional<Vec2>& target) {
+    const ob::State* low = state->as<ob::CompoundState>()->components[0];
+    const double* v = low->as<PhysicsSpace::StateType>()->values;
+    simulation_.restore(physics::PhysicsState::from_values({v, (world_.movable_bodies.size() + 1) * kValuesPerBody}));
+    const auto& b = world_.workspace.bounds;
+    const Vec2 aim = target ? *target : Vec2(random_.uniform(b.min.x(), b.max.x()), random_.uniform(b.min.y(), b.max.y()));
+    const Control c = sampler_.sample(simulation_.environment(), simulation_.kappa(), aim, random_);
+    double* u = control->as<oc::RealVectorControlSpace::ControlType>()->values;
+    if (world_.robot.drive == scenario::Drive::kDifferential) {
+      u[0] = c.setpoint.x(), u[1] = c.setpoint.y();
+    } else {
+      u[0] = c.setpoint.norm(), u[1] = std::atan2(c.setpoint.y(), c.setpoint.x());
+    }
+    return static_cast<unsigned>(c.steps);
+  }
+
+ private:
+  const scenario::World& world_;
+  const ControlSampler sampler_;
+  CheckedSimulation simulation_;
+  Random random_;
+};
+
+// For KPIECE1 and LTLPlanner (which sample a control at a state, then its steps) and SST (which samples
+// without a state: then uniformly, as OMPL's sampler does).
+class OurControlSampler : public oc::ControlSampler {
+ public:
+  OurControlSampler(const oc::ControlSpace* space, const scenario::World& world,
+                    const knowledge::AbstractKnowledge& knowledge, std::uint64_t seed)
+      : oc::ControlSampler(space), sampling_(world, knowledge, seed), uniform_(space, static_cast<std::uint_fast32_t>(seed | 1u)) {}
+  void sample(oc::Control* control) override { uniform_.sample(control); }
+  void sample(oc::Control* control, const ob::State* state) override { steps_ = sampling_.sample(control, state, std::nullopt); }
+  void sampleNext(oc::Control* control, const oc::Control*, const ob::State* state) override { sample(control, state); }
+  unsigned int sampleStepCount(unsigned int min_steps, unsigned int max_steps) override {
+    return steps_ >= min_steps && steps_ <= max_steps ? steps_ : uniform_.sampleStepCount(min_steps, max_steps);
+  }
+
+ private:
+  OurSampling sampling_;
+  SeededControlSampler uniform_;
+  unsigned steps_ = 0;
+};
+
+// For RRT and PDST, which grow towards a sampled state: our sampler aims at it.
+class OurDirectedSampler : public oc::DirectedControlSampler {
+ public:
+  OurDirectedSampler(const oc::SpaceInformation* si, const scenario::World& world,
+                     const knowledge::AbstractKnowledge& knowledge, std::uint64_t seed)
+      : oc::DirectedControlSampler(si), sampling_(world, knowledge, seed) {}
+  unsigned int sampleTo(oc::Control* control, const ob::State* source, ob::State* dest) override {
+    const double* d = dest->as<ob::CompoundState>()->components[0]->as<PhysicsSpace::StateType>()->values;
+    const unsigned steps = sampling_.sample(control, source, Vec2(d[0], d[1]));
+    return si_->propagateWhileValid(source, control, static_cast<int>(steps), dest);
+  }
+  unsigned int sampleTo(oc::Control* control, const oc::Control*, const ob::State* source, ob::State* dest) override {
+    return sampleTo(control, source, dest);
+  }
+
+ private:
+  OurSampling sampling_;
+};
+
 // Our triangulation as OMPL's decomposition: regions are triangles, located by the robot's position.
 class Triangles : public oc::Decomposition {
  public:
@@ -432,9 +508,15 @@ PlanResult plan_with_ompl(const scenario::World& world, const TaskAutomaton& tas
     control_bounds.setLow(1, -std::numbers::pi), control_bounds.setHigh(1, std::numbers::pi);
   }
   controls->setBounds(control_bounds);
-  controls->setControlSamplerAllocator([&seeds](const oc::ControlSpace* cs) {
-    return std::make_shared<SeededControlSampler>(cs, seeds.next());
-  });
+  if (options.ompl_control_sampler == OmplControlSampler::kOurs) {
+    controls->setControlSamplerAllocator([&](const oc::ControlSpace* cs) {
+      return std::make_shared<OurControlSampler>(cs, world, knowledge, seeds.next());
+    });
+  } else {
+    controls->setControlSamplerAllocator([&seeds](const oc::ControlSpace* cs) {
+      return std::make_shared<SeededControlSampler>(cs, seeds.next());
+    });
+  }
 
   auto low = std::make_shared<oc::SpaceInformation>(space, controls);
   GuardCounts counts;
@@ -449,6 +531,11 @@ PlanResult plan_with_ompl(const scenario::World& world, const TaskAutomaton& tas
   auto product = std::make_shared<oc::ProductGraph>(labels, automaton);
   auto si = std::make_shared<oc::LTLSpaceInformation>(low, product);
   si->getStateSpace()->as<ob::CompoundStateSpace>()->setSubspaceWeight(2, kAutomatonStateWeight);
+  if (options.ompl_control_sampler == OmplControlSampler::kOurs) {
+    si->setDirectedControlSamplerAllocator([&](const oc::SpaceInformation* s) {
+      return std::make_shared<OurDirectedSampler>(s, world, knowledge, seeds.next());
+    });
+  }
   si->setup();
 
   auto problem = std::make_shared<oc::LTLProblemDefinition>(si);
@@ -534,7 +621,9 @@ PlanResult plan_with_ompl(const scenario::World& world, const TaskAutomaton& tas
                      {"min_control_duration", std::to_string(world.planner.min_steps)},
                      {"max_control_duration", std::to_string(world.planner.max_steps)},
                      {"controls", differential ? "(forward speed, turn rate), uniform" : "(speed, heading), uniform"},
-                     {"control_sampler", "OMPL RealVectorControlUniformSampler"},
+                     {"control_sampler", options.ompl_control_sampler == OmplControlSampler::kOurs
+                                             ? "ours: the knowledge planner's, towards the target (RRT, PDST) or a random point"
+                                             : "OMPL RealVectorControlUniformSampler"},
                      {"state_sampler", "robot pose uniform in the workspace, the rest as at the start"},
                      {"distance", differential ? "robot position + 0.25 m/rad heading" : "robot position"},
                      {"automaton_state_weight", fmt::format("{}", kAutomatonStateWeight)},

@@ -59,6 +59,21 @@ TEST(OmplPlanners, RrtKpieceSstAndPdstGiveTheSamePlanForTheSameSeed) {
   }
 }
 
+TEST(OmplPlanners, WithOurControlSamplerTheyStillSolveOrderedAndSaySo) {
+  const TestProblem p("ordered.lua");
+  for (const PlannerKind planner : {PlannerKind::kOmplRrt, PlannerKind::kOmplKpiece}) {
+    PlannerOptions options = ompl_options(planner, 2);
+    options.ompl_control_sampler = OmplControlSampler::kOurs;
+    const PlanResult result = plan(p.world, p.task, p.knowledge, p.decomposition, options);
+    ASSERT_TRUE(result.solved) << planner_name(planner) << ": " << result.stop_reason;
+    EXPECT_TRUE(p.check(result.plan).validated()) << planner_name(planner);
+    const auto sampler = std::find_if(result.settings.begin(), result.settings.end(),
+                                      [](const auto& s) { return s.first == "control_sampler"; });
+    ASSERT_NE(sampler, result.settings.end());
+    EXPECT_EQ(sampler->second.rfind("ours", 0), 0u) << sampler->second;
+  }
+}
+
 // Triangles smaller than one step's travel: OMPL's product would skip them, so the guard refuses those
 // steps, and the plan found still crosses only from triangle to neighbour.
 TEST(OmplPlanners, StepsThatSkipATriangleAreRefused) {

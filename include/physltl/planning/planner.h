@@ -45,8 +45,14 @@ std::optional<PlannerKind> planner_from_name(std::string_view name);
 const std::vector<PlannerKind>& all_planners();
 bool is_ompl(PlannerKind planner);
 
+// How OMPL's planners sample controls: with OMPL's uniform sampler, or with ours (the knowledge
+// planner's, aiming at the state RRT and PDST grow towards, or at a random point for KPIECE1 and
+// LTLPlanner; SST samples without a state, so uniformly either way).
+enum class OmplControlSampler { kOmpl, kOurs };
+
 struct PlannerOptions {
   PlannerKind planner = PlannerKind::kKnowledge;
+  OmplControlSampler ompl_control_sampler = OmplControlSampler::kOmpl;
   std::uint64_t seed = 1;
   double time_limit = 60.0;                     // s of wall-clock planning
   const std::atomic<bool>* stop = nullptr;      // set from elsewhere (Ctrl-C, another thread's success)
