@@ -2,6 +2,7 @@
 
 #include "checked_simulation.h"
 #include "control_sampler.h"
+#include "physltl/geometry/free_space.h"
 #include "physltl/planning/ompl_automaton.h"
 
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
@@ -39,7 +40,8 @@ namespace oc = ompl::control;
 
 constexpr std::size_t kValuesPerBody = physics::PhysicsState::kValuesPerBody;
 // After the physics values, two flags about the step that made the state: it passed the validity checker,
-// and it took the robot into a triangle that is not a neighbour of the one it left (see CellSkipGuard).
+// and it took the robot into a triangle OMPL's product graph does not connect to the one it left (see
+// step_neighbours in ompl_planner.h).
 constexpr std::size_t kFlags = 2;
 // A distance between automaton states, in metres of robot motion: nearer states in another automaton
 // state never stand in for one in this one (SST's pruning, the nearest neighbours of RRT).
@@ -190,23 +192,19 @@ struct GuardCounts {
 };
 
 // OMPL's propagator: one ODE step per call (OMPL calls it once per step of its propagation step size),
-// checked as our planner checks it. The step's validity and a skipped cell are written into the state's
-// flags for the validity checker. OMPL usually continues from the state it was just given, so the
-// simulation restores a state only when it is another one.
-//
-// CellSkipGuard: OMPL's product graph steps the automaton with the label of the triangle a step ends in
-// and expects it to be the same triangle or a neighbour; a step that crosses a whole triangle would skip
-// its label and reach a product state the graph does not have (its weight becomes 0/0 in LTLPlanner).
-// Such a step is refused, and counted.
+// checked as our planner checks it. The step's validity and a step beyond step_neighbours() are written into
+// the state's flags for the validity checker. OMPL usually continues from the state it was just given, so
+// the simulation restores a state only when it is another one.
 class PhysicsPropagator : public oc::StatePropagator {
  public:
   PhysicsPropagator(const oc::SpaceInformationPtr& si, const PhysicsSpace& space, const scenario::World& world,
                     const knowledge::AbstractKnowledge& knowledge, const decomposition::Decomposition& decomposition,
-                    GuardCounts& counts)
+                    const std::vector<std::vector<int>>& neighbours, GuardCounts& counts)
       : oc::StatePropagator(si),
         space_(space),
         world_(world),
         decomposition_(decomposition),
+        neighbours_(neighbours),
         counts_(counts),
         simulation_(world, knowledge, knowledge::ValidityMode::kKnowledge),
         last_(space.values(), 0.0) {}
@@ -227,7 +225,7 @@ class PhysicsPropagator : public oc::StatePropagator {
       valid = simulation_.step(setpoint);
       ++counts_.steps;
       const int next = decomposition_.locate(simulation_.environment().robot_position);
-      const auto& neighbours = decomposition_.triangles()[static_cast<std::size_t>(triangle)].neighbors;
+      const auto& neighbours = neighbours_[static_cast<std::size_t>(triangle)];
       skipped = next != triangle && std::find(neighbours.begin(), neighbours.end(), next) == neighbours.end();
       triangle = next;
     }
@@ -255,6 +253,7 @@ class PhysicsPropagator : public oc::StatePropagator {
   const PhysicsSpace& space_;
   const scenario::World& world_;
   const decomposition::Decomposition& decomposition_;
+  const std::vector<std::vector<int>>& neighbours_;
   GuardCounts& counts_;
   mutable CheckedSimulation simulation_;
   mutable physics::PhysicsState saved_;
@@ -358,8 +357,9 @@ class OurDirectedSampler : public oc::DirectedControlSampler {
 // Our triangulation as OMPL's decomposition: regions are triangles, located by the robot's position.
 class Triangles : public oc::Decomposition {
  public:
-  Triangles(const decomposition::Decomposition& decomposition, const scenario::World& world)
-      : oc::Decomposition(2, bounds_of(world)), decomposition_(decomposition) {}
+  Triangles(const decomposition::Decomposition& decomposition, const scenario::World& world,
+            const std::vector<std::vector<int>>& neighbours)
+      : oc::Decomposition(2, bounds_of(world)), decomposition_(decomposition), neighbours_(neighbours) {}
   int getNumRegions() const override { return decomposition_.size(); }
   double getRegionVolume(int region) override { return triangle(region).area; }
   int locateRegion(const ob::State* state) const override {
@@ -371,7 +371,7 @@ class Triangles : public oc::Decomposition {
     coordinates = {v[0], v[1]};
   }
   void getNeighbors(int region, std::vector<int>& neighbours) const override {
-    const auto& n = triangle(region).neighbors;
+    const auto& n = neighbours_[static_cast<std::size_t>(region)];
     neighbours.insert(neighbours.end(), n.begin(), n.end());
   }
   void sampleFromRegion(int region, ompl::RNG& rng, std::vector<double>& coordinates) const override {
@@ -399,6 +399,7 @@ class Triangles : public oc::Decomposition {
     return decomposition_.triangles()[static_cast<std::size_t>(region)];
   }
   const decomposition::Decomposition& decomposition_;
+  const std::vector<std::vector<int>>& neighbours_;
 };
 
 // Each triangle's label: "in region r" for a triangle of region r, "in no region" otherwise, exactly the
@@ -482,6 +483,34 @@ ob::PlannerPtr make_planner(PlannerKind kind, const oc::LTLSpaceInformationPtr& 
 
 }  // namespace
 
+std::vector<std::vector<int>> step_neighbours(const decomposition::Decomposition& decomposition, double reach) {
+  const auto& triangles = decomposition.triangles();
+  std::vector<geometry::Polygon> shapes;
+  std::vector<geometry::Rect> bounds;
+  for (const auto& t : triangles) {
+    shapes.push_back(geometry::Polygon{{t.corners.begin(), t.corners.end()}});
+    bounds.push_back(shapes.back().bounds());
+  }
+  std::vector<std::vector<int>> neighbours(triangles.size());
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    neighbours[i] = triangles[i].neighbors;
+    for (std::size_t j = 0; j < triangles.size(); ++j) {
+      const auto& a = bounds[i];
+      const auto& b = bounds[j];
+      if (i == j || b.min.x() > a.max.x() + reach || b.max.x() < a.min.x() - reach || b.min.y() > a.max.y() + reach ||
+          b.max.y() < a.min.y() - reach) {
+        continue;
+      }
+      Vec2 p, q;
+      if (geometry::distance(shapes[i], shapes[j], p, q) <= reach &&
+          std::find(neighbours[i].begin(), neighbours[i].end(), static_cast<int>(j)) == neighbours[i].end()) {
+        neighbours[i].push_back(static_cast<int>(j));
+      }
+    }
+  }
+  return neighbours;
+}
+
 PlanResult plan_with_ompl(const scenario::World& world, const TaskAutomaton& task,
                           const knowledge::AbstractKnowledge& knowledge,
                           const decomposition::Decomposition& decomposition, const PlannerOptions& options) {
@@ -520,14 +549,18 @@ PlanResult plan_with_ompl(const scenario::World& world, const TaskAutomaton& tas
 
   auto low = std::make_shared<oc::SpaceInformation>(space, controls);
   GuardCounts counts;
-  low->setStatePropagator(std::make_shared<PhysicsPropagator>(low, *space, world, knowledge, decomposition, counts));
+  // The fastest a valid step goes: the robot within its limit's tolerance (knowledge::kLimitTolerance).
+  const double reach = 1.02 * world.robot.max_speed * world.planner.step_size;
+  const std::vector<std::vector<int>> neighbours = step_neighbours(decomposition, reach);
+  low->setStatePropagator(
+      std::make_shared<PhysicsPropagator>(low, *space, world, knowledge, decomposition, neighbours, counts));
   low->setStateValidityChecker(std::make_shared<StepValidity>(low, space->values()));
   low->setPropagationStepSize(world.planner.step_size);
   low->setMinMaxControlDuration(static_cast<unsigned>(world.planner.min_steps), static_cast<unsigned>(world.planner.max_steps));
 
   auto automaton = to_ompl_automaton(task);
   const int regions = static_cast<int>(world.regions.size());
-  auto labels = std::make_shared<RegionLabels>(std::make_shared<Triangles>(decomposition, world), decomposition, regions);
+  auto labels = std::make_shared<RegionLabels>(std::make_shared<Triangles>(decomposition, world, neighbours), decomposition, regions);
   auto product = std::make_shared<oc::ProductGraph>(labels, automaton);
   auto si = std::make_shared<oc::LTLSpaceInformation>(low, product);
   si->getStateSpace()->as<ob::CompoundStateSpace>()->setSubspaceWeight(2, kAutomatonStateWeight);

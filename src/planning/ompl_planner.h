@@ -9,7 +9,19 @@
 
 #include "physltl/planning/planner.h"
 
+#include <vector>
+
 namespace physltl::planning {
+
+// OMPL's product graph connects a triangle to the triangles its decomposition names as
+// neighbours, and a propagation step moves the product to the triangle the step ends in. A step that
+// crosses a thin triangle (a sliver in a doorway is narrower than one step's 5 cm) would land in a product
+// state the graph does not have: LTLPlanner gives it the weight 0/0 and never grows from it, and an
+// accepting state there is no goal. So OMPL's decomposition names as neighbours every triangle one valid
+// step can reach: within the robot's largest valid speed times the step size. A step that lands beyond
+// them (only an invalid, faster one could) is refused, and counted. The automaton reads the region the
+// step ends in, as our planner's does.
+std::vector<std::vector<int>> step_neighbours(const decomposition::Decomposition& decomposition, double reach);
 
 PlanResult plan_with_ompl(const scenario::World& world, const TaskAutomaton& task,
                           const knowledge::AbstractKnowledge& knowledge,

@@ -2,6 +2,8 @@
 // plans our replay validates, a seed gives the same plan where OMPL allows it, and the guards against OMPL's
 // LTL traps hold.
 
+#include "ompl_planner.h"
+#include "physltl/geometry/free_space.h"
 #include "test_problem.h"
 
 #include <gtest/gtest.h>
@@ -20,14 +22,17 @@ PlannerOptions ompl_options(PlannerKind planner, std::uint64_t seed, double time
   return options;
 }
 
-// Every physics step of the plan's replay stays in the robot's triangle or moves to a neighbour of it:
-// what OMPL's product graph can follow.
-void expect_no_skipped_triangle(const TestProblem& p, const Replay& replay) {
+double step_reach(const TestProblem& p) { return 1.02 * p.world.robot.max_speed * p.world.planner.step_size; }
+
+// Every physics step of the plan's replay stays in the robot's triangle or moves to one OMPL's product
+// graph connects to it.
+void expect_every_step_in_the_graph(const TestProblem& p, const Replay& replay) {
+  const auto neighbours = step_neighbours(p.decomposition, step_reach(p));
   for (std::size_t i = 1; i < replay.states.size(); ++i) {
     const int from = p.decomposition.locate(replay.states[i - 1].robot_position);
     const int to = p.decomposition.locate(replay.states[i].robot_position);
-    const auto& neighbours = p.decomposition.triangles()[static_cast<std::size_t>(from)].neighbors;
-    ASSERT_TRUE(from == to || std::find(neighbours.begin(), neighbours.end(), to) != neighbours.end()) << "step " << i;
+    const auto& n = neighbours[static_cast<std::size_t>(from)];
+    ASSERT_TRUE(from == to || std::find(n.begin(), n.end(), to) != n.end()) << "step " << i;
   }
 }
 
@@ -39,7 +44,7 @@ TEST(OmplPlanners, EachSolvesOrderedWithAPlanOurReplayValidates) {
     ASSERT_TRUE(result.solved) << planner_name(planner) << ": " << result.stop_reason;
     const Replay replay = p.check(result.plan);
     EXPECT_TRUE(replay.validated()) << planner_name(planner) << ": " << replay.failure;
-    expect_no_skipped_triangle(p, replay);
+    expect_every_step_in_the_graph(p, replay);
     EXPECT_FALSE(result.settings.empty());
   }
 }
@@ -74,17 +79,43 @@ TEST(OmplPlanners, WithOurControlSamplerTheyStillSolveOrderedAndSaySo) {
   }
 }
 
-// Triangles smaller than one step's travel: OMPL's product would skip them, so the guard refuses those
-// steps, and the plan found still crosses only from triangle to neighbour.
-TEST(OmplPlanners, StepsThatSkipATriangleAreRefused) {
+// The neighbours OMPL's graph gets: the decomposition's own, and every triangle within one valid step,
+// none farther.
+TEST(OmplPlanners, StepNeighboursAreTheTrianglesOneStepCanReach) {
+  const TestProblem p("rooms.lua");
+  const double reach = step_reach(p);
+  const auto neighbours = step_neighbours(p.decomposition, reach);
+  const auto& triangles = p.decomposition.triangles();
+  const auto shape = [&](int t) {
+    const auto& c = triangles[static_cast<std::size_t>(t)].corners;
+    return geometry::Polygon{{c.begin(), c.end()}};
+  };
+  std::size_t beyond_the_mesh = 0;
+  for (int a = 0; a < static_cast<int>(triangles.size()); ++a) {
+    const auto& n = neighbours[static_cast<std::size_t>(a)];
+    for (int b : triangles[static_cast<std::size_t>(a)].neighbors) EXPECT_NE(std::find(n.begin(), n.end(), b), n.end());
+    for (int b = 0; b < static_cast<int>(triangles.size()); ++b) {
+      if (a == b) continue;
+      geometry::Vec2 x, y;
+      const bool near = geometry::distance(shape(a), shape(b), x, y) <= reach;
+      EXPECT_EQ(std::find(n.begin(), n.end(), b) != n.end(), near) << a << " " << b;
+    }
+    beyond_the_mesh += n.size() - triangles[static_cast<std::size_t>(a)].neighbors.size();
+  }
+  EXPECT_GT(beyond_the_mesh, 0u);  // rooms.lua has triangles thinner than a step
+}
+
+// Triangles far smaller than one step's travel: OMPL's planners still find plans every step of which
+// their product graph follows, and no valid step lands beyond the neighbours (the guard stays silent).
+TEST(OmplPlanners, PlansCrossTrianglesThinnerThanAStepWithinTheGraph) {
   TestProblem p("ordered.lua");
   p.decomposition = decomposition::Decomposition::build(p.world, {.max_edge = 0.06});
   const PlanResult result = plan(p.world, p.task, p.knowledge, p.decomposition, ompl_options(PlannerKind::kOmplKpiece, 1, 30));
-  EXPECT_GT(result.stats.cell_skips_refused, 0);
   ASSERT_TRUE(result.solved) << result.stop_reason;
+  EXPECT_EQ(result.stats.cell_skips_refused, 0);
   const Replay replay = p.check(result.plan);
   EXPECT_TRUE(replay.validated()) << replay.failure;
-  expect_no_skipped_triangle(p, replay);
+  expect_every_step_in_the_graph(p, replay);
 }
 
 // OMPL's product takes tasks a finite run satisfies; "F goal & G !hazard" must end at rest.
