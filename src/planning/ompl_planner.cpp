@@ -184,7 +184,7 @@ void PhysicsSpace::registerProjections() {
   registerDefaultProjection(std::make_shared<RobotPosition>(this, world_, 0));
 }
 
-// Counts what the guard against skipped cells refused.
+// What the propagator did: restores, steps, and steps refused for landing beyond step_neighbours().
 struct GuardCounts {
   long long restores = 0;  // propagations started from a state other than the last one reached
   long long steps = 0;
@@ -219,22 +219,22 @@ class PhysicsPropagator : public oc::StatePropagator {
     const Vec2 setpoint = setpoint_of(control);
     const int steps = std::max(1, static_cast<int>(std::lround(duration / world_.planner.step_size)));
     bool valid = true;
-    bool skipped = false;
+    bool beyond_graph = false;
     int triangle = decomposition_.locate({in[0], in[1]});
-    for (int s = 0; s < steps && valid && !skipped; ++s) {
+    for (int s = 0; s < steps && valid && !beyond_graph; ++s) {
       valid = simulation_.step(setpoint);
       ++counts_.steps;
       const int next = decomposition_.locate(simulation_.environment().robot_position);
       const auto& neighbours = neighbours_[static_cast<std::size_t>(triangle)];
-      skipped = next != triangle && std::find(neighbours.begin(), neighbours.end(), next) == neighbours.end();
+      beyond_graph = next != triangle && std::find(neighbours.begin(), neighbours.end(), next) == neighbours.end();
       triangle = next;
     }
-    counts_.skips += skipped ? 1 : 0;
+    counts_.skips += beyond_graph ? 1 : 0;
     simulation_.save(saved_);
     double* out = to->as<PhysicsSpace::StateType>()->values;
     saved_.copy_values({out, n});
     out[n] = valid ? 1.0 : 0.0;
-    out[n + 1] = skipped ? 1.0 : 0.0;
+    out[n + 1] = beyond_graph ? 1.0 : 0.0;
     std::copy(out, out + n, last_.begin());
     at_last_ = true;
   }
@@ -454,6 +454,24 @@ class Seeded : public Planner {
   }
 };
 
+// OMPL 1.5's SST deletes its witnesses without freeing their states and controls (SST::freeMemory; still
+// so in OMPL's master), which leaks a state and a control per witness every run: free them first.
+class SeededSst : public Seeded<oc::SST> {
+ public:
+  using Seeded<oc::SST>::Seeded;
+  ~SeededSst() override {
+    if (!witnesses_) return;
+    std::vector<Motion*> witnesses;
+    witnesses_->list(witnesses);
+    for (Motion* w : witnesses) {
+      if (w->state_ != nullptr) si_->freeState(w->state_);
+      if (w->control_ != nullptr) siC_->freeControl(w->control_);
+      w->state_ = nullptr;
+      w->control_ = nullptr;
+    }
+  }
+};
+
 // LTLPlanner explores each lead for this long, in wall-clock time: OMPL's default.
 constexpr double kLtlExploreTime = 0.5;  // s
 
@@ -470,7 +488,7 @@ ob::PlannerPtr make_planner(PlannerKind kind, const oc::LTLSpaceInformationPtr& 
       return planner;
     }
     case PlannerKind::kOmplSst:
-      return std::make_shared<Seeded<oc::SST>>(seed, si);
+      return std::make_shared<SeededSst>(seed, si);
     case PlannerKind::kOmplPdst: {
       auto planner = std::make_shared<Seeded<oc::PDST>>(seed, si);
       planner->setProjectionEvaluator(std::make_shared<RobotPosition>(si->getStateSpace().get(), world, automaton_states));
