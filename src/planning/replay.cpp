@@ -39,7 +39,7 @@ std::string control_out_of_bounds(const scenario::World& world, const Control& c
 }
 
 Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomaton& formula,
-              const knowledge::AbstractKnowledge& knowledge, knowledge::ValidityMode mode) {
+              const knowledge::AbstractKnowledge& knowledge, knowledge::ValidityMode mode, bool until_first_failure) {
   Replay r;
   physics::Simulation simulation(world);
   const RegionMap regions(world);
@@ -86,12 +86,14 @@ Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomato
       if (!validity.valid()) {
         fail(r.valid, fmt::format("step {} (control {}): {}", step, c, knowledge::violation_name(validity.violation)));
       }
+      if (until_first_failure && !r.failure.empty()) return r;
       knowledge::infer(knowledge, state, kappa);
     }
     r.pushes += pushed;
     if (r.reproduces_plan && !(simulation.save() == plan.states[c])) {
       fail(r.reproduces_plan, fmt::format("control {} ends in a different state than planned", c));
     }
+    if (until_first_failure && !r.failure.empty()) return r;
   }
   std::vector<std::vector<std::string>> letters;
   letters.reserve(r.region_trace.size());

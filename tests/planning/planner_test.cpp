@@ -79,6 +79,27 @@ TEST(Replay, APlanEditedToExceedTheSpeedLimitIsRejected) {
   EXPECT_NE(r.failure.find("above max_speed"), std::string::npos) << r.failure;
 }
 
+// Improving a plan only needs to know whether a candidate validates: a replay asked to stop at the first
+// failure stops there with the same verdict, and on a plan that validates it is the whole replay.
+TEST(Replay, StoppingAtTheFirstFailureGivesTheSameVerdict) {
+  const TestProblem p("ordered.lua");
+  PlanResult result = p.solve(3);
+  ASSERT_TRUE(result.solved);
+  const Replay whole = p.check(result.plan);
+  const Replay until = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge, true);
+  ASSERT_TRUE(whole.validated());
+  EXPECT_TRUE(until.validated());
+  EXPECT_EQ(until.states.size(), whole.states.size());
+  EXPECT_EQ(until.pushes, whole.pushes);
+  result.plan.controls[2].setpoint *= 3.0;  // beyond the robot's speed from the third control on
+  const Replay whole_bad = p.check(result.plan);
+  const Replay until_bad = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge, true);
+  EXPECT_FALSE(whole_bad.validated());
+  EXPECT_FALSE(until_bad.validated());
+  EXPECT_EQ(until_bad.failure, whole_bad.failure);
+  EXPECT_LT(until_bad.states.size(), whole_bad.states.size());
+}
+
 TEST(Replay, AControlAskingForMoreThanTheRobotsLimitsIsNamed) {
   const TestProblem p("rooms_differential.lua");
   EXPECT_EQ(control_out_of_bounds(p.world, {{1.0, 1.5}, 5}), "");

@@ -41,8 +41,11 @@ struct Replay {
 // used) and against the validity rules of `mode`. The automaton of `formula` only labels the trace for
 // pictures and, for a co-safe task, says whether it is a good prefix; the verdict on the formula comes
 // from its semantics.
+// `until_first_failure`: stop at the first step that fails a check, for callers that only need to know
+// whether the plan validates (the replay then holds the steps up to that one).
 Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomaton& formula,
-              const knowledge::AbstractKnowledge& knowledge, knowledge::ValidityMode mode);
+              const knowledge::AbstractKnowledge& knowledge, knowledge::ValidityMode mode,
+              bool until_first_failure = false);
 
 // Why `control` is outside what the robot can be asked, or "" when it is within its bounds.
 std::string control_out_of_bounds(const scenario::World& world, const Control& control);
