@@ -3,12 +3,12 @@
 // decomposition and the task automaton, growing a tree of controls whose states come from the ODE
 // propagator, with the knowledge layer's INFERENCE after every step and its rules as the validity check.
 //
-// Why not OMPL's LTLPlanner: it labels neither the start state nor the cells crossed within one
-// propagation (a fast robot skips cells and reaches product states the graph does not expect), solve()
-// runs once per planner, and OMPL's random generator is seeded process-wide, which defeats one seed per
-// run and per thread. This loop keeps the same structure (lead, available regions, weights), tracks the
-// automaton at every physics step, grows mostly from the lead's frontier, and lets several threads grow
-// one tree without changing the plan (docs/planner.md).
+// Why our own loop and not OMPL's LTLPlanner (which runs beside it as a peer, ompl_planner.h): LTLPlanner
+// explores each lead for a wall-clock time, so a seed does not give one plan, and it needs guards for
+// its unlabelled start and for steps that cross a thin triangle. This loop keeps the same structure
+// (lead, available regions, weights), tracks the automaton at every physics step, grows mostly from the
+// lead's frontier, and lets several threads grow one tree without changing the plan (docs/planner.md);
+// measured beside OMPL's planners in docs/benchmarks.md.
 
 #include "physltl/decomposition/decomposition.h"
 #include "physltl/knowledge/abstract_knowledge.h"
