@@ -102,7 +102,9 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
     Plan candidate = splice(simulation, plan, static_cast<std::size_t>(first), rest);
     if (candidate.total_steps() > plan.total_steps()) continue;  // longer: not worth a replay
     // Most candidates fail a check early (a shortcut through a wall or past a needed push): stop there.
-    Replay checked = planning::replay(problem.world, candidate, problem.formula, problem.knowledge, mode, true);
+    // The kept controls were checked in the current plan's replay: start after them.
+    const ReplayedPrefix kept{replay, static_cast<std::size_t>(first)};
+    Replay checked = planning::replay(problem.world, candidate, problem.formula, problem.knowledge, mode, true, &kept);
     if (!checked.validated()) continue;
     const PlanMeasures measures = measure(problem.world, candidate, checked);
     if (!better(measures, result.improved)) continue;

@@ -1,5 +1,7 @@
 #include "physltl/planning/replay.h"
 
+#include <algorithm>
+
 #include "physltl/knowledge/kappa.h"
 #include "physltl/ltl/lasso.h"
 #include "physltl/physics/simulation.h"
@@ -39,7 +41,8 @@ std::string control_out_of_bounds(const scenario::World& world, const Control& c
 }
 
 Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomaton& formula,
-              const knowledge::AbstractKnowledge& knowledge, knowledge::ValidityMode mode, bool until_first_failure) {
+              const knowledge::AbstractKnowledge& knowledge, knowledge::ValidityMode mode, bool until_first_failure,
+              const ReplayedPrefix* prefix) {
   Replay r;
   physics::Simulation simulation(world);
   const RegionMap regions(world);
@@ -60,7 +63,28 @@ Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomato
   r.valid = true;
   r.within_limits = true;
   const double force_bound = world.robot.max_force * (1.0 + 1e-9);  // rounding of the norm only
-  for (size_t c = 0; c < plan.controls.size(); ++c) {
+  size_t first_control = 0;
+  if (prefix != nullptr && prefix->controls > 0) {
+    // The prefix's steps passed every check in `prefix->replay`; the plan continues from the state they
+    // reached (restoring a state is exact), with kappa inferred there as at every step.
+    const Replay& done = prefix->replay;
+    size_t steps = 0;
+    for (size_t c = 0; c < prefix->controls; ++c) {
+      const auto begin = done.pushing.begin() + static_cast<std::ptrdiff_t>(steps) + 1;
+      steps += static_cast<size_t>(plan.controls[c].steps);
+      r.pushes += std::any_of(begin, done.pushing.begin() + static_cast<std::ptrdiff_t>(steps) + 1, [](bool p) { return p; });
+    }
+    const auto end = static_cast<std::ptrdiff_t>(steps) + 1;
+    r.states.assign(done.states.begin(), done.states.begin() + end);
+    r.region_trace.assign(done.region_trace.begin(), done.region_trace.begin() + end);
+    r.automaton_trace.assign(done.automaton_trace.begin(), done.automaton_trace.begin() + end);
+    r.pushing.assign(done.pushing.begin(), done.pushing.begin() + end);
+    for (size_t i = 1; i < r.states.size(); ++i) r.peak_speed = std::max(r.peak_speed, r.states[i].robot_velocity.norm());
+    kappa = knowledge::infer(knowledge, r.states.back());
+    simulation.restore(plan.states[prefix->controls - 1]);
+    first_control = prefix->controls;
+  }
+  for (size_t c = first_control; c < plan.controls.size(); ++c) {
     const Control& control = plan.controls[c];
     if (const std::string why = control_out_of_bounds(world, control); !why.empty()) {
       fail(r.within_limits, fmt::format("control {}: {}", c, why));

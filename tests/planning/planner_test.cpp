@@ -100,6 +100,29 @@ TEST(Replay, StoppingAtTheFirstFailureGivesTheSameVerdict) {
   EXPECT_LT(until_bad.states.size(), whole_bad.states.size());
 }
 
+// Improving a plan replays candidates that keep the plan's first controls: taking those steps from the
+// plan's replay gives the replay of the whole.
+TEST(Replay, StartingAfterAReplayedPrefixGivesTheWholeReplay) {
+  const TestProblem p("ordered.lua");
+  PlanResult result = p.solve(3);
+  ASSERT_TRUE(result.solved);
+  const Replay whole = p.check(result.plan);
+  ASSERT_TRUE(whole.validated());
+  for (std::size_t k : {std::size_t{1}, result.plan.controls.size() / 2, result.plan.controls.size() - 1}) {
+    const ReplayedPrefix prefix{whole, k};
+    const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge, false, &prefix);
+    EXPECT_TRUE(r.validated()) << k;
+    EXPECT_EQ(r.states.size(), whole.states.size()) << k;
+    EXPECT_EQ(r.region_trace, whole.region_trace) << k;
+    EXPECT_EQ(r.automaton_trace, whole.automaton_trace) << k;
+    EXPECT_EQ(r.pushing, whole.pushing) << k;
+    EXPECT_EQ(r.pushes, whole.pushes) << k;
+    EXPECT_EQ(r.peak_speed, whole.peak_speed) << k;
+    EXPECT_EQ(r.moved_bodies, whole.moved_bodies) << k;
+    EXPECT_EQ(r.states.back().robot_position, whole.states.back().robot_position) << k;
+  }
+}
+
 TEST(Replay, AControlAskingForMoreThanTheRobotsLimitsIsNamed) {
   const TestProblem p("rooms_differential.lua");
   EXPECT_EQ(control_out_of_bounds(p.world, {{1.0, 1.5}, 5}), "");
