@@ -160,8 +160,8 @@ std::string bench_table(const BenchResults& r) {
 namespace {
 
 // How the planner was configured (the first run's settings but its seed): empty for ours.
-json settings_json(const PlannerRuns& p) {
-  json settings = json::object();
+std::map<std::string, std::string> planner_settings(const PlannerRuns& p) {
+  std::map<std::string, std::string> settings;
   if (p.runs.empty()) return settings;
   for (const auto& [key, value] : p.runs.front().settings) {
     if (key != "seed") settings[key] = value;
@@ -214,7 +214,7 @@ json bench_json(const BenchResults& r) {
                         {"first_duration_median_s", s.first_duration_median_s},
                         {"solution_duration_median_s", s.solution_duration_median_s},
                         {"path_length_median_m", s.path_length_median_m},
-                        {"settings", settings_json(p)},
+                        {"settings", planner_settings(p)},
                         {"per_run", std::move(runs)}});
   }
   const auto ratio = ratio_of_medians(r);
@@ -256,11 +256,7 @@ OmplExperiment ompl_experiment(const BenchResults& r, const std::string& host, c
     std::replace(planner.name.begin(), planner.name.end(), '-', '_');
     if (r.threads.size() > 1) planner.name += fmt::format("_{}threads", p.threads);
     planner.common = {{"planner", planning::planner_name(p.planner)}, {"threads", std::to_string(p.threads)}};
-    if (!p.runs.empty()) {
-      for (const auto& [key, value] : p.runs.front().settings) {
-        if (key != "seed") planner.common[key] = value;
-      }
-    }
+    planner.common.merge(planner_settings(p));
     const PlannerSummary s = summarize(p, r.time_limit_s);
     for (size_t i = 0; i < p.runs.size(); ++i) planner.runs.push_back(ompl_run(p.runs[i], s.times_s[i]));
     e.planners.push_back(std::move(planner));

@@ -268,11 +268,7 @@ struct Simulation::Impl {
   void save(PhysicsState& out) const {
     for (size_t b = 0; b < blocks.size(); ++b) {
       if (!block_changed[b]) continue;
-      auto block = std::make_shared<PhysicsState::Block>();
-      const size_t first = b * kBodiesPerBlock * kValuesPerBody;
-      const size_t count = std::min(block->values.size(), state.size() - first);
-      std::copy_n(state.begin() + static_cast<std::ptrdiff_t>(first), count, block->values.begin());
-      blocks[b] = std::move(block);
+      blocks[b] = PhysicsState::block_of(state, b);
       block_changed[b] = 0;
     }
     out.bodies_ = dynamic.size();
@@ -502,15 +498,19 @@ void PhysicsState::copy_values(std::span<double> out) const {
   }
 }
 
+std::shared_ptr<const PhysicsState::Block> PhysicsState::block_of(std::span<const double> values, std::size_t b) {
+  auto block = std::make_shared<Block>();
+  const std::size_t first = b * kBodiesPerBlock * kValuesPerBody;
+  std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(first), std::min(block->values.size(), values.size() - first),
+              block->values.begin());
+  return block;
+}
+
 PhysicsState PhysicsState::from_values(std::span<const double> values) {
   PhysicsState s;
   s.bodies_ = values.size() / kValuesPerBody;
-  for (std::size_t first = 0; first < values.size(); first += kBodiesPerBlock * kValuesPerBody) {
-    auto block = std::make_shared<Block>();
-    std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(first),
-                std::min(block->values.size(), values.size() - first), block->values.begin());
-    s.blocks_.push_back(std::move(block));
-  }
+  const std::size_t per_block = kBodiesPerBlock * kValuesPerBody;
+  for (std::size_t b = 0; b * per_block < values.size(); ++b) s.blocks_.push_back(block_of(values, b));
   return s;
 }
 

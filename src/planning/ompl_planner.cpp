@@ -151,6 +151,12 @@ ob::StateSamplerPtr PhysicsSpace::allocDefaultStateSampler() const {
   return std::make_shared<RobotPoseSampler>(this, seeds_.next());
 }
 
+// The workspace's x and y as the first two dimensions of `bounds`.
+void set_workspace_bounds(ob::RealVectorBounds& bounds, const scenario::World& world) {
+  bounds.setLow(0, world.workspace.bounds.min.x()), bounds.setHigh(0, world.workspace.bounds.max.x());
+  bounds.setLow(1, world.workspace.bounds.min.y()), bounds.setHigh(1, world.workspace.bounds.max.y());
+}
+
 // The robot's position, in cells of 1/20 of the workspace (OMPL's default share of the extent), within the
 // workspace: KPIECE1's and PDST's grid.
 class RobotPosition : public ob::ProjectionEvaluator {
@@ -161,8 +167,7 @@ class RobotPosition : public ob::ProjectionEvaluator {
     const Vec2 size = world.workspace.bounds.size();
     std::vector<double> cells{size.x() / 20, size.y() / 20};
     ob::RealVectorBounds bounds(getDimension());
-    bounds.setLow(0, world.workspace.bounds.min.x()), bounds.setHigh(0, world.workspace.bounds.max.x());
-    bounds.setLow(1, world.workspace.bounds.min.y()), bounds.setHigh(1, world.workspace.bounds.max.y());
+    set_workspace_bounds(bounds, world);
     if (product_) cells.push_back(1.0), bounds.setLow(2, -0.5), bounds.setHigh(2, automaton_states - 0.5);
     setCellSizes(cells);
     setBounds(bounds);
@@ -182,6 +187,22 @@ class RobotPosition : public ob::ProjectionEvaluator {
 
 void PhysicsSpace::registerProjections() {
   registerDefaultProjection(std::make_shared<RobotPosition>(this, world_, 0));
+}
+
+// A control is a set-point: a holonomic robot's (speed, heading), a differential robot's (forward speed,
+// turn rate). Both ways:
+Vec2 setpoint_of(const oc::Control* control, bool differential) {
+  const double* u = control->as<oc::RealVectorControlSpace::ControlType>()->values;
+  if (differential) return {u[0], u[1]};
+  return {u[0] * std::cos(u[1]), u[0] * std::sin(u[1])};
+}
+void set_control(oc::Control* control, const Vec2& setpoint, bool differential) {
+  double* u = control->as<oc::RealVectorControlSpace::ControlType>()->values;
+  if (differential) {
+    u[0] = setpoint.x(), u[1] = setpoint.y();
+  } else {
+    u[0] = setpoint.norm(), u[1] = std::atan2(setpoint.y(), setpoint.x());
+  }
 }
 
 // What the propagator did: restores, steps, and steps refused for landing beyond step_neighbours().
@@ -216,7 +237,7 @@ class PhysicsPropagator : public oc::StatePropagator {
       simulation_.restore(physics::PhysicsState::from_values({in, n}));
       ++counts_.restores;
     }
-    const Vec2 setpoint = setpoint_of(control);
+    const Vec2 setpoint = setpoint_of(control, space_.differential());
     const int steps = std::max(1, static_cast<int>(std::lround(duration / world_.planner.step_size)));
     bool valid = true;
     bool beyond_graph = false;
@@ -240,14 +261,6 @@ class PhysicsPropagator : public oc::StatePropagator {
   }
 
   bool canPropagateBackward() const override { return false; }
-
-  // A control is a set-point: a holonomic robot's (speed, heading), a differential robot's (forward speed,
-  // turn rate).
-  Vec2 setpoint_of(const oc::Control* control) const {
-    const double* u = control->as<oc::RealVectorControlSpace::ControlType>()->values;
-    if (space_.differential()) return {u[0], u[1]};
-    return {u[0] * std::cos(u[1]), u[0] * std::sin(u[1])};
-  }
 
  private:
   const PhysicsSpace& space_;
@@ -299,12 +312,7 @@ class OurSampling {
     const auto& b = world_.workspace.bounds;
     const Vec2 aim = target ? *target : Vec2(random_.uniform(b.min.x(), b.max.x()), random_.uniform(b.min.y(), b.max.y()));
     const Control c = sampler_.sample(simulation_.environment(), simulation_.kappa(), aim, random_);
-    double* u = control->as<oc::RealVectorControlSpace::ControlType>()->values;
-    if (world_.robot.drive == scenario::Drive::kDifferential) {
-      u[0] = c.setpoint.x(), u[1] = c.setpoint.y();
-    } else {
-      u[0] = c.setpoint.norm(), u[1] = std::atan2(c.setpoint.y(), c.setpoint.x());
-    }
+    set_control(control, c.setpoint, world_.robot.drive == scenario::Drive::kDifferential);
     return static_cast<unsigned>(c.steps);
   }
 
@@ -375,10 +383,8 @@ class Triangles : public oc::Decomposition {
     neighbours.insert(neighbours.end(), n.begin(), n.end());
   }
   void sampleFromRegion(int region, ompl::RNG& rng, std::vector<double>& coordinates) const override {
-    const auto& t = triangle(region);
-    double a = rng.uniform01(), b = rng.uniform01();
-    if (a + b > 1.0) a = 1.0 - a, b = 1.0 - b;
-    const Vec2 p = t.corners[0] + a * (t.corners[1] - t.corners[0]) + b * (t.corners[2] - t.corners[0]);
+    const double u = rng.uniform01(), v = rng.uniform01();
+    const Vec2 p = triangle(region).point_at(u, v);
     coordinates = {p.x(), p.y()};
   }
   void sampleFullState(const ob::StateSamplerPtr& sampler, const std::vector<double>& coordinates,
@@ -391,8 +397,7 @@ class Triangles : public oc::Decomposition {
  private:
   static ob::RealVectorBounds bounds_of(const scenario::World& world) {
     ob::RealVectorBounds b(2);
-    b.setLow(0, world.workspace.bounds.min.x()), b.setHigh(0, world.workspace.bounds.max.x());
-    b.setLow(1, world.workspace.bounds.min.y()), b.setHigh(1, world.workspace.bounds.max.y());
+    set_workspace_bounds(b, world);
     return b;
   }
   const decomposition::Triangle& triangle(int region) const {
@@ -425,10 +430,7 @@ class TaskGoal : public ob::Goal {
  public:
   TaskGoal(const oc::LTLSpaceInformationPtr& si, const oc::AutomatonPtr& automaton)
       : ob::Goal(si), ltl_(si), automaton_(automaton) {}
-  bool isSatisfied(const ob::State* state) const override {
-    const int q = ltl_->getProdGraphState(state)->getCosafeState();
-    return q >= 0 && automaton_->isAccepting(static_cast<unsigned>(q));
-  }
+  bool isSatisfied(const ob::State* state) const override { return isSatisfied(state, nullptr); }
   bool isSatisfied(const ob::State* state, double* distance) const override {
     const int q = ltl_->getProdGraphState(state)->getCosafeState();
     const bool satisfied = q >= 0 && automaton_->isAccepting(static_cast<unsigned>(q));
@@ -534,7 +536,6 @@ PlanResult plan_with_ompl(const scenario::World& world, const TaskAutomaton& tas
                           const decomposition::Decomposition& decomposition, const PlannerOptions& options) {
   if (const auto why = refusal(options.planner, task)) throw std::invalid_argument(*why);
   const auto started = std::chrono::steady_clock::now();
-  ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
   // Every generator OMPL makes without a seed of its own takes the next from its process-wide sequence
   // (OMPL complains once it has started); ours are seeded below.
   ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
@@ -627,12 +628,11 @@ PlanResult plan_with_ompl(const scenario::World& world, const TaskAutomaton& tas
                        : status == ob::PlannerStatus::TIMEOUT || status == ob::PlannerStatus::APPROXIMATE_SOLUTION
                            ? "time limit"
                            : "no solution";
-  const auto* propagator = static_cast<const PhysicsPropagator*>(low->getStatePropagator().get());
   if (result.solved) {
     const auto path = std::static_pointer_cast<oc::PathControl>(problem->getLowerSolutionPath());
     for (std::size_t i = 0; i < path->getControlCount(); ++i) {
       const int steps = static_cast<int>(std::lround(path->getControlDuration(i) / world.planner.step_size));
-      result.plan.controls.push_back({propagator->setpoint_of(path->getControl(i)), steps});
+      result.plan.controls.push_back({setpoint_of(path->getControl(i), differential), steps});
       const double* values = path->getState(i + 1)->as<PhysicsSpace::StateType>()->values;
       result.plan.states.push_back(physics::PhysicsState::from_values({values, space->values()}));
     }

@@ -45,13 +45,6 @@ constexpr int kFailuresBeforeDropped = 8;
 // changed most leads and cost 20 % more).
 constexpr int kLevelsAhead = 2;
 
-// Uniform point in a triangle.
-Vec2 point_in(const decomposition::Triangle& t, Random& random) {
-  double a = random.uniform01(), b = random.uniform01();
-  if (a + b > 1.0) a = 1.0 - a, b = 1.0 - b;
-  return t.corners[0] + a * (t.corners[1] - t.corners[0]) + b * (t.corners[2] - t.corners[0]);
-}
-
 // Where to grow from and towards, and the seed of the grower's own generator.
 struct Expansion {
   int from = 0;
@@ -211,7 +204,8 @@ class Search {
       e.from = candidates[random_.uniform_int(0, static_cast<int>(candidates.size()) - 1)];
       const int ahead =
           std::min<int>(lead_index + random_.uniform_int(1, kMaxStepsAhead), static_cast<int>(lead.size()) - 1);
-      e.target = point_in(decomposition_.triangles()[graph_.triangle_of(lead[ahead])], random_);
+      const double u = random_.uniform01(), v = random_.uniform01();
+      e.target = decomposition_.triangles()[graph_.triangle_of(lead[ahead])].point_at(u, v);
       e.seed = random_.next();
     }
   }

@@ -18,6 +18,13 @@ struct Triangle {
   double area = 0.0;
   int region = -1;             // index into World::regions; -1 outside every region (p0)
   std::vector<int> neighbors;  // triangles sharing an edge
+
+  // The point a pair of numbers uniform in [0, 1) names, uniform over the triangle: how a planner samples
+  // a point in it with its own generator.
+  Vec2 point_at(double u, double v) const {
+    if (u + v > 1.0) u = 1.0 - u, v = 1.0 - v;
+    return corners[0] + u * (corners[1] - corners[0]) + v * (corners[2] - corners[0]);
+  }
 };
 
 struct DecompositionOptions {

@@ -51,6 +51,8 @@ class PhysicsState {
 
  private:
   friend class Simulation;
+  // Block `b` of `values` (every value, body after body), the bodies past the end zero.
+  static std::shared_ptr<const Block> block_of(std::span<const double> values, std::size_t b);
   std::size_t bodies_ = 0;
   std::vector<std::shared_ptr<const Block>> blocks_;
 };
