@@ -1,5 +1,7 @@
 # Shared by ./physltl-studio and tests/run: install missing Debian packages, then configure and build.
-# Source it, then call `physltl_build BUILD_DIR [cmake options...]`.
+# Source it, then call `physltl_build BUILD_DIR TARGET [cmake options...]` (TARGET: one target, or all).
+# The launcher and tests/run share one build folder, build/: the launcher builds the program, tests/run adds
+# the test programs to the same tree, so nothing is compiled twice.
 
 physltl_root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
@@ -34,18 +36,43 @@ physltl_ensure_packages() {
   mkdir -p "$1" && touch "$stamp"
 }
 
-physltl_build() {
-  local dir="$1"
+# Whether the build folder's cache already holds every -DNAME=VALUE option given.
+physltl_configured_with() {
+  local dir="$1" option name value
   shift
+  [ -f "$dir/build.ninja" ] && [ -f "$dir/CMakeCache.txt" ] || return 1
+  for option in "$@"; do
+    case "$option" in
+      -D*=*) name=${option#-D}; value=${name#*=}; name=${name%%=*}; name=${name%%:*}
+             grep -qx -- "$name:[A-Z]*=$value" "$dir/CMakeCache.txt" || return 1 ;;
+    esac
+  done
+}
+
+physltl_build() {
+  local dir="$1" target="$2" lock status
+  shift 2
   physltl_ensure_packages "$dir" || return $?
-  if [ ! -f "$dir/build.ninja" ]; then
-    cmake -S "$physltl_root" -B "$dir" -G Ninja "$@" >&2 || return 2
-  elif [ $# -gt 0 ]; then
-    cmake "$dir" "$@" >/dev/null || return 2
+  # One build at a time in a folder: a launcher and a tests/run started together take turns. The lock is
+  # the kernel's (flock), so it goes with the process however that ends.
+  exec {lock}>"$dir/.build-lock"
+  if ! flock -n "$lock"; then
+    echo "waiting for another build in $dir to finish" >&2
+    flock "$lock"
+  fi
+  if ! physltl_configured_with "$dir" "$@"; then
+    cmake -S "$physltl_root" -B "$dir" -G Ninja "$@" >&2 || { exec {lock}>&-; return 2; }
   fi
   # Ninja prints nothing useful on a no-op build; keep stdout for the program's own output.
-  cmake --build "$dir" -- -j"$(nproc)" >"$dir/.last-build.log" 2>&1 || {
+  cmake --build "$dir" --target "$target" -- -j"$(nproc)" >"$dir/.last-build.log" 2>&1
+  status=$?
+  exec {lock}>&-
+  if [ "$status" -ne 0 ]; then
     cat "$dir/.last-build.log" >&2
     return 2
-  }
+  fi
 }
+
+# The options of the shared build/ folder: the same for the launcher and tests/run, so neither reconfigures
+# what the other made.
+physltl_shared_build_options=(-DPHYSLTL_BUILD_TESTS=ON)
