@@ -11,6 +11,7 @@
 
 #include "camera.h"
 #include "flat_geometry.h"
+#include "framing.h"
 #include "gl_objects.h"
 #include "meshes.h"
 #include "palette.h"
@@ -28,6 +29,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace physltl::render {
 namespace {
@@ -45,6 +47,7 @@ constexpr double kSegmentWidth = 1.5;
 constexpr double kPathWidth = 3.0;
 constexpr double kPathHaloWidth = 6.0;
 constexpr float kPanelPadding = 3.0f;
+constexpr float kLegendMargin = 2 * kPanelPadding;  // between the legend panel and the frame's corner
 constexpr float kShadowStrength = 0.5f;  // alpha of black at the shadow's centre
 constexpr int kSupersampling = 2;         // the static scene is drawn this many times larger each way
 
@@ -94,9 +97,8 @@ void set_color(GLint location, const Color& c) { glUniform4f(location, c.r, c.g,
 class ShadowGeometry {
  public:
   void add(const Pose2& pose, const Vec2& half_extents, double corner_radius, double height) {
-    const Vector3f light = towards_light();
-    const Vec2 shift = Vec2(-light.x(), -light.y()) / light.z() * (0.5 * height);
-    const double softness = 0.04 + 0.12 * height;
+    const Vec2 shift = offset(height);
+    const double softness = blur(height);
     const Vec2 reach = half_extents + Vec2::Constant(corner_radius + 1.5 * softness);
     const Eigen::Rotation2Dd rotation(pose.yaw);
     const Vec2 corners[4] = {{-reach.x(), -reach.y()}, {reach.x(), -reach.y()}, {reach.x(), reach.y()},
@@ -112,7 +114,21 @@ class ShadowGeometry {
   }
   const std::vector<float>& floats() const { return floats_; }
 
+  // Where the shadows of bodies no taller than `height` standing inside `bounds` may be drawn: shifted away
+  // from the light, and blurred all round.
+  static geometry::Rect reach(const geometry::Rect& bounds, double height) {
+    const Vec2 shift = offset(height);
+    const Vec2 blurred = Vec2::Constant(std::sqrt(2.0) * 1.5 * blur(height));
+    return {bounds.min + shift.cwiseMin(0.0) - blurred, bounds.max + shift.cwiseMax(0.0) + blurred};
+  }
+
  private:
+  static Vec2 offset(double height) {
+    const Vector3f light = towards_light();
+    return Vec2(-light.x(), -light.y()) / light.z() * (0.5 * height);
+  }
+  static double blur(double height) { return 0.04 + 0.12 * height; }
+
   std::vector<float> floats_;
 };
 
@@ -158,6 +174,7 @@ struct Renderer::Impl {
   // draw the whole path again; moving bodies pass over it.
   struct Background {
     View view;
+    Matrix4f view_projection;
     std::vector<std::array<Vec2, 3>> decomposition;
     std::vector<SegmentOverlay> segments;
     std::vector<std::string> avoided_regions;
@@ -170,6 +187,15 @@ struct Renderer::Impl {
   // OSMesa's copy into its client buffer.
   std::unique_ptr<GlFramebuffer> frame;
   std::vector<std::uint8_t> rgba;  // read_frame's buffer, kept to avoid allocating every frame
+
+  // The camera of the last picture, kept while its view and its legend's rectangle stay the same (every
+  // frame of a video): fitting it around the legend is not free.
+  struct Framing {
+    View view;
+    PixelRect legend;
+    CameraView camera;
+  };
+  std::optional<Framing> framing;
 
   Impl(const scenario::World& w, std::unique_ptr<OffscreenContext> c)
       : world(w),
@@ -295,6 +321,69 @@ struct Renderer::Impl {
     return result;
   }
 
+  // What the camera must keep clear of the legend: the workspace's box from the floor to the tallest body,
+  // with the floor grown by as far as the bodies' shadows reach beyond it.
+  std::vector<Vector3f> world_points() const {
+    const geometry::Rect& b = world.workspace.bounds;
+    const geometry::Rect shadows = ShadowGeometry::reach(b, top_height);
+    std::vector<Vector3f> points;
+    for (const auto& [r, z] : {std::pair{shadows, 0.0}, std::pair{b, top_height}}) {
+      for (double x : {r.min.x(), r.max.x()}) {
+        for (double y : {r.min.y(), r.max.y()}) {
+          points.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
+        }
+      }
+    }
+    return points;
+  }
+
+  // Each region's name, centred below the region rather than on it: a box standing on a region stays visible.
+  std::vector<AnchoredRect> region_labels() const {
+    std::vector<AnchoredRect> labels;
+    for (const scenario::Region& region : world.regions) {
+      const Vec2 below(region.polygon.centroid().x(), region.polygon.bounds().min.y());
+      const float w = font.width(region.name), h = font.line_height();
+      labels.push_back({Vector3f(static_cast<float>(below.x()), static_cast<float>(below.y()), 0),
+                        {{-w / 2 - kPanelPadding, kPanelPadding / 2}, {w / 2 + kPanelPadding, kPanelPadding + h + kPanelPadding / 2}}});
+    }
+    return labels;
+  }
+
+  // The legend's lines as drawn: a line wider than the frame keeps its beginning and its end.
+  std::string fitted(const std::string& line) const {
+    const float room = static_cast<float>(width) - 2 * kLegendMargin - 2 * kPanelPadding;
+    if (font.width(line) <= room) return line;
+    const auto shortened = [&line](std::size_t keep) {
+      return line.substr(0, (keep + 1) / 2) + "..." + line.substr(line.size() - keep / 2);
+    };
+    std::size_t fits = 0, too_long = line.size();  // characters kept; fewer kept is narrower
+    while (too_long - fits > 1) {
+      const std::size_t middle = (fits + too_long) / 2;
+      (font.width(shortened(middle)) <= room ? fits : too_long) = middle;
+    }
+    return shortened(fits);
+  }
+
+  PixelRect legend_rect(const std::vector<std::string>& lines, const std::vector<std::vector<std::string>>& room) const {
+    if (lines.empty() && room.empty()) return {};
+    float widest = 0;
+    for (const std::string& line : lines) widest = std::max(widest, font.width(fitted(line)));
+    for (const std::vector<std::string>& row : room) {
+      for (const std::string& line : row) widest = std::max(widest, font.width(fitted(line)));
+    }
+    const float h = font.line_height() * static_cast<float>(std::max(lines.size(), room.size()));
+    return {{kLegendMargin, kLegendMargin}, {kLegendMargin + widest + 2 * kPanelPadding, kLegendMargin + h + 2 * kPanelPadding}};
+  }
+
+  const CameraView& camera(View view_kind, const Overlay& overlay) {
+    const PixelRect legend = legend_rect(overlay.legend, overlay.legend_room);
+    if (!framing || framing->view != view_kind || framing->legend.min != legend.min || framing->legend.max != legend.max) {
+      const CameraView view = make_camera_view(world, top_height, view_kind, width, height);
+      framing = Framing{view_kind, legend, leave_room_for_legend(view, world_points(), region_labels(), legend)};
+    }
+    return framing->camera;
+  }
+
   // Glyph quads (x y u v per vertex) of one line with its top-left corner at (x, y) in pixels.
   void add_text(const std::string& line, float x, float y, std::vector<float>& glyphs) const {
     for (const GlyphQuad& q : font.layout(line, x, y)) {
@@ -316,22 +405,17 @@ struct Renderer::Impl {
                        palette::kPanel);
       add_text(line, x, y, glyphs);
     };
-    // Below the region rather than on it: a box standing on a region must stay visible.
-    for (const scenario::Region& region : world.regions) {
-      const Vec2 below(region.polygon.centroid().x(), region.polygon.bounds().min.y());
-      const Eigen::Vector2f at =
-          view.to_pixels(Vector3f(static_cast<float>(below.x()), static_cast<float>(below.y()), 0));
-      label(region.name, at.x() - font.width(region.name) / 2, at.y() + kPanelPadding);
+    const std::vector<AnchoredRect> labels = region_labels();
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      const Eigen::Vector2f at = view.to_pixels(labels[i].anchor);
+      label(world.regions[i].name, at.x() + labels[i].offset.min.x() + kPanelPadding, at.y() + kPanelPadding);
     }
     if (!overlay.legend.empty()) {
-      float widest = 0;
-      for (const std::string& line : overlay.legend) widest = std::max(widest, font.width(line));
-      const float margin = 2 * kPanelPadding, h = font.line_height();
-      panels.rectangle({margin, margin},
-                       {margin + widest + 2 * kPanelPadding, margin + h * overlay.legend.size() + 2 * kPanelPadding},
-                       palette::kPanel);
+      const PixelRect legend = legend_rect(overlay.legend, {});
+      panels.rectangle(legend.min.cast<double>(), legend.max.cast<double>(), palette::kPanel);
       for (std::size_t i = 0; i < overlay.legend.size(); ++i) {
-        add_text(overlay.legend[i], margin + kPanelPadding, margin + kPanelPadding + h * i, glyphs);
+        add_text(fitted(overlay.legend[i]), kLegendMargin + kPanelPadding,
+                 kLegendMargin + kPanelPadding + font.line_height() * static_cast<float>(i), glyphs);
       }
     }
     upload(panel_layer, panels);
@@ -380,7 +464,8 @@ struct Renderer::Impl {
   // is the fixed bodies' at the picture's own size, so that moving things are hidden exactly where the
   // copied picture shows a wall.
   const GlFramebuffer& static_scene(View view_kind, const CameraView& view, const Overlay& overlay) {
-    if (!background || background->view != view_kind || background->decomposition != overlay.decomposition ||
+    if (!background || background->view != view_kind || background->view_projection != view.view_projection ||
+        background->decomposition != overlay.decomposition ||
         background->segments != overlay.segments || background->avoided_regions != overlay.avoided_regions ||
         !extends(overlay.path, background->path)) {
       draw_static_scene(view_kind, view, overlay);
@@ -440,7 +525,7 @@ struct Renderer::Impl {
     draw_lit(fixed_layer, view);  // the depth; its colour is replaced next
     copy_framebuffer(supersampled.id(), supersampled.width(), supersampled.height(), framebuffer->id(), width, height,
                      GL_COLOR_BUFFER_BIT, GL_LINEAR);
-    background = Background{view_kind, overlay.decomposition, overlay.segments, overlay.avoided_regions,
+    background = Background{view_kind, view.view_projection, overlay.decomposition, overlay.segments, overlay.avoided_regions,
                             std::move(framebuffer), {}};
   }
 
@@ -451,7 +536,7 @@ struct Renderer::Impl {
                                   " movable bodies");
     }
     context->make_current();
-    const CameraView view = make_camera_view(world, top_height, view_kind, width, height);
+    const CameraView& view = camera(view_kind, overlay);
     const GlFramebuffer& scene = static_scene(view_kind, view, overlay);
     upload_layers(state, overlay, view);
 

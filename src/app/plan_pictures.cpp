@@ -57,6 +57,14 @@ PlanFrames write_plan_frames(const scenario::World& world, const Reasoning& reas
   // One overlay for all frames: the travelled path only grows, so it is extended, not rebuilt per frame.
   render::Overlay overlay;
   overlay.avoided_regions = ltl::avoided_propositions(reasoning.task.normal_form);
+  const auto time_line = [](double time, const std::string& region) {
+    return fmt::format("t = {:.2f} s   region: {}", time, region);
+  };
+  const auto automaton_line = [automaton_states](int state, bool accepting) {
+    return fmt::format("automaton state {} of {}{}", state, automaton_states, accepting ? " (accepting)" : "");
+  };
+  overlay.legend_room = {{task}, {time_line(duration, "p0")}, {automaton_line(automaton_states, true)}};
+  for (const scenario::Region& r : world.regions) overlay.legend_room[1].push_back(time_line(duration, r.name));
   for (int f = 0; f < frames; ++f) {
     const double time = static_cast<double>(f) / world.render.fps;
     const double index = std::min(time / dt, static_cast<double>(replay.states.size() - 1));
@@ -68,10 +76,8 @@ PlanFrames write_plan_frames(const scenario::World& world, const Reasoning& reas
     overlay.mregions = mregion_overlays(reasoning.knowledge, kappa, state);
     const int region = replay.region_trace[i];
     const int q = replay.automaton_trace[i];
-    overlay.legend = {task,
-                      fmt::format("t = {:.2f} s   region: {}", time, region < 0 ? "p0" : world.regions[region].name),
-                      fmt::format("automaton state {} of {}{}", q, automaton_states,
-                                  q == replay.automaton_trace.back() && replay.accepted ? " (accepting)" : "")};
+    overlay.legend = {task, time_line(time, region < 0 ? "p0" : world.regions[region].name),
+                      automaton_line(q, q == replay.automaton_trace.back() && replay.accepted)};
     while (overlay.path.size() <= i) overlay.path.push_back(replay.states[overlay.path.size()].robot_position);
     const auto frame = std::make_shared<const render::Image>(renderer.draw(state, overlay, render::View::kPerspective));
     encoder.add(frame);

@@ -40,8 +40,13 @@ struct Overlay {
   std::vector<Vec2> path;
   // Regions the task avoids (by name): drawn in a warning colour instead of the goals' yellow.
   std::vector<std::string> avoided_regions;
-  // Lines of text in the top-left corner: formula, automaton state, time, ...
+  // Lines of text in the top-left corner: formula, automaton state, time, ... The camera leaves room for
+  // them: nothing of the world is drawn under the legend. A line wider than the picture is shortened in
+  // its middle ("...").
   std::vector<std::string> legend;
+  // For each row of the legend, every line it shows in the pictures of one sequence (the times, regions and
+  // automaton states of a video): room is left for the widest of them, so every frame is framed alike.
+  std::vector<std::vector<std::string>> legend_room;
 };
 
 enum class View {

@@ -1,0 +1,131 @@
+// The legend never covers the world: over workspaces of every shape and place, with short and long legends,
+// no pixel of the legend lies over a pixel of the world or of a region's label.
+
+#include "physltl/render/renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace physltl::render {
+namespace {
+
+using geometry::OrientedBox;
+using geometry::Rect;
+
+// A walled workspace with a region in each corner (long names on the far ones) and one box.
+scenario::World walled(const Rect& bounds, double wall_height) {
+  scenario::World world;
+  world.workspace.bounds = bounds;
+  const Vec2 size = bounds.size(), centre = 0.5 * (bounds.min + bounds.max);
+  const double t = 0.2;
+  world.fixed_bodies = {
+      {"south", OrientedBox{{{centre.x(), bounds.min.y() + t / 2}, 0}, {size.x() / 2, t / 2}}, wall_height, "", {}},
+      {"north", OrientedBox{{{centre.x(), bounds.max.y() - t / 2}, 0}, {size.x() / 2, t / 2}}, wall_height, "", {}},
+      {"west", OrientedBox{{{bounds.min.x() + t / 2, centre.y()}, 0}, {t / 2, size.y() / 2 - t}}, wall_height, "", {}},
+      {"east", OrientedBox{{{bounds.max.x() - t / 2, centre.y()}, 0}, {t / 2, size.y() / 2 - t}}, wall_height, "", {}}};
+  const double r = 0.12 * std::min(size.x(), size.y());
+  const auto square = [&](double x, double y) {
+    return geometry::Polygon::from_rect({{x - r, y - r}, {x + r, y + r}});
+  };
+  const double in = 2 * r;
+  world.regions = {{"loading_bay_north_west", square(bounds.min.x() + in, bounds.max.y() - in), {}},
+                   {"charger_north_east", square(bounds.max.x() - in, bounds.max.y() - in), {}},
+                   {"p3", square(bounds.min.x() + in, bounds.min.y() + in), {}},
+                   {"p4", square(bounds.max.x() - in, bounds.min.y() + in), {}}};
+  world.movable_bodies = {{"B1", OrientedBox{{centre, 0.3}, {0.4, 0.25}}, 0.5, 0.5, 0.5, {}, {}, {}}};
+  world.robot.start = centre + Vec2(0, 0.25 * size.y());
+  return world;
+}
+
+std::string long_formula(int rooms) {
+  std::string f;
+  for (int i = 1; i <= rooms; ++i) f += "F(p" + std::to_string(i) + (i < rooms ? " & " : "");
+  return "task: " + f + std::string(rooms, ')');
+}
+
+bool is_background(const Image& image, int x, int y) {
+  const std::uint8_t* corner = image.rgb.data();
+  const std::uint8_t* p = image.rgb.data() + 3 * (static_cast<std::size_t>(y) * image.width + x);
+  return std::abs(p[0] - corner[0]) + std::abs(p[1] - corner[1]) + std::abs(p[2] - corner[2]) < 6;
+}
+
+struct Case {
+  const char* name;
+  Rect bounds;
+  double wall_height;
+  std::vector<std::string> legend;
+};
+
+TEST(Legend, NoLegendPixelLiesOverTheWorldOrARegionLabel) {
+  const std::vector<std::string> one = {"task: F(p3 & F p4)"};
+  const std::vector<std::string> five = {"task: F(loading_bay_north_west & F(charger_north_east & F(p3 | p4)))",
+                                         "unreachable p3: region enclosed by fixed walls",
+                                         "planned: F(loading_bay_north_west & F(charger_north_east & F p4))",
+                                         "mRegions: coloured = the robot may push from there, grey = blocked",
+                                         "red: regions the task never enters"};
+  const std::vector<std::string> wider_than_the_image = {long_formula(64), "t = 12.34 s   region: p0"};
+  const std::vector<Case> cases = {
+      {"wide", {{0, 0}, {40, 8}}, 1.0, five},
+      {"tall", {{-2, -15}, {2, 15}}, 1.0, five},
+      {"deep hall", {{0, 0}, {40, 40}}, 2.0, five},
+      {"deep hall, one line", {{0, 0}, {40, 40}}, 2.0, one},
+      {"off origin", {{-120, 40}, {-110, 48}}, 0.5, one},
+      {"paper's rooms", {{-5, -5}, {5, 5}}, 0.6, five},
+      {"formula wider than the image", {{0, 0}, {20, 20}}, 1.0, wider_than_the_image},
+  };
+  for (const Case& c : cases) {
+    const scenario::World world = walled(c.bounds, c.wall_height);
+    for (View view : {View::kPerspective, View::kTop}) {
+      SCOPED_TRACE(std::string(c.name) + (view == View::kTop ? ", from above" : ", perspective"));
+      Renderer renderer(world, 320, 240);
+      const scenario::EnvironmentState state = scenario::EnvironmentState::initial(world);
+      Overlay with_legend;
+      with_legend.legend = c.legend;
+      // The same framing with nothing in the legend's place: what differs is the legend.
+      Overlay room_only;
+      for (const std::string& line : c.legend) room_only.legend_room.push_back({line});
+      const Image a = renderer.draw(state, with_legend, view);
+      const Image b = renderer.draw(state, room_only, view);
+
+      int legend_pixels = 0, covered = 0;
+      int left = b.width, right = -1, top = b.height, bottom = -1;  // of the world
+      for (int y = 0; y < b.height; ++y) {
+        for (int x = 0; x < b.width; ++x) {
+          const std::size_t i = 3 * (static_cast<std::size_t>(y) * b.width + x);
+          const bool legend = a.rgb[i] != b.rgb[i] || a.rgb[i + 1] != b.rgb[i + 1] || a.rgb[i + 2] != b.rgb[i + 2];
+          const bool drawn = !is_background(b, x, y);
+          legend_pixels += legend;
+          covered += legend && drawn;
+          if (drawn) left = std::min(left, x), right = std::max(right, x), top = std::min(top, y), bottom = std::max(bottom, y);
+        }
+      }
+      EXPECT_GT(legend_pixels, 200);
+      EXPECT_EQ(covered, 0);
+      // Room is made by moving and shrinking the world, never by losing it: it still fills a good part of
+      // the frame along one side.
+      ASSERT_GE(right, left);
+      EXPECT_GE(std::max(static_cast<double>(right - left) / b.width, static_cast<double>(bottom - top) / b.height), 0.6);
+      EXPECT_GE(left, 0);
+      EXPECT_LT(right, b.width);
+    }
+  }
+}
+
+// The legend's lines are never cut off at the frame's edge: a line too wide keeps its beginning and end.
+TEST(Legend, ALineWiderThanTheFrameIsShortenedInItsMiddle) {
+  const scenario::World world = walled({{0, 0}, {10, 8}}, 0.5);
+  Renderer renderer(world, 320, 240);
+  const scenario::EnvironmentState state = scenario::EnvironmentState::initial(world);
+  Overlay overlay;
+  overlay.legend = {long_formula(64)};
+  const Image image = renderer.draw(state, overlay, View::kTop);
+  // Row 7 runs through the panel's top padding: panel from the left, background at the right edge.
+  EXPECT_FALSE(is_background(image, 8, 7));
+  EXPECT_TRUE(is_background(image, image.width - 1, 7));
+}
+
+}  // namespace
+}  // namespace physltl::render
