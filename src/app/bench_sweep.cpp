@@ -2,7 +2,7 @@
 
 #include "physltl/render/chart.h"
 
-#include "command.h"
+#include "bad_input.h"
 #include "plan_files.h"
 #include "statistics.h"
 

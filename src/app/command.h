@@ -1,26 +1,13 @@
 #pragma once
 // Internal to the app module: how each subcommand plugs into the command line.
 
+#include "bad_input.h"
+
 #include <CLI/CLI.hpp>
 
 #include <functional>
-#include <stdexcept>
-#include <string>
 
 namespace physltl::app {
-
-// Exit codes documented in README.md and `physltl-studio --help`.
-enum ExitCode : int {
-  kExitOk = 0,
-  kExitNoPlan = 1,    // planning failed, or the task is infeasible
-  kExitBadInput = 2,  // bad scenario, bad formula, bad usage
-  kExitInterrupted = 130,  // Ctrl-C or SIGTERM: 128 + SIGINT, as shells report it
-};
-
-// Thrown for anything the user got wrong; main() prints the message and exits with kExitBadInput.
-struct BadInput : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 // A command registers its options on `parent` and returns the callable to run once parsing succeeded.
 using CommandRunner = std::function<int()>;

@@ -1,6 +1,6 @@
 #include "planner_names.h"
 
-#include "command.h"
+#include "bad_input.h"
 
 #include <algorithm>
 #include <sstream>

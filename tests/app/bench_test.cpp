@@ -9,8 +9,6 @@ namespace {
 
 using namespace physltl::testing_support;
 
-const std::string kSource = PHYSLTL_SOURCE_DIR;
-
 TEST(Bench, CompareOnOrderedWritesBenchJsonWithBothPlannersOnTheSameSeeds) {
   const fs::path out = fresh_out_dir();
   const fs::path log = test_dir() / "ordered.log";

@@ -18,8 +18,6 @@ const nlohmann::json& entry_named(const nlohmann::json& list, const std::string&
   throw std::runtime_error("no entry named " + name);
 }
 
-const std::string kSource = PHYSLTL_SOURCE_DIR;
-
 TEST(Cli, CheckJsonPrintsBodiesWithKindsRegionsAndFormula) {
   const Result r = run("check " + kSource + "/scenarios/rooms.lua --json --no-preview");
   ASSERT_EQ(r.exit_code, 0) << r.err;

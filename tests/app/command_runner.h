@@ -15,6 +15,9 @@ namespace physltl::testing_support {
 
 namespace fs = std::filesystem;
 
+// The source tree, where the scenarios are.
+inline const std::string kSource = PHYSLTL_SOURCE_DIR;
+
 struct Result {
   int exit_code = -1;
   std::string out, err;

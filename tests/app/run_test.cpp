@@ -19,8 +19,6 @@ namespace {
 
 using namespace physltl::testing_support;
 
-const std::string kSource = PHYSLTL_SOURCE_DIR;
-
 TEST(Run, SolvesOrderedAndWritesAValidatedReportAndPlan) {
   const fs::path out = fresh_out_dir();
   const Result r = run(kSource + "/scenarios/ordered.lua --seed 3 --out " + out.string());

@@ -1,5 +1,6 @@
 #include "physltl/render/frame_writer.h"
 
+#include "file_bytes.h"
 #include "physltl/render/png.h"
 
 #include <gtest/gtest.h>
@@ -24,10 +25,7 @@ Image numbered_frame(int index) {
   return image;
 }
 
-std::vector<std::uint8_t> file_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::file_bytes;
 
 TEST(FrameWriter, WritesNumberedFramesWithTheBytesOfEachImage) {
   const std::filesystem::path folder = fresh_folder("frames");

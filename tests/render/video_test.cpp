@@ -1,5 +1,6 @@
 #include "physltl/render/video.h"
 
+#include "file_bytes.h"
 
 #include <gtest/gtest.h>
 
@@ -46,10 +47,7 @@ class ScopedPath {
   std::string saved_;
 };
 
-std::vector<char> file_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::file_bytes;
 
 // Odd dimensions on purpose: H.264 with yuv420p needs even ones, which the encoder has to arrange.
 TEST(Video, EncodesOddSizedFramesIntoTheSameMp4BytesEveryTime) {
