@@ -130,6 +130,23 @@ function P.boundary(b)
   room({ name = "boundary", min = b.min, max = b.max, thickness = b.thickness, height = b.height }, 5)
 end
 
+-- The walls of the paper's scenario A (scenarios/rooms.lua) in the workspace [-6, 6] x [-5, 5]: a boundary;
+-- a hall across the middle (y from -1 to 1) with doorways north into rooms 1 and 2 and south into room 4;
+-- room 3 closed; and room 1's entrance corridor, 0.9 m wide, at x = -3. Worlds on the same floor plan call
+-- it (rooms.lua, delivery.lua).
+function P.paper_rooms()
+  local t = 0.2
+  P.boundary { min = { -6, -5 }, max = { 6, 5 }, thickness = t }
+  P.wall_with_doors_x { name = "hall_north", x0 = -5.8, x1 = 5.8, y0 = 1.0, y1 = 1.0 + t,
+                        doors = { { -3.45, -2.55 }, { 2.5, 3.5 } } }
+  P.wall_with_doors_x { name = "hall_south", x0 = -5.8, x1 = 5.8, y0 = -1.0 - t, y1 = -1.0,
+                        doors = { { 2.5, 3.5 } } }
+  P.block { name = "rooms_12", min = { -0.1, 1.0 + t }, max = { 0.1, 4.8 } }
+  P.block { name = "rooms_34", min = { -0.1, -4.8 }, max = { 0.1, -1.0 - t } }
+  P.block { name = "corridor_west", min = { -3.65, 1.2 }, max = { -3.45, 2.4 } }
+  P.block { name = "corridor_east", min = { -2.55, 1.2 }, max = { -2.35, 2.4 } }
+end
+
 -- A movable box: P.box{ name, at = {x, y}, size = 0.5 or {sx, sy}, mass, friction, push_from, ... }.
 function P.box(b)
   local size = b.size or 0.5

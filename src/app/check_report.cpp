@@ -59,6 +59,9 @@ void print_check_report(std::ostream& out, const scenario::World& world, const R
                list_or_none(strings("inactive_mregions")));
   }
   for (const knowledge::InvalidProposition& p : r.feasibility.invalid) fmt::print(out, "invalid    {}\n", p.reason);
+  for (const knowledge::ObjectVerdict& o : r.feasibility.objects) {
+    if (o.always_true) fmt::print(out, "constant   {}\n", o.reason);
+  }
   if (const std::optional<ltl::Formula> simplified = r.simplified_formula()) {
     fmt::print(out, "simplified {}\n", ltl::to_string(*simplified));
     fmt::print(out, "class      {}: {}\n", ltl::class_name(r.task.task_class), ltl::semantics_of(r.task.task_class));
@@ -86,6 +89,7 @@ json check_report_json(const scenario::World& world, const Reasoning& r) {
   merge_by_name(report["regions"], knowledge["regions"]);
   const std::optional<ltl::Formula> simplified = r.simplified_formula();
   report["simplified_formula"] = simplified ? json(ltl::to_string(*simplified)) : json(nullptr);
+  report["object_propositions"] = knowledge["object_propositions"];
   report["invalid_propositions"] = knowledge["invalid_propositions"];
   report["feasible"] = r.feasible();
   report["infeasible_reason"] = r.feasible() ? json(nullptr) : json(r.task.infeasibility());

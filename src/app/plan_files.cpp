@@ -50,6 +50,8 @@ json report_json(const RunSummary& run) {
         {"peak_speed", run.replay->peak_speed},
         {"failure", run.replay->failure.empty() ? json(nullptr) : json(run.replay->failure)},
     };
+    // Where the bodies the task names are at the end: the object facts that hold then.
+    report["object_facts_at_end"] = run.as_written.labelling.object_facts(run.replay->facts_trace.back());
     report["controls"] = r.plan.controls.size();
     report["pushes"] = run.replay->pushes;
     report["bodies_moved"] = run.replay->moved_bodies.size();
@@ -105,6 +107,11 @@ json plan_json(const RunSummary& run) {
       {"controls", controls},
       {"states", states},
       {"region_trace", planning::region_names(world, replay.region_trace)},
+      {"object_trace", [&] {
+         json trace = json::array();
+         for (int facts : replay.facts_trace) trace.push_back(run.as_written.labelling.object_facts(facts));
+         return trace;
+       }()},
       {"automaton_trace", replay.automaton_trace},
       {"pushing", replay.pushing},
       {"moved_bodies", moved_bodies},

@@ -5,6 +5,7 @@
 #include "physltl/planning/planner.h"
 #include "physltl/planning/validated_plan.h"
 #include "physltl/planning/replay.h"
+#include "physltl/planning/task.h"
 #include "physltl/scenario/world.h"
 #include "reasoning.h"
 
@@ -17,6 +18,7 @@ namespace physltl::app {
 struct RunSummary {
   const scenario::World& world;
   const Reasoning& reasoning;
+  const planning::TaskAutomaton& as_written;  // the formula every replay checks, and its labelling
   planning::PlannerKind planner;
   const planning::PlanResult& result;
   const planning::Replay* replay;  // null when nothing was solved

@@ -137,7 +137,8 @@ int run(const RunArgs& args) {
   say(fmt::format("plan       {} controls, {:.1f} s of motion, {} pushes, validated by replay",
                   result.plan.controls.size(), result.plan.total_steps() * world.planner.step_size, replay.pushes));
 
-  const RunSummary summary{world, reasoning, planner, result, &replay, solution.improvement ? &*solution.improvement : nullptr};
+  const RunSummary summary{world, reasoning, prepared.as_written(), planner, result, &replay,
+                           solution.improvement ? &*solution.improvement : nullptr};
   write_json(out.path() / "report.json", report_json(summary));
   write_json(out.path() / "plan.json", plan_json(summary));
   if (args.render) {

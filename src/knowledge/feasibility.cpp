@@ -1,6 +1,7 @@
 #include "physltl/knowledge/feasibility.h"
 
 #include "obstacle.h"
+#include "physltl/geometry/disc_field.h"
 
 #include <fmt/format.h>
 
@@ -206,11 +207,61 @@ class Explainer {
   std::optional<ConfigurationSpace> probe_;
 };
 
+// The verdict on BODY@REGION. The body's centre moves as a disc of its inscribed radius would at least:
+// wherever the body's centre can be, that disc fits too, so if the disc cannot get in, the body cannot.
+ObjectVerdict judge(const AbstractKnowledge& k, const ObjectProposition& object) {
+  const MovableBodyKnowledge& body = k.movable_bodies[static_cast<size_t>(object.body)];
+  const Proposition& region = k.propositions[static_cast<size_t>(object.region)];
+  ObjectVerdict verdict{object.name, body.name, region.name, true, false, ""};
+  const bool starts_inside = region.region.contains(body.footprint.pose.position);
+  if (body.body_class == BodyClass::kFixed) {
+    verdict.reachable = starts_inside;
+    verdict.always_true = starts_inside;
+    verdict.reason = starts_inside ? fmt::format("{}: always true: {} stands in {} and is {}", object.name, body.name,
+                                                 region.name, body.class_reason)
+                                   : fmt::format("{}: {} is {}", object.name, body.name, body.class_reason);
+    return verdict;
+  }
+  if (starts_inside) return verdict;
+  std::vector<geometry::OrientedBox> obstacles = blocking_footprints(k, false);
+  for (size_t b = 0; b < k.movable_bodies.size(); ++b) {
+    if (static_cast<int>(b) != object.body && k.movable_bodies[b].body_class == BodyClass::kFixed) {
+      obstacles.push_back(k.movable_bodies[b].footprint);
+    }
+  }
+  const double inscribed = body.footprint.half_extents.minCoeff();
+  const Vec2 size = k.workspace.size();
+  // Fine enough that the margin the soundness costs (half a cell diagonal) is a few centimetres; a
+  // million cells at most.
+  const double cell = std::max(std::clamp(inscribed / 10.0, 0.01, 0.05), std::sqrt(size.x() * size.y() / 1e6));
+  geometry::DiscField field(k.workspace, std::min(cell, inscribed), inscribed, obstacles);
+  field.compute_distances([&](const Vec2& centre, double half_edge) {
+    return geometry::distance_to(region.region, centre) <= half_edge * std::sqrt(2.0);
+  });
+  if (!field.reaches_target(body.footprint.pose.position)) {
+    verdict.reachable = false;
+    const std::string unpushable = unpushable_names(k);
+    verdict.reason = fmt::format("{}: no way for the centre of {} into {}: every way in is narrower than {} ({:.2f} m "
+                                 "across) among the fixed bodies{}",
+                                 object.name, body.name, region.name, body.name, 2 * inscribed,
+                                 unpushable.empty() ? "" : ", the bodies too heavy to push (" + unpushable + ")");
+  }
+  return verdict;
+}
+
 }  // namespace
 
 std::vector<std::string> Feasibility::invalid_names() const {
   std::vector<std::string> names;
   for (const auto& p : invalid) names.push_back(p.name);
+  return names;
+}
+
+std::vector<std::string> Feasibility::always_true_names() const {
+  std::vector<std::string> names;
+  for (const auto& o : objects) {
+    if (o.always_true) names.push_back(o.name);
+  }
   return names;
 }
 
@@ -229,7 +280,7 @@ double grid_cell_size(const AbstractKnowledge& knowledge) {
   return std::max(preferred, needed_for_cap);
 }
 
-Feasibility evaluate_feasibility(const AbstractKnowledge& knowledge) {
+Feasibility evaluate_feasibility(const AbstractKnowledge& knowledge, std::span<const ObjectProposition> objects) {
   Feasibility result;
   result.cell_size = grid_cell_size(knowledge);
   const Grid grid(knowledge.workspace, result.cell_size);
@@ -237,6 +288,15 @@ Feasibility evaluate_feasibility(const AbstractKnowledge& knowledge) {
   Explainer explainer(knowledge, grid, result.cell_size, robot_space);
   for (const Proposition& p : knowledge.propositions) {
     if (!reaches(grid, robot_space, p.region)) result.invalid.push_back(explainer.explain(p));
+  }
+  for (const ObjectProposition& object : objects) {
+    result.objects.push_back(judge(knowledge, object));
+    const ObjectVerdict& verdict = result.objects.back();
+    if (!verdict.reachable) {
+      const bool immovable = knowledge.movable_bodies[static_cast<size_t>(object.body)].body_class == BodyClass::kFixed;
+      result.invalid.push_back({object.name, immovable ? Unreachability::kBodyCannotMove : Unreachability::kBodyCannotGetThere,
+                                verdict.reason});
+    }
   }
   return result;
 }

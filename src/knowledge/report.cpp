@@ -94,8 +94,18 @@ json knowledge_report(const AbstractKnowledge& k, const scenario::EnvironmentSta
                        {"reachable", invalid == nullptr},
                        {"reason", invalid ? json(invalid->reason) : json(nullptr)}});
   }
+  json objects = json::array();
+  for (const ObjectVerdict& o : feasibility.objects) {
+    objects.push_back({{"name", o.name},
+                       {"body", o.body},
+                       {"region", o.region},
+                       {"reachable", o.reachable},
+                       {"always_true", o.always_true},
+                       {"reason", o.reason.empty() ? json(nullptr) : json(o.reason)}});
+  }
   return {{"bodies", bodies},
           {"regions", regions},
+          {"object_propositions", objects},
           {"invalid_propositions", feasibility.invalid_names()},
           {"reachability_cell_size", feasibility.cell_size}};
 }

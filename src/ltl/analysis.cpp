@@ -1,48 +1,38 @@
 #include "physltl/ltl/analysis.h"
 
 #include "physltl/ltl/co_safety.h"
+#include "physltl/ltl/exclusivity.h"
 #include "physltl/ltl/lasso.h"
 #include "physltl/ltl/normal_form.h"
 #include "physltl/ltl/parser.h"
 #include "physltl/ltl/translate.h"
 
-#include <deque>
 #include <ostream>
 
 namespace physltl::ltl {
 namespace {
 
-// The letters a robot among disjoint regions can read: no proposition true, or exactly one.
-std::vector<std::vector<int>> exclusive_letters(std::size_t propositions) {
-  std::vector<std::vector<int>> letters{{}};
-  for (std::size_t p = 0; p < propositions; ++p) letters.push_back({static_cast<int>(p)});
-  return letters;
-}
-
-bool accepts_some_exclusive_trace(const Dfa& dfa) {
-  const auto letters = exclusive_letters(dfa.propositions.size());
-  std::vector<bool> seen(dfa.size(), false);
-  std::deque<int> queue{dfa.start};
-  seen[dfa.start] = true;
-  while (!queue.empty()) {
-    const int s = queue.front();
-    queue.pop_front();
-    for (const auto& letter : letters) {
-      const int t = dfa.step(s, letter);
-      if (dfa.accepting[t]) return true;
-      if (!seen[t]) seen[t] = true, queue.push_back(t);
-    }
+bool accepts_some_possible_trace(const Dfa& dfa, const Exclusivity& exclusivity) {
+  const std::vector<bool> reachable = exclusivity.reachable(dfa, dfa.start);
+  for (std::size_t q = 0; q < dfa.size(); ++q) {
+    if (reachable[q] && dfa.accepting[q]) return true;
   }
   return false;
 }
 
-// Whether some short lasso over exclusive letters, one that need not stop, satisfies the task: then it
-// is the stop-and-stay reading that leaves no run. Lassos up to four positions; small alphabets only.
-bool some_short_lasso_satisfies(const Formula& f, const std::vector<std::string>& propositions) {
-  std::vector<std::vector<std::string>> letters{{}};
-  for (const auto& p : propositions) letters.push_back({p});
+// Whether some short lasso over letters that can occur, one that need not stop, satisfies the task: then
+// it is the stop-and-stay reading that leaves no run. Lassos up to four positions; small alphabets only.
+bool some_short_lasso_satisfies(const Formula& f, const std::vector<std::string>& propositions,
+                                const Exclusivity& exclusivity) {
+  // 8^4 words of each length is plenty; beyond that, say nothing.
+  const auto indices = exclusivity.letters(8);
+  if (!indices) return false;
+  std::vector<std::vector<std::string>> letters;
+  for (const auto& letter : *indices) {
+    letters.emplace_back();
+    for (int p : letter) letters.back().push_back(propositions[static_cast<std::size_t>(p)]);
+  }
   const std::size_t k = letters.size();
-  if (k > 8) return false;  // 8^4 words of each length is plenty; beyond that, say nothing
   std::vector<std::vector<std::string>> word;
   for (std::size_t length = 1; length <= 4; ++length) {
     std::size_t words = 1;
@@ -59,11 +49,18 @@ bool some_short_lasso_satisfies(const Formula& f, const std::vector<std::string>
   return false;
 }
 
-std::string unsatisfiable_reason(const Formula& task, const Dfa& dfa) {
-  const std::string disjoint = "no run satisfies it: the robot is in at most one region at a time (the regions are disjoint)";
+std::string unsatisfiable_reason(const Formula& task, const Dfa& dfa, const Exclusivity& exclusivity) {
+  const bool objects = exclusivity.has_object_atoms();
+  const std::string disjoint = objects ? "no run satisfies it: the robot, and each body, is in at most one region at a "
+                                         "time (the regions are disjoint)"
+                                       : "no run satisfies it: the robot is in at most one region at a time (the "
+                                         "regions are disjoint)";
   if (dfa.acceptance == Acceptance::kGoodPrefix) return disjoint;
-  std::string why = disjoint + ", and a plan is a finite run after which the robot stops and stays in its last region forever";
-  if (some_short_lasso_satisfies(task, dfa.propositions)) {
+  std::string why = disjoint + (objects ? ", and a plan is a finite run after which the robot and the bodies stop and "
+                                          "stay where they are forever"
+                                        : ", and a plan is a finite run after which the robot stops and stays in its "
+                                          "last region forever");
+  if (some_short_lasso_satisfies(task, dfa.propositions, exclusivity)) {
     why += "; it is that reading which makes the task infeasible: a run that never stops could satisfy it";
   }
   return why;
@@ -76,21 +73,23 @@ std::string Analysis::infeasibility() const {
   return unsatisfiable.value_or("");
 }
 
-Analysis analyse(std::string_view text, std::span<const std::string> invalid) {
+Analysis analyse(std::string_view text, std::span<const std::string> invalid, std::span<const std::string> always_true) {
   const Formula input = parse(text);
   const Formula pnf = positive_normal_form(input);
-  Analysis a{input, pnf, classify(pnf), {invalid.begin(), invalid.end()}, {}, {}, {}, {}};
+  Analysis a{input, pnf, classify(pnf), {invalid.begin(), invalid.end()}, {always_true.begin(), always_true.end()},
+             {}, {}, {}, {}};
   std::optional<Formula> task = a.normal_form;
-  if (!invalid.empty()) {
-    a.by_lists = simplify_by_lists(a.normal_form, invalid);
-    a.semantic = simplify_semantically(a.normal_form, invalid);
+  if (!invalid.empty()) a.by_lists = simplify_by_lists(a.normal_form, invalid);
+  if (!invalid.empty() || !always_true.empty()) {
+    a.semantic = simplify_semantically(a.normal_form, invalid, always_true);
     task = a.semantic->formula;
   }
   if (!task) return a;
   a.task_class = classify(*task);
   Dfa dfa = translate(*task);
-  if (!accepts_some_exclusive_trace(dfa)) {
-    a.unsatisfiable = unsatisfiable_reason(*task, dfa);
+  const Exclusivity exclusivity(dfa.propositions);
+  if (!accepts_some_possible_trace(dfa, exclusivity)) {
+    a.unsatisfiable = unsatisfiable_reason(*task, dfa, exclusivity);
   } else {
     a.dfa = std::move(dfa);
   }
@@ -112,15 +111,17 @@ void write_summary(std::ostream& out, const Analysis& a) {
   out << "class:       " << class_name(a.task_class) << "\n";
   if (auto why = find_co_safety_violation(a.normal_form)) out << "not co-safe: " << why->message() << "\n";
   out << "semantics:   " << semantics_of(a.task_class) << "\n";
-  if (a.by_lists) {
-    std::string names;
-    for (const std::string& p : a.invalid) names += (names.empty() ? "" : ", ") + p;
-    out << "invalid:     " << names << "\n";
-    write_simplification(out, "paper:       ", *a.by_lists);
-    write_simplification(out, "semantic:    ", *a.semantic);
-    if (a.by_lists->feasible() != a.semantic->feasible())
-      out << "note:        the paper's list rule and the semantic one disagree; the planner uses the semantic one\n";
-  }
+  const auto names = [](const std::vector<std::string>& list) {
+    std::string joined;
+    for (const std::string& p : list) joined += (joined.empty() ? "" : ", ") + p;
+    return joined;
+  };
+  if (!a.invalid.empty()) out << "invalid:     " << names(a.invalid) << "\n";
+  if (!a.always_true.empty()) out << "always true: " << names(a.always_true) << "\n";
+  if (a.by_lists) write_simplification(out, "paper:       ", *a.by_lists);
+  if (a.semantic) write_simplification(out, "semantic:    ", *a.semantic);
+  if (a.by_lists && a.by_lists->feasible() != a.semantic->feasible())
+    out << "note:        the paper's list rule and the semantic one disagree; the planner uses the semantic one\n";
   if (a.unsatisfiable) out << "infeasible:  " << *a.unsatisfiable << "\n";
   if (!a.dfa) {
     out << "automaton:   none, the task is infeasible\n";

@@ -1,9 +1,12 @@
 #include "physltl/ltl/formula.h"
 
+#include "physltl/ltl/object_atom.h"
+
 #include <algorithm>
 #include <cctype>
 #include <ostream>
 #include <stdexcept>
+#include <string_view>
 #include <unordered_set>
 
 namespace physltl::ltl {
@@ -150,15 +153,21 @@ int precedence(Op op) {
   return 7;
 }
 
-// Names the parser reads back as the same atom without quotes: a lower-case start keeps them clear of
-// the operators U R W M and of Spot's rule that splits `GFa` into G(F(a)).
+bool is_word(std::string_view name) {
+  return !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_') &&
+         std::ranges::all_of(name, [](char c) {
+           unsigned char u = static_cast<unsigned char>(c);
+           return u < 0x80 && (std::isalnum(u) || c == '_');
+         });
+}
+
+// Names the parser reads back as the same atom without quotes: words with a lower-case start, clear of the
+// operators U R W M and of Spot's rule that splits `GFa` into G(F(a)); and BODY@REGION of two words, which
+// the parser reads whole before any splitting.
 bool is_plain_name(const std::string& name) {
+  if (const auto object = object_atom(name)) return is_word(object->body) && is_word(object->region);
   if (name == "true" || name == "false") return false;
-  if (!(std::islower(static_cast<unsigned char>(name[0])) || name[0] == '_')) return false;
-  return std::ranges::all_of(name, [](char c) {
-    unsigned char u = static_cast<unsigned char>(c);
-    return u < 0x80 && (std::isalnum(u) || c == '_');
-  });
+  return (std::islower(static_cast<unsigned char>(name[0])) || name[0] == '_') && is_word(name);
 }
 
 bool is_boolean_binary(Op op) {

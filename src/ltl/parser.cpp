@@ -122,6 +122,7 @@ class Lexer {
     std::string name(text_.substr(name_start, pos_ - name_start));
     advance(1);
     if (name.empty()) throw ParseError(column, "expected a name between the quotes");
+    check_object_atom(name, column);
     return Token{Tok::Atom, Op::Atom, std::move(name), text_.substr(start, pos_ - start), column};
   }
 
@@ -135,9 +136,32 @@ class Lexer {
                                  "' (quote it to use it as a name)");
   }
 
+  // A body and a region: "crate@dock" and `crate@dock` are the same atom.
+  static void check_object_atom(std::string_view name, std::uint32_t column) {
+    const std::size_t at = name.find('@');
+    if (at == std::string_view::npos) return;
+    if (at == 0) throw ParseError(column, "expected a body's name before '@' in '" + std::string(name) + "'");
+    if (at + 1 == name.size()) throw ParseError(column, "expected a region's name after '@' in '" + std::string(name) + "'");
+    if (name.find('@', at + 1) != std::string_view::npos)
+      throw ParseError(column, "an atom names one body and one region (BODY@REGION), but '" + std::string(name) +
+                                   "' holds '@' twice");
+  }
+
   std::vector<Token> word(std::uint32_t column) {
     const std::size_t start = pos_;
     while (pos_ < text_.size() && is_word_char(text_[pos_])) advance(1);
+    // BODY@REGION is one atom, read before any splitting: `Fridge@kitchen` is the fridge, not F(ridge@kitchen).
+    if (pos_ < text_.size() && text_[pos_] == '@') {
+      advance(1);
+      if (pos_ == text_.size() || !is_word_start(text_[pos_]))
+        throw ParseError(column_, "expected a region's name after '@', but found " +
+                                      (pos_ == text_.size() ? std::string("the end") : describe_here()));
+      while (pos_ < text_.size() && is_word_char(text_[pos_])) advance(1);
+      if (pos_ < text_.size() && text_[pos_] == '@')
+        throw ParseError(column_, "an atom names one body and one region (BODY@REGION), but this one holds '@' twice");
+      const std::string_view atom = text_.substr(start, pos_ - start);
+      return {Token{Tok::Atom, Op::Atom, std::string(atom), atom, column}};
+    }
     const std::string_view w = text_.substr(start, pos_ - start);
     if (auto t = keyword(w, column)) return {*t};
     // Spot's convention: `GFa` is G(F(a)) and `Xp1` is X(p1); the rest must start in lower case.

@@ -3,6 +3,7 @@
 #include "physltl/ltl/normal_form.h"
 
 #include <algorithm>
+#include <array>
 
 namespace physltl::ltl {
 
@@ -83,11 +84,16 @@ ListStep simplify_occurrence(const Formula& root, const std::vector<std::size_t>
   return {};
 }
 
-Formula substitute_false(const Formula& f, std::span<const std::string> invalid) {
-  if (f.op() == Op::Atom) return contains(invalid, f.name()) ? Formula::ff() : f;
+// `f` with false for the invalid propositions and true for those that always hold.
+Formula substitute_constants(const Formula& f, std::span<const std::string> invalid,
+                             std::span<const std::string> always_true) {
+  if (f.op() == Op::Atom) {
+    if (contains(invalid, f.name())) return Formula::ff();
+    return contains(always_true, f.name()) ? Formula::tt() : f;
+  }
   Formula out = f;
   for (std::size_t i = 0; i < f.children().size(); ++i) {
-    Formula c = substitute_false(f.child(i), invalid);
+    Formula c = substitute_constants(f.child(i), invalid, always_true);
     if (!(c == f.child(i))) out = with_child(out, i, std::move(c));
   }
   return out;
@@ -139,30 +145,42 @@ Simplification simplify_by_lists(const Formula& f, std::span<const std::string> 
   return {current, std::move(dropped), explanation};
 }
 
-Simplification simplify_semantically(const Formula& f, std::span<const std::string> invalid) {
+Simplification simplify_semantically(const Formula& f, std::span<const std::string> invalid,
+                                     std::span<const std::string> always_true) {
   const Formula pnf = positive_normal_form(f);
   const std::vector<std::string> bad = invalid_in(pnf, invalid);
-  if (bad.empty()) return {pnf, {}, "no invalid proposition occurs in the formula; nothing to simplify"};
+  const std::vector<std::string> constant = invalid_in(pnf, always_true);
+  if (bad.empty() && constant.empty()) return {pnf, {}, "no invalid proposition occurs in the formula; nothing to simplify"};
 
   std::string explanation;
-  for (const std::string& p : bad) {
+  // `verbs`: what becomes of its visits, and of one avoidance and of several.
+  const auto explain = [&](const std::string& p, const char* what, std::array<const char*, 3> verbs) {
     int visits = 0;
     int avoids = 0;
     count_uses(pnf, p, visits, avoids);
-    explanation += (explanation.empty() ? "" : "; ") + p + " is invalid, so false on every run";
-    if (visits > 0) explanation += ": its " + plural(visits, "visit") + " can never happen";
-    if (avoids > 0) explanation += std::string(visits > 0 ? " and" : ":") + " its " +
-                                   plural(avoids, "avoidance") + " always hold" + (avoids == 1 ? "s" : "");
+    explanation += (explanation.empty() ? "" : "; ") + p + what;
+    if (visits > 0) explanation += ": its " + plural(visits, "visit") + verbs[0];
+    if (avoids > 0) explanation += std::string(visits > 0 ? " and" : ":") + " its " + plural(avoids, "avoidance") +
+                                   verbs[avoids == 1 ? 1 : 2];
+  };
+  for (const std::string& p : bad) {
+    explain(p, " is invalid, so false on every run", {" can never happen", " always holds", " always hold"});
   }
-  const Formula result = positive_normal_form(substitute_false(pnf, bad));
+  for (const std::string& p : constant) {
+    explain(p, " always holds, so true on every run", {" always happen", " can never hold", " can never hold"});
+  }
+  const Formula result = positive_normal_form(substitute_constants(pnf, bad, constant));
+  std::vector<std::string> fixed = bad;
+  fixed.insert(fixed.end(), constant.begin(), constant.end());
   if (result.op() == Op::False) {
-    explanation += "; every way to satisfy the task needs " + join(bad) + ": infeasible";
+    explanation += constant.empty() ? "; every way to satisfy the task needs " + join(bad) + ": infeasible"
+                                    : "; no way to satisfy the task is left with " + join(fixed) + " as they are: infeasible";
     return {std::nullopt, dropped_from(pnf, std::nullopt), explanation};
   }
   std::vector<std::string> dropped = dropped_from(pnf, result);
   std::vector<std::string> collateral;
   for (const std::string& d : dropped)
-    if (!contains(bad, d)) collateral.push_back(d);
+    if (!contains(fixed, d)) collateral.push_back(d);
   if (!collateral.empty()) explanation += "; also gone, with the alternatives or constraints that involved an invalid proposition: " + join(collateral);
   explanation += "; result: " + to_string(result);
   return {result, std::move(dropped), explanation};

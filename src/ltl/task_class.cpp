@@ -52,8 +52,8 @@ const char* semantics_of(TaskClass task_class) {
   if (task_class == TaskClass::kCoSafe) {
     return "a plan satisfies it once every continuation would (the first good prefix)";
   }
-  return "a plan satisfies it when its run, with the robot then stopping and staying in its last region "
-         "forever, satisfies it";
+  return "a plan satisfies it when its run, with the robot (and every body) then stopping and staying where "
+         "it is forever, satisfies it";
 }
 
 }  // namespace physltl::ltl

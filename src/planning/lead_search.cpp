@@ -32,15 +32,15 @@ std::vector<int> LeadSearch::next(int start, int horizon) {
   frontier_work_ = 0;
   updates_since_whole_ = 1;
   prefix_.clear();
-  // The frontier: the automaton state of the last lead state that holds tree nodes.
+  // The frontier: the stage of the last lead state that holds tree nodes.
   int last = -1;
   for (int i = 0; i < static_cast<int>(lead.size()); ++i) {
     if (!graph_.motions(lead[static_cast<size_t>(i)]).empty()) last = i;
   }
   if (last < 0) return lead;
-  const int frontier = graph_.automaton_state_of(lead[static_cast<size_t>(last)]);
+  const int frontier = graph_.stage_of(lead[static_cast<size_t>(last)]);
   int entry = last;
-  while (entry > 0 && graph_.automaton_state_of(lead[static_cast<size_t>(entry - 1)]) == frontier) --entry;
+  while (entry > 0 && graph_.stage_of(lead[static_cast<size_t>(entry - 1)]) == frontier) --entry;
   prefix_.assign(lead.begin(), lead.begin() + entry + 1);
   return lead;
 }

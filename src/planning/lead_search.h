@@ -1,8 +1,8 @@
 #pragma once
 // The lead of Algorithm 3, kept up to date at a fraction of the cost of searching it from the start every
-// time. The lead runs through the stages the tree has done (automaton states it has left behind) and
-// then the frontier's. Only the frontier part changes much between two leads: the tree grows there. So
-// most updates search again only from where the lead enters the frontier's automaton state (to the
+// time. The lead runs through the stages the tree has done (stage_graph.h: the automaton states it has left
+// behind) and then the frontier's. Only the frontier part changes much between two leads: the tree grows
+// there. So most updates search again only from where the lead enters the frontier's stage (to the
 // current horizon, which may have moved on) and keep the part before it; every few updates the whole lead
 // is searched again, less often when that costs more than the updates in between.
 
@@ -22,7 +22,7 @@ class LeadSearch {
 
  private:
   ProductGraph& graph_;
-  // The last whole lead up to and including its first state in the frontier's automaton state.
+  // The last whole lead up to and including its first state in the frontier's stage.
   std::vector<int> prefix_;
   int horizon_ = -1;
   int updates_since_whole_ = 0;

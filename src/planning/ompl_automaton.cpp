@@ -16,7 +16,7 @@ std::vector<bool> dead_states(const TaskAutomaton& task, int regions) {
     changed = false;
     for (int q = 0; q < states; ++q) {
       for (int r = -1; r < regions && !alive[static_cast<std::size_t>(q)]; ++r) {
-        if (alive[static_cast<std::size_t>(task.step(q, r))]) alive[static_cast<std::size_t>(q)] = changed = true;
+        if (alive[static_cast<std::size_t>(task.step(q, task.labelling.letter(0, r)))]) alive[static_cast<std::size_t>(q)] = changed = true;
       }
     }
   }
@@ -34,7 +34,11 @@ ompl::control::World region_letter(int regions, int region) {
 }
 
 std::shared_ptr<ompl::control::Automaton> to_ompl_automaton(const TaskAutomaton& task) {
-  const auto regions = static_cast<unsigned>(task.proposition_of_region.size());
+  if (task.names_bodies()) {
+    throw std::invalid_argument("the task names where bodies must be; OMPL's product graph labels each triangle "
+                                "with one letter, the robot's region, and cannot follow them");
+  }
+  const auto regions = static_cast<unsigned>(task.labelling.regions());
   const auto states = static_cast<unsigned>(task.dfa.size());
   const std::vector<bool> dead = dead_states(task, static_cast<int>(regions));
   auto automaton = std::make_shared<ompl::control::Automaton>(regions, states);
@@ -42,8 +46,8 @@ std::shared_ptr<ompl::control::Automaton> to_ompl_automaton(const TaskAutomaton&
   for (unsigned q = 0; q < states; ++q) {
     automaton->setAccepting(q, task.dfa.accepting[q]);
     for (int r = -1; r < static_cast<int>(regions); ++r) {
-      const int next = task.step(static_cast<int>(q), r);
-      if (task.step(next, r) != next) {
+      const int next = task.step(static_cast<int>(q), task.labelling.letter(0, r));
+      if (task.step(next, task.labelling.letter(0, r)) != next) {
         throw std::invalid_argument("the task automaton changes state on reading the same region twice; "
                                     "OMPL's product graph cannot follow it");
       }

@@ -38,8 +38,7 @@ double shortest_free_path_length(const scenario::World& world, const TaskAutomat
   std::vector<double> cost(places.size() * static_cast<size_t>(states), std::numeric_limits<double>::infinity());
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-  const RegionMap region_map(world);
-  const int start = id(0, task.step(task.dfa.start, region_map.at(world.robot.start)));
+  const int start = id(0, task.start_state(scenario::EnvironmentState::initial(world)));
   cost[static_cast<size_t>(start)] = 0.0;
   open.push({0.0, start});
   while (!open.empty()) {
@@ -51,8 +50,14 @@ double shortest_free_path_length(const scenario::World& world, const TaskAutomat
     const auto relax = [&](int v, double length) {
       if (c + length < cost[static_cast<size_t>(v)]) cost[static_cast<size_t>(v)] = c + length, open.push({c + length, v});
     };
-    relax(id(place, task.step(q, -1)), 0.0);
-    for (int region = 0; region < regions; ++region) relax(id(region + 1, task.step(q, region)), leg[static_cast<size_t>(place)][static_cast<size_t>(region + 1)]);
+    // The bodies a task names may be anywhere at no cost: moving them takes the robot somewhere too, so
+    // this only makes the bound lower.
+    for (int facts = 0; facts < task.labelling.fact_sets(); ++facts) {
+      relax(id(place, task.step(q, task.labelling.letter(facts, -1))), 0.0);
+      for (int region = 0; region < regions; ++region) {
+        relax(id(region + 1, task.step(q, task.labelling.letter(facts, region))), leg[static_cast<size_t>(place)][static_cast<size_t>(region + 1)]);
+      }
+    }
   }
   return std::numeric_limits<double>::infinity();
 }

@@ -1,9 +1,11 @@
 #include "physltl/planning/planner.h"
 
 #include "lead_search.h"
+#include "object_lead.h"
 #include "ompl_planner.h"
 #include "product_graph.h"
 #include "random.h"
+#include "stage_graph.h"
 #include "tree_grower.h"
 #include "worker_pool.h"
 
@@ -45,10 +47,21 @@ constexpr int kFailuresBeforeDropped = 8;
 // changed most leads and cost 20 % more).
 constexpr int kLevelsAhead = 2;
 
-// Where to grow from and towards, and the seed of the grower's own generator.
+// Where a stage needs a body moved, the expansions go to the frontier stage's nodes whose body is nearest
+// its goal along its way (the best of a few drawn at random), and sometimes to any of them: the nearest
+// nodes are where the body is pushed on, the others keep a stuck body from holding the search. A node's
+// distance counts the robot's way to the body a little, and each time it was chosen already.
+constexpr double kObjectNearestShare = 0.8;
+constexpr int kObjectTournament = 4;
+constexpr double kObjectRobotWeight = 0.3;       // per metre between the robot and the body
+constexpr double kObjectSelectionPenalty = 0.2;  // metres per earlier choice of the node
+
+// Where to grow from and towards, and the seed of the grower's own generator. With an object goal, the
+// grower finds the target in the node's state (object_lead.h).
 struct Expansion {
   int from = 0;
   Vec2 target = Vec2::Zero();
+  std::optional<ObjectLead::Goal> goal;
   std::uint64_t seed = 0;
 };
 
@@ -92,36 +105,52 @@ class Search {
         options_(options),
         triangle_weights_(options.planner == PlannerKind::kKnowledge ? clearance_weights(decomposition, knowledge)
                                                                    : std::vector<double>{}),
-        graph_(decomposition, task, triangle_weights_),
+        stages_(task),
+        graph_(decomposition, stages_, triangle_weights_),
         lead_search_(graph_),
+        object_lead_(world, knowledge, decomposition),
         random_(options.seed),
         pool_(options.threads),
-        growers_(static_cast<size_t>(pool_.threads())) {}
+        growers_(static_cast<size_t>(pool_.threads())),
+        stage_motions_(static_cast<size_t>(stages_.stages())) {}
 
   PlanResult run() {
     const auto started = std::chrono::steady_clock::now();
     PlanResult result;
     add_root();
-    const int root_product = motions_[0].product_state;
-    if (task_.dfa.accepting[motions_[0].automaton_state]) {
+    if (accepting(motions_[0].stage)) {
       finish(result, 0, started, "solved");
       return result;
     }
-    std::vector<int> lead = lead_search_.next(root_product, horizon());
+    int lead_start = segment_start_;
+    std::vector<int> lead = lead_search_.next(product_of(lead_start), horizon());
     while (true) {
-      if (lead.empty()) {
+      // Where the frontier's next move is a body's, the object lead guides the expansions; else the lead
+      // through the decomposition, from the first node after the last body the tree moved for the task.
+      const std::optional<BodyMove> body_move = stages_.body_move(frontier_stage_);
+      if (!body_move && lead_start != segment_start_) {
+        lead_start = segment_start_;
+        lead = lead_search_.next(product_of(lead_start), horizon());
+      }
+      if (!body_move && lead.empty()) {
         finish(result, -1, started, "no lead");
         return result;
       }
       std::vector<int> next_lead;
       for (int batch = 0; batch < kBatchesPerLead; ++batch) {
-        // Again for every batch: the last one may have added nodes to the lead or dropped some.
-        collect_available(lead);
-        choose_expansions(lead);
+        if (body_move) {
+          choose_object_expansions(*body_move);
+        } else {
+          // Again for every batch: the last one may have added nodes to the lead or dropped some.
+          collect_available(lead);
+          choose_expansions(lead);
+        }
         // The next lead is computed while the last batch grows: the tree stands still meanwhile, and on a
         // large world the lead search costs as much as a batch.
         if (batch + 1 == kBatchesPerLead) {
-          grow_in_parallel([&, horizon = horizon()] { next_lead = lead_search_.next(root_product, horizon); });
+          grow_in_parallel([&, horizon = horizon(), start = product_of(lead_start)] {
+            next_lead = lead_search_.next(start, horizon);
+          });
         } else {
           grow_in_parallel(nullptr);
         }
@@ -149,22 +178,40 @@ class Search {
     return nullptr;
   }
 
-  // How far the lead looks: a few automaton steps beyond the furthest the tree has got.
+  // How far the lead looks: a few stages beyond the furthest the tree has got.
   int horizon() const { return std::max(0, closest_to_accept_ - kLevelsAhead); }
+  bool accepting(int stage) const { return task_.dfa.accepting[static_cast<size_t>(stages_.automaton_state_of(stage))]; }
+  int product_of(int motion) const { return motions_[static_cast<size_t>(motion)].product_state; }
 
   void add_root() {
     physics::Simulation simulation(world_);
-    const RegionMap regions(world_);
     Motion root;
     simulation.save(root.state);
     root.robot = world_.robot.start;
-    // The start is labelled with its region too (OMPL's LTLPlanner forgets this).
-    root.automaton_state = task_.step(task_.dfa.start, regions.at(root.robot));
-    root.product_state = graph_.id(decomposition_.locate(root.robot), root.automaton_state);
-    closest_to_accept_ = graph_.distance_to_accept(root.automaton_state);
-    motions_.push_back(std::move(root));
+    // The start is labelled with its letter too (OMPL's LTLPlanner forgets this).
+    const int letter = task_.labelling.letter(scenario::EnvironmentState::initial(world_));
+    root.stage = stages_.stage(task_.step(task_.dfa.start, letter), task_.labelling.facts_of(letter));
+    root.product_state = graph_.id(decomposition_.locate(root.robot), root.stage);
+    closest_to_accept_ = stages_.distance(root.stage);
+    frontier_stage_ = root.stage;
+    add_motion(std::move(root));
+  }
+
+  // Adds a node to the tree and its book-keeping.
+  void add_motion(Motion motion) {
+    const int index = static_cast<int>(motions_.size());
+    graph_.add_motion(motion.product_state, index);
+    stage_motions_[static_cast<size_t>(motion.stage)].push_back(index);
+    const int distance = stages_.distance(motion.stage);
+    if (distance >= 0 && distance < closest_to_accept_) {
+      // Out of a stage where a body had to move: the robot's part of the task starts again from here.
+      if (stages_.body_move(frontier_stage_)) segment_start_ = index;
+      closest_to_accept_ = distance;
+      frontier_stage_ = motion.stage;
+    }
+    motions_.push_back(std::move(motion));
     failed_starts_.push_back(0);
-    graph_.add_motion(motions_[0].product_state, 0);
+    chosen_.push_back(0);
   }
 
   // Lead states that already hold tree nodes, with their weights, for sampling where to grow.
@@ -174,11 +221,11 @@ class Search {
     available_.clear();
     cumulative_.clear();
     double total = 0.0;
-    int frontier_automaton_state = -1;
+    int frontier = -1;  // the stage of the frontier
     for (size_t i = 0; i < lead.size(); ++i) {
       if (graph_.motions(lead[i]).empty()) continue;
-      const int q = graph_.automaton_state_of(lead[i]);
-      if (q != frontier_automaton_state) frontier_automaton_state = q, frontier_weight_ = total;
+      const int q = graph_.stage_of(lead[i]);
+      if (q != frontier) frontier = q, frontier_weight_ = total;
       total += graph_.weight(lead[i]);
       available_.push_back(static_cast<int>(i));
       cumulative_.push_back(total);
@@ -206,6 +253,40 @@ class Search {
           std::min<int>(lead_index + random_.uniform_int(1, kMaxStepsAhead), static_cast<int>(lead.size()) - 1);
       const double u = random_.uniform01(), v = random_.uniform01();
       e.target = decomposition_.triangles()[graph_.triangle_of(lead[ahead])].point_at(u, v);
+      e.goal.reset();
+      e.seed = random_.next();
+    }
+  }
+
+  // The object lead's expansions, kBatch of them, for moving a body of the frontier stage.
+  void choose_object_expansions(const BodyMove& move) {
+    const ObjectLead::Goal goal = object_lead_.goal(task_.labelling, move);
+    const std::vector<int>& nodes = stage_motions_[static_cast<size_t>(frontier_stage_)];
+    const auto body_at = [&](int m) {
+      const physics::PhysicsState& state = motions_[static_cast<size_t>(m)].state;
+      const auto b = static_cast<size_t>(goal.body) + 1;  // the robot is body 0
+      return Vec2(state.value(b, 0), state.value(b, 1));
+    };
+    const auto distance = [&](int m) {
+      return ObjectLead::remaining(goal, body_at(m)) +
+             kObjectRobotWeight * (motions_[static_cast<size_t>(m)].robot - body_at(m)).norm() +
+             kObjectSelectionPenalty * chosen_[static_cast<size_t>(m)];
+    };
+    const auto any_node = [&] { return nodes[static_cast<size_t>(random_.uniform_int(0, static_cast<int>(nodes.size()) - 1))]; };
+    expansions_.resize(kBatch);
+    for (Expansion& e : expansions_) {
+      int from = any_node();
+      if (random_.chance(kObjectNearestShare)) {
+        for (int i = 1; i < kObjectTournament; ++i) {
+          const int other = any_node();
+          if (distance(other) < distance(from)) from = other;
+        }
+      }
+      ++chosen_[static_cast<size_t>(from)];
+      e.from = from;
+      const std::optional<Vec2> approach = object_lead_.approach(motions_[static_cast<size_t>(from)].robot, body_at(from));
+      e.target = approach.value_or(Vec2::Zero());
+      e.goal = approach ? std::nullopt : std::optional<ObjectLead::Goal>(goal);
       e.seed = random_.next();
     }
   }
@@ -219,9 +300,13 @@ class Search {
       if (task < extra) return alongside();
       // Built on the thread that uses it: ODE keeps per-thread data.
       auto& grower = growers_[static_cast<size_t>(worker)];
-      if (!grower) grower.emplace(world_, task_, knowledge_, decomposition_, graph_, options_.planner == PlannerKind::kKnowledge);
+      if (!grower) {
+        grower.emplace(world_, task_, stages_, knowledge_, decomposition_, graph_, object_lead_,
+                       options_.planner == PlannerKind::kKnowledge);
+      }
       const Expansion& e = expansions_[static_cast<size_t>(task - extra)];
-      grower->grow(motions_[static_cast<size_t>(e.from)], e.target, e.seed, growths_[static_cast<size_t>(task - extra)]);
+      grower->grow(motions_[static_cast<size_t>(e.from)], e.target, e.goal ? &*e.goal : nullptr, e.seed,
+                   growths_[static_cast<size_t>(task - extra)]);
     });
   }
 
@@ -237,14 +322,10 @@ class Search {
       if (!growth.motion) continue;
       const int index = static_cast<int>(motions_.size());
       growth.motion->parent = expansions_[i].from;
-      graph_.add_motion(growth.motion->product_state, index);
-      closest_to_accept_ = std::min(closest_to_accept_, graph_.distance_to_accept(growth.motion->automaton_state));
-      motions_.push_back(std::move(*growth.motion));
-      failed_starts_.push_back(0);
+      add_motion(std::move(*growth.motion));
       if (growth.accepted && growth.braking) {
         growth.braking->parent = index;
-        motions_.push_back(std::move(*growth.braking));
-        failed_starts_.push_back(0);
+        add_motion(std::move(*growth.braking));
         return index + 1;
       }
       if (growth.accepted) return index;
@@ -275,7 +356,7 @@ class Search {
     std::reverse(result.plan.states.begin(), result.plan.states.end());
     result.tree.reserve(motions_.size());
     for (size_t m = 1; m < motions_.size(); ++m) {
-      result.tree.push_back({motions_[motions_[m].parent].robot, motions_[m].robot, motions_[m].automaton_state});
+      result.tree.push_back({motions_[motions_[m].parent].robot, motions_[m].robot, stages_.automaton_state_of(motions_[m].stage)});
     }
     stats_.tree_nodes = static_cast<long long>(motions_.size());
     stats_.planning_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -288,12 +369,17 @@ class Search {
   const decomposition::Decomposition& decomposition_;
   const PlannerOptions& options_;
   const std::vector<double> triangle_weights_;  // the knowledge planner's: the lead goes round boxes
+  const StageGraph stages_;
   ProductGraph graph_;
   LeadSearch lead_search_;
+  ObjectLead object_lead_;
   Random random_;
   std::vector<Motion> motions_;
-  int closest_to_accept_ = 0;             // fewest automaton steps to acceptance from any node
+  int closest_to_accept_ = 0;             // fewest stage moves to acceptance from any node
+  int frontier_stage_ = 0;                // the stage of the first node that got that close
+  int segment_start_ = 0;                 // where the lead starts: the root, or the first node after a body move
   std::vector<int> failed_starts_;        // per motion: expansions in a row that failed at once
+  std::vector<int> chosen_;               // per motion: times the object lead grew from it
   std::vector<int> available_;         // indices into the current lead
   std::vector<double> cumulative_;     // running sums of their weights
   double frontier_weight_ = 0.0;       // the running sum where the frontier starts
@@ -302,6 +388,7 @@ class Search {
   PlannerStats stats_;
   WorkerPool pool_;
   std::vector<std::optional<TreeGrower>> growers_;  // one per worker
+  std::vector<std::vector<int>> stage_motions_;     // per stage, its nodes
 };
 
 }  // namespace
@@ -346,7 +433,13 @@ const std::vector<PlannerKind>& all_planners() {
 bool is_ompl(PlannerKind planner) { return planner != PlannerKind::kKnowledge && planner != PlannerKind::kBaseline; }
 
 std::optional<std::string> refusal(PlannerKind planner, const TaskAutomaton& task) {
-  if (!is_ompl(planner) || !task.ends_at_rest()) return std::nullopt;
+  if (!is_ompl(planner)) return std::nullopt;
+  if (task.names_bodies()) {
+    return std::string(planner_name(planner)) + " cannot take tasks about where bodies are (BODY@REGION): OMPL's " +
+           "product graph labels each triangle of the decomposition with one letter, the robot's region, so its " +
+           "automaton never reads a body's place: plan it with knowledge or baseline";
+  }
+  if (!task.ends_at_rest()) return std::nullopt;
   return std::string(planner_name(planner)) + " plans co-safe tasks only (OMPL's product graph takes co-safe tasks, " +
          "and co-safe with safety, satisfied by a finite run), but this task is satisfied only by a plan that ends at " +
          "rest: plan it with knowledge or baseline";

@@ -3,46 +3,14 @@
 #include <algorithm>
 #include <limits>
 #include <functional>
-#include <queue>
 
 namespace physltl::planning {
-namespace {
 
-// Automaton steps to acceptance. The robot is in at most one region at a time, so the letters that occur
-// are "no region" and each single region proposition.
-std::vector<int> distances_to_accept(const TaskAutomaton& task) {
-  const auto& dfa = task.dfa;
-  const int n = static_cast<int>(dfa.size());
-  std::vector<std::vector<int>> predecessors(n);
-  for (int q = 0; q < n; ++q) {
-    predecessors[dfa.step(q, {})].push_back(q);
-    for (int p = 0; p < static_cast<int>(dfa.propositions.size()); ++p) {
-      predecessors[dfa.step(q, std::span<const int>(&p, 1))].push_back(q);
-    }
-  }
-  std::vector<int> distance(n, -1);
-  std::queue<int> todo;
-  for (int q = 0; q < n; ++q) {
-    if (dfa.accepting[q]) distance[q] = 0, todo.push(q);
-  }
-  while (!todo.empty()) {
-    const int q = todo.front();
-    todo.pop();
-    for (int p : predecessors[q]) {
-      if (distance[p] < 0) distance[p] = distance[q] + 1, todo.push(p);
-    }
-  }
-  return distance;
-}
-
-}  // namespace
-
-ProductGraph::ProductGraph(const decomposition::Decomposition& decomposition, const TaskAutomaton& task,
+ProductGraph::ProductGraph(const decomposition::Decomposition& decomposition, const StageGraph& stages,
                            std::span<const double> triangle_weight)
-    : task_(task),
-      automaton_states_(static_cast<int>(task.dfa.size())),
-      distance_to_accept_(distances_to_accept(task)),
-      motions_(static_cast<size_t>(decomposition.size()) * automaton_states_),
+    : stages_(stages),
+      stages_count_(stages.stages()),
+      motions_(static_cast<size_t>(decomposition.size()) * stages_count_),
       selections_(motions_.size(), 0) {
   for (const auto& triangle : decomposition.triangles()) {
     first_neighbour_.push_back(static_cast<int>(neighbours_.size()));
@@ -53,7 +21,7 @@ ProductGraph::ProductGraph(const decomposition::Decomposition& decomposition, co
   for (size_t id = 0; id < motions_.size(); ++id) {
     const int i = static_cast<int>(id);
     // Zero for states from which acceptance is out of reach: the lead never enters them.
-    const int distance = distance_to_accept_[automaton_state_of(i)];
+    const int distance = stages_.distance(stage_of(i));
     volume_per_distance_[id] = distance < 0 ? 0.0 : decomposition.triangles()[triangle_of(i)].area / (distance + 1.0);
   }
   lead_scale_.assign(decomposition.size(), 1.0);
@@ -105,16 +73,17 @@ std::vector<int> ProductGraph::lead(int start, int horizon) {
     open.pop_back();
     if (c > cost[u]) continue;
     ++lead_work_;
-    const int q = automaton_state_of(u);
-    if (!dead(q) && distance_to_accept_[q] <= horizon) {
+    const int stage = stage_of(u);
+    const int distance = stages_.distance(stage);
+    if (distance >= 0 && (distance <= horizon || stages_.body_move(stage))) {
       goal = u;
       break;
     }
     const int triangle = triangle_of(u);
     for (int n = first_neighbour_[triangle]; n < first_neighbour_[triangle + 1]; ++n) {
-      const int next_q = task_.step(q, neighbours_[n].region);
-      if (dead(next_q)) continue;
-      const int v = id(neighbours_[n].triangle, next_q);
+      const int next = stages_.after_robot(stage, neighbours_[n].region);
+      if (stages_.distance(next) < 0) continue;
+      const int v = id(neighbours_[n].triangle, next);
       const double next_cost = c + entry_cost_[v];
       if (!reached(v) || next_cost < cost[v]) {
         lead_stamps_[static_cast<size_t>(v)] = lead_stamp_;

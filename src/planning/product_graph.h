@@ -1,9 +1,11 @@
 #pragma once
-// The high level of the planner: states (triangle, automaton state), their exploration statistics, and
-// the lead: the cheapest product path from the start to acceptance under the current weights.
+// The high level of the planner: states (triangle, stage), their exploration statistics, and the lead:
+// the cheapest product path from a start to acceptance, or to a stage where a body must move first,
+// under the current weights. A stage is an automaton state with the places of the bodies the task names
+// (stage_graph.h); for a task about the robot alone, the automaton state.
 
 #include "physltl/decomposition/decomposition.h"
-#include "physltl/planning/task.h"
+#include "stage_graph.h"
 
 #include <span>
 #include <utility>
@@ -15,15 +17,12 @@ class ProductGraph {
  public:
   // `triangle_weight`, when given, scales each triangle's weight in the lead search only (1: as Bhatia et
   // al.; less: the lead avoids it); where to grow keeps the plain weights.
-  ProductGraph(const decomposition::Decomposition& decomposition, const TaskAutomaton& task,
+  ProductGraph(const decomposition::Decomposition& decomposition, const StageGraph& stages,
                std::span<const double> triangle_weight = {});
 
-  int id(int triangle, int automaton_state) const { return triangle * automaton_states_ + automaton_state; }
-  int triangle_of(int id) const { return id / automaton_states_; }
-  int automaton_state_of(int id) const { return id % automaton_states_; }
-  bool accepting(int id) const { return task_.dfa.accepting[automaton_state_of(id)]; }
-  // No accepting state can follow: trees never grow there.
-  bool dead(int automaton_state) const { return distance_to_accept_[automaton_state] < 0; }
+  int id(int triangle, int stage) const { return triangle * stages_count_ + stage; }
+  int triangle_of(int id) const { return id / stages_count_; }
+  int stage_of(int id) const { return id % stages_count_; }
 
   // Book-keeping the weights depend on (Bhatia et al. 2010, as in OMPL's LTLPlanner).
   void add_motion(int id, int motion);
@@ -35,19 +34,15 @@ class ProductGraph {
     return (static_cast<double>(motions_[id].size()) + 1.0) * volume_per_distance_[id] / (selected * selected);
   }
 
-  // Automaton steps from the state to acceptance, over letters with at most one region; -1 never.
-  int distance_to_accept(int automaton_state) const { return distance_to_accept_[automaton_state]; }
-
-  // Product states from `start` to the first one whose automaton state is at most `horizon` steps from
-  // acceptance (0: an accepting one), cheapest under 1/weight; empty if none.
+  // Product states from `start` to the first one whose stage is at most `horizon` moves from acceptance
+  // (0: an accepting one) or needs a body moved first, cheapest under 1/weight; empty if none.
   std::vector<int> lead(int start, int horizon = 0);
   // Product states settled by every lead search so far: their cost, which grows with the world.
   long long lead_work() const { return lead_work_; }
 
  private:
-  const TaskAutomaton& task_;
-  int automaton_states_;
-  std::vector<int> distance_to_accept_;  // automaton steps, over letters with at most one region; -1 never
+  const StageGraph& stages_;
+  int stages_count_;
   // The lead search's view of the decomposition, flat: for each triangle its neighbours and their regions.
   struct Neighbour {
     int triangle;
@@ -55,7 +50,7 @@ class ProductGraph {
   };
   std::vector<int> first_neighbour_;  // per triangle, into neighbours_; one more entry at the end
   std::vector<Neighbour> neighbours_;
-  // The weight's constant part: triangle area over (automaton steps to acceptance + 1).
+  // The weight's constant part: triangle area over (the stage's moves to acceptance + 1).
   std::vector<double> volume_per_distance_;
   std::vector<std::vector<int>> motions_;
   std::vector<int> selections_;

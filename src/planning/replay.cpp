@@ -45,12 +45,14 @@ Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomato
               const ReplayedPrefix* prefix) {
   Replay r;
   physics::Simulation simulation(world);
-  const RegionMap regions(world);
+  const Labelling& labelling = formula.labelling;
   std::vector<scenario::RobotContact> contacts;
   auto record = [&](int automaton_state, bool pushing) {
     r.states.push_back(simulation.environment());
-    r.region_trace.push_back(regions.at(r.states.back().robot_position));
-    r.automaton_trace.push_back(formula.step(automaton_state, r.region_trace.back()));
+    const int letter = labelling.letter(r.states.back());
+    r.region_trace.push_back(labelling.robot_region_of(letter));
+    r.facts_trace.push_back(labelling.facts_of(letter));
+    r.automaton_trace.push_back(formula.step(automaton_state, letter));
     r.pushing.push_back(pushing);
   };
   auto fail = [&](bool& check, std::string why) {
@@ -77,6 +79,7 @@ Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomato
     const auto end = static_cast<std::ptrdiff_t>(steps) + 1;
     r.states.assign(done.states.begin(), done.states.begin() + end);
     r.region_trace.assign(done.region_trace.begin(), done.region_trace.begin() + end);
+    r.facts_trace.assign(done.facts_trace.begin(), done.facts_trace.begin() + end);
     r.automaton_trace.assign(done.automaton_trace.begin(), done.automaton_trace.begin() + end);
     r.pushing.assign(done.pushing.begin(), done.pushing.begin() + end);
     for (size_t i = 1; i < r.states.size(); ++i) r.peak_speed = std::max(r.peak_speed, r.states[i].robot_velocity.norm());
@@ -121,13 +124,17 @@ Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomato
   }
   std::vector<std::vector<std::string>> letters;
   letters.reserve(r.region_trace.size());
-  for (int region : r.region_trace) {
-    letters.push_back(region < 0 ? std::vector<std::string>{} : std::vector<std::string>{world.regions[region].name});
+  for (size_t i = 0; i < r.region_trace.size(); ++i) {
+    letters.push_back(labelling.object_facts(r.facts_trace[i]));
+    if (r.region_trace[i] >= 0) letters.back().push_back(world.regions[static_cast<size_t>(r.region_trace[i])].name);
   }
   const bool good_prefix = formula.dfa.acceptance == ltl::Acceptance::kGoodPrefix;
   r.accepted = ltl::holds_when_staying(formula.formula, letters) &&
                (!good_prefix || formula.dfa.accepting[r.automaton_trace.back()]);
-  if (!r.accepted && r.failure.empty()) r.failure = "the region trace does not satisfy the formula";
+  if (!r.accepted && r.failure.empty()) {
+    r.failure = labelling.named_bodies().empty() ? "the region trace does not satisfy the formula"
+                                                 : "the trace of regions and body facts does not satisfy the formula";
+  }
   r.ends_at_rest = !formula.ends_at_rest() || r.states.back().at_rest();
   for (size_t b = 0; b < world.movable_bodies.size(); ++b) {
     if (moved(r.states.front().movable_poses[b], r.states.back().movable_poses[b])) r.moved_bodies.push_back(static_cast<int>(b));

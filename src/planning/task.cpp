@@ -2,40 +2,37 @@
 
 #include "physltl/ltl/translate.h"
 
+#include <stdexcept>
+#include <string>
+
 namespace physltl::planning {
+namespace {
+
+// 64 MiB of table: far beyond any task a person writes (a 64-room tour has 65 letters and 65 states).
+constexpr std::size_t kMaxTableEntries = std::size_t{1} << 24;
+
+}  // namespace
 
 TaskAutomaton TaskAutomaton::make(const ltl::Formula& formula, const scenario::World& world) {
   return make(formula, ltl::translate(formula), world);
 }
 
 TaskAutomaton TaskAutomaton::make(const ltl::Formula& formula, const ltl::Dfa& dfa, const scenario::World& world) {
-  TaskAutomaton task{formula, dfa, {}, {}};
-  for (const auto& region : world.regions) task.proposition_of_region.push_back(dfa.proposition_index(region.name));
-  const int letters = static_cast<int>(world.regions.size()) + 1;
-  task.successors.resize(dfa.size() * static_cast<size_t>(letters));
-  for (int state = 0; state < static_cast<int>(dfa.size()); ++state) {
-    for (int region = -1; region + 1 < letters; ++region) {
-      const int proposition = region < 0 ? -1 : task.proposition_of_region[region];
-      task.successors[state * letters + region + 1] =
-          proposition < 0 ? dfa.step(state, {}) : dfa.step(state, std::span<const int>(&proposition, 1));
+  TaskAutomaton task{formula, dfa, Labelling(world, dfa), {}};
+  const auto letters = static_cast<std::size_t>(task.labelling.letters());
+  if (dfa.size() * letters > kMaxTableEntries) {
+    throw std::invalid_argument("the task's automaton has " + std::to_string(dfa.size()) + " states over " +
+                                std::to_string(letters) + " letters (the robot's regions times where the bodies it " +
+                                "names can be): more than the planner tabulates; name fewer bodies or regions");
+  }
+  task.successors.resize(dfa.size() * letters);
+  for (std::size_t state = 0; state < dfa.size(); ++state) {
+    for (std::size_t letter = 0; letter < letters; ++letter) {
+      const std::vector<int> props = task.labelling.true_propositions(static_cast<int>(letter));
+      task.successors[state * letters + letter] = dfa.step(static_cast<int>(state), props);
     }
   }
   return task;
-}
-
-int TaskAutomaton::step(int state, int region) const {
-  return successors[state * (proposition_of_region.size() + 1) + region + 1];
-}
-
-RegionMap::RegionMap(const scenario::World& world) : world_(world) {
-  for (const auto& region : world.regions) bounds_.push_back(region.polygon.bounds());
-}
-
-int RegionMap::at(const scenario::Vec2& p) const {
-  for (size_t i = 0; i < bounds_.size(); ++i) {
-    if (bounds_[i].contains(p) && world_.regions[i].polygon.contains(p)) return static_cast<int>(i);
-  }
-  return -1;
 }
 
 }  // namespace physltl::planning

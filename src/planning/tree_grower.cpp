@@ -13,22 +13,32 @@ constexpr double kMaxBrakingTime = 3.0;  // s
 
 }  // namespace
 
-TreeGrower::TreeGrower(const scenario::World& world, const TaskAutomaton& task,
+TreeGrower::TreeGrower(const scenario::World& world, const TaskAutomaton& task, const StageGraph& stages,
                        const knowledge::AbstractKnowledge& knowledge, const decomposition::Decomposition& decomposition,
-                       const ProductGraph& graph, bool use_knowledge)
+                       const ProductGraph& graph, const ObjectLead& object_lead, bool use_knowledge)
     : task_(task),
+      stages_(stages),
       decomposition_(decomposition),
       graph_(graph),
+      object_lead_(object_lead),
       sampler_(world, knowledge, use_knowledge),
       max_braking_steps_(static_cast<int>(std::ceil(kMaxBrakingTime / world.planner.step_size))),
-      regions_(world),
       simulation_(world, knowledge, use_knowledge ? knowledge::ValidityMode::kKnowledge : knowledge::ValidityMode::kBaseline) {}
 
-void TreeGrower::grow(const Motion& from, const Vec2& target, std::uint64_t seed, Growth& growth) {
+void TreeGrower::grow(const Motion& from, const Vec2& target, const ObjectLead::Goal* goal, std::uint64_t seed,
+                      Growth& growth) {
   growth = Growth{};
   Random random(seed);
   simulation_.restore(from.state);
-  propagate(sampler_.sample(simulation_.environment(), simulation_.kappa(), target, random), from.automaton_state, growth);
+  const scenario::EnvironmentState& state = simulation_.environment();
+  const Vec2 aim = goal != nullptr ? object_lead_.target(*goal, state, simulation_.kappa(), random) : target;
+  propagate(sampler_.sample(state, simulation_.kappa(), aim, random), from.stage, growth);
+}
+
+int TreeGrower::stage_after_step(int stage) const {
+  const int letter = task_.labelling.letter(simulation_.environment());
+  const int next = stages_.after_letter(stage, letter);
+  return stages_.dead(stages_.automaton_state_of(next)) ? -1 : next;
 }
 
 bool TreeGrower::valid_step(const Vec2& setpoint, Growth& growth) {
@@ -38,49 +48,49 @@ bool TreeGrower::valid_step(const Vec2& setpoint, Growth& growth) {
   return false;
 }
 
-void TreeGrower::propagate(const Control& control, int automaton_state, Growth& growth) {
+void TreeGrower::propagate(const Control& control, int stage, Growth& growth) {
   int valid_steps = 0;
   bool accepted = false;
   for (int step = 1; step <= control.steps; ++step) {
     if (!valid_step(control.setpoint, growth)) break;
-    const int next = task_.step(automaton_state, regions_.at(simulation_.environment().robot_position));
-    if (graph_.dead(next)) break;
-    automaton_state = next;
+    const int next = stage_after_step(stage);
+    if (next < 0) break;
+    stage = next;
     valid_steps = step;
     simulation_.save(last_valid_);
-    if (task_.dfa.accepting[automaton_state]) {
+    if (accepting(stage)) {
       accepted = true;
       break;
     }
   }
   if (valid_steps == 0) return;
-  growth.motion = make_motion({control.setpoint, valid_steps}, automaton_state);
+  growth.motion = make_motion({control.setpoint, valid_steps}, stage);
   // The simulation stands at the motion's end unless a later step failed; braking starts from there.
-  growth.accepted = accepted && (!task_.ends_at_rest() || brake(automaton_state, growth));
+  growth.accepted = accepted && (!task_.ends_at_rest() || brake(stage, growth));
 }
 
-bool TreeGrower::brake(int automaton_state, Growth& growth) {
+bool TreeGrower::brake(int stage, Growth& growth) {
   const Vec2 stop = Vec2::Zero();
   for (int step = 1; step <= max_braking_steps_; ++step) {
     if (!valid_step(stop, growth)) return false;
-    automaton_state = task_.step(automaton_state, regions_.at(simulation_.environment().robot_position));
-    if (graph_.dead(automaton_state)) return false;
+    stage = stage_after_step(stage);
+    if (stage < 0) return false;
     if (!simulation_.environment().at_rest()) continue;
-    if (!task_.dfa.accepting[automaton_state]) return false;
+    if (!accepting(stage)) return false;
     simulation_.save(last_valid_);
-    growth.braking = make_motion({stop, step}, automaton_state);
+    growth.braking = make_motion({stop, step}, stage);
     return true;
   }
   return false;
 }
 
-Motion TreeGrower::make_motion(const Control& control, int automaton_state) const {
+Motion TreeGrower::make_motion(const Control& control, int stage) const {
   Motion motion;
   motion.state = last_valid_;
   motion.robot = last_valid_.robot_position();
   motion.control = control;
-  motion.automaton_state = automaton_state;
-  motion.product_state = graph_.id(decomposition_.locate(motion.robot), automaton_state);
+  motion.stage = stage;
+  motion.product_state = graph_.id(decomposition_.locate(motion.robot), stage);
   return motion;
 }
 

@@ -11,8 +11,10 @@
 #include "physltl/knowledge/abstract_knowledge.h"
 #include "physltl/knowledge/validity.h"
 #include "physltl/physics/simulation.h"
+#include "object_lead.h"
 #include "physltl/planning/task.h"
 #include "product_graph.h"
+#include "stage_graph.h"
 
 #include <cstdint>
 #include <optional>
@@ -26,7 +28,7 @@ struct Motion {
   Vec2 robot = Vec2::Zero();
   int parent = -1;
   Control control;
-  int automaton_state = 0;
+  int stage = 0;  // the automaton's state and the named bodies' places (stage_graph.h)
   int product_state = 0;
 };
 
@@ -44,30 +46,36 @@ struct Growth {
 
 class TreeGrower {
  public:
-  TreeGrower(const scenario::World& world, const TaskAutomaton& task, const knowledge::AbstractKnowledge& knowledge,
-             const decomposition::Decomposition& decomposition, const ProductGraph& graph, bool use_knowledge);
+  TreeGrower(const scenario::World& world, const TaskAutomaton& task, const StageGraph& stages,
+             const knowledge::AbstractKnowledge& knowledge, const decomposition::Decomposition& decomposition,
+             const ProductGraph& graph, const ObjectLead& object_lead, bool use_knowledge);
 
   // Replaces `growth` with what grows from `from` towards `target`, drawing from a generator seeded with
-  // `seed`.
-  void grow(const Motion& from, const Vec2& target, std::uint64_t seed, Growth& growth);
+  // `seed`. With an object goal the target is where that goal's body move needs the robot (object_lead.h),
+  // found in `from`'s state.
+  void grow(const Motion& from, const Vec2& target, const ObjectLead::Goal* goal, std::uint64_t seed, Growth& growth);
 
  private:
   // Applies `control` from the simulation's current state until the end, an invalid step, a dead
   // automaton state or acceptance; the valid steps make the growth's motion.
-  void propagate(const Control& control, int automaton_state, Growth& growth);
+  void propagate(const Control& control, int stage, Growth& growth);
   // From an accepting motion's end: the drive's set-point zero until the robot and the boxes are at rest,
   // every step valid and the automaton still accepting at the end. Whether that worked.
-  bool brake(int automaton_state, Growth& growth);
+  bool brake(int stage, Growth& growth);
   // One valid step under `control`, then INFERENCE; false when the step was invalid.
   bool valid_step(const Vec2& setpoint, Growth& growth);
-  Motion make_motion(const Control& control, int automaton_state) const;
+  // The stage after the physics step just taken, from `stage`; -1 when the automaton died.
+  int stage_after_step(int stage) const;
+  bool accepting(int stage) const { return task_.dfa.accepting[static_cast<std::size_t>(stages_.automaton_state_of(stage))]; }
+  Motion make_motion(const Control& control, int stage) const;
 
   const TaskAutomaton& task_;
+  const StageGraph& stages_;
   const decomposition::Decomposition& decomposition_;
   const ProductGraph& graph_;
+  const ObjectLead& object_lead_;
   const ControlSampler sampler_;
   const int max_braking_steps_;
-  const RegionMap regions_;
   CheckedSimulation simulation_;
   physics::PhysicsState last_valid_;
 };

@@ -1,5 +1,6 @@
 #include "physltl/scenario/load.h"
 
+#include "physltl/ltl/object_atom.h"
 #include "physltl/ltl/parser.h"
 
 #include <algorithm>
@@ -139,6 +140,9 @@ class Validator {
     auto check_name = [&](const std::string& name, const Location& where) {
       auto [it, fresh] = names.emplace(name, where);
       if (!fresh) error(where, "body name '" + name + "' is used twice (also at " + it->second.str() + ")");
+      if (name.find('@') != std::string::npos) {
+        error(where, "body name '" + name + "' holds '@', which the formula reads as BODY@REGION: rename the body");
+      }
     };
     const auto& fixed = world_.fixed_bodies;
     const auto& movable = world_.movable_bodies;
@@ -215,16 +219,39 @@ class Validator {
       error(t.where, what + ": " + e.what());
       return;
     }
-    std::string known;
-    for (const auto& r : world_.regions) known += (known.empty() ? "" : ", ") + r.name;
     for (const std::string& p : ltl::propositions(*formula)) {
-      const bool is_region = std::any_of(world_.regions.begin(), world_.regions.end(),
-                                         [&](const Region& r) { return r.name == p; });
-      if (!is_region) {
-        error(t.where, what + " names unknown region '" + p + "' (" +
-                           (known.empty() ? "the scenario has no regions" : "known regions: " + known) + ")");
+      if (const std::optional<ltl::ObjectAtom> object = ltl::object_atom(p)) {
+        check_object_atom(what, p, *object);
+      } else {
+        check_region_named(what, p);
       }
     }
+  }
+
+  void check_region_named(const std::string& what, const std::string& name) {
+    const bool is_region = std::any_of(world_.regions.begin(), world_.regions.end(),
+                                       [&](const Region& r) { return r.name == name; });
+    if (is_region) return;
+    std::string known;
+    for (const auto& r : world_.regions) known += (known.empty() ? "" : ", ") + r.name;
+    error(world_.task.where, what + " names unknown region '" + name + "' (" +
+                                 (known.empty() ? "the scenario has no regions" : "known regions: " + known) + ")");
+  }
+
+  // BODY@REGION: a movable body of this scenario and one of its regions.
+  void check_object_atom(const std::string& what, const std::string& atom, const ltl::ObjectAtom& object) {
+    const Location& where = world_.task.where;
+    const auto named = [&](const auto& body) { return body.name == object.body; };
+    if (std::any_of(world_.fixed_bodies.begin(), world_.fixed_bodies.end(), named)) {
+      error(where, what + ": '" + atom + "' names fixed '" + object.body + "', which never moves: object propositions " +
+                       "are about movable bodies");
+    } else if (!std::any_of(world_.movable_bodies.begin(), world_.movable_bodies.end(), named)) {
+      std::string known;
+      for (const auto& b : world_.movable_bodies) known += (known.empty() ? "" : ", ") + b.name;
+      error(where, what + ": '" + atom + "' names unknown body '" + object.body + "' (" +
+                       (known.empty() ? "the scenario has no movable bodies" : "movable bodies: " + known) + ")");
+    }
+    check_region_named(what, object.region);
   }
 
   void check_planner() {

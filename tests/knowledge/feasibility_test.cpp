@@ -108,5 +108,60 @@ TEST(GridCellSize, GrowsInAHugeWorkspaceToKeepTheGridBounded) {
   EXPECT_LE((1000.0 / cell) * (1000.0 / cell), static_cast<double>(kMaxGridCells) * 1.001);
 }
 
+// BODY@REGION for the world's first movable body and its region named `region`.
+Feasibility object_feasibility(const scenario::World& w, const std::string& body, const std::string& region) {
+  const AbstractKnowledge k = formulate(w);
+  int b = 0, r = 0;
+  while (k.movable_bodies[static_cast<size_t>(b)].name != body) ++b;
+  while (k.propositions[static_cast<size_t>(r)].name != region) ++r;
+  const ObjectProposition object{body + "@" + region, b, r};
+  return evaluate_feasibility(k, std::span(&object, 1));
+}
+
+TEST(ObjectFeasibility, ABodyTooHeavyToPushIsAlwaysWhereItStandsAndNeverElsewhere) {
+  auto w = open_world();
+  add_box(w, "Safe", {0.0, 0.0}, {0.6, 0.6}, /*mass=*/12.0);  // 0.5 * 12 * 9.81 = 58.9 N > 20 N
+  add_region(w, "vault", {-0.5, -0.5}, {0.5, 0.5});
+  add_region(w, "dock", {1.5, 1.5}, {2.5, 2.5});
+  const Feasibility stays = object_feasibility(w, "Safe", "vault");
+  ASSERT_EQ(stays.objects.size(), 1u);
+  EXPECT_TRUE(stays.objects[0].always_true);
+  EXPECT_EQ(stays.always_true_names(), std::vector<std::string>{"Safe@vault"});
+  EXPECT_EQ(stays.find("Safe@vault"), nullptr);
+  const Feasibility never = object_feasibility(w, "Safe", "dock");
+  ASSERT_NE(never.find("Safe@dock"), nullptr);
+  EXPECT_EQ(never.find("Safe@dock")->why, Unreachability::kBodyCannotMove);
+  EXPECT_EQ(never.find("Safe@dock")->reason,
+            "Safe@dock: Safe is too heavy to push: its floor friction holds it with 58.9 N, the robot's drive pushes "
+            "with at most 20.0 N");
+}
+
+// A bay closed on three sides whose opening is narrower than the box: its centre never gets in, whatever
+// the robot does; a box narrow enough does.
+TEST(ObjectFeasibility, ABayWhoseOpeningIsNarrowerThanTheBodyIsRefusedWithItsReason) {
+  auto w = open_world();
+  add_wall(w, "bay_west", {1.0, 1.0}, {1.2, 2.9});
+  add_wall(w, "bay_east", {1.7, 1.0}, {1.9, 2.9});
+  add_wall(w, "bay_back", {1.0, 2.9}, {1.9, 3.0});
+  add_region(w, "bay", {1.2, 2.0}, {1.7, 2.8});  // the opening is 0.5 m wide
+  add_box(w, "Wide", {-1.0, 0.0}, {0.6, 0.6});
+  add_box(w, "Narrow", {0.5, -1.0}, {0.4, 0.4});
+  const Feasibility wide = object_feasibility(w, "Wide", "bay");
+  ASSERT_NE(wide.find("Wide@bay"), nullptr);
+  EXPECT_EQ(wide.find("Wide@bay")->why, Unreachability::kBodyCannotGetThere);
+  EXPECT_EQ(wide.find("Wide@bay")->reason,
+            "Wide@bay: no way for the centre of Wide into bay: every way in is narrower than Wide (0.60 m across) "
+            "among the fixed bodies");
+  EXPECT_EQ(object_feasibility(w, "Narrow", "bay").find("Narrow@bay"), nullptr);  // 0.4 m wide
+}
+
+TEST(ObjectFeasibility, ARegionPartlyInsideAWallStillCountsWhereTheCentreFits) {
+  auto w = open_world();
+  add_wall(w, "wall", {1.0, -3.0}, {1.2, 3.0});
+  add_region(w, "strip", {0.4, -0.5}, {1.1, 0.5});  // overlaps the wall; the box's centre fits at x <= 0.7
+  add_box(w, "B", {-1.0, 0.0}, {0.6, 0.6});
+  EXPECT_EQ(object_feasibility(w, "B", "strip").find("B@strip"), nullptr);
+}
+
 }  // namespace
 }  // namespace physltl::knowledge

@@ -86,6 +86,19 @@ TEST(Analysis, ATaskNoRunAmongDisjointRegionsSatisfiesIsInfeasibleWithoutSearchi
   EXPECT_TRUE(analyse("F a & F b", {}).feasible());
 }
 
+// A letter is the robot's region plus one region or none for each body: bodies may share a region with
+// each other and with the robot, but no body is in two regions at once.
+TEST(Analysis, EachBodyIsInAtMostOneRegionButBodiesAndTheRobotMayShareOne) {
+  EXPECT_TRUE(analyse("F(B1@dock & B2@dock)", {}).feasible());
+  EXPECT_TRUE(analyse("F(crate@dock & dock)", {}).feasible());
+  EXPECT_TRUE(analyse("F(B1@p2 & p1) & G !B3@aisle", {}).feasible());
+  const Analysis twice = analyse("F(B1@dock & B1@bay)", {});
+  EXPECT_FALSE(twice.feasible());
+  EXPECT_NE(twice.infeasibility().find("each body, is in at most one region"), std::string::npos) << twice.infeasibility();
+  EXPECT_FALSE(analyse("F(dock & bay) & F crate@dock", {}).feasible());
+  EXPECT_FALSE(analyse("F G B1@dock & F G B1@bay", {}).feasible());
+}
+
 TEST(Analysis, APatrolIsInfeasibleBecauseTheRobotStopsAndStays) {
   const Analysis patrol = analyse("G F a & G F b", {});
   EXPECT_FALSE(patrol.feasible());

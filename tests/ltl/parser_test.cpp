@@ -61,6 +61,34 @@ TEST(Parser, SplitsLeadingTemporalLettersLikeSpot) {
   EXPECT_EQ(parse("\"Fridge\""), atom("Fridge"));
 }
 
+// BODY@REGION is one atom, read before Spot's splitting, and the same atom as its quoted spelling.
+TEST(Parser, ReadsAnObjectAtomWholeBeforeSplittingTemporalLetters) {
+  EXPECT_EQ(parse("F crate@dock"), un(Op::Finally, atom("crate@dock")));
+  EXPECT_EQ(parse("Fridge@kitchen"), atom("Fridge@kitchen"));
+  EXPECT_EQ(parse("\"crate@dock\""), atom("crate@dock"));
+  EXPECT_EQ(parse("F(B1@bay1&F B2@bay2)"),
+            un(Op::Finally, Formula::nary(Op::And, {atom("B1@bay1"), un(Op::Finally, atom("B2@bay2"))})));
+  EXPECT_EQ(to_string(parse("F(Fridge@kitchen & \"big crate@dock\")")), "F(Fridge@kitchen & \"big crate@dock\")");
+}
+
+TEST(Parser, NamesWhatIsWrongWithAnObjectAtom) {
+  const auto message = [](const char* text) {
+    try {
+      parse(text);
+    } catch (const ParseError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("F crate@"), "column 9: expected a region's name after '@', but found the end");
+  EXPECT_EQ(message("F crate@1"), "column 9: expected a region's name after '@', but found '1'");
+  EXPECT_EQ(message("F a@b@c"), "column 6: an atom names one body and one region (BODY@REGION), but this one holds '@' twice");
+  EXPECT_EQ(message("F @dock"), "column 3: unexpected '@'");
+  EXPECT_EQ(message("\"a@b@c\""),
+            "column 1: an atom names one body and one region (BODY@REGION), but 'a@b@c' holds '@' twice");
+  EXPECT_EQ(message("\"@dock\""), "column 1: expected a body's name before '@' in '@dock'");
+}
+
 TEST(Parser, FlattensConjunctionsAndDisjunctions) {
   EXPECT_EQ(parse("a & (b & c)"), parse("(a & b) & c"));
   EXPECT_EQ(parse("a & (b & c)").children().size(), 3u);

@@ -12,7 +12,8 @@ namespace {
 
 TEST(LeadSearch, KeepsThePartBeforeTheFrontierAndSearchesTheRestAgain) {
   const TestProblem p("ordered.lua");
-  ProductGraph graph(p.decomposition, p.task);
+  const StageGraph stages(p.task);
+  ProductGraph graph(p.decomposition, stages);
   LeadSearch search(graph);
   const int start = graph.id(p.decomposition.locate(p.world.robot.start), p.task.dfa.start);
   const int horizon = 0;
@@ -20,14 +21,14 @@ TEST(LeadSearch, KeepsThePartBeforeTheFrontierAndSearchesTheRestAgain) {
   const std::vector<int> first = search.next(start, horizon);
   EXPECT_EQ(first, graph.lead(start, horizon));  // the first update searches the whole lead
 
-  // A tree that has got into the second automaton state: nodes along the lead up to a few states into it.
+  // A tree that has got into the second stage: nodes along the lead up to a few states into it.
   const auto second = std::find_if(first.begin(), first.end(),
-                                   [&](int s) { return graph.automaton_state_of(s) != p.task.dfa.start; });
+                                   [&](int s) { return graph.stage_of(s) != p.task.dfa.start; });
   ASSERT_NE(second, first.end());
   const long entry = second - first.begin();
   for (long i = 1; i <= entry + 2; ++i) graph.add_motion(first[static_cast<size_t>(i)], static_cast<int>(i));
   const std::vector<int> whole = search.next(start, horizon);
-  expect_product_path(p, graph, whole, horizon);
+  expect_product_path(p, stages, graph, whole, horizon);
 
   // Choosing the frontier's states over and over makes them dear: the next updates route around them,
   // keep the part before the frontier as it was, and stay paths of the product graph.
@@ -36,14 +37,15 @@ TEST(LeadSearch, KeepsThePartBeforeTheFrontierAndSearchesTheRestAgain) {
       for (int k = 0; k < 50; ++k) graph.count_selection(whole[i]);
     }
     const std::vector<int> lead = search.next(start, horizon);
-    expect_product_path(p, graph, lead, horizon);
+    expect_product_path(p, stages, graph, lead, horizon);
     EXPECT_TRUE(std::equal(whole.begin(), whole.begin() + entry + 1, lead.begin())) << round;
   }
 }
 
 TEST(LeadSearch, AMovedHorizonSearchesTheWholeLeadAgain) {
   const TestProblem p("ordered.lua");
-  ProductGraph graph(p.decomposition, p.task);
+  const StageGraph stages(p.task);
+  ProductGraph graph(p.decomposition, stages);
   LeadSearch search(graph);
   const int start = graph.id(p.decomposition.locate(p.world.robot.start), p.task.dfa.start);
   graph.add_motion(start, 0);

@@ -29,7 +29,7 @@ TEST(OmplAutomaton, AgreesWithTheTaskAutomatonOnRandomRegionTraces) {
       for (int step = 0; step < 12; ++step) {
         const int region = static_cast<int>(random() % (world.regions.size() + 1)) - 1;
         const ompl::control::World letter = region_letter(static_cast<int>(world.regions.size()), region);
-        ours = task.step(ours, region);
+        ours = task.step(ours, task.labelling.letter(0, region));
         theirs = ompl_automaton->step(theirs, letter);
         if (theirs < 0) {
           EXPECT_EQ(ompl_automaton->distFromAccepting(static_cast<unsigned>(ours)), std::numeric_limits<unsigned>::max());

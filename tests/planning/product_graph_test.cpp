@@ -12,35 +12,37 @@ namespace {
 
 TEST(ProductGraph, TheLeadWalksNeighbouringTrianglesToAcceptance) {
   const TestProblem p("ordered.lua");
-  ProductGraph graph(p.decomposition, p.task);
-  const RegionMap regions(p.world);
+  const StageGraph stages(p.task);
+  ProductGraph graph(p.decomposition, stages);
   const int start_triangle = p.decomposition.locate(p.world.robot.start);
-  const int start = graph.id(start_triangle, p.task.step(p.task.dfa.start, regions.at(p.world.robot.start)));
+  const int start = graph.id(start_triangle, p.task.start_state(scenario::EnvironmentState::initial(p.world)));
   const std::vector<int> lead = graph.lead(start);
   ASSERT_GE(lead.size(), 2u);
   EXPECT_EQ(lead.front(), start);
-  EXPECT_TRUE(graph.accepting(lead.back()));
-  expect_product_path(p, graph, lead, 0);
+  EXPECT_TRUE(p.task.dfa.accepting[static_cast<size_t>(stages.automaton_state_of(graph.stage_of(lead.back())))]);
+  expect_product_path(p, stages, graph, lead, 0);
 }
 
 TEST(ProductGraph, ALeadWithAHorizonStopsAtTheFirstStateThatClose) {
   const TestProblem p("ordered.lua");  // four regions in order: the start is four steps from acceptance
-  ProductGraph graph(p.decomposition, p.task);
+  const StageGraph stages(p.task);
+  ProductGraph graph(p.decomposition, stages);
   const int start = graph.id(p.decomposition.locate(p.world.robot.start), p.task.dfa.start);
-  ASSERT_EQ(graph.distance_to_accept(p.task.dfa.start), 4);
+  ASSERT_EQ(stages.distance(p.task.dfa.start), 4);
   const std::vector<int> full = graph.lead(start);
   for (int horizon = 3; horizon >= 1; --horizon) {
     const std::vector<int> lead = graph.lead(start, horizon);
-    expect_product_path(p, graph, lead, horizon);
+    expect_product_path(p, stages, graph, lead, horizon);
     ASSERT_FALSE(lead.empty());
-    EXPECT_EQ(graph.distance_to_accept(graph.automaton_state_of(lead.back())), horizon);
+    EXPECT_EQ(stages.distance(graph.stage_of(lead.back())), horizon);
     EXPECT_LT(lead.size(), full.size());
   }
 }
 
 TEST(ProductGraph, DroppingAStatesLastNodeMakesItUnexploredAgain) {
   const TestProblem p("ordered.lua");
-  ProductGraph graph(p.decomposition, p.task);
+  const StageGraph stages(p.task);
+  ProductGraph graph(p.decomposition, stages);
   const int state = graph.id(0, p.task.dfa.start);
   const double unexplored = graph.weight(state);
   graph.add_motion(state, 7);

@@ -11,19 +11,18 @@
 
 namespace physltl::planning {
 
-// Neighbouring triangles, each entered with the automaton's step on its region; only the last state is
-// within `horizon` automaton steps of acceptance.
-inline void expect_product_path(const TestProblem& p, const ProductGraph& graph, const std::vector<int>& lead,
-                                int horizon) {
+// Neighbouring triangles, each entered with the stage's step on its region; only the last state is within
+// `horizon` moves of acceptance.
+inline void expect_product_path(const TestProblem& p, const StageGraph& stages, const ProductGraph& graph,
+                                const std::vector<int>& lead, int horizon) {
   ASSERT_FALSE(lead.empty());
-  EXPECT_LE(graph.distance_to_accept(graph.automaton_state_of(lead.back())), horizon);
+  EXPECT_LE(stages.distance(graph.stage_of(lead.back())), horizon);
   for (size_t i = 1; i < lead.size(); ++i) {
     const auto& from = p.decomposition.triangles()[graph.triangle_of(lead[i - 1])];
     const int to = graph.triangle_of(lead[i]);
     ASSERT_NE(std::find(from.neighbors.begin(), from.neighbors.end(), to), from.neighbors.end()) << i;
-    ASSERT_EQ(graph.automaton_state_of(lead[i]),
-              p.task.step(graph.automaton_state_of(lead[i - 1]), p.decomposition.triangles()[to].region));
-    EXPECT_GT(graph.distance_to_accept(graph.automaton_state_of(lead[i - 1])), horizon);
+    ASSERT_EQ(graph.stage_of(lead[i]), stages.after_robot(graph.stage_of(lead[i - 1]), p.decomposition.triangles()[to].region));
+    EXPECT_GT(stages.distance(graph.stage_of(lead[i - 1])), horizon);
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include "physltl/knowledge/abstract_knowledge.h"
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,24 @@ enum class Unreachability {
   kGapNarrowerThanRobot,      // a point gets there, the robot does not: every way in is too narrow
   kNoRoomForRobot,            // the robot's centre fits nowhere inside the region
   kBlockedByUnpushableBodies, // reachable if the bodies too heavy to push were gone
+  kBodyCannotMove,            // BODY@REGION: the body is too heavy to push and stands elsewhere
+  kBodyCannotGetThere,        // BODY@REGION: no way in for the body's centre among what cannot move
+};
+
+// An object proposition a task names, BODY@REGION: the centre of a movable body in a region.
+struct ObjectProposition {
+  std::string name;  // "crate@dock"
+  int body = 0;      // AbstractKnowledge::movable_bodies index
+  int region = 0;    // AbstractKnowledge::propositions index
+};
+
+// What the knowledge layer concludes about one, before any planning. Sound only: a proposition is
+// called unreachable or always true only when no plan could make it otherwise.
+struct ObjectVerdict {
+  std::string name, body, region;
+  bool reachable = true;     // the body's centre can be in the region at some time
+  bool always_true = false;  // it is there and can never leave: the body cannot move
+  std::string reason;        // why unreachable or always true; empty otherwise
 };
 
 struct InvalidProposition {
@@ -25,9 +44,12 @@ struct InvalidProposition {
 
 struct Feasibility {
   double cell_size = 0.0;  // m, of the configuration-space grid
-  std::vector<InvalidProposition> invalid;  // in AbstractKnowledge::propositions order
+  // In AbstractKnowledge::propositions order, then the unreachable object propositions.
+  std::vector<InvalidProposition> invalid;
+  std::vector<ObjectVerdict> objects;  // one per object proposition asked about, in that order
 
   std::vector<std::string> invalid_names() const;
+  std::vector<std::string> always_true_names() const;  // object propositions that always hold
   const InvalidProposition* find(const std::string& proposition) const;  // nullptr when valid
 };
 
@@ -36,6 +58,10 @@ struct Feasibility {
 inline constexpr long kMaxGridCells = 4'000'000;
 double grid_cell_size(const AbstractKnowledge& knowledge);
 
-Feasibility evaluate_feasibility(const AbstractKnowledge& knowledge);
+// `objects`: the task's object propositions. A body that cannot move (too heavy to push) makes its
+// propositions always true where it stands and unreachable elsewhere; a region its centre cannot get into,
+// a disc of its inscribed radius among the fixed bodies, the bodies too heavy to push and the workspace's
+// edge (geometry::DiscField), makes its proposition unreachable.
+Feasibility evaluate_feasibility(const AbstractKnowledge& knowledge, std::span<const ObjectProposition> objects = {});
 
 }  // namespace physltl::knowledge

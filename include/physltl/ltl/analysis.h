@@ -20,11 +20,13 @@ struct Analysis {
   Formula normal_form;                     // positive normal form
   TaskClass task_class = TaskClass::kCoSafe;  // of the task the planner gets (of the input when infeasible)
   std::vector<std::string> invalid;        // as given
+  std::vector<std::string> always_true;    // as given: propositions that hold on every run
   std::optional<Simplification> by_lists;  // the paper's Simplify, when `invalid` is not empty
-  std::optional<Simplification> semantic;  // the planner's, when `invalid` is not empty
+  std::optional<Simplification> semantic;  // the planner's, when `invalid` or `always_true` is not empty
   std::optional<Dfa> dfa;                  // of the task the planner gets; empty when infeasible
-  // Set when no run can satisfy the task because the robot is in at most one region at a time (the
-  // propositions are disjoint regions), found on the automaton without any search: why, for people.
+  // Set when no run can satisfy the task because the robot, and each body, is in at most one region at a
+  // time (the propositions are disjoint regions; exclusivity.h), found on the automaton without any
+  // search: why, for people.
   std::optional<std::string> unsatisfiable;
 
   bool feasible() const { return (!semantic || semantic->feasible()) && !unsatisfiable; }
@@ -32,8 +34,12 @@ struct Analysis {
   std::string infeasibility() const;
 };
 
-// Any LTL formula over propositions that are disjoint regions. Throws ParseError for a syntax error.
-Analysis analyse(std::string_view text, std::span<const std::string> invalid);
+// Any LTL formula over propositions that are disjoint regions, the robot's and the bodies' (BODY@REGION).
+// Throws ParseError for a syntax error.
+// `always_true`: propositions that hold at every step of every run (a body that cannot move, standing in
+// the region an object proposition names); the semantic simplification makes them true.
+Analysis analyse(std::string_view text, std::span<const std::string> invalid,
+                 std::span<const std::string> always_true = {});
 
 // Human-readable lines: input, normal form, class, simplifications, automaton size.
 void write_summary(std::ostream& out, const Analysis& analysis);

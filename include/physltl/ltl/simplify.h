@@ -27,7 +27,9 @@ Simplification simplify_by_lists(const Formula& f, std::span<const std::string> 
 
 // The semantic version the planner uses: an invalid proposition is false at every step of every run,
 // so substitute false for it (a visit `p3` cannot happen, an avoidance `!p3` always holds) and fold
-// constants. Infeasible exactly when the result is false.
-Simplification simplify_semantically(const Formula& f, std::span<const std::string> invalid);
+// constants. A proposition that always holds (a body too heavy to push, standing in the region an object
+// proposition names) becomes true the same way. Infeasible exactly when the result is false.
+Simplification simplify_semantically(const Formula& f, std::span<const std::string> invalid,
+                                     std::span<const std::string> always_true = {});
 
 }  // namespace physltl::ltl

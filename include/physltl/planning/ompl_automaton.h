@@ -18,7 +18,8 @@ namespace physltl::planning {
 // Transitions into states that can no longer accept are left out: OMPL then reads the product state as
 // invalid and prunes it. Throws std::invalid_argument for an automaton that moves on when it reads the
 // same region twice, which OMPL's product graph cannot follow (it steps the automaton at every
-// propagation step, its graph only when the region changes).
+// propagation step, its graph only when the region changes), and for a task that names bodies (OMPL
+// labels a triangle with one letter, the robot's region).
 std::shared_ptr<ompl::control::Automaton> to_ompl_automaton(const TaskAutomaton& task);
 
 // The letter of "in region `region`" (-1: in no region) over `regions` propositions, every proposition

@@ -89,7 +89,8 @@ PlanResult plan(const scenario::World& world, const TaskAutomaton& task, const k
                 const decomposition::Decomposition& decomposition, const PlannerOptions& options);
 
 // Why `planner` cannot plan `task`, in a sentence; nothing when it can. OMPL's product takes co-safe
-// tasks (and co-safe with safety), not plans that must end at rest.
+// tasks (and co-safe with safety) about the robot's regions: not plans that must end at rest, nor tasks
+// that name where bodies are.
 std::optional<std::string> refusal(PlannerKind planner, const TaskAutomaton& task);
 
 // The baseline checks contacts with fixed bodies only; every other planner checks kappa.

@@ -15,8 +15,11 @@ namespace physltl::planning {
 struct Replay {
   // One entry per physics step, the initial state first.
   std::vector<scenario::EnvironmentState> states;
-  std::vector<int> region_trace;     // region index at each state, -1 outside every region
-  std::vector<int> automaton_trace;  // state of the formula's automaton after reading each region
+  std::vector<int> region_trace;     // the robot's region at each state, -1 outside every region
+  // Where the bodies the formula names are at each state: the fact set of its labelling (labelling.h);
+  // with region_trace, the letter the automaton reads.
+  std::vector<int> facts_trace;
+  std::vector<int> automaton_trace;  // state of the formula's automaton after reading each letter
   std::vector<bool> pushing;         // the robot touched a movable body during the step into this state
   int pushes = 0;                    // controls during which the robot touched a movable body
   // Movable bodies the plan left more than a centimetre or a degree from where they started, World order.
@@ -24,8 +27,9 @@ struct Replay {
 
   bool reproduces_plan = false;  // every state after a control equals the planned one, bit for bit
   bool valid = false;            // every step passes the validity rules of the mode it was planned in
-  // The region trace satisfies the formula as written, by direct LTL semantics on the trace followed by
-  // its last region forever (ltl::holds_when_staying); a co-safe task's trace must also be a good prefix.
+  // The trace of letters (the robot's region and the facts BODY@REGION) satisfies the formula as written,
+  // by direct LTL semantics on the trace followed by its last letter forever (ltl::holds_when_staying); a
+  // co-safe task's trace must also be a good prefix.
   bool accepted = false;
   // A task read as "stop and stay" ends with the robot and every box at rest; true for co-safe tasks.
   bool ends_at_rest = false;

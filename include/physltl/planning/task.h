@@ -1,9 +1,10 @@
 #pragma once
-// What the planner must achieve, prepared once per run: the automaton of the (simplified) formula and
-// how regions of the World map to its propositions.
+// What the planner must achieve, prepared once per run: the automaton of the (simplified) formula, and how
+// physics states read as its letters (labelling.h), with its steps tabulated.
 
 #include "physltl/ltl/dfa.h"
 #include "physltl/ltl/formula.h"
+#include "physltl/planning/labelling.h"
 #include "physltl/scenario/world.h"
 
 #include <vector>
@@ -13,32 +14,25 @@ namespace physltl::planning {
 struct TaskAutomaton {
   ltl::Formula formula;  // the task the automaton was made from
   ltl::Dfa dfa;
-  // For each World region, the index of its proposition in dfa.propositions, or -1 when the formula
-  // does not mention it (the region then reads as the paper's p0).
-  std::vector<int> proposition_of_region;
-  // step(state, region) for every state and region, tabulated: the planner asks after every physics step
-  // and for every edge of its lead search. Indexed [state * (regions + 1) + region + 1].
+  Labelling labelling;
+  // step(state, letter) for every state and letter, tabulated: the planner asks after every physics step
+  // and for every edge of its lead search. Indexed [state * letters + letter].
   std::vector<int> successors;
 
+  // Throws std::invalid_argument when the task names more body facts than a table can hold.
   static TaskAutomaton make(const ltl::Formula& formula, const ltl::Dfa& dfa, const scenario::World& world);
   static TaskAutomaton make(const ltl::Formula& formula, const scenario::World& world);  // translates it
   // Whether a plan must end with the robot and the boxes at rest: tasks read as "stop and stay".
   bool ends_at_rest() const { return dfa.acceptance == ltl::Acceptance::kStopAndStay; }
-  // The automaton's state after it reads the region the robot is in (-1: no region).
-  int step(int state, int region) const;
-};
-
-// Which region contains a point (the robot's centre). The planner asks after every physics step, so each
-// region's bounding box is tried before its polygon.
-class RegionMap {
- public:
-  explicit RegionMap(const scenario::World& world);
-  // The region containing `p`, or -1 outside every region. Regions are disjoint.
-  int at(const scenario::Vec2& p) const;
-
- private:
-  const scenario::World& world_;
-  std::vector<geometry::Rect> bounds_;  // World::regions order
+  // Whether the task says where bodies must (not) be, besides where the robot goes.
+  bool names_bodies() const { return !labelling.named_bodies().empty(); }
+  // The automaton's state after it reads `letter`.
+  int step(int state, int letter) const {
+    return successors[static_cast<std::size_t>(state) * static_cast<std::size_t>(labelling.letters()) +
+                      static_cast<std::size_t>(letter)];
+  }
+  // The state after reading the letter of `state` from the automaton's start: where a plan begins.
+  int start_state(const scenario::EnvironmentState& state) const { return step(dfa.start, labelling.letter(state)); }
 };
 
 }  // namespace physltl::planning

@@ -1,0 +1,58 @@
+#pragma once
+// Where the centre of a disc can go among box obstacles inside a rectangle, on a grid, and how far it is
+// from every place to a set of target places: the way a body's centre must travel to reach a region.
+//
+// Sound by construction, for "it cannot get there" conclusions: a cell counts as free when its centre
+// keeps the disc's radius less half a cell diagonal from every obstacle and the rectangle's edge, so any
+// place the real disc can reach lies in a free cell, and any continuous way it can take runs through
+// 8-connected free cells. Distances are along those cells (8-connected, diagonal steps sqrt(2) cells).
+
+#include "physltl/geometry/shapes.h"
+
+#include <functional>
+#include <limits>
+#include <span>
+#include <vector>
+
+namespace physltl::geometry {
+
+class DiscField {
+ public:
+  static constexpr double kUnreachable = std::numeric_limits<double>::infinity();
+
+  // `cell`: the grid's cell edge, in metres.
+  DiscField(const Rect& bounds, double cell, double radius, std::span<const OrientedBox> obstacles);
+
+  // Distances to the free cells for which `is_target` holds of their square (given as its centre and half
+  // edge), by Dijkstra over the free cells.
+  void compute_distances(const std::function<bool(const Vec2& centre, double half_edge)>& is_target);
+  // Distance from the cell of `p` to the nearest target (0 in a target cell); kUnreachable when the cell
+  // is not free or no target is connected to it.
+  double distance(const Vec2& p) const;
+  // Whether a target cell is connected to the cell of `p`.
+  bool reaches_target(const Vec2& p) const { return distance(p) < kUnreachable; }
+  // The point about `ahead` metres further along a shortest way from `p` to the targets (steepest descent
+  // of the distances); `p` itself when it stands in a target or nowhere useful.
+  Vec2 ahead_of(const Vec2& p, double ahead) const;
+  // The free cell whose centre is nearest to `p` within `search` metres, as a point; `p` when none is.
+  Vec2 nearest_free(const Vec2& p, double search) const;
+
+  double cell() const { return cell_; }
+
+ private:
+  int column(double x) const;
+  int row(double y) const;
+  std::size_t index(int ix, int iy) const { return static_cast<std::size_t>(iy) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(ix); }
+  Vec2 centre(int ix, int iy) const { return origin_ + cell_ * Vec2(ix + 0.5, iy + 0.5); }
+
+  Vec2 origin_;
+  double cell_;
+  int nx_, ny_;
+  std::vector<bool> free_;
+  std::vector<double> distance_;
+};
+
+// The distance from `p` to `polygon` (0 inside or on its boundary).
+double distance_to(const Polygon& polygon, const Vec2& p);
+
+}  // namespace physltl::geometry
