@@ -24,6 +24,11 @@ inline constexpr Color kInactiveMRegionEdge{0.55f, 0.55f, 0.62f};
 inline constexpr Color kPath{0.08f, 0.08f, 0.10f};
 inline constexpr Color kPathHalo{1.00f, 1.00f, 1.00f};
 inline constexpr Color kText{0.10f, 0.10f, 0.12f};
+// Bodies a task wants somewhere, each in its own colour (then again from the first): clear of the boxes'
+// blue, the robot's green, the regions' yellow and the walls' red.
+inline constexpr Color kNamedBodies[] = {
+    {0.93f, 0.52f, 0.08f}, {0.58f, 0.30f, 0.78f}, {0.05f, 0.62f, 0.66f}, {0.86f, 0.28f, 0.62f}, {0.45f, 0.30f, 0.15f}};
+inline constexpr Color kGoalHolds{0.55f, 0.90f, 0.55f, 0.90f};  // the label of an object goal that holds
 inline constexpr Color kPanel{1.00f, 1.00f, 1.00f, 0.80f};
 
 }  // namespace physltl::render::palette

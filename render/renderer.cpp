@@ -43,6 +43,7 @@ using geometry::Pose2;
 constexpr double kGridWidth = 1.5;
 constexpr double kDecompositionWidth = 1.5;
 constexpr double kEdgeWidth = 1.5;
+constexpr double kGoalEdgeWidth = 4.0;
 constexpr double kSegmentWidth = 1.5;
 constexpr double kPathWidth = 3.0;
 constexpr double kPathHaloWidth = 6.0;
@@ -178,6 +179,7 @@ struct Renderer::Impl {
     std::vector<std::array<Vec2, 3>> decomposition;
     std::vector<SegmentOverlay> segments;
     std::vector<std::string> avoided_regions;
+    std::vector<ObjectGoalOverlay> object_goals;  // their regions' outlines; whether they hold is drawn per picture
     std::unique_ptr<GlFramebuffer> framebuffer;
     std::vector<Vec2> path;  // the path painted so far
   };
@@ -193,6 +195,7 @@ struct Renderer::Impl {
   struct Framing {
     View view;
     PixelRect legend;
+    std::vector<std::pair<int, int>> goals;  // object goals' (body, region): their labels
     CameraView camera;
   };
   std::optional<Framing> framing;
@@ -234,11 +237,12 @@ struct Renderer::Impl {
     add_mesh(vertices, cube, body_transform(footprint.pose, size.z() / 2, size), color);
   }
 
-  std::vector<float> moving_bodies(const scenario::EnvironmentState& state) const {
+  std::vector<float> moving_bodies(const scenario::EnvironmentState& state, const Overlay& overlay) const {
     std::vector<float> vertices;
     for (std::size_t i = 0; i < world.movable_bodies.size(); ++i) {
       const scenario::MovableBody& body = world.movable_bodies[i];
-      add_box(vertices, scenario::footprint_at(body, state.movable_poses[i]), body.height, palette::kMovableBody);
+      add_box(vertices, scenario::footprint_at(body, state.movable_poses[i]), body.height,
+              body_color(overlay, static_cast<int>(i)));
     }
     const float r = static_cast<float>(world.robot.radius);
     add_mesh(vertices, sphere, body_transform({state.robot_position, 0.0}, r, Vector3f::Constant(r)),
@@ -290,6 +294,11 @@ struct Renderer::Impl {
       paint.polygon(region.polygon, avoided ? palette::kAvoidedRegion : palette::kRegion);
       paint.outline(region.polygon, kEdgeWidth * metres_per_pixel, avoided ? palette::kAvoidedRegionEdge : palette::kRegionEdge);
     }
+    // A region where the task wants a body: outlined in that body's colour, inside its own edge.
+    for (const ObjectGoalOverlay& goal : overlay.object_goals) {
+      paint.outline(world.regions[static_cast<std::size_t>(goal.region)].polygon, kGoalEdgeWidth * metres_per_pixel,
+                    body_color(overlay, goal.body));
+    }
     return paint;
   }
 
@@ -337,16 +346,47 @@ struct Renderer::Impl {
     return points;
   }
 
-  // Each region's name, centred below the region rather than on it: a box standing on a region stays visible.
-  std::vector<AnchoredRect> region_labels() const {
-    std::vector<AnchoredRect> labels;
-    for (const scenario::Region& region : world.regions) {
+  // Text in a panel next to a world point.
+  struct Label {
+    std::string text;
+    AnchoredRect place;  // the panel's rectangle
+    Color panel;
+  };
+
+  // Each region's name, centred below the region rather than on it (a box standing on a region stays
+  // visible), and below it the object goals on that region, "crate -> dock", green while they hold.
+  std::vector<Label> labels(const Overlay& overlay) const {
+    std::vector<Label> result;
+    const float h = font.line_height();
+    for (std::size_t r = 0; r < world.regions.size(); ++r) {
+      const scenario::Region& region = world.regions[r];
       const Vec2 below(region.polygon.centroid().x(), region.polygon.bounds().min.y());
-      const float w = font.width(region.name), h = font.line_height();
-      labels.push_back({Vector3f(static_cast<float>(below.x()), static_cast<float>(below.y()), 0),
-                        {{-w / 2 - kPanelPadding, kPanelPadding / 2}, {w / 2 + kPanelPadding, kPanelPadding + h + kPanelPadding / 2}}});
+      const Vector3f anchor(static_cast<float>(below.x()), static_cast<float>(below.y()), 0);
+      float row = 0;
+      const auto add = [&](std::string text, const Color& panel) {
+        const float w = font.width(text), top = kPanelPadding / 2 + row * (h + kPanelPadding);
+        result.push_back({std::move(text), {anchor, {{-w / 2 - kPanelPadding, top}, {w / 2 + kPanelPadding, top + h + kPanelPadding}}}, panel});
+        ++row;
+      };
+      add(region.name, palette::kPanel);
+      for (const ObjectGoalOverlay& goal : overlay.object_goals) {
+        if (goal.region != static_cast<int>(r)) continue;
+        add(world.movable_bodies[static_cast<std::size_t>(goal.body)].name + " -> " + region.name,
+            goal.holds ? palette::kGoalHolds : palette::kPanel);
+      }
     }
-    return labels;
+    return result;
+  }
+
+  // The colour of movable body `body`: its own when the task wants it somewhere, else the boxes' blue.
+  static Color body_color(const Overlay& overlay, int body) {
+    std::vector<int> named;
+    for (const ObjectGoalOverlay& goal : overlay.object_goals) {
+      if (std::find(named.begin(), named.end(), goal.body) == named.end()) named.push_back(goal.body);
+    }
+    const auto it = std::find(named.begin(), named.end(), body);
+    if (it == named.end()) return palette::kMovableBody;
+    return palette::kNamedBodies[static_cast<std::size_t>(it - named.begin()) % std::size(palette::kNamedBodies)];
   }
 
   // The legend's lines as drawn: a line wider than the frame keeps its beginning and its end.
@@ -377,9 +417,15 @@ struct Renderer::Impl {
 
   const CameraView& camera(View view_kind, const Overlay& overlay) {
     const PixelRect legend = legend_rect(overlay.legend, overlay.legend_room);
-    if (!framing || framing->view != view_kind || framing->legend.min != legend.min || framing->legend.max != legend.max) {
+    // An object goal's label is as wide whether it holds or not: the framing depends on which goals there are.
+    std::vector<std::pair<int, int>> goals;
+    for (const ObjectGoalOverlay& goal : overlay.object_goals) goals.emplace_back(goal.body, goal.region);
+    if (!framing || framing->view != view_kind || framing->legend.min != legend.min || framing->legend.max != legend.max ||
+        framing->goals != goals) {
       const CameraView view = make_camera_view(world, top_height, view_kind, width, height);
-      framing = Framing{view_kind, legend, leave_room_for_legend(view, world_points(), region_labels(), legend)};
+      std::vector<AnchoredRect> places;
+      for (const Label& label : labels(overlay)) places.push_back(label.place);
+      framing = Framing{view_kind, legend, goals, leave_room_for_legend(view, world_points(), places, legend)};
     }
     return framing->camera;
   }
@@ -399,16 +445,11 @@ struct Renderer::Impl {
   void upload_text(const CameraView& view, const Overlay& overlay) {
     FlatGeometry panels;
     std::vector<float> glyphs;
-    auto label = [&](const std::string& line, float x, float y) {
-      const float w = font.width(line), h = font.line_height();
-      panels.rectangle({x - kPanelPadding, y - kPanelPadding / 2}, {x + w + kPanelPadding, y + h + kPanelPadding / 2},
-                       palette::kPanel);
-      add_text(line, x, y, glyphs);
-    };
-    const std::vector<AnchoredRect> labels = region_labels();
-    for (std::size_t i = 0; i < labels.size(); ++i) {
-      const Eigen::Vector2f at = view.to_pixels(labels[i].anchor);
-      label(world.regions[i].name, at.x() + labels[i].offset.min.x() + kPanelPadding, at.y() + kPanelPadding);
+    for (const Label& label : labels(overlay)) {
+      const Eigen::Vector2f at = view.to_pixels(label.place.anchor);
+      const Eigen::Vector2f min = at + label.place.offset.min, max = at + label.place.offset.max;
+      panels.rectangle(min.cast<double>(), max.cast<double>(), label.panel);
+      add_text(label.text, min.x() + kPanelPadding, min.y() + kPanelPadding / 2, glyphs);
     }
     if (!overlay.legend.empty()) {
       const PixelRect legend = legend_rect(overlay.legend, {});
@@ -429,7 +470,7 @@ struct Renderer::Impl {
   void upload_layers(const scenario::EnvironmentState& state, const Overlay& overlay, const CameraView& view) {
     const double metres_per_pixel = view.metres_per_pixel;
     upload(mregion_layer, mregion_paint(overlay, metres_per_pixel));
-    const std::vector<float> bodies = moving_bodies(state);
+    const std::vector<float> bodies = moving_bodies(state, overlay);
     moving_layer.upload(bodies.data(), bodies.size());
     const ShadowGeometry shadow_geometry = moving_shadows(state);
     shadow_layer.upload(shadow_geometry.floats().data(), shadow_geometry.floats().size());
@@ -467,11 +508,17 @@ struct Renderer::Impl {
     if (!background || background->view != view_kind || background->view_projection != view.view_projection ||
         background->decomposition != overlay.decomposition ||
         background->segments != overlay.segments || background->avoided_regions != overlay.avoided_regions ||
+        !same_goal_places(background->object_goals, overlay.object_goals) ||
         !extends(overlay.path, background->path)) {
       draw_static_scene(view_kind, view, overlay);
     }
     paint_path(overlay.path, view);
     return *background->framebuffer;
+  }
+
+  static bool same_goal_places(const std::vector<ObjectGoalOverlay>& a, const std::vector<ObjectGoalOverlay>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                      [](const ObjectGoalOverlay& x, const ObjectGoalOverlay& y) { return x.body == y.body && x.region == y.region; });
   }
 
   static bool extends(const std::vector<Vec2>& path, const std::vector<Vec2>& prefix) {
@@ -525,7 +572,7 @@ struct Renderer::Impl {
     draw_lit(fixed_layer, view);  // the depth; its colour is replaced next
     copy_framebuffer(supersampled.id(), supersampled.width(), supersampled.height(), framebuffer->id(), width, height,
                      GL_COLOR_BUFFER_BIT, GL_LINEAR);
-    background = Background{view_kind, view.view_projection, overlay.decomposition, overlay.segments, overlay.avoided_regions,
+    background = Background{view_kind, view.view_projection, overlay.decomposition, overlay.segments, overlay.avoided_regions, overlay.object_goals,
                             std::move(framebuffer), {}};
   }
 

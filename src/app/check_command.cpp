@@ -20,7 +20,7 @@ std::filesystem::path write_preview(const scenario::World& world, const Reasonin
                                     const std::filesystem::path& out_dir) {
   try {
     OutputFolder folder(out_dir / world.name);
-    render::render_preview(world, reasoning.initial_state, preview_overlay(reasoning), folder.path() / "preview.png");
+    render::render_preview(world, reasoning.initial_state, preview_overlay(world, reasoning), folder.path() / "preview.png");
     folder.commit_entries();
     return folder.final_path() / "preview.png";
   } catch (const std::exception& e) {

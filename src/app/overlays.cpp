@@ -2,6 +2,8 @@
 
 #include "physltl/ltl/formula.h"
 
+#include <algorithm>
+
 namespace physltl::app {
 
 std::vector<render::MRegionOverlay> mregion_overlays(const knowledge::AbstractKnowledge& knowledge,
@@ -18,16 +20,38 @@ std::vector<render::MRegionOverlay> mregion_overlays(const knowledge::AbstractKn
   return overlays;
 }
 
-render::Overlay preview_overlay(const Reasoning& r) {
+std::vector<render::ObjectGoalOverlay> object_goal_overlays(const scenario::World& world, const Reasoning& reasoning,
+                                                            const scenario::EnvironmentState& state) {
+  const auto index_of = [](const auto& list, const std::string& name) {
+    const auto it = std::find_if(list.begin(), list.end(), [&](const auto& n) { return n.name == name; });
+    return static_cast<int>(it - list.begin());
+  };
+  std::vector<render::ObjectGoalOverlay> goals;
+  for (const knowledge::ObjectVerdict& object : reasoning.feasibility.objects) {
+    const int body = index_of(world.movable_bodies, object.body), region = index_of(world.regions, object.region);
+    const bool holds = world.regions[static_cast<size_t>(region)].polygon.contains(state.movable_poses[static_cast<size_t>(body)].position);
+    goals.push_back({body, region, holds});
+  }
+  return goals;
+}
+
+std::string object_goal_line(const scenario::World& world, const render::ObjectGoalOverlay& goal) {
+  return world.movable_bodies[static_cast<size_t>(goal.body)].name + " -> " +
+         world.regions[static_cast<size_t>(goal.region)].name + (goal.holds ? ": holds" : ": not yet");
+}
+
+render::Overlay preview_overlay(const scenario::World& world, const Reasoning& r) {
   render::Overlay overlay;
   overlay.mregions = mregion_overlays(r.knowledge, r.initial_kappa, r.initial_state);
   overlay.avoided_regions = ltl::avoided_propositions(r.task.normal_form);
+  overlay.object_goals = object_goal_overlays(world, r, r.initial_state);
   overlay.legend.push_back("task: " + ltl::to_string(r.task.input));
   for (const knowledge::InvalidProposition& p : r.feasibility.invalid) overlay.legend.push_back("unreachable " + p.reason);
   const std::optional<ltl::Formula> simplified = r.simplified_formula();
   overlay.legend.push_back(simplified ? "planned: " + ltl::to_string(*simplified) : "infeasible");
   if (!overlay.mregions.empty()) overlay.legend.push_back("mRegions: coloured = the robot may push from there, grey = blocked");
   if (!overlay.avoided_regions.empty()) overlay.legend.push_back("red: regions the task never enters");
+  for (const render::ObjectGoalOverlay& goal : overlay.object_goals) overlay.legend.push_back(object_goal_line(world, goal));
   return overlay;
 }
 

@@ -17,8 +17,14 @@ std::vector<render::MRegionOverlay> mregion_overlays(const knowledge::AbstractKn
                                                      const knowledge::Kappa& kappa,
                                                      const scenario::EnvironmentState& state);
 
-// preview.png's overlay: kappa_0's mRegions and a legend with the task, its simplification (or why it is
-// infeasible) and the invalid propositions.
-render::Overlay preview_overlay(const Reasoning& reasoning);
+// The task's object propositions (BODY@REGION) as pictures show them, each holding or not in `state`.
+std::vector<render::ObjectGoalOverlay> object_goal_overlays(const scenario::World& world, const Reasoning& reasoning,
+                                                            const scenario::EnvironmentState& state);
+// The legend's line for one: "crate -> dock: holds" or "crate -> dock: not yet".
+std::string object_goal_line(const scenario::World& world, const render::ObjectGoalOverlay& goal);
+
+// preview.png's overlay: kappa_0's mRegions, the object goals, and a legend with the task, its
+// simplification (or why it is infeasible), the invalid propositions and the object goals.
+render::Overlay preview_overlay(const scenario::World& world, const Reasoning& reasoning);
 
 }  // namespace physltl::app

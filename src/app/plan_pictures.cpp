@@ -65,6 +65,12 @@ PlanFrames write_plan_frames(const scenario::World& world, const Reasoning& reas
   };
   overlay.legend_room = {{task}, {time_line(duration, "p0")}, {automaton_line(automaton_states, true)}};
   for (const scenario::Region& r : world.regions) overlay.legend_room[1].push_back(time_line(duration, r.name));
+  for (render::ObjectGoalOverlay goal : object_goal_overlays(world, reasoning, replay.states.front())) {
+    goal.holds = false;
+    const std::string not_yet = object_goal_line(world, goal);
+    goal.holds = true;
+    overlay.legend_room.push_back({not_yet, object_goal_line(world, goal)});
+  }
   for (int f = 0; f < frames; ++f) {
     const double time = static_cast<double>(f) / world.render.fps;
     const double index = std::min(time / dt, static_cast<double>(replay.states.size() - 1));
@@ -78,6 +84,8 @@ PlanFrames write_plan_frames(const scenario::World& world, const Reasoning& reas
     const int q = replay.automaton_trace[i];
     overlay.legend = {task, time_line(time, region < 0 ? "p0" : world.regions[region].name),
                       automaton_line(q, q == replay.automaton_trace.back() && replay.accepted)};
+    overlay.object_goals = object_goal_overlays(world, reasoning, state);
+    for (const render::ObjectGoalOverlay& goal : overlay.object_goals) overlay.legend.push_back(object_goal_line(world, goal));
     while (overlay.path.size() <= i) overlay.path.push_back(replay.states[overlay.path.size()].robot_position);
     const auto frame = std::make_shared<const render::Image>(renderer.draw(state, overlay, render::View::kPerspective));
     encoder.add(frame);
@@ -105,6 +113,7 @@ void write_tree_picture(const scenario::World& world, const Reasoning& reasoning
                     result.solved ? "solution path on top" : "no solution (" + result.stop_reason + ")"};
   render::Renderer renderer(world, world.render.width, world.render.height);
   const auto initial = replay != nullptr ? replay->states.front() : scenario::EnvironmentState::initial(world);
+  overlay.object_goals = object_goal_overlays(world, reasoning, initial);
   render::write_png(renderer.draw(initial, overlay, render::View::kTop), file);
 }
 

@@ -80,6 +80,38 @@ TEST(Cli, CheckNamesTheTaskClassAndRefusesATaskNoRunCanSatisfy) {
   EXPECT_NE(j["infeasible_reason"].get<std::string>().find("stops and stays"), std::string::npos);
 }
 
+// A heavy crate never moves: its proposition in the vault always holds, in the dock never; the task keeps
+// what the box can still do.
+TEST(Cli, CheckJsonJudgesEachObjectPropositionAndSimplifiesByIt) {
+  const Result r = run("check " + kSource + "/tests/app/heavy_crate.lua --json --no-preview");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& vault = entry_named(j["object_propositions"], "crate@vault");
+  EXPECT_EQ(vault["body"], "crate");
+  EXPECT_EQ(vault["region"], "vault");
+  EXPECT_EQ(vault["always_true"], true);
+  const auto& dock = entry_named(j["object_propositions"], "crate@dock");
+  EXPECT_EQ(dock["reachable"], false);
+  EXPECT_EQ(dock["reason"],
+            "crate@dock: crate is too heavy to push: its floor friction holds it with 58.9 N, the robot's drive pushes "
+            "with at most 20.0 N");
+  EXPECT_EQ(entry_named(j["object_propositions"], "box@dock")["reachable"], true);
+  EXPECT_EQ(j["simplified_formula"], "F box@dock");
+  EXPECT_EQ(j["invalid_propositions"], nlohmann::json::array({"crate@dock"}));
+}
+
+// Without a world, `@` atoms are object facts: two bodies may share a region, one body is in one region.
+TEST(Cli, LtlReadsObjectAtomsAsBodiesThatAreEachInOneRegion) {
+  const Result both = run("ltl \"F(B1@dock & B2@dock)\"");
+  EXPECT_EQ(both.exit_code, 0) << both.out << both.err;
+  const Result twice = run("ltl \"F(B1@dock & B1@bay)\"");
+  EXPECT_EQ(twice.exit_code, 1) << twice.out;
+  EXPECT_NE(twice.out.find("each body, is in at most one region"), std::string::npos) << twice.out;
+  const Result hoa = run("ltl \"F(crate@dock & F charger)\" --hoa");
+  ASSERT_EQ(hoa.exit_code, 0) << hoa.err;
+  EXPECT_NE(hoa.out.find("AP: 2 \"crate@dock\" \"charger\""), std::string::npos) << hoa.out;
+}
+
 TEST(Cli, LtlTakesAlwaysAndNeverAndSaysHowAPlanSatisfiesThem) {
   const Result r = run("ltl \"F goal & G !hazard\"");
   ASSERT_EQ(r.exit_code, 0) << r.err;

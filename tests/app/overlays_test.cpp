@@ -44,7 +44,7 @@ TEST(MRegionOverlays, SitAgainstTheirSideInTheWorldFrame) {
 }
 
 TEST(PreviewOverlay, LegendShowsTaskUnreachableRegionsAndThePlannedTask) {
-  const render::Overlay overlay = preview_overlay(reason_about(rooms()));
+  const render::Overlay overlay = preview_overlay(rooms(), reason_about(rooms()));
   EXPECT_EQ(overlay.mregions.size(), 12u);
   ASSERT_GE(overlay.legend.size(), 3u);
   EXPECT_EQ(overlay.legend[0], "task: F(p1 & F(p2 & F(p3 | p4)))");

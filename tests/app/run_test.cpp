@@ -53,6 +53,28 @@ TEST(Run, SolvesOrderedAndWritesAValidatedReportAndPlan) {
   EXPECT_FALSE(fs::exists(out / "ordered" / "frames"));  // no --render
 }
 
+// plan.json carries the letter of every state: the robot's region and the object facts; report.json the
+// facts that hold at the end.
+TEST(Run, AnObjectTaskWritesTheObjectFactsOfEveryStateAndAtTheEnd) {
+  const fs::path out = fresh_out_dir();
+  const Result r = run(kSource + "/scenarios/delivery.lua --seed 2 --improve 0 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto report = nlohmann::json::parse(slurp(out / "delivery" / "report.json"));
+  EXPECT_EQ(report["validated"], true);
+  EXPECT_EQ(report["validation"]["satisfies_formula"], true);
+  const auto plan = nlohmann::json::parse(slurp(out / "delivery" / "plan.json"));
+  const auto& objects = plan["object_trace"];
+  ASSERT_EQ(objects.size(), plan["states"].size());
+  EXPECT_EQ(objects.front(), nlohmann::json::array());
+  size_t docked = objects.size();
+  for (size_t i = 0; i < objects.size() && docked == objects.size(); ++i) {
+    if (objects[i] == nlohmann::json::array({"crate@dock"})) docked = i;
+  }
+  ASSERT_LT(docked, objects.size());  // the crate got into the dock ...
+  EXPECT_EQ(plan["region_trace"].back(), "charger");  // ... and then the robot went to the charger
+  EXPECT_EQ(report["object_facts_at_end"], objects.back());
+}
+
 TEST(Run, ADifferentialRobotsPlanCarriesItsHeadingAndKeepsItsLimits) {
   const fs::path out = fresh_out_dir();
   const Result r = run(kSource + "/scenarios/rooms_differential.lua --seed 2 --out " + out.string());

@@ -71,6 +71,38 @@ TEST(RendererGolden, DifferentialRobotShowsItsHeading) {
   EXPECT_TRUE(matches_golden(renderer.draw(state, Overlay{}, View::kTop), "differential_robot_heading"));
 }
 
+// A task about an object: the crate in its own colour, the dock outlined in it and labelled "crate -> dock".
+Overlay delivery_goal(const scenario::World& world, bool holds) {
+  Overlay overlay;
+  overlay.object_goals = {{1, 0, holds}};  // crate (B1 is body 0), dock (region 0)
+  overlay.legend = {world.task.formula, std::string("crate -> dock: ") + (holds ? "holds" : "not yet")};
+  overlay.legend_room = {{world.task.formula}, {"crate -> dock: not yet", "crate -> dock: holds"}};
+  return overlay;
+}
+
+TEST(RendererGolden, AnObjectGoalInItsBodysColour) {
+  const scenario::World world = paper_world("delivery");
+  ASSERT_EQ(world.movable_bodies[1].name, "crate");
+  ASSERT_EQ(world.regions[0].name, "dock");
+  EXPECT_TRUE(matches_golden(draw(world, delivery_goal(world, false), View::kPerspective), "delivery_preview"));
+}
+
+// While the goal holds its label turns green: the same picture but for the label (and the legend's words).
+TEST(Renderer, AnObjectGoalsLabelTurnsGreenWhileItHolds) {
+  const scenario::World world = paper_world("delivery");
+  const Image not_yet = draw(world, delivery_goal(world, false), View::kPerspective);
+  const Image holds = draw(world, delivery_goal(world, true), View::kPerspective);
+  int greener = 0, other = 0;
+  for (std::size_t i = 0; i < holds.rgb.size(); i += 3) {
+    if (std::equal(holds.rgb.begin() + static_cast<long>(i), holds.rgb.begin() + static_cast<long>(i) + 3,
+                   not_yet.rgb.begin() + static_cast<long>(i))) continue;
+    const bool green = holds.rgb[i + 1] > holds.rgb[i] + 40 && holds.rgb[i + 1] > holds.rgb[i + 2] + 40;
+    (green ? greener : other) += 1;
+  }
+  EXPECT_GT(greener, 100);
+  EXPECT_LT(other, greener);  // the legend's changed words
+}
+
 scenario::World off_origin_world() {
   return scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/tests/render/data/off_origin.lua");
 }

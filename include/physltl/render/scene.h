@@ -30,6 +30,16 @@ struct SegmentOverlay {
   friend bool operator==(const SegmentOverlay&, const SegmentOverlay&) = default;
 };
 
+// A place the task wants a body in (an object proposition, BODY@REGION): the body is drawn in a colour of
+// its own, the region outlined in that colour and labelled "body -> region"; the label turns green while
+// the body's centre is in the region.
+struct ObjectGoalOverlay {
+  int body = 0;    // World::movable_bodies index
+  int region = 0;  // World::regions index
+  bool holds = false;
+  friend bool operator==(const ObjectGoalOverlay&, const ObjectGoalOverlay&) = default;
+};
+
 struct Overlay {
   std::vector<MRegionOverlay> mregions;
   // Cells of the workspace decomposition, drawn as faint outlines beneath everything else.
@@ -40,6 +50,7 @@ struct Overlay {
   std::vector<Vec2> path;
   // Regions the task avoids (by name): drawn in a warning colour instead of the goals' yellow.
   std::vector<std::string> avoided_regions;
+  std::vector<ObjectGoalOverlay> object_goals;
   // Lines of text in the top-left corner: formula, automaton state, time, ... The camera leaves room for
   // them: nothing of the world is drawn under the legend. A line wider than the picture is shortened in
   // its middle ("...").
