@@ -3,6 +3,8 @@
 -- touches no box at all, so a good plan pushes nothing.
 --   --set columns=10 rows=20   200 boxes on a 20 m x 20 m floor
 --   default columns=4 rows=8    32 boxes
+--   --set gap=0.4 margin_x=1.2 margin_y=1.2   the boxes of a column 0.4 m apart (too close for the robot
+--       to pass between) and lanes 1 m wide along the walls: scenarios/warehouse_rows.lua
 --
 --   +------------------------------+
 --   | c                          b |
@@ -22,11 +24,19 @@ local function count(name, default)
   return v
 end
 local columns, rows = count("columns", 4), count("rows", 8)
+local function length(name, default, low, high)
+  local v = params[name] or default
+  if type(v) ~= "number" or v < low or v > high then
+    error("params." .. name .. " must be a number from " .. low .. " to " .. high .. " (m), got " .. tostring(v))
+  end
+  return v
+end
 
-local box_x, box_y = 0.8, 0.5  -- m, one box
-local gap = 0.25               -- m between the boxes of a column
-local aisle = 1.0              -- m between columns
-local margin_x, margin_y = 1.5, 2.5
+local box_x, box_y = 0.8, 0.5                 -- m, one box
+local gap = length("gap", 0.25, 0.0, 5.0)     -- m between the boxes of a column
+local aisle = 1.0                             -- m between columns
+local margin_x = length("margin_x", 1.5, 1.0, 10.0)  -- m from the walls to the boxes, at the sides
+local margin_y = length("margin_y", 2.5, 1.0, 10.0)  -- and at the ends of the columns
 local width = 2 * margin_x + columns * box_x + (columns - 1) * aisle
 local height = 2 * margin_y + rows * box_y + (rows - 1) * gap
 

@@ -213,6 +213,7 @@ int bench(const BenchArgs& args) {
     results.ompl_with_our_sampler = ompl_sampler == planning::OmplControlSampler::kOurs;
     results.started_at = local_time_now();
     results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->prepared->as_written());
+    results.shortest_push_free_path_m = planning::shortest_push_free_path_length(c->world, c->prepared->as_written());
     for (const auto planner : planners) {
       if (const auto why = planning::refusal(planner, c->prepared->search_task(planner))) throw BadInput(*why);
       // OMPL's planners grow their trees on one thread.

@@ -153,6 +153,9 @@ std::string bench_table(const BenchResults& r) {
   text += std::isfinite(r.shortest_free_path_m)
               ? fmt::format("shortest free path (no plan is shorter; no box in the way): {:.2f} m\n", r.shortest_free_path_m)
               : std::string("shortest free path: none (the task's regions cannot be reached past the fixed bodies)\n");
+  text += std::isfinite(r.shortest_push_free_path_m)
+              ? fmt::format("shortest push-free path (every box in the way): {:.2f} m\n", r.shortest_push_free_path_m)
+              : std::string("shortest push-free path: none (the task needs a push)\n");
   text += "times (of the first validated plan) count unsolved runs at the time limit; pushes, moved (bodies), duration and path are medians over solved runs\n";
   return text;
 }
@@ -231,6 +234,8 @@ json bench_json(const BenchResults& r) {
           {"started_at", r.started_at},
           {"total_duration_s", r.total_duration_s},
           {"shortest_free_path_m", std::isfinite(r.shortest_free_path_m) ? json(r.shortest_free_path_m) : json(nullptr)},
+          {"shortest_push_free_path_m",
+           std::isfinite(r.shortest_push_free_path_m) ? json(r.shortest_push_free_path_m) : json(nullptr)},
           {"planners", std::move(planners)},
           {"ratio_of_medians", ratio ? json(*ratio) : json(nullptr)},
           {"threads_ratios", std::move(ratios)}};

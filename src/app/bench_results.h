@@ -56,6 +56,8 @@ struct BenchResults {
   double total_duration_s = 0.0;
   // No plan's path is shorter (planning/path_lower_bound.h); infinity when no region order is reachable.
   double shortest_free_path_m = 0.0;
+  // The shortest route that pushes nothing (every movable body in the way); infinity when none.
+  double shortest_push_free_path_m = 0.0;
   // Knowledge with each thread count, then the baseline with each (--compare).
   std::vector<PlannerRuns> planners;
 };

@@ -54,6 +54,15 @@ Decomposition Decomposition::build(const scenario::World& world, const Decomposi
     insert_polygon(cdt, geometry::Polygon::from_box(f.footprint).vertices, max_edge);
   }
   for (const auto& r : world.regions) insert_polygon(cdt, r.polygon.vertices, max_edge);
+  // Where the robot's centre would touch a movable body: not a hole (the robot may push the body), but
+  // edges of the mesh, so that each triangle is clear of a body or under it, and the lanes between bodies
+  // are triangles of their own.
+  const double r = world.robot.radius;
+  std::vector<geometry::OrientedBox> grown;
+  for (const auto& m : world.movable_bodies) {
+    grown.push_back({m.footprint.pose, m.footprint.half_extents + Vec2::Constant(r)});
+    insert_polygon(cdt, geometry::Polygon::from_box(grown.back()).vertices, max_edge);
+  }
   // Steiner points on a staggered grid bound the triangle size away from the constraints. (CGAL's
   // Delaunay mesher would be the textbook tool, but it does not terminate on walls that touch the
   // workspace border in Debian's CGAL 5.5; the grid gives the same kind of mesh, deterministically.)

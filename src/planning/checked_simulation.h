@@ -26,6 +26,8 @@ class CheckedSimulation {
   void save(physics::PhysicsState& out) const { simulation_.save(out); }
 
   const scenario::EnvironmentState& environment() const { return environment_; }
+  // The robot's contacts during the last step.
+  const std::vector<scenario::RobotContact>& contacts() const { return contacts_; }
   const knowledge::Kappa& kappa() const { return kappa_; }
 
  private:

@@ -77,7 +77,7 @@ bool ControlSampler::push_towards(const scenario::EnvironmentState& state, const
 }
 
 Control ControlSampler::sample(const scenario::EnvironmentState& state, const knowledge::Kappa& kappa,
-                               const Vec2& target, Random& random) const {
+                               const Vec2& target, bool may_push, Random& random) const {
   Control control;
   control.steps = random.uniform_int(world_.planner.min_steps, world_.planner.max_steps);
   if (!use_knowledge_ || random.chance(kUniformShare)) {
@@ -89,7 +89,7 @@ Control ControlSampler::sample(const scenario::EnvironmentState& state, const kn
   // Free moves go at full speed, the way to the next region is what matters; pushes vary their speed so
   // that a box can be nudged as well as shoved.
   double speed = 1.0;
-  if (push_towards(state, kappa, heading, random, direction)) {
+  if (may_push && push_towards(state, kappa, heading, random, direction)) {
     speed = random.uniform(0.7, 1.0);
   } else {
     direction = unit(heading + 0.6 * random_unit(random));

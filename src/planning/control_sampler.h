@@ -16,9 +16,10 @@ class ControlSampler {
  public:
   ControlSampler(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge, bool use_knowledge);
 
-  // `target`: a point further along the lead, where the search wants the robot to go.
+  // `target`: a point further along the lead, where the search wants the robot to go. `may_push`: false
+  // where the task needs no push (the lead goes round the bodies), so the knowledge sampler only steers.
   Control sample(const scenario::EnvironmentState& state, const knowledge::Kappa& kappa, const Vec2& target,
-                 Random& random) const;
+                 bool may_push, Random& random) const;
 
  private:
   Vec2 uniform_setpoint(Random& random) const;

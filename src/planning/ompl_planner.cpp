@@ -311,7 +311,7 @@ class OurSampling {
     simulation_.restore(physics::PhysicsState::from_values({v, (world_.movable_bodies.size() + 1) * kValuesPerBody}));
     const auto& b = world_.workspace.bounds;
     const Vec2 aim = target ? *target : Vec2(random_.uniform(b.min.x(), b.max.x()), random_.uniform(b.min.y(), b.max.y()));
-    const Control c = sampler_.sample(simulation_.environment(), simulation_.kappa(), aim, random_);
+    const Control c = sampler_.sample(simulation_.environment(), simulation_.kappa(), aim, true, random_);
     set_control(control, c.setpoint, world_.robot.drive == scenario::Drive::kDifferential);
     return static_cast<unsigned>(c.steps);
   }

@@ -1,44 +1,30 @@
 #include "physltl/planning/path_lower_bound.h"
 
-#include "physltl/geometry/free_space.h"
-
 #include <functional>
 #include <limits>
 #include <queue>
 
 namespace physltl::planning {
+namespace {
 
 // A relaxation of the task's product with the free space, small enough to search exactly: a place is the
 // start or a region, and the robot moves from a place to a region at the free-space distance between them
 // (any point of one to any point of the other), reading that region; reading "no region" is free. Any
 // path the robot can follow reads its regions in some order, each leg at least that distance long, so the
 // cheapest accepted order is a lower bound.
-double shortest_free_path_length(const scenario::World& world, const TaskAutomaton& task) {
-  const double r = world.robot.radius;
-  std::vector<geometry::Polygon> obstacles;
-  for (const auto& f : world.fixed_bodies) obstacles.push_back(geometry::grown_from_inside(f.footprint, r));
-  const geometry::Rect bounds{world.workspace.bounds.min + geometry::Vec2::Constant(r),
-                              world.workspace.bounds.max - geometry::Vec2::Constant(r)};
-  const geometry::FreeSpace space(std::move(obstacles), bounds);
-
+// `bodies_stay`: the bodies the task names keep their places (nothing is pushed); otherwise they may be
+// anywhere at no cost.
+double shortest_accepted_route(const scenario::World& world, const TaskAutomaton& task,
+                               const std::vector<std::vector<double>>& leg, bool bodies_stay) {
   const int regions = static_cast<int>(world.regions.size());
-  // Place 0 is the start, place k + 1 region k.
-  std::vector<geometry::FreeSpace::Place> places{space.place(geometry::Polygon{{world.robot.start}})};
-  for (const auto& region : world.regions) places.push_back(space.place(region.polygon));
-  std::vector<std::vector<double>> leg(places.size(), std::vector<double>(places.size(), 0.0));
-  for (size_t from = 0; from < places.size(); ++from) {
-    const std::vector<double> corners = space.distances_from(places[from]);
-    for (size_t to = 1; to < places.size(); ++to) {
-      if (to != from) leg[from][to] = space.distance_to(corners, places[from], places[to]);
-    }
-  }
-
   const int states = static_cast<int>(task.dfa.size());
   const auto id = [&](int place, int q) { return place * states + q; };
-  std::vector<double> cost(places.size() * static_cast<size_t>(states), std::numeric_limits<double>::infinity());
+  std::vector<double> cost(leg.size() * static_cast<size_t>(states), std::numeric_limits<double>::infinity());
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-  const int start = id(0, task.start_state(scenario::EnvironmentState::initial(world)));
+  const scenario::EnvironmentState initial = scenario::EnvironmentState::initial(world);
+  const int start = id(0, task.start_state(initial));
+  const int facts_at_start = task.labelling.facts(initial);
   cost[static_cast<size_t>(start)] = 0.0;
   open.push({0.0, start});
   while (!open.empty()) {
@@ -50,9 +36,10 @@ double shortest_free_path_length(const scenario::World& world, const TaskAutomat
     const auto relax = [&](int v, double length) {
       if (c + length < cost[static_cast<size_t>(v)]) cost[static_cast<size_t>(v)] = c + length, open.push({c + length, v});
     };
-    // The bodies a task names may be anywhere at no cost: moving them takes the robot somewhere too, so
-    // this only makes the bound lower.
+    // Where the bodies may be anywhere at no cost (moving them takes the robot somewhere too, so this only
+    // makes the bound lower), every fact set is tried.
     for (int facts = 0; facts < task.labelling.fact_sets(); ++facts) {
+      if (bodies_stay && facts != facts_at_start) continue;
       relax(id(place, task.step(q, task.labelling.letter(facts, -1))), 0.0);
       for (int region = 0; region < regions; ++region) {
         relax(id(region + 1, task.step(q, task.labelling.letter(facts, region))), leg[static_cast<size_t>(place)][static_cast<size_t>(region + 1)]);
@@ -60,6 +47,43 @@ double shortest_free_path_length(const scenario::World& world, const TaskAutomat
     }
   }
   return std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+geometry::FreeSpace robot_free_space(const scenario::World& world, RobotObstacles obstacles) {
+  const double r = world.robot.radius;
+  std::vector<geometry::Polygon> grown;
+  for (const auto& f : world.fixed_bodies) grown.push_back(geometry::grown_from_inside(f.footprint, r));
+  if (obstacles == RobotObstacles::kAllBodies) {
+    for (const auto& m : world.movable_bodies) grown.push_back(geometry::grown_from_inside(m.footprint, r));
+  }
+  const geometry::Rect bounds{world.workspace.bounds.min + geometry::Vec2::Constant(r),
+                              world.workspace.bounds.max - geometry::Vec2::Constant(r)};
+  return geometry::FreeSpace(std::move(grown), bounds);
+}
+
+std::vector<std::vector<double>> place_distances(const scenario::World& world, const geometry::FreeSpace& space) {
+  std::vector<geometry::FreeSpace::Place> places{space.place(geometry::Polygon{{world.robot.start}})};
+  for (const auto& region : world.regions) places.push_back(space.place(region.polygon));
+  std::vector<std::vector<double>> leg(places.size(), std::vector<double>(places.size(), 0.0));
+  for (size_t from = 0; from < places.size(); ++from) {
+    const std::vector<double> corners = space.distances_from(places[from]);
+    for (size_t to = 1; to < places.size(); ++to) {
+      if (to != from) leg[from][to] = space.distance_to(corners, places[from], places[to]);
+    }
+  }
+  return leg;
+}
+
+double shortest_free_path_length(const scenario::World& world, const TaskAutomaton& task) {
+  return shortest_accepted_route(world, task, place_distances(world, robot_free_space(world, RobotObstacles::kFixedBodies)),
+                                 false);
+}
+
+double shortest_push_free_path_length(const scenario::World& world, const TaskAutomaton& task) {
+  return shortest_accepted_route(world, task, place_distances(world, robot_free_space(world, RobotObstacles::kAllBodies)),
+                                 true);
 }
 
 }  // namespace physltl::planning

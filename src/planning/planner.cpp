@@ -5,6 +5,7 @@
 #include "ompl_planner.h"
 #include "product_graph.h"
 #include "random.h"
+#include "route_choice.h"
 #include "stage_graph.h"
 #include "tree_grower.h"
 #include "worker_pool.h"
@@ -62,37 +63,9 @@ struct Expansion {
   int from = 0;
   Vec2 target = Vec2::Zero();
   std::optional<ObjectLead::Goal> goal;
+  bool may_push = true;  // false in a stage whose lead goes round the bodies
   std::uint64_t seed = 0;
 };
-
-// The knowledge planner's lead goes round boxes that stand in the open: a triangle where the robot's
-// centre would overlap such a box, as the World places it, weighs kObstructedWeight in the lead search, so
-// the lead takes the aisles beside a box rather than a way through it. A box with a fixed body within
-// the robot's diameter stands in a passage (a doorway, a corridor) and is not avoided: the way through is
-// usually the only way, and pushing it is what the task needs. Boxes move while planning; the weights
-// keep their first places: cheap, and the tree's own statistics take over where the lead was wrong.
-constexpr double kObstructedWeight = 0.1;
-
-std::vector<double> clearance_weights(const decomposition::Decomposition& decomposition,
-                                      const knowledge::AbstractKnowledge& knowledge) {
-  const double r = knowledge.robot.radius;
-  std::vector<geometry::OrientedBox> in_the_open;
-  for (const auto& b : knowledge.movable_bodies) {
-    const geometry::OrientedBox reach{b.footprint.pose, b.footprint.half_extents + geometry::Vec2::Constant(2 * r)};
-    const bool in_a_passage = std::any_of(knowledge.fixed_bodies.begin(), knowledge.fixed_bodies.end(),
-                                          [&](const auto& f) { return geometry::overlap(reach, f.footprint); });
-    if (!in_a_passage) in_the_open.push_back(b.footprint);
-  }
-  std::vector<double> weights;
-  weights.reserve(decomposition.triangles().size());
-  for (const auto& triangle : decomposition.triangles()) {
-    const bool obstructed = std::any_of(in_the_open.begin(), in_the_open.end(), [&](const geometry::OrientedBox& box) {
-      return geometry::overlap(box, triangle.centroid, r);
-    });
-    weights.push_back(obstructed ? kObstructedWeight : 1.0);
-  }
-  return weights;
-}
 
 class Search {
  public:
@@ -103,10 +76,11 @@ class Search {
         knowledge_(knowledge),
         decomposition_(decomposition),
         options_(options),
-        triangle_weights_(options.planner == PlannerKind::kKnowledge ? clearance_weights(decomposition, knowledge)
-                                                                   : std::vector<double>{}),
         stages_(task),
-        graph_(decomposition, stages_, triangle_weights_),
+        // The knowledge planner's lead goes round the bodies where the task needs no pushing (route_choice.h).
+        routes_(options.planner == PlannerKind::kKnowledge ? choose_routes(world, task, stages_, decomposition)
+                                                         : RouteChoice{}),
+        graph_(decomposition, stages_, routes_.lead_factor),
         lead_search_(graph_),
         object_lead_(world, knowledge, decomposition),
         random_(options.seed),
@@ -114,8 +88,8 @@ class Search {
         growers_(static_cast<size_t>(pool_.threads())),
         stage_motions_(static_cast<size_t>(stages_.stages())) {}
 
-  PlanResult run() {
-    const auto started = std::chrono::steady_clock::now();
+  // `started`: when planning began, before this search prepared its lead (the route choice costs time too).
+  PlanResult run(std::chrono::steady_clock::time_point started) {
     PlanResult result;
     add_root();
     if (accepting(motions_[0].stage)) {
@@ -182,6 +156,7 @@ class Search {
   int horizon() const { return std::max(0, closest_to_accept_ - kLevelsAhead); }
   bool accepting(int stage) const { return task_.dfa.accepting[static_cast<size_t>(stages_.automaton_state_of(stage))]; }
   int product_of(int motion) const { return motions_[static_cast<size_t>(motion)].product_state; }
+  bool goes_round(int stage) const { return !routes_.going_round.empty() && routes_.going_round[static_cast<size_t>(stage)]; }
 
   void add_root() {
     physics::Simulation simulation(world_);
@@ -254,6 +229,7 @@ class Search {
       const double u = random_.uniform01(), v = random_.uniform01();
       e.target = decomposition_.triangles()[graph_.triangle_of(lead[ahead])].point_at(u, v);
       e.goal.reset();
+      e.may_push = !goes_round(motions_[static_cast<size_t>(e.from)].stage);
       e.seed = random_.next();
     }
   }
@@ -287,6 +263,7 @@ class Search {
       const std::optional<Vec2> approach = object_lead_.approach(motions_[static_cast<size_t>(from)].robot, body_at(from));
       e.target = approach.value_or(Vec2::Zero());
       e.goal = approach ? std::nullopt : std::optional<ObjectLead::Goal>(goal);
+      e.may_push = true;
       e.seed = random_.next();
     }
   }
@@ -305,7 +282,7 @@ class Search {
                        options_.planner == PlannerKind::kKnowledge);
       }
       const Expansion& e = expansions_[static_cast<size_t>(task - extra)];
-      grower->grow(motions_[static_cast<size_t>(e.from)], e.target, e.goal ? &*e.goal : nullptr, e.seed,
+      grower->grow(motions_[static_cast<size_t>(e.from)], e.target, e.goal ? &*e.goal : nullptr, e.may_push, e.seed,
                    growths_[static_cast<size_t>(task - extra)]);
     });
   }
@@ -368,8 +345,8 @@ class Search {
   const knowledge::AbstractKnowledge& knowledge_;
   const decomposition::Decomposition& decomposition_;
   const PlannerOptions& options_;
-  const std::vector<double> triangle_weights_;  // the knowledge planner's: the lead goes round boxes
   const StageGraph stages_;
+  const RouteChoice routes_;
   ProductGraph graph_;
   LeadSearch lead_search_;
   ObjectLead object_lead_;
@@ -452,7 +429,8 @@ knowledge::ValidityMode validity_mode(PlannerKind planner) {
 PlanResult plan(const scenario::World& world, const TaskAutomaton& task, const knowledge::AbstractKnowledge& knowledge,
                 const decomposition::Decomposition& decomposition, const PlannerOptions& options) {
   if (is_ompl(options.planner)) return plan_with_ompl(world, task, knowledge, decomposition, options);
-  return Search(world, task, knowledge, decomposition, options).run();
+  const auto started = std::chrono::steady_clock::now();
+  return Search(world, task, knowledge, decomposition, options).run(started);
 }
 
 int Plan::total_steps() const {

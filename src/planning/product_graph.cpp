@@ -7,7 +7,7 @@
 namespace physltl::planning {
 
 ProductGraph::ProductGraph(const decomposition::Decomposition& decomposition, const StageGraph& stages,
-                           std::span<const double> triangle_weight)
+                           std::vector<float> lead_factor)
     : stages_(stages),
       stages_count_(stages.stages()),
       motions_(static_cast<size_t>(decomposition.size()) * stages_count_),
@@ -24,8 +24,7 @@ ProductGraph::ProductGraph(const decomposition::Decomposition& decomposition, co
     const int distance = stages_.distance(stage_of(i));
     volume_per_distance_[id] = distance < 0 ? 0.0 : decomposition.triangles()[triangle_of(i)].area / (distance + 1.0);
   }
-  lead_scale_.assign(decomposition.size(), 1.0);
-  if (!triangle_weight.empty()) std::copy(triangle_weight.begin(), triangle_weight.end(), lead_scale_.begin());
+  lead_factor_ = std::move(lead_factor);
   entry_cost_.resize(motions_.size());
   lead_cost_.resize(motions_.size());
   lead_previous_.resize(motions_.size());
@@ -34,7 +33,7 @@ ProductGraph::ProductGraph(const decomposition::Decomposition& decomposition, co
 }
 
 void ProductGraph::update_entry_cost(int id) {
-  entry_cost_[id] = 1.0 / (weight(id) * lead_scale_[static_cast<size_t>(triangle_of(id))]);
+  entry_cost_[id] = (lead_factor_.empty() ? 1.0 : lead_factor_[static_cast<size_t>(id)]) / weight(id);
 }
 
 void ProductGraph::add_motion(int id, int motion) {

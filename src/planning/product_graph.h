@@ -7,7 +7,6 @@
 #include "physltl/decomposition/decomposition.h"
 #include "stage_graph.h"
 
-#include <span>
 #include <utility>
 #include <vector>
 
@@ -15,10 +14,11 @@ namespace physltl::planning {
 
 class ProductGraph {
  public:
-  // `triangle_weight`, when given, scales each triangle's weight in the lead search only (1: as Bhatia et
-  // al.; less: the lead avoids it); where to grow keeps the plain weights.
+  // `lead_factor`, when given, makes each product state that much dearer in the lead search only (1: as
+  // Bhatia et al.): the knowledge planner's lead goes round the bodies where the task needs no push
+  // (route_choice.h). Where to grow keeps the plain weights.
   ProductGraph(const decomposition::Decomposition& decomposition, const StageGraph& stages,
-               std::span<const double> triangle_weight = {});
+               std::vector<float> lead_factor = {});
 
   int id(int triangle, int stage) const { return triangle * stages_count_ + stage; }
   int triangle_of(int id) const { return id / stages_count_; }
@@ -55,7 +55,7 @@ class ProductGraph {
   std::vector<std::vector<int>> motions_;
   std::vector<int> selections_;
   void update_entry_cost(int id);
-  std::vector<double> lead_scale_;  // per triangle
+  std::vector<float> lead_factor_;  // per product state; empty: all 1
   std::vector<double> entry_cost_;  // 1 / (weight * lead scale), kept up to date: the lead search reads it for every edge
   std::vector<double> lead_cost_;
   std::vector<int> lead_previous_;

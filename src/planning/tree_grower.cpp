@@ -2,6 +2,7 @@
 
 #include "random.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace physltl::planning {
@@ -23,16 +24,19 @@ TreeGrower::TreeGrower(const scenario::World& world, const TaskAutomaton& task, 
       object_lead_(object_lead),
       sampler_(world, knowledge, use_knowledge),
       max_braking_steps_(static_cast<int>(std::ceil(kMaxBrakingTime / world.planner.step_size))),
-      simulation_(world, knowledge, use_knowledge ? knowledge::ValidityMode::kKnowledge : knowledge::ValidityMode::kBaseline) {}
+      named_(world.movable_bodies.size(), false),
+      simulation_(world, knowledge, use_knowledge ? knowledge::ValidityMode::kKnowledge : knowledge::ValidityMode::kBaseline) {
+  for (const Labelling::NamedBody& n : task.labelling.named_bodies()) named_[static_cast<size_t>(n.body)] = true;
+}
 
-void TreeGrower::grow(const Motion& from, const Vec2& target, const ObjectLead::Goal* goal, std::uint64_t seed,
-                      Growth& growth) {
+void TreeGrower::grow(const Motion& from, const Vec2& target, const ObjectLead::Goal* goal, bool may_push,
+                      std::uint64_t seed, Growth& growth) {
   growth = Growth{};
   Random random(seed);
   simulation_.restore(from.state);
   const scenario::EnvironmentState& state = simulation_.environment();
   const Vec2 aim = goal != nullptr ? object_lead_.target(*goal, state, simulation_.kappa(), random) : target;
-  propagate(sampler_.sample(state, simulation_.kappa(), aim, random), from.stage, growth);
+  propagate(sampler_.sample(state, simulation_.kappa(), aim, may_push, random), from.stage, may_push, growth);
 }
 
 int TreeGrower::stage_after_step(int stage) const {
@@ -41,18 +45,23 @@ int TreeGrower::stage_after_step(int stage) const {
   return stages_.dead(stages_.automaton_state_of(next)) ? -1 : next;
 }
 
-bool TreeGrower::valid_step(const Vec2& setpoint, Growth& growth) {
+bool TreeGrower::valid_step(const Vec2& setpoint, bool may_push, Growth& growth) {
   ++growth.physics_steps;
-  if (simulation_.step(setpoint)) return true;
+  const auto pushes_unasked = [&] {
+    return std::any_of(simulation_.contacts().begin(), simulation_.contacts().end(), [&](const scenario::RobotContact& c) {
+      return c.body == scenario::RobotContact::Body::kMovable && !named_[static_cast<size_t>(c.index)];
+    });
+  };
+  if (simulation_.step(setpoint) && (may_push || !pushes_unasked())) return true;
   growth.stopped_by_invalid_step = true;
   return false;
 }
 
-void TreeGrower::propagate(const Control& control, int stage, Growth& growth) {
+void TreeGrower::propagate(const Control& control, int stage, bool may_push, Growth& growth) {
   int valid_steps = 0;
   bool accepted = false;
   for (int step = 1; step <= control.steps; ++step) {
-    if (!valid_step(control.setpoint, growth)) break;
+    if (!valid_step(control.setpoint, may_push, growth)) break;
     const int next = stage_after_step(stage);
     if (next < 0) break;
     stage = next;
@@ -72,7 +81,7 @@ void TreeGrower::propagate(const Control& control, int stage, Growth& growth) {
 bool TreeGrower::brake(int stage, Growth& growth) {
   const Vec2 stop = Vec2::Zero();
   for (int step = 1; step <= max_braking_steps_; ++step) {
-    if (!valid_step(stop, growth)) return false;
+    if (!valid_step(stop, true, growth)) return false;
     stage = stage_after_step(stage);
     if (stage < 0) return false;
     if (!simulation_.environment().at_rest()) continue;

@@ -52,18 +52,20 @@ class TreeGrower {
 
   // Replaces `growth` with what grows from `from` towards `target`, drawing from a generator seeded with
   // `seed`. With an object goal the target is where that goal's body move needs the robot (object_lead.h),
-  // found in `from`'s state.
-  void grow(const Motion& from, const Vec2& target, const ObjectLead::Goal* goal, std::uint64_t seed, Growth& growth);
+  // found in `from`'s state. Without `may_push` the control steers only, never deliberately pushes.
+  void grow(const Motion& from, const Vec2& target, const ObjectLead::Goal* goal, bool may_push, std::uint64_t seed,
+            Growth& growth);
 
  private:
   // Applies `control` from the simulation's current state until the end, an invalid step, a dead
   // automaton state or acceptance; the valid steps make the growth's motion.
-  void propagate(const Control& control, int stage, Growth& growth);
+  void propagate(const Control& control, int stage, bool may_push, Growth& growth);
   // From an accepting motion's end: the drive's set-point zero until the robot and the boxes are at rest,
   // every step valid and the automaton still accepting at the end. Whether that worked.
   bool brake(int stage, Growth& growth);
-  // One valid step under `control`, then INFERENCE; false when the step was invalid.
-  bool valid_step(const Vec2& setpoint, Growth& growth);
+  // One valid step under `control`, then INFERENCE; false when the step was invalid, or when it touched a
+  // movable body the task does not name while `may_push` is false.
+  bool valid_step(const Vec2& setpoint, bool may_push, Growth& growth);
   // The stage after the physics step just taken, from `stage`; -1 when the automaton died.
   int stage_after_step(int stage) const;
   bool accepting(int stage) const { return task_.dfa.accepting[static_cast<std::size_t>(stages_.automaton_state_of(stage))]; }
@@ -76,6 +78,7 @@ class TreeGrower {
   const ObjectLead& object_lead_;
   const ControlSampler sampler_;
   const int max_braking_steps_;
+  std::vector<bool> named_;  // per movable body: the task says where it must be (touching it is never refused)
   CheckedSimulation simulation_;
   physics::PhysicsState last_valid_;
 };

@@ -33,15 +33,13 @@ TEST(PathLowerBound, OnAnOpenFloorTheLegsAreStraightAndTheirOrderCounts) {
   EXPECT_NEAR(bound(open_floor("F a & F b")), to_a + a_to_b, 1e-12);
 }
 
-TEST(PathLowerBound, AWallInTheWayIsWalkedRoundGrownByTheRobotsRadius) {
-  scenario::World world = open_floor("F a");
-  scenario::FixedBody wall;
-  wall.name = "wall";
-  wall.footprint = {{{2, 0}, 0.0}, {0.1, 3}};  // x = 1.9..2.1, y = -3..3
-  world.fixed_bodies.push_back(wall);
-  // The true shortest path of the centre: tangent to the wall's grown corner at (1.9, 3), over its top
-  // (0.2 m), and tangent off the corner at (2.1, 3) to a's corner (4.5, 0.5); each corner an arc of
-  // radius 0.25 between the tangent point and the top.
+// A bar across the way to a: x = 1.9..2.1, y = -3..3.
+const geometry::OrientedBox kBar{{{2, 0}, 0.0}, {0.1, 3}};
+
+// The true shortest path of the centre past the bar: tangent to its grown corner at (1.9, 3), over its
+// top (0.2 m), and tangent off the corner at (2.1, 3) to a's corner (4.5, 0.5); each corner an arc of
+// radius 0.25 between the tangent point and the top.
+double way_over_the_bar() {
   const double r = 0.25;
   const auto tangent = [&](geometry::Vec2 p, geometry::Vec2 c) { return std::sqrt((p - c).squaredNorm() - r * r); };
   const auto tangent_angle = [&](geometry::Vec2 p, geometry::Vec2 c, double side) {
@@ -50,12 +48,38 @@ TEST(PathLowerBound, AWallInTheWayIsWalkedRoundGrownByTheRobotsRadius) {
   };
   const geometry::Vec2 start(0, 0), left(1.9, 3), right(2.1, 3), corner(4.5, 0.5);
   const double up = M_PI / 2;
-  const double around = tangent(start, left) + r * (tangent_angle(start, left, -1) + 2 * M_PI - up) + 0.2 +
-                        r * (up - tangent_angle(corner, right, 1)) + tangent(corner, right);
+  return tangent(start, left) + r * (tangent_angle(start, left, -1) + 2 * M_PI - up) + 0.2 +
+         r * (up - tangent_angle(corner, right, 1)) + tangent(corner, right);
+}
+
+TEST(PathLowerBound, AWallInTheWayIsWalkedRoundGrownByTheRobotsRadius) {
+  scenario::World world = open_floor("F a");
+  scenario::FixedBody wall;
+  wall.name = "wall";
+  wall.footprint = kBar;
+  world.fixed_bodies.push_back(wall);
+  const double around = way_over_the_bar();
   const double b = bound(world);
   EXPECT_GT(b, 4.5 + 1.0);  // much longer than straight through the wall
   EXPECT_LE(b, around);     // the grown corners are cut by chords: never longer than the true path
   EXPECT_GT(b, around - 0.05);
+}
+
+// The same bar, movable: the robot may push it, so the free path goes straight through; the push-free
+// path goes over it like over the wall, and there is none once the bar closes the floor.
+TEST(PathLowerBound, APushFreePathGoesRoundTheMovableBodiesOrIsNone) {
+  scenario::World world = open_floor("F a");
+  scenario::MovableBody bar;
+  bar.name = "bar";
+  bar.footprint = kBar;
+  world.movable_bodies.push_back(bar);
+  const TaskAutomaton task = TaskAutomaton::make(ltl::parse(world.task.formula), world);
+  EXPECT_NEAR(shortest_free_path_length(world, task), 4.5, 1e-12);
+  const double around = way_over_the_bar(), push_free = shortest_push_free_path_length(world, task);
+  EXPECT_LE(push_free, around);
+  EXPECT_GT(push_free, around - 0.05);
+  world.movable_bodies[0].footprint.half_extents.y() = 10.0;  // from the floor's south edge to its north edge
+  EXPECT_TRUE(std::isinf(shortest_push_free_path_length(world, TaskAutomaton::make(ltl::parse(world.task.formula), world))));
 }
 
 TEST(PathLowerBound, AnUnreachableRegionHasNoBound) {

@@ -213,6 +213,33 @@ TEST(Planner, TheKnowledgePlannerGoesRoundABoxInTheOpen) {
   }
 }
 
+// Going round or pushing through (route_choice.h): a row of boxes with a free lane past its end is gone
+// round; a box in the only doorway is pushed; so is a light box whose way round is five times as long.
+TEST(Planner, ARowOfBoxesWithAFreeLanePastItIsGoneRound) {
+  const TestProblem p("../tests/planning/data/box_row.lua");
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const PlanResult result = p.solve(seed);
+    ASSERT_TRUE(result.solved) << result.stop_reason;
+    const Replay r = p.check(result.plan);
+    ASSERT_TRUE(r.validated()) << r.failure;
+    EXPECT_EQ(r.pushes, 0) << "seed " << seed;
+  }
+}
+
+TEST(Planner, TheOnlyWayThroughABoxAndAWayRoundFiveTimesLongerArePushedThrough) {
+  for (const char* world : {"through_a_box.lua", "long_detour.lua"}) {
+    const TestProblem p(std::string("../tests/planning/data/") + world);
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      const PlanResult result = p.solve(seed);
+      ASSERT_TRUE(result.solved) << world << " " << result.stop_reason;
+      const Replay r = p.check(result.plan);
+      ASSERT_TRUE(r.validated()) << r.failure;
+      EXPECT_GT(r.pushes, 0) << world << ", seed " << seed;
+      EXPECT_EQ(r.moved_bodies, std::vector<int>{0}) << world << ", seed " << seed;
+    }
+  }
+}
+
 ValidatedPlan solve_and_improve(const TestProblem& p, std::uint64_t seed, int improve) {
   PlannerOptions options;
   options.seed = seed;

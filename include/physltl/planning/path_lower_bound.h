@@ -2,14 +2,35 @@
 // How far the robot must at least travel to satisfy the task: a shortest path of its centre among the
 // fixed bodies (configuration space: each grown by the robot's radius, from inside) through the regions in
 // an order the automaton accepts, with no movable body in the way. No plan is shorter; a plan that pushes
-// nothing it need not can come close.
+// nothing it need not can come close. And the same with every movable body in the way too: the shortest
+// route that pushes nothing, when there is one.
 
+#include "physltl/geometry/free_space.h"
 #include "physltl/planning/task.h"
 #include "physltl/scenario/world.h"
 
+#include <vector>
+
 namespace physltl::planning {
+
+// What the robot's centre may not cross.
+enum class RobotObstacles {
+  kFixedBodies,  // the fixed bodies: the robot may push any movable one
+  kAllBodies,    // the movable bodies too: ways that push nothing
+};
+
+// The robot's centre among the obstacles: each grown by its radius (from inside, so distances are at most
+// the true ones), inside the workspace shrunk by its radius.
+geometry::FreeSpace robot_free_space(const scenario::World& world, RobotObstacles obstacles);
+
+// Shortest ways between the places a task's legs run between: place 0 is the robot's start, place k + 1
+// World region k. leg[from][to] is infinite where there is none; leg[from][0] is not computed.
+std::vector<std::vector<double>> place_distances(const scenario::World& world, const geometry::FreeSpace& space);
 
 // Metres; infinity when no order of regions the task accepts can be reached.
 double shortest_free_path_length(const scenario::World& world, const TaskAutomaton& task);
+// The same among every body, fixed or movable, with the bodies the task names where they stand: the
+// shortest route that pushes nothing; infinity when every accepted order needs a push.
+double shortest_push_free_path_length(const scenario::World& world, const TaskAutomaton& task);
 
 }  // namespace physltl::planning

@@ -1,0 +1,194 @@
+#include "route_choice.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <set>
+#include <utility>
+
+namespace physltl::planning {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Per stage, the places (0: the start, k + 1: region k) the robot can enter it at: the start for the
+// first stage, the region whose entry led into a stage, and for a stage a body move led into, the body's
+// new region (the robot stands by it).
+std::vector<std::set<int>> entry_places(const scenario::World& world, const TaskAutomaton& task, const StageGraph& stages) {
+  std::vector<std::set<int>> entries(static_cast<size_t>(stages.stages()));
+  const int first = stages.stage(task.start_state(scenario::EnvironmentState::initial(world)),
+                                 task.labelling.facts(scenario::EnvironmentState::initial(world)));
+  entries[static_cast<size_t>(first)].insert(0);
+  std::deque<int> todo{first};
+  std::vector<bool> seen(entries.size(), false);
+  seen[static_cast<size_t>(first)] = true;
+  const auto reach = [&](int next, int place) {
+    if (entries[static_cast<size_t>(next)].insert(place).second || !seen[static_cast<size_t>(next)]) {
+      seen[static_cast<size_t>(next)] = true;
+      todo.push_back(next);
+    }
+  };
+  while (!todo.empty()) {
+    const int s = todo.front();
+    todo.pop_front();
+    for (int region = 0; region < task.labelling.regions(); ++region) {
+      const int next = stages.after_robot(s, region);
+      if (next != s) reach(next, region + 1);
+    }
+    if (const auto& move = stages.body_move(s)) {
+      const Labelling::NamedBody& body = task.labelling.named_bodies()[static_cast<size_t>(move->named)];
+      const int facts = task.labelling.with_place(stages.facts_of(s), move->named, move->place);
+      const int next = stages.after_letter(s, task.labelling.letter(facts, -1));
+      const std::set<int> from = entries[static_cast<size_t>(s)];
+      if (move->place > 0) {
+        reach(next, body.regions[static_cast<size_t>(move->place - 1)] + 1);
+      } else {
+        for (int place : from) reach(next, place);
+      }
+    }
+  }
+  return entries;
+}
+
+// The places (k + 1: region k) whose entry brings a stage closer to acceptance; none for a stage that is
+// accepting, lost, or waits for a body move.
+std::vector<int> target_places(const TaskAutomaton& task, const StageGraph& stages, int s) {
+  std::vector<int> targets;
+  const int d = stages.distance(s);
+  if (d <= 0 || stages.body_move(s)) return targets;
+  for (int region = 0; region < task.labelling.regions(); ++region) {
+    if (stages.distance(stages.after_robot(s, region)) == d - 1) targets.push_back(region + 1);
+  }
+  return targets;
+}
+
+// Shortest distances over the decomposition's triangles (between centroids) from `sources`, through the
+// triangles `open` allows.
+std::vector<double> triangle_distances(const decomposition::Decomposition& decomposition, const std::vector<int>& sources,
+                                       const std::vector<bool>& open) {
+  const auto& triangles = decomposition.triangles();
+  std::vector<double> distance(triangles.size(), kInfinity);
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+  for (int t : sources) distance[static_cast<size_t>(t)] = 0.0, queue.push({0.0, t});
+  while (!queue.empty()) {
+    const auto [d, t] = queue.top();
+    queue.pop();
+    if (d > distance[static_cast<size_t>(t)]) continue;
+    for (int n : triangles[static_cast<size_t>(t)].neighbors) {
+      if (!open[static_cast<size_t>(n)]) continue;
+      const double next = d + (triangles[static_cast<size_t>(n)].centroid - triangles[static_cast<size_t>(t)].centroid).norm();
+      if (next < distance[static_cast<size_t>(n)]) distance[static_cast<size_t>(n)] = next, queue.push({next, n});
+    }
+  }
+  return distance;
+}
+
+// The triangles standing for a place: the start's, or every triangle of a region.
+std::vector<int> place_triangles(const scenario::World& world, const decomposition::Decomposition& decomposition, int place) {
+  if (place == 0) return {decomposition.locate(world.robot.start)};
+  std::vector<int> triangles;
+  for (int t = 0; t < decomposition.size(); ++t) {
+    if (decomposition.triangles()[static_cast<size_t>(t)].region == place - 1) triangles.push_back(t);
+  }
+  return triangles;
+}
+
+}  // namespace
+
+RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& task, const StageGraph& stages,
+                          const decomposition::Decomposition& decomposition) {
+  const int count = stages.stages();
+  RouteChoice choice{std::vector<bool>(static_cast<size_t>(count), false), {}};
+  const std::vector<bool> under = triangles_under_bodies(world, task, decomposition);
+  if (std::none_of(under.begin(), under.end(), [](bool u) { return u; })) return choice;
+  std::vector<bool> clear(under.size()), all(under.size(), true);
+  for (size_t t = 0; t < under.size(); ++t) clear[t] = !under[t];
+
+  // Distances to each place, along the triangles: through the bodies, and round them.
+  const int places = task.labelling.regions() + 1;
+  std::vector<std::vector<int>> triangles_of(static_cast<size_t>(places));
+  for (int place = 0; place < places; ++place) triangles_of[static_cast<size_t>(place)] = place_triangles(world, decomposition, place);
+  std::vector<std::vector<double>> through(static_cast<size_t>(places)), round(static_cast<size_t>(places));
+  const auto distances_to = [&](int place) {
+    if (through[static_cast<size_t>(place)].empty()) {
+      through[static_cast<size_t>(place)] = triangle_distances(decomposition, triangles_of[static_cast<size_t>(place)], all);
+      round[static_cast<size_t>(place)] = triangle_distances(decomposition, triangles_of[static_cast<size_t>(place)], clear);
+    }
+  };
+  // From a place to a target: the nearest of the place's triangles (the robot may stand under a body at
+  // the start; it is there already).
+  const auto leg = [&](const std::vector<std::vector<double>>& to, int from, int target) {
+    double best = kInfinity;
+    for (int t : triangles_of[static_cast<size_t>(from)]) best = std::min(best, to[static_cast<size_t>(target)][static_cast<size_t>(t)]);
+    return best;
+  };
+
+  const std::vector<std::set<int>> entries = entry_places(world, task, stages);
+  for (int s = 0; s < count; ++s) {
+    const std::vector<int> targets = target_places(task, stages, s);
+    if (targets.empty() || entries[static_cast<size_t>(s)].empty()) continue;
+    for (int target : targets) distances_to(target);
+    bool goes_round = true;
+    for (int from : entries[static_cast<size_t>(s)]) {
+      double best_through = kInfinity, best_round = kInfinity;
+      for (int target : targets) {
+        best_through = std::min(best_through, leg(through, from, target));
+        best_round = std::min(best_round, leg(round, from, target));
+      }
+      if (!std::isfinite(best_through)) continue;  // nothing gets there from here: no say
+      goes_round = goes_round && best_round <= (1.0 + kDetourFactor) * best_through + kDetourAllowance;
+    }
+    choice.going_round[static_cast<size_t>(s)] = goes_round;
+  }
+  if (std::none_of(choice.going_round.begin(), choice.going_round.end(), [](bool b) { return b; })) return choice;
+
+  // In a stage that goes round, each state costs the lead more the longer the way through its triangle is
+  // than the stage's shortest push-free way, and a triangle under a body kUnderBodyCost times more.
+  choice.lead_factor.assign(static_cast<size_t>(decomposition.size()) * static_cast<size_t>(count), 1.0f);
+  for (int s = 0; s < count; ++s) {
+    if (!choice.going_round[static_cast<size_t>(s)]) continue;
+    std::vector<int> from;
+    for (int place : entries[static_cast<size_t>(s)]) {
+      for (int t : triangles_of[static_cast<size_t>(place)]) from.push_back(t);
+    }
+    const std::vector<double> in = triangle_distances(decomposition, from, clear);
+    std::vector<double> out(under.size(), kInfinity);
+    double shortest = kInfinity;
+    for (int target : target_places(task, stages, s)) {
+      for (size_t t = 0; t < out.size(); ++t) out[t] = std::min(out[t], round[static_cast<size_t>(target)][t]);
+      for (int t : triangles_of[static_cast<size_t>(target)]) shortest = std::min(shortest, in[static_cast<size_t>(t)]);
+    }
+    for (int t = 0; t < decomposition.size(); ++t) {
+      const double extra = in[static_cast<size_t>(t)] + out[static_cast<size_t>(t)] - shortest;
+      const double factor = (under[static_cast<size_t>(t)] ? kUnderBodyCost : 1.0) *
+                            (std::isfinite(extra) ? 1.0 + std::max(0.0, extra) / kDetourLength : kUnderBodyCost);
+      choice.lead_factor[static_cast<size_t>(t) * static_cast<size_t>(count) + static_cast<size_t>(s)] = static_cast<float>(factor);
+    }
+  }
+  return choice;
+}
+
+std::vector<bool> triangles_under_bodies(const scenario::World& world, const TaskAutomaton& task,
+                                         const decomposition::Decomposition& decomposition) {
+  std::vector<geometry::OrientedBox> bodies;
+  for (size_t b = 0; b < world.movable_bodies.size(); ++b) {
+    const auto& named = task.labelling.named_bodies();
+    const bool moved_on_purpose =
+        std::any_of(named.begin(), named.end(), [&](const Labelling::NamedBody& n) { return n.body == static_cast<int>(b); });
+    if (!moved_on_purpose) bodies.push_back(world.movable_bodies[b].footprint);
+  }
+  std::vector<bool> under;
+  under.reserve(decomposition.triangles().size());
+  for (const auto& triangle : decomposition.triangles()) {
+    under.push_back(std::any_of(bodies.begin(), bodies.end(), [&](const geometry::OrientedBox& box) {
+      return geometry::overlap(box, triangle.centroid, world.robot.radius);
+    }));
+  }
+  return under;
+}
+
+}  // namespace physltl::planning

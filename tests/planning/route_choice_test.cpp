@@ -1,0 +1,41 @@
+// Going round the movable bodies or pushing through them: the rule, stage by stage.
+
+#include "route_choice.h"
+#include "stage_graph.h"
+#include "test_problem.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <utility>
+
+namespace physltl::planning {
+namespace {
+
+bool first_stage_goes_round(const std::string& scenario) {
+  const TestProblem p(scenario);
+  const StageGraph stages(p.task);
+  const scenario::EnvironmentState start = scenario::EnvironmentState::initial(p.world);
+  return choose_routes(p.world, p.task, stages, p.decomposition).going_round[static_cast<size_t>(
+      stages.stage(p.task.start_state(start), p.task.labelling.facts(start)))];
+}
+
+TEST(RouteChoice, GoesRoundWhereTheWayRoundIsALittleLongerAndPushesWhereItIsMuchLongerOrNone) {
+  EXPECT_TRUE(first_stage_goes_round("../tests/planning/data/box_row.lua"));   // 11.5 m round, 8.5 m through
+  EXPECT_FALSE(first_stage_goes_round("../tests/planning/data/long_detour.lua"));  // 14.5 m round, 3 m through
+  EXPECT_FALSE(first_stage_goes_round("../tests/planning/data/through_a_box.lua"));  // no way round
+  EXPECT_FALSE(first_stage_goes_round("rooms.lua"));  // B1 closes room 1's corridor
+  EXPECT_TRUE(first_stage_goes_round("warehouse_rows.lua"));
+}
+
+TEST(RouteChoice, OnlyTheTrianglesUnderBodiesTheTaskDoesNotNameAreGoneRound) {
+  const TestProblem p("delivery.lua");  // B1 in room 1's corridor; the crate is moved on purpose
+  const std::vector<bool> under = triangles_under_bodies(p.world, p.task, p.decomposition);
+  const auto triangle_at = [&](double x, double y) { return under[static_cast<size_t>(p.decomposition.locate({x, y}))]; };
+  EXPECT_TRUE(triangle_at(-3.0, 1.7));   // B1
+  EXPECT_FALSE(triangle_at(-3.5, 0.0));  // the crate
+  EXPECT_FALSE(triangle_at(3.0, 0.0));   // the open hall
+}
+
+}  // namespace
+}  // namespace physltl::planning
