@@ -214,6 +214,7 @@ int bench(const BenchArgs& args) {
     results.started_at = local_time_now();
     results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->prepared->as_written());
     results.shortest_push_free_path_m = planning::shortest_push_free_path_length(c->world, c->prepared->as_written());
+    results.preparation_s = c->prepared->preparation_s();
     for (const auto planner : planners) {
       if (const auto why = planning::refusal(planner, c->prepared->search_task(planner))) throw BadInput(*why);
       // OMPL's planners grow their trees on one thread.

@@ -58,6 +58,8 @@ struct BenchResults {
   double shortest_free_path_m = 0.0;
   // The shortest route that pushes nothing (every movable body in the way); infinity when none.
   double shortest_push_free_path_m = 0.0;
+  // Done once for the world and task, not in any run's time: the decomposition and the route choice.
+  double preparation_s = 0.0;
   // Knowledge with each thread count, then the baseline with each (--compare).
   std::vector<PlannerRuns> planners;
 };

@@ -5,10 +5,12 @@
 
 #include "physltl/decomposition/decomposition.h"
 #include "physltl/planning/validated_plan.h"
+#include "physltl/planning/route_choice.h"
 #include "physltl/planning/task.h"
 #include "reasoning.h"
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 
 namespace physltl::app {
@@ -16,7 +18,8 @@ namespace physltl::app {
 class PreparedRun {
  public:
   // Expects a feasible reasoning (reasoning.feasible()); both must outlive this object.
-  PreparedRun(const scenario::World& world, const Reasoning& reasoning);
+  PreparedRun(const scenario::World& world, const Reasoning& reasoning,
+              std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now());
 
   const scenario::World& world() const { return world_; }
   const Reasoning& reasoning() const { return reasoning_; }
@@ -27,6 +30,10 @@ class PreparedRun {
   // The formula as written, which every replay checks.
   const planning::TaskAutomaton& as_written() const { return as_written_; }
   const decomposition::Decomposition& decomposition() const { return decomposition_; }
+  // The knowledge planner's route choice for its search task, prepared once (route_choice.h).
+  const planning::RouteChoice& routes() const { return routes_; }
+  // Seconds the decomposition and the route choice took: done once per world and task, not per run.
+  double preparation_s() const { return preparation_s_; }
 
  private:
   const scenario::World& world_;
@@ -34,6 +41,8 @@ class PreparedRun {
   planning::TaskAutomaton simplified_;
   planning::TaskAutomaton as_written_;
   decomposition::Decomposition decomposition_;
+  planning::RouteChoice routes_;
+  double preparation_s_ = 0.0;
 };
 
 struct SolveOptions {

@@ -96,6 +96,7 @@ int run(const RunArgs& args) {
                   planner == planning::PlannerKind::kBaseline ? world.task.formula
                                                               : ltl::to_string(*reasoning.simplified_formula()),
                   task.dfa.size(), planning::planner_name(planner), world.planner.seed));
+  say(fmt::format("prepare    {:.2f} s: decomposition, and where the lead goes round the bodies", prepared.preparation_s()));
 
   StopSignal stop;  // Ctrl-C and SIGTERM end the search; nothing is written then
   ProgressLine progress(args.quiet);

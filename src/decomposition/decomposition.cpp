@@ -3,6 +3,8 @@
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
+#include "physltl/geometry/point_grid.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -42,6 +44,38 @@ bool triangle_contains(const Triangle& t, const Vec2& p) {
   return (d0 >= eps && d1 >= eps && d2 >= eps) || (d0 <= -eps && d1 <= -eps && d2 <= -eps);
 }
 
+// Where the robot's centre would touch a movable body that stands in clutter: not a hole (the robot may
+// push the body), but edges of the mesh, so that each triangle is clear of such a body or under it, and the
+// lanes between the rows are triangles of their own. In clutter: another movable body within the robot's
+// diameter (a row, a heap), and no fixed body that near. A body beside a wall stands in a passage: its
+// outline would only cut slivers against the wall (tiny triangles the lead shuns), and the way there is
+// through it anyway; a lone body has open floor round it, which the plain mesh already resolves.
+std::vector<geometry::OrientedBox> clutter_outlines(const scenario::World& world) {
+  const double r = world.robot.radius;
+  const auto& bodies = world.movable_bodies;
+  std::vector<Vec2> centres;
+  double reach = 0.0;  // of a body's corners from its centre, the farthest
+  for (const auto& m : bodies) {
+    centres.push_back(m.footprint.pose.position);
+    reach = std::max(reach, m.footprint.half_extents.norm());
+  }
+  const geometry::PointGrid near(world.workspace.bounds, std::max(2 * reach + 2 * r, 0.1), centres);
+  std::vector<int> neighbours;
+  std::vector<geometry::OrientedBox> outlines;
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    const geometry::OrientedBox within{bodies[i].footprint.pose, bodies[i].footprint.half_extents + Vec2::Constant(2 * r)};
+    const bool in_a_passage = std::any_of(world.fixed_bodies.begin(), world.fixed_bodies.end(),
+                                          [&](const auto& f) { return geometry::overlap(within, f.footprint); });
+    if (in_a_passage) continue;
+    near.near(centres[i], 2 * reach + 2 * r, neighbours);
+    const bool in_clutter = std::any_of(neighbours.begin(), neighbours.end(), [&](int j) {
+      return j != static_cast<int>(i) && geometry::overlap(within, bodies[static_cast<size_t>(j)].footprint);
+    });
+    if (in_clutter) outlines.push_back({bodies[i].footprint.pose, bodies[i].footprint.half_extents + Vec2::Constant(r)});
+  }
+  return outlines;
+}
+
 }  // namespace
 
 Decomposition Decomposition::build(const scenario::World& world, const DecompositionOptions& options) {
@@ -54,14 +88,8 @@ Decomposition Decomposition::build(const scenario::World& world, const Decomposi
     insert_polygon(cdt, geometry::Polygon::from_box(f.footprint).vertices, max_edge);
   }
   for (const auto& r : world.regions) insert_polygon(cdt, r.polygon.vertices, max_edge);
-  // Where the robot's centre would touch a movable body: not a hole (the robot may push the body), but
-  // edges of the mesh, so that each triangle is clear of a body or under it, and the lanes between bodies
-  // are triangles of their own.
-  const double r = world.robot.radius;
-  std::vector<geometry::OrientedBox> grown;
-  for (const auto& m : world.movable_bodies) {
-    grown.push_back({m.footprint.pose, m.footprint.half_extents + Vec2::Constant(r)});
-    insert_polygon(cdt, geometry::Polygon::from_box(grown.back()).vertices, max_edge);
+  for (const geometry::OrientedBox& grown : clutter_outlines(world)) {
+    insert_polygon(cdt, geometry::Polygon::from_box(grown).vertices, max_edge);
   }
   // Steiner points on a staggered grid bound the triangle size away from the constraints. (CGAL's
   // Delaunay mesher would be the textbook tool, but it does not terminate on walls that touch the

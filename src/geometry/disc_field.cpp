@@ -10,22 +10,7 @@ namespace {
 
 constexpr double kSqrt2 = 1.4142135623730951;
 
-double distance_to_segment(const Vec2& a, const Vec2& b, const Vec2& p) {
-  const Vec2 d = b - a;
-  const double length2 = d.squaredNorm();
-  const double t = length2 > 0 ? std::clamp((p - a).dot(d) / length2, 0.0, 1.0) : 0.0;
-  return (a + t * d - p).norm();
-}
-
 }  // namespace
-
-double distance_to(const Polygon& polygon, const Vec2& p) {
-  if (polygon.contains(p)) return 0.0;
-  double best = std::numeric_limits<double>::infinity();
-  const auto& v = polygon.vertices;
-  for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) best = std::min(best, distance_to_segment(v[j], v[i], p));
-  return best;
-}
 
 DiscField::DiscField(const Rect& bounds, double cell, double radius, std::span<const OrientedBox> obstacles)
     : origin_(bounds.min),

@@ -120,19 +120,51 @@ FreeSpace::FreeSpace(std::vector<Polygon> obstacles, const Rect& bounds) : obsta
     if (o.signed_area() < 0) std::reverse(o.vertices.begin(), o.vertices.end());
     obstacle_bounds_.push_back(o.bounds());
   }
+  // About one obstacle per cell.
+  const Vec2 size = bounds_.size().cwiseMax(Vec2::Constant(1e-9));
+  cell_ = std::max(std::sqrt(size.x() * size.y() / std::max<double>(1.0, static_cast<double>(obstacles_.size()))), 1e-3);
+  grid_origin_ = bounds_.min;
+  columns_ = std::clamp(static_cast<int>(std::ceil(size.x() / cell_)), 1, 4096);
+  rows_ = std::clamp(static_cast<int>(std::ceil(size.y() / cell_)), 1, 4096);
+  cells_.assign(static_cast<size_t>(columns_) * static_cast<size_t>(rows_), {});
+  const auto column = [&](double x) { return std::clamp(static_cast<int>(std::floor((x - grid_origin_.x()) / cell_)), 0, columns_ - 1); };
+  const auto row = [&](double y) { return std::clamp(static_cast<int>(std::floor((y - grid_origin_.y()) / cell_)), 0, rows_ - 1); };
+  for (size_t i = 0; i < obstacles_.size(); ++i) {
+    const Rect& r = obstacle_bounds_[i];
+    if (r.max.x() < bounds_.min.x() || r.min.x() > bounds_.max.x() || r.max.y() < bounds_.min.y() || r.min.y() > bounds_.max.y()) {
+      continue;  // wholly outside where a path may go
+    }
+    for (int y = row(r.min.y()); y <= row(r.max.y()); ++y) {
+      for (int x = column(r.min.x()); x <= column(r.max.x()); ++x) cells_[static_cast<size_t>(y) * columns_ + x].push_back(static_cast<int>(i));
+    }
+  }
+  // Each corner with its polygon's neighbouring corners, for the tangency test below.
+  std::vector<std::pair<Vec2, Vec2>> sides;
   for (const Polygon& o : obstacles_) {
-    for (const Vec2& v : o.vertices) {
+    const auto& vs = o.vertices;
+    for (size_t k = 0; k < vs.size(); ++k) {
+      const Vec2& v = vs[k];
       if (!bounds_.contains(v)) continue;
       const bool buried = std::any_of(obstacles_.begin(), obstacles_.end(), [&](const Polygon& other) {
         return &other != &o && enters(v, v, other);
       });
-      if (!buried) corners_.push_back(v);
+      if (buried) continue;
+      corners_.push_back(v);
+      sides.push_back({vs[(k + vs.size() - 1) % vs.size()], vs[(k + 1) % vs.size()]});
     }
   }
+  // A shortest path turns only round corners it touches on the outside: a segment leaving a corner into
+  // its own polygon's cone (its two sides on either side of the segment's line) is on no shortest path,
+  // so only segments tangent at both ends are tested for being free (the reduced visibility graph).
+  const auto tangent = [&](size_t at, const Vec2& to) {
+    const Vec2 d = to - corners_[at];
+    const double before = cross(d, sides[at].first - corners_[at]), after = cross(d, sides[at].second - corners_[at]);
+    return !((before > 0 && after < 0) || (before < 0 && after > 0));
+  };
   edges_.resize(corners_.size());
   for (size_t i = 0; i < corners_.size(); ++i) {
     for (size_t j = i + 1; j < corners_.size(); ++j) {
-      if (!free(corners_[i], corners_[j])) continue;
+      if (!tangent(i, corners_[j]) || !tangent(j, corners_[i]) || !free(corners_[i], corners_[j])) continue;
       const double d = (corners_[i] - corners_[j]).norm();
       edges_[i].push_back({static_cast<int>(j), d});
       edges_[j].push_back({static_cast<int>(i), d});
@@ -143,14 +175,45 @@ FreeSpace::FreeSpace(std::vector<Polygon> obstacles, const Rect& bounds) : obsta
 bool FreeSpace::free(const Vec2& a, const Vec2& b) const {
   if (!bounds_.contains(a) || !bounds_.contains(b)) return false;
   const Rect span{a.cwiseMin(b), a.cwiseMax(b)};
-  for (size_t i = 0; i < obstacles_.size(); ++i) {
-    const Rect& r = obstacle_bounds_[i];
+  const auto blocks = [&](int i) {
+    const Rect& r = obstacle_bounds_[static_cast<size_t>(i)];
     if (r.max.x() < span.min.x() || r.min.x() > span.max.x() || r.max.y() < span.min.y() || r.min.y() > span.max.y()) {
-      continue;
+      return false;
     }
-    if (enters(a, b, obstacles_[i])) return false;
+    return enters(a, b, obstacles_[static_cast<size_t>(i)]);
+  };
+  // The cells the segment crosses, in order (Amanatides and Woo's traversal); an obstacle in several of
+  // them is tested in each, which costs less than remembering which were.
+  const Vec2 from = (a - grid_origin_) / cell_, to = (b - grid_origin_) / cell_;
+  int x = std::clamp(static_cast<int>(std::floor(from.x())), 0, columns_ - 1);
+  int y = std::clamp(static_cast<int>(std::floor(from.y())), 0, rows_ - 1);
+  const int last_x = std::clamp(static_cast<int>(std::floor(to.x())), 0, columns_ - 1);
+  const int last_y = std::clamp(static_cast<int>(std::floor(to.y())), 0, rows_ - 1);
+  const Vec2 d = to - from;
+  const int step_x = d.x() > 0 ? 1 : -1, step_y = d.y() > 0 ? 1 : -1;
+  const double delta_x = d.x() != 0 ? std::abs(1.0 / d.x()) : kInfinity, delta_y = d.y() != 0 ? std::abs(1.0 / d.y()) : kInfinity;
+  double next_x = d.x() != 0 ? ((step_x > 0 ? x + 1 - from.x() : from.x() - x) * delta_x) : kInfinity;
+  double next_y = d.y() != 0 ? ((step_y > 0 ? y + 1 - from.y() : from.y() - y) * delta_y) : kInfinity;
+  while (true) {
+    for (int i : cells_[static_cast<size_t>(y) * columns_ + x]) {
+      if (blocks(i)) return false;
+    }
+    if (x == last_x && y == last_y) return true;
+    // Step into the neighbouring cell the segment reaches first; at a corner both ways, so no cell it
+    // touches is skipped.
+    if (next_x < next_y) {
+      x += step_x, next_x += delta_x;
+    } else if (next_y < next_x) {
+      y += step_y, next_y += delta_y;
+    } else {
+      for (int i : cells_[static_cast<size_t>(y) * columns_ + std::clamp(x + step_x, 0, columns_ - 1)]) {
+        if (blocks(i)) return false;
+      }
+      x += step_x, next_x += delta_x;
+      y += step_y, next_y += delta_y;
+    }
+    if (x < 0 || x >= columns_ || y < 0 || y >= rows_) return true;
   }
-  return true;
 }
 
 FreeSpace::Place FreeSpace::place(const Polygon& polygon) const {

@@ -2,6 +2,7 @@
 
 #include "obstacle.h"
 #include "physltl/geometry/disc_field.h"
+#include "physltl/geometry/free_space.h"
 
 #include <fmt/format.h>
 
@@ -236,7 +237,7 @@ ObjectVerdict judge(const AbstractKnowledge& k, const ObjectProposition& object)
   const double cell = std::max(std::clamp(inscribed / 10.0, 0.01, 0.05), std::sqrt(size.x() * size.y() / 1e6));
   geometry::DiscField field(k.workspace, std::min(cell, inscribed), inscribed, obstacles);
   field.compute_distances([&](const Vec2& centre, double half_edge) {
-    return geometry::distance_to(region.region, centre) <= half_edge * std::sqrt(2.0);
+    return geometry::distance(centre, region.region) <= half_edge * std::sqrt(2.0);
   });
   if (!field.reaches_target(body.footprint.pose.position)) {
     verdict.reachable = false;

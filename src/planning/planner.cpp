@@ -5,7 +5,6 @@
 #include "ompl_planner.h"
 #include "product_graph.h"
 #include "random.h"
-#include "route_choice.h"
 #include "stage_graph.h"
 #include "tree_grower.h"
 #include "worker_pool.h"
@@ -78,8 +77,9 @@ class Search {
         options_(options),
         stages_(task),
         // The knowledge planner's lead goes round the bodies where the task needs no pushing (route_choice.h).
-        routes_(options.planner == PlannerKind::kKnowledge ? choose_routes(world, task, stages_, decomposition)
-                                                         : RouteChoice{}),
+        routes_(options.planner != PlannerKind::kKnowledge ? RouteChoice{}
+                : options.routes != nullptr                  ? *options.routes
+                                                             : choose_routes(world, task, decomposition)),
         graph_(decomposition, stages_, routes_.lead_factor),
         lead_search_(graph_),
         object_lead_(world, knowledge, decomposition),
@@ -316,8 +316,9 @@ class Search {
       failures = 0;
       return;
     }
-    // The root stays: it keeps the search going, and a robot at rest can always move.
-    if (++failures == kFailuresBeforeDropped && from != 0) {
+    // The root stays, and so does the node the lead starts from after a body move: they keep the search
+    // going (the lead's first state must hold a node).
+    if (++failures == kFailuresBeforeDropped && from != 0 && from != segment_start_) {
       graph_.remove_motion(motions_[static_cast<size_t>(from)].product_state, from);
     }
   }

@@ -1,4 +1,8 @@
-#include "route_choice.h"
+#include "physltl/planning/route_choice.h"
+
+#include "stage_graph.h"
+
+#include "physltl/planning/path_lower_bound.h"
 
 #include <algorithm>
 #include <cmath>
@@ -99,45 +103,33 @@ std::vector<int> place_triangles(const scenario::World& world, const decompositi
 
 }  // namespace
 
-RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& task, const StageGraph& stages,
+RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& task,
                           const decomposition::Decomposition& decomposition) {
+  const StageGraph stages(task);
   const int count = stages.stages();
   RouteChoice choice{std::vector<bool>(static_cast<size_t>(count), false), {}};
   const std::vector<bool> under = triangles_under_bodies(world, task, decomposition);
   if (std::none_of(under.begin(), under.end(), [](bool u) { return u; })) return choice;
-  std::vector<bool> clear(under.size()), all(under.size(), true);
+  std::vector<bool> clear(under.size());
   for (size_t t = 0; t < under.size(); ++t) clear[t] = !under[t];
 
-  // Distances to each place, along the triangles: through the bodies, and round them.
+  // Shortest ways between the places: through the bodies, and round them (geometry::FreeSpace, exact).
+  const auto through = place_distances(world, robot_free_space(world, RobotObstacles::kFixedBodies));
+  const auto push_free = place_distances(world, robot_free_space(world, RobotObstacles::kAllBodies));
   const int places = task.labelling.regions() + 1;
   std::vector<std::vector<int>> triangles_of(static_cast<size_t>(places));
   for (int place = 0; place < places; ++place) triangles_of[static_cast<size_t>(place)] = place_triangles(world, decomposition, place);
-  std::vector<std::vector<double>> through(static_cast<size_t>(places)), round(static_cast<size_t>(places));
-  const auto distances_to = [&](int place) {
-    if (through[static_cast<size_t>(place)].empty()) {
-      through[static_cast<size_t>(place)] = triangle_distances(decomposition, triangles_of[static_cast<size_t>(place)], all);
-      round[static_cast<size_t>(place)] = triangle_distances(decomposition, triangles_of[static_cast<size_t>(place)], clear);
-    }
-  };
-  // From a place to a target: the nearest of the place's triangles (the robot may stand under a body at
-  // the start; it is there already).
-  const auto leg = [&](const std::vector<std::vector<double>>& to, int from, int target) {
-    double best = kInfinity;
-    for (int t : triangles_of[static_cast<size_t>(from)]) best = std::min(best, to[static_cast<size_t>(target)][static_cast<size_t>(t)]);
-    return best;
-  };
 
   const std::vector<std::set<int>> entries = entry_places(world, task, stages);
   for (int s = 0; s < count; ++s) {
     const std::vector<int> targets = target_places(task, stages, s);
     if (targets.empty() || entries[static_cast<size_t>(s)].empty()) continue;
-    for (int target : targets) distances_to(target);
     bool goes_round = true;
     for (int from : entries[static_cast<size_t>(s)]) {
       double best_through = kInfinity, best_round = kInfinity;
       for (int target : targets) {
-        best_through = std::min(best_through, leg(through, from, target));
-        best_round = std::min(best_round, leg(round, from, target));
+        best_through = std::min(best_through, through[static_cast<size_t>(from)][static_cast<size_t>(target)]);
+        best_round = std::min(best_round, push_free[static_cast<size_t>(from)][static_cast<size_t>(target)]);
       }
       if (!std::isfinite(best_through)) continue;  // nothing gets there from here: no say
       goes_round = goes_round && best_round <= (1.0 + kDetourFactor) * best_through + kDetourAllowance;
@@ -155,13 +147,14 @@ RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& tas
     for (int place : entries[static_cast<size_t>(s)]) {
       for (int t : triangles_of[static_cast<size_t>(place)]) from.push_back(t);
     }
-    const std::vector<double> in = triangle_distances(decomposition, from, clear);
-    std::vector<double> out(under.size(), kInfinity);
-    double shortest = kInfinity;
+    std::vector<int> to;
     for (int target : target_places(task, stages, s)) {
-      for (size_t t = 0; t < out.size(); ++t) out[t] = std::min(out[t], round[static_cast<size_t>(target)][t]);
-      for (int t : triangles_of[static_cast<size_t>(target)]) shortest = std::min(shortest, in[static_cast<size_t>(t)]);
+      for (int t : triangles_of[static_cast<size_t>(target)]) to.push_back(t);
     }
+    const std::vector<double> in = triangle_distances(decomposition, from, clear);
+    const std::vector<double> out = triangle_distances(decomposition, to, clear);
+    double shortest = kInfinity;
+    for (int t : to) shortest = std::min(shortest, in[static_cast<size_t>(t)]);
     for (int t = 0; t < decomposition.size(); ++t) {
       const double extra = in[static_cast<size_t>(t)] + out[static_cast<size_t>(t)] - shortest;
       const double factor = (under[static_cast<size_t>(t)] ? kUnderBodyCost : 1.0) *

@@ -1,6 +1,7 @@
 // Going round the movable bodies or pushing through them: the rule, stage by stage.
 
-#include "route_choice.h"
+#include "physltl/planning/route_choice.h"
+
 #include "stage_graph.h"
 #include "test_problem.h"
 
@@ -16,7 +17,7 @@ bool first_stage_goes_round(const std::string& scenario) {
   const TestProblem p(scenario);
   const StageGraph stages(p.task);
   const scenario::EnvironmentState start = scenario::EnvironmentState::initial(p.world);
-  return choose_routes(p.world, p.task, stages, p.decomposition).going_round[static_cast<size_t>(
+  return choose_routes(p.world, p.task, p.decomposition).going_round[static_cast<size_t>(
       stages.stage(p.task.start_state(start), p.task.labelling.facts(start)))];
 }
 

@@ -2,8 +2,10 @@
 // The triangular decomposition of the workspace minus the fixed bodies (paper Sec. 4.3, after Bhatia et
 // al.): a conforming Delaunay mesh whose edges follow every region boundary, so each triangle lies in
 // exactly one propositional region or in none (p0). Movable bodies are no holes (the robot can push them),
-// but the outline of each, grown by the robot's radius, is made of mesh edges too: a triangle is then
-// either clear of every body or wholly where the robot's centre would touch one (planning/route_choice).
+// but the outline of each body in clutter (another movable body within the robot's diameter, no fixed one),
+// grown by the robot's radius, is made of mesh edges too: a triangle is then either clear of such a body or
+// wholly where the robot's centre would touch it, and lanes between rows of boxes are triangles of their
+// own (planning/route_choice).
 
 #include "physltl/scenario/world.h"
 

@@ -52,7 +52,4 @@ class DiscField {
   std::vector<double> distance_;
 };
 
-// The distance from `p` to `polygon` (0 inside or on its boundary).
-double distance_to(const Polygon& polygon, const Vec2& p);
-
 }  // namespace physltl::geometry

@@ -44,6 +44,12 @@ class FreeSpace {
 
   std::vector<Polygon> obstacles_;
   std::vector<Rect> obstacle_bounds_;
+  // The obstacles overlapping each cell of a uniform grid over the bounds: a segment is tested against the
+  // obstacles of the cells it crosses, not all of them.
+  Vec2 grid_origin_ = Vec2::Zero();
+  double cell_ = 1.0;
+  int columns_ = 1, rows_ = 1;
+  std::vector<std::vector<int>> cells_;
   Rect bounds_;
   std::vector<Vec2> corners_;                           // obstacle corners inside bounds and no obstacle
   std::vector<std::vector<std::pair<int, double>>> edges_;  // per corner: visible corners and distances

@@ -57,7 +57,6 @@ class Labelling {
   int with_place(int facts, int named, int place) const;
 
   int letter(const scenario::EnvironmentState& state) const;
-  int robot_region(const scenario::Vec2& robot) const { return map_.at(robot); }
   // The fact set of the bodies' centres: `centres[b]` of World body b.
   int facts(const scenario::EnvironmentState& state) const;
 

@@ -14,6 +14,7 @@
 #include "physltl/knowledge/abstract_knowledge.h"
 #include "physltl/knowledge/validity.h"
 #include "physltl/planning/plan.h"
+#include "physltl/planning/route_choice.h"
 #include "physltl/planning/task.h"
 
 #include <atomic>
@@ -62,6 +63,9 @@ struct PlannerOptions {
   int threads = 1;
   // Candidates plan_and_validate spends shortening the first validated plan (improve.h); 0: none.
   int improve = 0;
+  // The knowledge planner's choice of going round or pushing through (route_choice.h), prepared for the
+  // task once; chosen by the search itself when not given.
+  const RouteChoice* routes = nullptr;
 };
 
 struct PlannerStats {

@@ -5,9 +5,8 @@
 // The lead goes round the bodies in a stage when, from every such place, the shortest way to one of those
 // regions that pushes nothing (through no triangle under a movable body) is at most (1 + kDetourFactor)
 // times the shortest way through the bodies plus kDetourAllowance; otherwise pushing is how the task gets
-// done, and the bodies cost the lead nothing. Ways run along the decomposition's triangles, centroid to
-// centroid: its edges follow every body's outline grown by the robot's radius, so a triangle is wholly
-// under a body or clear of it, and both ways are measured alike.
+// done, and the bodies cost the lead nothing. Both ways are shortest paths of the robot's centre
+// (geometry::FreeSpace, path_lower_bound.h), exact up to the grown bodies' rounded corners.
 //
 // Where a stage goes round, the lead also keeps near its shortest push-free way: a product state costs the
 // lead more the longer a way through its triangle is than that shortest way, so that the search does not
@@ -15,7 +14,6 @@
 
 #include "physltl/decomposition/decomposition.h"
 #include "physltl/planning/task.h"
-#include "stage_graph.h"
 
 #include <vector>
 
@@ -35,7 +33,9 @@ struct RouteChoice {
   std::vector<float> lead_factor;   // per product state (triangle * stages + stage); empty: all 1
 };
 
-RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& task, const StageGraph& stages,
+// For the stages of `task` (stage_graph.h). Depends on the World and the task only, like the
+// decomposition: a run prepares it once for every search (PlannerOptions::routes).
+RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& task,
                           const decomposition::Decomposition& decomposition);
 
 // Per triangle: the robot's centre at the triangle's centroid would overlap a movable body as the World
