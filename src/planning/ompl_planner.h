@@ -7,7 +7,7 @@
 // LTLPlanner searches it, or one of OMPL's control planners (RRT, KPIECE1, SST, PDST) does.
 // OMPL types stay in this module's .cpp files.
 
-#include "physltl/planning/planner.h"
+#include "physltl/planning/planner_options.h"
 
 #include <vector>
 

@@ -22,7 +22,11 @@ struct Plan {
   std::vector<Control> controls;
   // The physics state after each control, as the planner saw it; replay must reproduce them exactly.
   std::vector<physics::PhysicsState> states;
-  int total_steps() const;
+  int total_steps() const {
+    int total = 0;
+    for (const auto& c : controls) total += c.steps;
+    return total;
+  }
 };
 
 // One edge of the search tree, for pictures: where the robot went and in which automaton state it ended.

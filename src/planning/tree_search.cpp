@@ -1,0 +1,380 @@
+#include "tree_search.h"
+
+#include "lead_search.h"
+#include "object_lead.h"
+#include "product_graph.h"
+#include "random.h"
+#include "stage_graph.h"
+#include "tree_grower.h"
+#include "worker_pool.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <functional>
+#include <optional>
+
+namespace physltl::planning {
+namespace {
+
+constexpr int kExpansionsPerLead = 64;  // tree expansions between two lead computations
+// Expansions chosen together and grown in parallel. Choosing a batch before growing it makes the plan
+// independent of the number of threads; a batch much larger than the thread count keeps them all busy
+// although its propagations differ in length.
+constexpr int kBatch = 16;
+static_assert(kExpansionsPerLead % kBatch == 0);
+constexpr int kBatchesPerLead = kExpansionsPerLead / kBatch;
+// Share of expansions that grow from the frontier of the lead (below) rather than from anywhere along it.
+// Bhatia's weights alone spread the effort over every stage the tree has passed, most of it going to
+// rooms already done in a sequencing task; the rest keeps every stage in reach. Measured with the next
+// constant (median propagations, seeds 1..12/8/12/10/10): rooms_n with 4, 8 and 16 rooms 42 %, 29 % and
+// 46 % fewer, rooms.lua 13 % and ordered.lua 45 % fewer.
+constexpr double kFrontierShare = 0.8;
+// How many lead states ahead an expansion may aim: one triangle is too short a horizon for a robot
+// pushing a box, and small triangles along walls make a few of them short too.
+constexpr int kMaxStepsAhead = 8;
+// A node whose expansions fail at their first physics step this many times in a row is dropped from the
+// candidates: the robot is about to hit a wall or a box's forbidden side whatever it does. Such nodes are
+// common, since a motion keeps the valid steps before the one that failed, and when they were the only
+// ones in the lead's frontier they held the search for thousands of expansions (rooms_n with 16 rooms,
+// seeds 1..12: median propagations 21,700 -> 17,600, worst 65,600 -> 23,900; 2, 4 and 8 within noise of
+// each other; rooms.lua and ordered.lua unchanged).
+constexpr int kFailuresBeforeDropped = 8;
+// The lead ends this many automaton steps beyond the furthest the tree has got, not at acceptance: the
+// expansions only use its first part, and with many stages ahead the rest was most of the lead search's
+// work (rooms_n with 16 rooms: the same leads in 8 of 10 seeds, no more propagations; one step ahead
+// changed most leads and cost 20 % more).
+constexpr int kLevelsAhead = 2;
+
+// Where a stage needs a body moved, the expansions go to the frontier stage's nodes whose body is nearest
+// its goal along its way (the best of a few drawn at random), and sometimes to any of them: the nearest
+// nodes are where the body is pushed on, the others keep a stuck body from holding the search. A node's
+// distance counts the robot's way to the body a little, and each time it was chosen already.
+constexpr double kObjectNearestShare = 0.8;
+constexpr int kObjectTournament = 4;
+constexpr double kObjectRobotWeight = 0.3;       // per metre between the robot and the body
+constexpr double kObjectSelectionPenalty = 0.2;  // metres per earlier choice of the node
+
+// Where to grow from and towards, and the seed of the grower's own generator. With an object goal, the
+// grower finds the target in the node's state (object_lead.h).
+struct Expansion {
+  int from = 0;
+  Vec2 target = Vec2::Zero();
+  std::optional<ObjectLead::Goal> goal;
+  bool may_push = true;  // false in a stage whose lead goes round the bodies
+  std::uint64_t seed = 0;
+};
+
+class Search {
+ public:
+  Search(const scenario::World& world, const TaskAutomaton& task, const knowledge::AbstractKnowledge& knowledge,
+         const decomposition::Decomposition& decomposition, const PlannerOptions& options)
+      : world_(world),
+        task_(task),
+        knowledge_(knowledge),
+        decomposition_(decomposition),
+        options_(options),
+        stages_(task),
+        // The knowledge planner's lead goes round the bodies where the task needs no pushing (route_choice.h).
+        routes_(options.planner != PlannerKind::kKnowledge ? RouteChoice{}
+                : options.routes != nullptr                  ? *options.routes
+                                                             : choose_routes(world, task, decomposition)),
+        graph_(decomposition, stages_, routes_.lead_factor),
+        lead_search_(graph_),
+        object_lead_(world, knowledge, decomposition),
+        random_(options.seed),
+        pool_(options.threads),
+        growers_(static_cast<size_t>(pool_.threads())),
+        stage_motions_(static_cast<size_t>(stages_.stages())) {}
+
+  // `started`: when planning began, before this search prepared its lead (the route choice costs time too).
+  PlanResult run(std::chrono::steady_clock::time_point started) {
+    PlanResult result;
+    add_root();
+    if (accepting(motions_[0].stage)) {
+      finish(result, 0, started, "solved");
+      return result;
+    }
+    int lead_start = segment_start_;
+    std::vector<int> lead = lead_search_.next(product_of(lead_start), horizon());
+    while (true) {
+      // Where the frontier's next move is a body's, the object lead guides the expansions; else the lead
+      // through the decomposition, from the first node after the last body the tree moved for the task.
+      const std::optional<BodyMove> body_move = stages_.body_move(frontier_stage_);
+      if (!body_move && lead_start != segment_start_) {
+        lead_start = segment_start_;
+        lead = lead_search_.next(product_of(lead_start), horizon());
+      }
+      if (!body_move && lead.empty()) {
+        finish(result, -1, started, "no lead");
+        return result;
+      }
+      std::vector<int> next_lead;
+      for (int batch = 0; batch < kBatchesPerLead; ++batch) {
+        if (body_move) {
+          choose_object_expansions(*body_move);
+        } else {
+          // Again for every batch: the last one may have added nodes to the lead or dropped some.
+          collect_available(lead);
+          choose_expansions(lead);
+        }
+        // The next lead is computed while the last batch grows: the tree stands still meanwhile, and on a
+        // large world the lead search costs as much as a batch.
+        if (batch + 1 == kBatchesPerLead) {
+          grow_in_parallel([&, horizon = horizon(), start = product_of(lead_start)] {
+            next_lead = lead_search_.next(start, horizon);
+          });
+        } else {
+          grow_in_parallel(nullptr);
+        }
+        const int solution = add_growths();
+        if (solution >= 0) {
+          finish(result, solution, started, "solved");
+          return result;
+        }
+        if (const char* reason = should_stop(started)) {
+          finish(result, -1, started, reason);
+          return result;
+        }
+      }
+      lead = std::move(next_lead);
+    }
+  }
+
+ private:
+  const char* should_stop(std::chrono::steady_clock::time_point started) const {
+    if (options_.stop != nullptr && options_.stop->load(std::memory_order_relaxed)) return "interrupted";
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >= options_.time_limit) {
+      return "time limit";
+    }
+    if (motions_.size() >= options_.max_tree_nodes) return "tree full";
+    return nullptr;
+  }
+
+  // How far the lead looks: a few stages beyond the furthest the tree has got.
+  int horizon() const { return std::max(0, closest_to_accept_ - kLevelsAhead); }
+  bool accepting(int stage) const { return task_.dfa.accepting[static_cast<size_t>(stages_.automaton_state_of(stage))]; }
+  int product_of(int motion) const { return motions_[static_cast<size_t>(motion)].product_state; }
+  bool goes_round(int stage) const { return !routes_.going_round.empty() && routes_.going_round[static_cast<size_t>(stage)]; }
+
+  void add_root() {
+    physics::Simulation simulation(world_);
+    Motion root;
+    simulation.save(root.state);
+    root.robot = world_.robot.start;
+    // The start is labelled with its letter too (OMPL's LTLPlanner forgets this).
+    const int letter = task_.labelling.letter(scenario::EnvironmentState::initial(world_));
+    root.stage = stages_.stage(task_.step(task_.dfa.start, letter), task_.labelling.facts_of(letter));
+    root.product_state = graph_.id(decomposition_.locate(root.robot), root.stage);
+    closest_to_accept_ = stages_.distance(root.stage);
+    frontier_stage_ = root.stage;
+    add_motion(std::move(root));
+  }
+
+  // Adds a node to the tree and its book-keeping.
+  void add_motion(Motion motion) {
+    const int index = static_cast<int>(motions_.size());
+    graph_.add_motion(motion.product_state, index);
+    stage_motions_[static_cast<size_t>(motion.stage)].push_back(index);
+    const int distance = stages_.distance(motion.stage);
+    if (distance >= 0 && distance < closest_to_accept_) {
+      // Out of a stage where a body had to move: the robot's part of the task starts again from here.
+      if (stages_.body_move(frontier_stage_)) segment_start_ = index;
+      closest_to_accept_ = distance;
+      frontier_stage_ = motion.stage;
+    }
+    motions_.push_back(std::move(motion));
+    failed_starts_.push_back(0);
+    chosen_.push_back(0);
+  }
+
+  // Lead states that already hold tree nodes, with their weights, for sampling where to grow.
+  // The frontier: the available lead states in the automaton state of the last one, the furthest the tree
+  // has got along the lead.
+  void collect_available(const std::vector<int>& lead) {
+    available_.clear();
+    cumulative_.clear();
+    double total = 0.0;
+    int frontier = -1;  // the stage of the frontier
+    for (size_t i = 0; i < lead.size(); ++i) {
+      if (graph_.motions(lead[i]).empty()) continue;
+      const int q = graph_.stage_of(lead[i]);
+      if (q != frontier) frontier = q, frontier_weight_ = total;
+      total += graph_.weight(lead[i]);
+      available_.push_back(static_cast<int>(i));
+      cumulative_.push_back(total);
+    }
+  }
+
+  // By weight among the available lead states: usually those of the frontier, sometimes all of them.
+  int pick_available_lead_index() {
+    const double from = random_.chance(kFrontierShare) ? frontier_weight_ : 0.0;
+    const double x = from + random_.uniform01() * (cumulative_.back() - from);
+    const size_t k = std::upper_bound(cumulative_.begin(), cumulative_.end(), x) - cumulative_.begin();
+    return available_[std::min(k, available_.size() - 1)];
+  }
+
+  // SelectHighLevelState of Algorithm 3, kBatch times, with the tree as it stands.
+  void choose_expansions(const std::vector<int>& lead) {
+    expansions_.resize(kBatch);
+    for (Expansion& e : expansions_) {
+      const int lead_index = pick_available_lead_index();
+      const int product = lead[lead_index];
+      graph_.count_selection(product);
+      const auto& candidates = graph_.motions(product);
+      e.from = candidates[random_.uniform_int(0, static_cast<int>(candidates.size()) - 1)];
+      const int ahead =
+          std::min<int>(lead_index + random_.uniform_int(1, kMaxStepsAhead), static_cast<int>(lead.size()) - 1);
+      const double u = random_.uniform01(), v = random_.uniform01();
+      e.target = decomposition_.triangles()[graph_.triangle_of(lead[ahead])].point_at(u, v);
+      e.goal.reset();
+      e.may_push = !goes_round(motions_[static_cast<size_t>(e.from)].stage);
+      e.seed = random_.next();
+    }
+  }
+
+  // The object lead's expansions, kBatch of them, for moving a body of the frontier stage.
+  void choose_object_expansions(const BodyMove& move) {
+    const ObjectLead::Goal goal = object_lead_.goal(task_.labelling, move);
+    const std::vector<int>& nodes = stage_motions_[static_cast<size_t>(frontier_stage_)];
+    const auto body_at = [&](int m) {
+      const physics::PhysicsState& state = motions_[static_cast<size_t>(m)].state;
+      const auto b = static_cast<size_t>(goal.body) + 1;  // the robot is body 0
+      return Vec2(state.value(b, 0), state.value(b, 1));
+    };
+    const auto distance = [&](int m) {
+      return ObjectLead::remaining(goal, body_at(m)) +
+             kObjectRobotWeight * (motions_[static_cast<size_t>(m)].robot - body_at(m)).norm() +
+             kObjectSelectionPenalty * chosen_[static_cast<size_t>(m)];
+    };
+    const auto any_node = [&] { return nodes[static_cast<size_t>(random_.uniform_int(0, static_cast<int>(nodes.size()) - 1))]; };
+    expansions_.resize(kBatch);
+    for (Expansion& e : expansions_) {
+      int from = any_node();
+      if (random_.chance(kObjectNearestShare)) {
+        for (int i = 1; i < kObjectTournament; ++i) {
+          const int other = any_node();
+          if (distance(other) < distance(from)) from = other;
+        }
+      }
+      ++chosen_[static_cast<size_t>(from)];
+      e.from = from;
+      const std::optional<Vec2> approach = object_lead_.approach(motions_[static_cast<size_t>(from)].robot, body_at(from));
+      e.target = approach.value_or(Vec2::Zero());
+      e.goal = approach ? std::nullopt : std::optional<ObjectLead::Goal>(goal);
+      e.may_push = true;
+      e.seed = random_.next();
+    }
+  }
+
+  // SampleControlAndSteps and propagation for the whole batch. The tree is only read meanwhile.
+  // `alongside`, if given, runs as one more task of the batch, first.
+  void grow_in_parallel(const std::function<void()>& alongside) {
+    growths_.resize(expansions_.size());
+    const int extra = alongside ? 1 : 0;
+    pool_.run(static_cast<int>(expansions_.size()) + extra, [&](int worker, int task) {
+      if (task < extra) return alongside();
+      // Built on the thread that uses it: ODE keeps per-thread data.
+      auto& grower = growers_[static_cast<size_t>(worker)];
+      if (!grower) {
+        grower.emplace(world_, task_, stages_, knowledge_, decomposition_, graph_, object_lead_,
+                       options_.planner == PlannerKind::kKnowledge);
+      }
+      const Expansion& e = expansions_[static_cast<size_t>(task - extra)];
+      grower->grow(motions_[static_cast<size_t>(e.from)], e.target, e.goal ? &*e.goal : nullptr, e.may_push, e.seed,
+                   growths_[static_cast<size_t>(task - extra)]);
+    });
+  }
+
+  // Adds the batch's motions in the order the expansions were chosen. Returns the first motion that
+  // reached acceptance, or -1.
+  int add_growths() {
+    for (size_t i = 0; i < growths_.size(); ++i) {
+      Growth& growth = growths_[i];
+      ++stats_.propagations;
+      stats_.physics_steps += growth.physics_steps;
+      stats_.invalid_steps += growth.stopped_by_invalid_step ? 1 : 0;
+      note_outcome(expansions_[i].from, growth);
+      if (!growth.motion) continue;
+      const int index = static_cast<int>(motions_.size());
+      growth.motion->parent = expansions_[i].from;
+      add_motion(std::move(*growth.motion));
+      if (growth.accepted && growth.braking) {
+        growth.braking->parent = index;
+        add_motion(std::move(*growth.braking));
+        return index + 1;
+      }
+      if (growth.accepted) return index;
+    }
+    return -1;
+  }
+
+  void note_outcome(int from, const Growth& growth) {
+    int& failures = failed_starts_[static_cast<size_t>(from)];
+    if (growth.motion || !growth.stopped_by_invalid_step) {
+      failures = 0;
+      return;
+    }
+    // The root stays, and so does the node the lead starts from after a body move: they keep the search
+    // going (the lead's first state must hold a node).
+    if (++failures == kFailuresBeforeDropped && from != 0 && from != segment_start_) {
+      graph_.remove_motion(motions_[static_cast<size_t>(from)].product_state, from);
+    }
+  }
+
+  void finish(PlanResult& result, int solution, std::chrono::steady_clock::time_point started, const char* reason) {
+    result.solved = solution >= 0;
+    result.stop_reason = reason;
+    for (int m = solution; m > 0; m = motions_[m].parent) {
+      result.plan.controls.push_back(motions_[m].control);
+      result.plan.states.push_back(motions_[m].state);
+    }
+    std::reverse(result.plan.controls.begin(), result.plan.controls.end());
+    std::reverse(result.plan.states.begin(), result.plan.states.end());
+    result.tree.reserve(motions_.size());
+    for (size_t m = 1; m < motions_.size(); ++m) {
+      result.tree.push_back({motions_[motions_[m].parent].robot, motions_[m].robot, stages_.automaton_state_of(motions_[m].stage)});
+    }
+    stats_.tree_nodes = static_cast<long long>(motions_.size());
+    stats_.planning_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    result.stats = stats_;
+  }
+
+  const scenario::World& world_;
+  const TaskAutomaton& task_;
+  const knowledge::AbstractKnowledge& knowledge_;
+  const decomposition::Decomposition& decomposition_;
+  const PlannerOptions& options_;
+  const StageGraph stages_;
+  const RouteChoice routes_;
+  ProductGraph graph_;
+  LeadSearch lead_search_;
+  ObjectLead object_lead_;
+  Random random_;
+  std::vector<Motion> motions_;
+  int closest_to_accept_ = 0;             // fewest stage moves to acceptance from any node
+  int frontier_stage_ = 0;                // the stage of the first node that got that close
+  int segment_start_ = 0;                 // where the lead starts: the root, or the first node after a body move
+  std::vector<int> failed_starts_;        // per motion: expansions in a row that failed at once
+  std::vector<int> chosen_;               // per motion: times the object lead grew from it
+  std::vector<int> available_;         // indices into the current lead
+  std::vector<double> cumulative_;     // running sums of their weights
+  double frontier_weight_ = 0.0;       // the running sum where the frontier starts
+  std::vector<Expansion> expansions_;  // the current batch
+  std::vector<Growth> growths_;        // what each of them grew
+  PlannerStats stats_;
+  WorkerPool pool_;
+  std::vector<std::optional<TreeGrower>> growers_;  // one per worker
+  std::vector<std::vector<int>> stage_motions_;     // per stage, its nodes
+};
+
+}  // namespace
+
+PlanResult plan_with_tree_search(const scenario::World& world, const TaskAutomaton& task,
+                                 const knowledge::AbstractKnowledge& knowledge,
+                                 const decomposition::Decomposition& decomposition, const PlannerOptions& options) {
+  const auto started = std::chrono::steady_clock::now();
+  return Search(world, task, knowledge, decomposition, options).run(started);
+}
+
+}  // namespace physltl::planning
