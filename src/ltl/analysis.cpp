@@ -12,12 +12,16 @@
 namespace physltl::ltl {
 namespace {
 
-bool accepts_some_possible_trace(const Dfa& dfa, const Exclusivity& exclusivity) {
-  const std::vector<bool> reachable = exclusivity.reachable(dfa, dfa.start);
+bool accepts_some_possible_trace_from(const Dfa& dfa, int state, const Exclusivity& exclusivity) {
+  const std::vector<bool> reachable = exclusivity.reachable(dfa, state);
   for (std::size_t q = 0; q < dfa.size(); ++q) {
     if (reachable[q] && dfa.accepting[q]) return true;
   }
   return false;
+}
+
+bool accepts_some_possible_trace(const Dfa& dfa, const Exclusivity& exclusivity) {
+  return accepts_some_possible_trace_from(dfa, dfa.start, exclusivity);
 }
 
 // Whether some short lasso over letters that can occur, one that need not stop, satisfies the task: then
@@ -94,6 +98,10 @@ Analysis analyse(std::string_view text, std::span<const std::string> invalid, st
     a.dfa = std::move(dfa);
   }
   return a;
+}
+
+bool accepts_after(const Dfa& dfa, std::span<const int> first) {
+  return accepts_some_possible_trace_from(dfa, dfa.step(dfa.start, first), Exclusivity(dfa.propositions));
 }
 
 namespace {

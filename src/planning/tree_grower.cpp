@@ -24,6 +24,7 @@ TreeGrower::TreeGrower(const scenario::World& world, const TaskAutomaton& task, 
       object_lead_(object_lead),
       sampler_(world, knowledge, use_knowledge),
       max_braking_steps_(static_cast<int>(std::ceil(kMaxBrakingTime / world.planner.step_size))),
+      max_control_steps_(world.planner.max_steps),
       named_(world.movable_bodies.size(), false),
       simulation_(world, knowledge, use_knowledge ? knowledge::ValidityMode::kKnowledge : knowledge::ValidityMode::kBaseline) {
   for (const Labelling::NamedBody& n : task.labelling.named_bodies()) named_[static_cast<size_t>(n.body)] = true;
@@ -80,15 +81,20 @@ void TreeGrower::propagate(const Control& control, int stage, bool may_push, Gro
 
 bool TreeGrower::brake(int stage, Growth& growth) {
   const Vec2 stop = Vec2::Zero();
+  int steps = 0;  // of the braking control under way
   for (int step = 1; step <= max_braking_steps_; ++step) {
     if (!valid_step(stop, true, growth)) return false;
     stage = stage_after_step(stage);
     if (stage < 0) return false;
-    if (!simulation_.environment().at_rest()) continue;
-    if (!accepting(stage)) return false;
-    simulation_.save(last_valid_);
-    growth.braking = make_motion({stop, step}, stage);
-    return true;
+    ++steps;
+    const bool at_rest = simulation_.environment().at_rest();
+    if (at_rest && !accepting(stage)) return false;
+    if (at_rest || steps == max_control_steps_) {
+      simulation_.save(last_valid_);
+      growth.braking.push_back(make_motion({stop, steps}, stage));
+      steps = 0;
+    }
+    if (at_rest) return true;
   }
   return false;
 }

@@ -37,8 +37,9 @@ struct Motion {
 struct Growth {
   std::optional<Motion> motion;
   // A task that ends at rest: after a motion that reached acceptance, the robot braking until it and the
-  // boxes stand still, still accepted (a child of `motion`).
-  std::optional<Motion> braking;
+  // boxes stand still, still accepted: controls of at most the scenario's max_steps each, the first a
+  // child of `motion` and each next a child of the one before.
+  std::vector<Motion> braking;
   bool accepted = false;  // the motion (and the braking, where the task needs it) reached acceptance
   int physics_steps = 0;
   bool stopped_by_invalid_step = false;
@@ -78,6 +79,7 @@ class TreeGrower {
   const ObjectLead& object_lead_;
   const ControlSampler sampler_;
   const int max_braking_steps_;
+  const int max_control_steps_;
   std::vector<bool> named_;  // per movable body: the task says where it must be (touching it is never refused)
   CheckedSimulation simulation_;
   physics::PhysicsState last_valid_;

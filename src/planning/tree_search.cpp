@@ -110,12 +110,18 @@ class Search {
         return result;
       }
       std::vector<int> next_lead;
+      bool lead_kept = true;
       for (int batch = 0; batch < kBatchesPerLead; ++batch) {
         if (body_move) {
           choose_object_expansions(*body_move);
         } else {
-          // Again for every batch: the last one may have added nodes to the lead or dropped some.
+          // Again for every batch: the last one may have added nodes to the lead or dropped some. With
+          // every node along it dropped, a new lead from the frontier's first node, which holds one.
           collect_available(lead);
+          if (available_.empty()) {
+            lead_kept = false;
+            break;
+          }
           choose_expansions(lead);
         }
         // The next lead is computed while the last batch grows: the tree stands still meanwhile, and on a
@@ -137,7 +143,12 @@ class Search {
           return result;
         }
       }
-      lead = std::move(next_lead);
+      if (lead_kept) {
+        lead = std::move(next_lead);
+      } else {
+        lead_start = segment_start_;
+        lead = lead_search_.next(product_of(lead_start), horizon());
+      }
     }
   }
 
@@ -299,10 +310,14 @@ class Search {
       const int index = static_cast<int>(motions_.size());
       growth.motion->parent = expansions_[i].from;
       add_motion(std::move(*growth.motion));
-      if (growth.accepted && growth.braking) {
-        growth.braking->parent = index;
-        add_motion(std::move(*growth.braking));
-        return index + 1;
+      if (growth.accepted && !growth.braking.empty()) {
+        int parent = index;
+        for (Motion& braking : growth.braking) {
+          braking.parent = parent;
+          parent = static_cast<int>(motions_.size());
+          add_motion(std::move(braking));
+        }
+        return parent;
       }
       if (growth.accepted) return index;
     }
@@ -315,11 +330,36 @@ class Search {
       failures = 0;
       return;
     }
-    // The root stays, and so does the node the lead starts from after a body move: they keep the search
-    // going (the lead's first state must hold a node).
-    if (++failures == kFailuresBeforeDropped && from != 0 && from != segment_start_) {
-      graph_.remove_motion(motions_[static_cast<size_t>(from)].product_state, from);
+    // The root stays: a robot at rest can always move.
+    if (++failures == kFailuresBeforeDropped && from != 0) drop(from);
+  }
+
+  // No expansion grows from node `m` any more, neither along the lead nor for a body move. A stage can
+  // lose every node so (the robot pressed against a body whose side INFERENCE has just switched off: each
+  // first step touches it from a forbidden side); the frontier then goes back to the stage nearest to
+  // acceptance that still has a node, and the lead starts from its first node.
+  void drop(int m) {
+    const Motion& motion = motions_[static_cast<size_t>(m)];
+    graph_.remove_motion(motion.product_state, m);
+    std::vector<int>& nodes = stage_motions_[static_cast<size_t>(motion.stage)];
+    nodes.erase(std::find(nodes.begin(), nodes.end(), m));
+    if (motion.stage != frontier_stage_ || (!nodes.empty() && m != segment_start_)) return;
+    if (nodes.empty()) {
+      // The nearest stage, and of equally near ones the one reached first. The root's always has a node.
+      int nearest = -1;
+      for (int s = 0; s < stages_.stages(); ++s) {
+        const int distance = stages_.distance(s);
+        const auto& held = stage_motions_[static_cast<size_t>(s)];
+        if (held.empty() || distance < 0) continue;
+        const auto& best = stage_motions_[static_cast<size_t>(std::max(nearest, 0))];
+        if (nearest < 0 || distance < closest_to_accept_ || (distance == closest_to_accept_ && held.front() < best.front())) {
+          nearest = s;
+          closest_to_accept_ = distance;
+        }
+      }
+      frontier_stage_ = nearest;
     }
+    segment_start_ = stage_motions_[static_cast<size_t>(frontier_stage_)].front();
   }
 
   void finish(PlanResult& result, int solution, std::chrono::steady_clock::time_point started, const char* reason) {
@@ -352,9 +392,9 @@ class Search {
   ObjectLead object_lead_;
   Random random_;
   std::vector<Motion> motions_;
-  int closest_to_accept_ = 0;             // fewest stage moves to acceptance from any node
+  int closest_to_accept_ = 0;             // fewest stage moves to acceptance from any node not dropped
   int frontier_stage_ = 0;                // the stage of the first node that got that close
-  int segment_start_ = 0;                 // where the lead starts: the root, or the first node after a body move
+  int segment_start_ = 0;                 // where the lead starts: the root, or the frontier stage's first node
   std::vector<int> failed_starts_;        // per motion: expansions in a row that failed at once
   std::vector<int> chosen_;               // per motion: times the object lead grew from it
   std::vector<int> available_;         // indices into the current lead

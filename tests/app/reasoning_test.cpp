@@ -6,11 +6,14 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+#include <string>
+
 namespace physltl::app {
 namespace {
 
-Reasoning reason_about_file(const std::string& relative_path) {
-  return reason_about(scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/" + relative_path));
+Reasoning reason_about_file(const std::string& relative_path, const std::map<std::string, std::string>& params = {}) {
+  return reason_about(scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/" + relative_path, {.params = params}));
 }
 
 TEST(ReasonAbout, RoomsDropsTheEnclosedP3AndPlansTheRest) {
@@ -53,6 +56,22 @@ TEST(ReasonAbout, AnEnclosedOnlyGoalMakesTheTaskInfeasible) {
   EXPECT_FALSE(r.task.dfa);
   ASSERT_EQ(r.feasibility.invalid.size(), 1u);
   EXPECT_EQ(r.feasibility.invalid[0].reason, "goal: region enclosed by fixed walls");
+}
+
+TEST(ReasonAbout, ATaskTheStartAlreadyLosesIsInfeasibleAndSaysWhereWhatStands) {
+  const Reasoning robot = reason_about_file("tests/app/starts_in_hazard.lua");
+  EXPECT_FALSE(robot.feasible());
+  EXPECT_FALSE(robot.task.dfa);
+  EXPECT_EQ(robot.task.infeasibility(), "the start already rules it out: at the start the robot is in hazard");
+  const Reasoning box = reason_about_file("tests/app/starts_in_hazard.lua", {{"task", "box"}});
+  EXPECT_FALSE(box.feasible());
+  EXPECT_EQ(box.task.infeasibility(), "the start already rules it out: at the start crate is in aisle");
+}
+
+TEST(ReasonAbout, AStartThatKeepsTheTaskOpenLeavesItFeasible) {
+  // Sorting: B3 starts on its shelf, which G B3@shelf asks for; rooms.lua: the robot starts in no region.
+  EXPECT_TRUE(reason_about_file("scenarios/sorting.lua").feasible());
+  EXPECT_TRUE(reason_about_file("scenarios/avoid.lua").feasible());
 }
 
 }  // namespace

@@ -96,6 +96,33 @@ TEST(ObjectTask, TheSameSeedGivesTheSamePlanAndAnotherSeedAnother) {
   EXPECT_NE(a.stats.propagations, c.stats.propagations);
 }
 
+TEST(ObjectTask, AStageWhoseOnlyNodeCannotGrowDoesNotHoldTheSearch) {
+  // On these seeds the first node to put B1 in its bay stood against B1 just as INFERENCE switched that
+  // side off, so every motion from it touched B1 from a forbidden side at its first step; it was the only
+  // node of the stage, and the search grew from it until the time limit.
+  const TestProblem p("sorting.lua");
+  for (const std::uint64_t seed : {28u, 37u}) {
+    const PlanResult result = p.solve(seed);
+    ASSERT_TRUE(result.solved) << "seed " << seed << ": " << result.stop_reason;
+    EXPECT_LT(result.stats.propagations, 50'000) << "seed " << seed;
+    EXPECT_TRUE(p.check(result.plan).validated()) << "seed " << seed;
+  }
+}
+
+TEST(ObjectTask, BrakingLongerThanOneControlEndsThePlanInSeveral) {
+  const TestProblem p("../tests/planning/data/slow_stop.lua");  // a sliding crate, controls of <= 6 steps
+  const PlanResult result = p.solve(1);
+  ASSERT_TRUE(result.solved) << result.stop_reason;
+  const auto& controls = result.plan.controls;
+  for (const Control& c : controls) EXPECT_LE(c.steps, p.world.planner.max_steps);
+  ASSERT_GE(controls.size(), 2u);
+  EXPECT_EQ(controls.back().setpoint, Vec2::Zero());
+  EXPECT_EQ(controls[controls.size() - 2].setpoint, Vec2::Zero());  // the braking took more than one
+  const Replay r = p.check(result.plan);
+  EXPECT_TRUE(r.validated()) << r.failure;
+  EXPECT_TRUE(r.states.back().at_rest());
+}
+
 TEST(Replay, APlanCutBeforeTheCrateReachesTheDockIsRejected) {
   const TestProblem p("delivery.lua");
   PlanResult result = p.solve(1);

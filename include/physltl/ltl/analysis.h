@@ -26,7 +26,8 @@ struct Analysis {
   std::optional<Dfa> dfa;                  // of the task the planner gets; empty when infeasible
   // Set when no run can satisfy the task because the robot, and each body, is in at most one region at a
   // time (the propositions are disjoint regions; exclusivity.h), found on the automaton without any
-  // search: why, for people.
+  // search, or (set by whoever knows the World, accepts_after) because its first letter already loses
+  // it: why, for people.
   std::optional<std::string> unsatisfiable;
 
   bool feasible() const { return (!semantic || semantic->feasible()) && !unsatisfiable; }
@@ -40,6 +41,10 @@ struct Analysis {
 // the region an object proposition names); the semantic simplification makes them true.
 Analysis analyse(std::string_view text, std::span<const std::string> invalid,
                  std::span<const std::string> always_true = {});
+
+// Whether a run whose first letter is `first` (indices into dfa.propositions of those true at the start;
+// the rest false) can still satisfy the task, over letters that can occur after it.
+bool accepts_after(const Dfa& dfa, std::span<const int> first);
 
 // Human-readable lines: input, normal form, class, simplifications, automaton size.
 void write_summary(std::ostream& out, const Analysis& analysis);
