@@ -197,7 +197,7 @@ int bench(const BenchArgs& args) {
     c->reasoning.emplace(reason_about(c->world));
     if (!c->reasoning->feasible()) {
       std::cerr << "physltl-studio: the task is infeasible" << (sweep ? " with " + sweep->key + "=" + value : "")
-                << ": " << c->reasoning->task.semantic->explanation << "\n";
+                << ": " << c->reasoning->task.infeasibility() << "\n";
       return kExitNoPlan;
     }
     c->prepared = std::make_unique<PreparedRun>(c->world, *c->reasoning);

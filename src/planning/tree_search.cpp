@@ -334,32 +334,36 @@ class Search {
     if (++failures == kFailuresBeforeDropped && from != 0) drop(from);
   }
 
-  // No expansion grows from node `m` any more, neither along the lead nor for a body move. A stage can
-  // lose every node so (the robot pressed against a body whose side INFERENCE has just switched off: each
-  // first step touches it from a forbidden side); the frontier then goes back to the stage nearest to
-  // acceptance that still has a node, and the lead starts from its first node.
+  // No expansion grows from node `m` any more, neither along the lead nor for a body move. A stage where a
+  // body must move can lose every node so (the robot pressed against a body whose side INFERENCE has just
+  // switched off: each first step touches it from a forbidden side), and so can the node the lead starts
+  // from; the lead then starts from the next node of that node's stage, or, with none left, the frontier
+  // goes back to the nearest stage to acceptance that still has a node, the lead starting from its first.
   void drop(int m) {
     const Motion& motion = motions_[static_cast<size_t>(m)];
     graph_.remove_motion(motion.product_state, m);
     std::vector<int>& nodes = stage_motions_[static_cast<size_t>(motion.stage)];
     nodes.erase(std::find(nodes.begin(), nodes.end(), m));
-    if (motion.stage != frontier_stage_ || (!nodes.empty() && m != segment_start_)) return;
-    if (nodes.empty()) {
-      // The nearest stage, and of equally near ones the one reached first. The root's always has a node.
-      int nearest = -1;
-      for (int s = 0; s < stages_.stages(); ++s) {
-        const int distance = stages_.distance(s);
-        const auto& held = stage_motions_[static_cast<size_t>(s)];
-        if (held.empty() || distance < 0) continue;
-        const auto& best = stage_motions_[static_cast<size_t>(std::max(nearest, 0))];
-        if (nearest < 0 || distance < closest_to_accept_ || (distance == closest_to_accept_ && held.front() < best.front())) {
-          nearest = s;
-          closest_to_accept_ = distance;
-        }
-      }
-      frontier_stage_ = nearest;
+    const bool stranded = nodes.empty() && motion.stage == frontier_stage_ && stages_.body_move(frontier_stage_);
+    if (m != segment_start_ && !stranded) return;
+    if (!nodes.empty()) {
+      segment_start_ = nodes.front();
+      return;
     }
-    segment_start_ = stage_motions_[static_cast<size_t>(frontier_stage_)].front();
+    // The nearest stage, and of equally near ones the one reached first. The root's always has a node.
+    int nearest = -1;
+    for (int s = 0; s < stages_.stages(); ++s) {
+      const int distance = stages_.distance(s);
+      const auto& held = stage_motions_[static_cast<size_t>(s)];
+      if (held.empty() || distance < 0) continue;
+      if (nearest < 0 || distance < closest_to_accept_ ||
+          (distance == closest_to_accept_ && held.front() < stage_motions_[static_cast<size_t>(nearest)].front())) {
+        nearest = s;
+        closest_to_accept_ = distance;
+      }
+    }
+    frontier_stage_ = nearest;
+    segment_start_ = stage_motions_[static_cast<size_t>(nearest)].front();
   }
 
   void finish(PlanResult& result, int solution, std::chrono::steady_clock::time_point started, const char* reason) {

@@ -40,6 +40,19 @@ TEST(Bench, CompareOnOrderedWritesBenchJsonWithBothPlannersOnTheSameSeeds) {
   EXPECT_NE(text.find("\n2 runs per planner\n"), std::string::npos);
 }
 
+TEST(Bench, AnInfeasibleTaskExitsOneWithItsReasonForEveryKindOfReason) {
+  const fs::path out = fresh_out_dir();
+  const std::string data = kSource + "/tests/app/";
+  const Result enclosed = run("bench " + data + "enclosed_goal.lua --runs 1 --out " + out.string());
+  EXPECT_EQ(enclosed.exit_code, 1);
+  EXPECT_NE(enclosed.err.find("every way to satisfy the task needs goal"), std::string::npos) << enclosed.err;
+  const Result lost = run("bench " + data + "starts_in_hazard.lua --runs 1 --out " + out.string());
+  EXPECT_EQ(lost.exit_code, 1);
+  EXPECT_NE(lost.err.find("the start already rules it out: at the start the robot is in hazard"), std::string::npos)
+      << lost.err;
+  EXPECT_FALSE(fs::exists(out / "starts_in_hazard"));
+}
+
 TEST(Bench, WithoutCompareRunsOnlyTheKnowledgePlanner) {
   const fs::path out = fresh_out_dir();
   const Result r = run("bench " + kSource + "/scenarios/ordered.lua --runs 1 --out " + out.string());
