@@ -1,6 +1,6 @@
 #include "meshes.h"
 
-#include <tiny_obj_loader.h>
+#include "physltl/geometry/mesh.h"
 
 #include <Eigen/Geometry>
 
@@ -54,36 +54,51 @@ TriangleMesh unit_sphere_mesh(int slices, int stacks) {
   return mesh;
 }
 
-TriangleMesh load_obj_mesh(const std::string& path) {
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
-  config.vertex_color = false;
-  tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, config)) {
-    throw std::runtime_error("cannot read mesh " + path + ": " + reader.Error());
-  }
-  const tinyobj::attrib_t& attrib = reader.GetAttrib();
-  auto position = [&](const tinyobj::index_t& i) {
-    return Vector3f(attrib.vertices[3 * i.vertex_index], attrib.vertices[3 * i.vertex_index + 1],
-                    attrib.vertices[3 * i.vertex_index + 2]);
-  };
+TriangleMesh obj_mesh(const std::string& path, double scale) {
+  const geometry::Mesh obj = geometry::read_obj(path);
   TriangleMesh mesh;
-  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
-    const auto& indices = shape.mesh.indices;
-    for (std::size_t f = 0; f + 2 < indices.size(); f += 3) {
-      const Vector3f p[3] = {position(indices[f]), position(indices[f + 1]), position(indices[f + 2])};
-      const Vector3f flat = (p[1] - p[0]).cross(p[2] - p[0]).normalized();
-      for (int k = 0; k < 3; ++k) {
-        const tinyobj::index_t& i = indices[f + k];
-        const Vector3f n = i.normal_index < 0
-                               ? flat
-                               : Vector3f(attrib.normals[3 * i.normal_index], attrib.normals[3 * i.normal_index + 1],
-                                          attrib.normals[3 * i.normal_index + 2]);
-        add_vertex(mesh, p[k], n);
-      }
+  for (std::size_t t = 0; t < obj.triangles.size(); ++t) {
+    Vector3f p[3];
+    for (int k = 0; k < 3; ++k) p[k] = (scale * obj.triangles[t][static_cast<std::size_t>(k)]).cast<float>();
+    const Vector3f flat = (p[1] - p[0]).cross(p[2] - p[0]).normalized();
+    for (int k = 0; k < 3; ++k) {
+      add_vertex(mesh, p[k], obj.normals.empty() ? flat : obj.normals[t][static_cast<std::size_t>(k)].cast<float>().normalized());
     }
   }
-  if (mesh.empty()) throw std::runtime_error("mesh " + path + " has no triangles");
+  return mesh;
+}
+
+TriangleMesh cylinder_mesh(double radius, double height, int slices) {
+  TriangleMesh mesh;
+  const auto r = static_cast<float>(radius), h = static_cast<float>(height);
+  for (int k = 0; k < slices; ++k) {
+    const float a0 = 2.0f * std::numbers::pi_v<float> * k / slices, a1 = 2.0f * std::numbers::pi_v<float> * (k + 1) / slices;
+    const Vector3f n0(std::cos(a0), std::sin(a0), 0), n1(std::cos(a1), std::sin(a1), 0);
+    const Vector3f b0 = r * n0, b1 = r * n1, t0 = b0 + Vector3f(0, 0, h), t1 = b1 + Vector3f(0, 0, h);
+    add_vertex(mesh, b0, n0), add_vertex(mesh, b1, n1), add_vertex(mesh, t1, n1);
+    add_vertex(mesh, b0, n0), add_vertex(mesh, t1, n1), add_vertex(mesh, t0, n0);
+    const Vector3f up(0, 0, 1), centre(0, 0, h);
+    add_vertex(mesh, centre, up), add_vertex(mesh, t0, up), add_vertex(mesh, t1, up);
+  }
+  return mesh;
+}
+
+TriangleMesh prism_mesh(const std::vector<geometry::Polygon>& parts, double height) {
+  TriangleMesh mesh;
+  const auto h = static_cast<float>(height);
+  for (const geometry::Polygon& part : parts) {  // convex, counter-clockwise
+    const auto& v = part.vertices;
+    const auto at = [&](std::size_t i, float z) { return Vector3f(static_cast<float>(v[i].x()), static_cast<float>(v[i].y()), z); };
+    for (std::size_t i = 1; i + 1 < v.size(); ++i) {
+      add_vertex(mesh, at(0, h), Vector3f::UnitZ()), add_vertex(mesh, at(i, h), Vector3f::UnitZ());
+      add_vertex(mesh, at(i + 1, h), Vector3f::UnitZ());
+    }
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const std::size_t j = (i + 1) % v.size();
+      const Vector3f n = Vector3f(static_cast<float>(v[j].y() - v[i].y()), static_cast<float>(v[i].x() - v[j].x()), 0).normalized();
+      for (const Vector3f& p : {at(i, 0), at(j, 0), at(j, h), at(i, 0), at(j, h), at(i, h)}) add_vertex(mesh, p, n);
+    }
+  }
   return mesh;
 }
 

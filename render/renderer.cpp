@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <array>
 #include <memory>
+#include <map>
 #include <optional>
 #include <cmath>
 #include <cstdint>
@@ -153,6 +154,7 @@ struct Renderer::Impl {
   GlProgram text{shaders::kTextVertex, shaders::kTextFragment};
 
   const TriangleMesh cube = unit_cube_mesh();
+  mutable std::map<const geometry::Shape*, TriangleMesh> shape_meshes;  // of the World's cylinders and polygons
   const TriangleMesh sphere = unit_sphere_mesh(32, 16);
   GlMesh fixed_layer{3, 3, 4};  // the fixed bodies never move: built once
   GlMesh static_floor_layer{3, 4};
@@ -220,9 +222,9 @@ struct Renderer::Impl {
     for (const scenario::FixedBody& body : world.fixed_bodies) {
       top_height = std::max(top_height, body.height);
       if (body.mesh.empty()) {
-        add_box(vertices, body.footprint, body.height, palette::kFixedBody);
+        add_body(vertices, body.footprint.shape, body.footprint.pose, body.height, palette::kFixedBody);
       } else {
-        add_mesh(vertices, load_obj_mesh(body.mesh), body_transform(body.footprint.pose, 0, Vector3f::Ones()),
+        add_mesh(vertices, obj_mesh(body.mesh, body.mesh_scale), body_transform(body.footprint.pose, 0, Vector3f::Ones()),
                  palette::kFixedBody);
       }
     }
@@ -231,18 +233,27 @@ struct Renderer::Impl {
     top_height = std::max(top_height, 2 * world.robot.radius);
   }
 
-  void add_box(std::vector<float>& vertices, const geometry::OrientedBox& footprint, double height,
-               const Color& color) const {
-    const Vector3f size(2 * footprint.half_extents.x(), 2 * footprint.half_extents.y(), height);
-    add_mesh(vertices, cube, body_transform(footprint.pose, size.z() / 2, size), color);
+  // A box is the unit cube scaled; cylinders and polygons are meshes of their own, made once a shape.
+  void add_body(std::vector<float>& vertices, const geometry::Shape& shape, const Pose2& pose, double height,
+                const Color& color) const {
+    if (shape.is_box()) {
+      const Vector3f size(2 * shape.half_extents().x(), 2 * shape.half_extents().y(), height);
+      add_mesh(vertices, cube, body_transform(pose, size.z() / 2, size), color);
+      return;
+    }
+    auto [mesh, made] = shape_meshes.try_emplace(&shape);
+    if (made) {
+      mesh->second = shape.kind() == geometry::Shape::Kind::kCircle ? cylinder_mesh(shape.radius(), height, 48)
+                                                                     : prism_mesh(shape.parts(), height);
+    }
+    add_mesh(vertices, mesh->second, body_transform(pose, 0, Vector3f::Ones()), color);
   }
 
   std::vector<float> moving_bodies(const scenario::EnvironmentState& state, const Overlay& overlay) const {
     std::vector<float> vertices;
     for (std::size_t i = 0; i < world.movable_bodies.size(); ++i) {
       const scenario::MovableBody& body = world.movable_bodies[i];
-      add_box(vertices, scenario::footprint_at(body, state.movable_poses[i]), body.height,
-              body_color(overlay, static_cast<int>(i)));
+      add_body(vertices, body.footprint.shape, state.movable_poses[i], body.height, body_color(overlay, static_cast<int>(i)));
     }
     const float r = static_cast<float>(world.robot.radius);
     add_mesh(vertices, sphere, body_transform({state.robot_position, 0.0}, r, Vector3f::Constant(r)),
@@ -312,19 +323,29 @@ struct Renderer::Impl {
     return paint;
   }
 
+  // A box's shadow is its rectangle, a cylinder's a disc, a polygon's the rectangle of its bounds.
+  static void add_shadow(ShadowGeometry& shadows, const geometry::Shape& shape, const Pose2& pose, double height) {
+    switch (shape.kind()) {
+      case geometry::Shape::Kind::kBox: return shadows.add(pose, shape.half_extents(), 0.0, height);
+      case geometry::Shape::Kind::kCircle: return shadows.add(pose, Vec2::Zero(), shape.radius(), height);
+      case geometry::Shape::Kind::kPolygon: break;
+    }
+    const geometry::Rect local = geometry::bounds(shape, {});
+    const Pose2 middle{geometry::to_world(pose, 0.5 * (local.min + local.max)), pose.yaw};
+    shadows.add(middle, 0.5 * local.size(), 0.0, height);
+  }
+
   ShadowGeometry fixed_shadows() const {
     ShadowGeometry result;
-    for (const scenario::FixedBody& body : world.fixed_bodies) {
-      result.add(body.footprint.pose, body.footprint.half_extents, 0.0, body.height);
-    }
+    for (const scenario::FixedBody& body : world.fixed_bodies) add_shadow(result, body.footprint.shape, body.footprint.pose, body.height);
     return result;
   }
 
   ShadowGeometry moving_shadows(const scenario::EnvironmentState& state) const {
     ShadowGeometry result;
     for (std::size_t i = 0; i < world.movable_bodies.size(); ++i) {
-      const geometry::OrientedBox footprint = scenario::footprint_at(world.movable_bodies[i], state.movable_poses[i]);
-      result.add(footprint.pose, footprint.half_extents, 0.0, world.movable_bodies[i].height);
+      const scenario::MovableBody& body = world.movable_bodies[i];
+      add_shadow(result, body.footprint.shape, state.movable_poses[i], body.height);
     }
     result.add({state.robot_position, 0.0}, Vec2::Zero(), 0.8 * world.robot.radius, world.robot.radius);
     return result;

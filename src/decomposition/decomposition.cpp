@@ -50,20 +50,20 @@ bool triangle_contains(const Triangle& t, const Vec2& p) {
 // diameter (a row, a heap), and no fixed body that near. A body beside a wall stands in a passage: its
 // outline would only cut slivers against the wall (tiny triangles the lead shuns), and the way there is
 // through it anyway; a lone body has open floor round it, which the plain mesh already resolves.
-std::vector<geometry::OrientedBox> clutter_outlines(const scenario::World& world) {
+std::vector<geometry::Polygon> clutter_outlines(const scenario::World& world) {
   const double r = world.robot.radius;
   const auto& bodies = world.movable_bodies;
   std::vector<Vec2> centres;
   double reach = 0.0;  // of a body's corners from its centre, the farthest
   for (const auto& m : bodies) {
     centres.push_back(m.footprint.pose.position);
-    reach = std::max(reach, m.footprint.half_extents.norm());
+    reach = std::max(reach, m.footprint.shape.bound_radius());
   }
   const geometry::PointGrid near(world.workspace.bounds, std::max(2 * reach + 2 * r, 0.1), centres);
   std::vector<int> neighbours;
-  std::vector<geometry::OrientedBox> outlines;
+  std::vector<geometry::Polygon> outlines;
   for (size_t i = 0; i < bodies.size(); ++i) {
-    const geometry::OrientedBox within{bodies[i].footprint.pose, bodies[i].footprint.half_extents + Vec2::Constant(2 * r)};
+    const geometry::Footprint within{bodies[i].footprint.pose, geometry::grown(bodies[i].footprint.shape, 2 * r)};
     const bool in_a_passage = std::any_of(world.fixed_bodies.begin(), world.fixed_bodies.end(),
                                           [&](const auto& f) { return geometry::overlap(within, f.footprint); });
     if (in_a_passage) continue;
@@ -71,9 +71,21 @@ std::vector<geometry::OrientedBox> clutter_outlines(const scenario::World& world
     const bool in_clutter = std::any_of(neighbours.begin(), neighbours.end(), [&](int j) {
       return j != static_cast<int>(i) && geometry::overlap(within, bodies[static_cast<size_t>(j)].footprint);
     });
-    if (in_clutter) outlines.push_back({bodies[i].footprint.pose, bodies[i].footprint.half_extents + Vec2::Constant(r)});
+    if (!in_clutter) continue;
+    for (geometry::Polygon& part : geometry::convex_parts_at(geometry::grown(bodies[i].footprint.shape, r),
+                                                             bodies[i].footprint.pose, geometry::CircleAs::kCircumscribed)) {
+      outlines.push_back(std::move(part));
+    }
   }
   return outlines;
+}
+
+// A triangle is a hole where its centroid lies in a fixed body; a cylinder counts as the polygon round it
+// whose sides are constraints of the mesh.
+bool in_fixed_body(const scenario::FixedBody& body, const Vec2& p) {
+  const geometry::Shape& shape = body.footprint.shape;
+  if (shape.kind() != geometry::Shape::Kind::kCircle) return geometry::contains(shape, body.footprint.pose, p);
+  return geometry::convex_parts_at(shape, body.footprint.pose, geometry::CircleAs::kCircumscribed).front().contains(p);
 }
 
 }  // namespace
@@ -85,12 +97,12 @@ Decomposition Decomposition::build(const scenario::World& world, const Decomposi
   Cdt cdt;
   insert_polygon(cdt, geometry::Polygon::from_rect(bounds).vertices, max_edge);
   for (const auto& f : world.fixed_bodies) {
-    insert_polygon(cdt, geometry::Polygon::from_box(f.footprint).vertices, max_edge);
+    for (const auto& part : geometry::convex_parts_at(f.footprint.shape, f.footprint.pose, geometry::CircleAs::kCircumscribed)) {
+      insert_polygon(cdt, part.vertices, max_edge);
+    }
   }
   for (const auto& r : world.regions) insert_polygon(cdt, r.polygon.vertices, max_edge);
-  for (const geometry::OrientedBox& grown : clutter_outlines(world)) {
-    insert_polygon(cdt, geometry::Polygon::from_box(grown).vertices, max_edge);
-  }
+  for (const geometry::Polygon& grown : clutter_outlines(world)) insert_polygon(cdt, grown.vertices, max_edge);
   // Steiner points on a staggered grid bound the triangle size away from the constraints. (CGAL's
   // Delaunay mesher would be the textbook tool, but it does not terminate on walls that touch the
   // workspace border in Debian's CGAL 5.5; the grid gives the same kind of mesh, deterministically.)
@@ -105,7 +117,7 @@ Decomposition Decomposition::build(const scenario::World& world, const Decomposi
       if (!bounds.contains(p)) continue;
       // Points hugging a wall would only make slivers against the wall's own subdivision points.
       const bool near_fixed = std::any_of(world.fixed_bodies.begin(), world.fixed_bodies.end(), [&](const auto& f) {
-        return f.footprint.distance_to(p) < 0.3 * max_edge;
+        return geometry::distance(f.footprint.shape, f.footprint.pose, p) < 0.3 * max_edge;
       });
       if (!near_fixed) steiner.push_back(point(p));
     }
@@ -120,7 +132,7 @@ Decomposition Decomposition::build(const scenario::World& world, const Decomposi
     t.centroid = (t.corners[0] + t.corners[1] + t.corners[2]) / 3.0;
     // Fixed-body edges are constraints, so a triangle is wholly inside a body or wholly outside.
     if (std::any_of(world.fixed_bodies.begin(), world.fixed_bodies.end(),
-                    [&](const scenario::FixedBody& b) { return b.footprint.contains(t.centroid); })) {
+                    [&](const scenario::FixedBody& b) { return in_fixed_body(b, t.centroid); })) {
       continue;
     }
     t.area = 0.5 * std::abs(cross(t.corners[1] - t.corners[0], t.corners[2] - t.corners[0]));

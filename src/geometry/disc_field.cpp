@@ -12,7 +12,7 @@ constexpr double kSqrt2 = 1.4142135623730951;
 
 }  // namespace
 
-DiscField::DiscField(const Rect& bounds, double cell, double radius, std::span<const OrientedBox> obstacles)
+DiscField::DiscField(const Rect& bounds, double cell, double radius, std::span<const Footprint> obstacles)
     : origin_(bounds.min),
       cell_(cell),
       nx_(std::max(1, static_cast<int>(std::ceil(bounds.size().x() / cell)))),
@@ -24,14 +24,16 @@ DiscField::DiscField(const Rect& bounds, double cell, double radius, std::span<c
   for (int iy = 0; iy < ny_; ++iy) {
     for (int ix = 0; ix < nx_; ++ix) free_[index(ix, iy)] = clearance <= 0 || inner.contains(centre(ix, iy));
   }
-  for (const OrientedBox& box : obstacles) {
-    // Only the cells near the box can be within reach of it.
-    const double reach = box.half_extents.norm() + std::max(clearance, 0.0);
-    const int x0 = column(box.pose.position.x() - reach), x1 = column(box.pose.position.x() + reach);
-    const int y0 = row(box.pose.position.y() - reach), y1 = row(box.pose.position.y() + reach);
+  for (const Footprint& obstacle : obstacles) {
+    // Only the cells near the obstacle can be within reach of it.
+    const Vec2& at = obstacle.pose.position;
+    const double reach = obstacle.shape.bound_radius() + std::max(clearance, 0.0);
+    const int x0 = column(at.x() - reach), x1 = column(at.x() + reach);
+    const int y0 = row(at.y() - reach), y1 = row(at.y() + reach);
     for (int iy = y0; iy <= y1; ++iy) {
       for (int ix = x0; ix <= x1; ++ix) {
-        if (box.distance_to(centre(ix, iy)) < std::max(clearance, 0.0) || box.contains(centre(ix, iy))) free_[index(ix, iy)] = false;
+        const double d = geometry::distance(obstacle.shape, obstacle.pose, centre(ix, iy));
+        if (d < std::max(clearance, 0.0) || d == 0.0) free_[index(ix, iy)] = false;
       }
     }
   }

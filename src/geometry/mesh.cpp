@@ -5,6 +5,7 @@
 #include <tiny_obj_loader.h>
 
 #include <cmath>
+#include <filesystem>
 
 namespace physltl::geometry {
 namespace {
@@ -31,6 +32,7 @@ Polygon below(const std::array<Vector3d, 3>& corners, double top) {
 }  // namespace
 
 Mesh read_obj(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path)) throw MeshError("mesh '" + path + "' does not exist");
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;

@@ -97,7 +97,7 @@ Shape Shape::circle(double radius) {
 Shape Shape::polygon(Polygon outline, std::vector<Polygon> parts) {
   Shape s;
   s.kind_ = Kind::kPolygon;
-  s.outline_ = outline.vertices.empty() ? Polygon{} : counter_clockwise(std::move(outline));
+  s.outline_ = std::move(outline);
   for (Polygon& p : parts) s.parts_.push_back(counter_clockwise(std::move(p)));
   s.bound_radius_ = std::max(farthest_corner(s.parts_), farthest_corner({s.outline_}));
   return s;
@@ -112,6 +112,18 @@ double Shape::area() const {
   double a = 0.0;
   for (const Polygon& p : parts_) a += p.signed_area();
   return a;
+}
+
+double Shape::centre_clearance() const {
+  switch (kind_) {
+    case Kind::kBox: return half_extents_.minCoeff();
+    case Kind::kCircle: return radius_;
+    case Kind::kPolygon: break;
+  }
+  const auto& v = outline_.vertices;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) nearest = std::min(nearest, distance_to_segment(Vec2::Zero(), v[j], v[i]));
+  return v.empty() ? 0.0 : nearest;
 }
 
 Vec2 to_world(const Pose2& pose, const Vec2& local) {
@@ -180,6 +192,7 @@ bool inside(const Shape& shape, const Pose2& pose, const Rect& rect, double tole
 }
 
 Rect bounds(const Shape& shape, const Pose2& pose) {
+  if (shape.is_box()) return Polygon::from_box(as_box(shape, pose)).bounds();
   if (shape.kind() == Shape::Kind::kCircle) {
     return {pose.position - Vec2::Constant(shape.radius()), pose.position + Vec2::Constant(shape.radius())};
   }
@@ -195,10 +208,42 @@ Rect bounds(const Shape& shape, const Pose2& pose) {
 
 std::vector<Polygon> convex_parts_at(const Shape& shape, const Pose2& pose, CircleAs circle) {
   if (shape.kind() == Shape::Kind::kCircle) return {regular_polygon(pose, shape.radius(), circle)};
+  if (shape.is_box()) return {Polygon::from_box(as_box(shape, pose))};
   std::vector<Polygon> parts;
   parts.reserve(shape.parts().size());
   for (const Polygon& part : shape.parts()) parts.push_back(to_world(pose, part));
   return parts;
+}
+
+namespace {
+
+// Each side of the convex, counter-clockwise polygon moved out by `by`; the corners where the moved sides meet.
+Polygon mitred(const Polygon& p, double by) {
+  const auto& v = p.vertices;
+  const size_t n = v.size();
+  Polygon out;
+  for (size_t i = 0; i < n; ++i) {
+    const Vec2 before = (v[i] - v[(i + n - 1) % n]).normalized(), after = (v[(i + 1) % n] - v[i]).normalized();
+    const Vec2 n0(before.y(), -before.x()), n1(after.y(), -after.x());
+    // The corner moves along the bisector, by `by` over the cosine of half the turn.
+    const Vec2 bisector = (n0 + n1).normalized();
+    out.vertices.push_back(v[i] + bisector * (by / std::max(bisector.dot(n1), 1e-6)));
+  }
+  return out;
+}
+
+}  // namespace
+
+Shape grown(const Shape& shape, double by) {
+  switch (shape.kind()) {
+    case Shape::Kind::kBox: return Shape::box(shape.half_extents() + Vec2::Constant(by));
+    case Shape::Kind::kCircle: return Shape::circle(shape.radius() + by);
+    case Shape::Kind::kPolygon: break;
+  }
+  std::vector<Polygon> parts;
+  for (const Polygon& part : shape.parts()) parts.push_back(mitred(part, by));
+  const bool one_convex_outline = shape.parts().size() == 1 && !shape.outline().vertices.empty();
+  return Shape::polygon(one_convex_outline ? parts.front() : Polygon{}, parts);
 }
 
 }  // namespace physltl::geometry

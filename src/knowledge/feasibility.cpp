@@ -42,15 +42,15 @@ class Grid {
 };
 
 // The footprints that block the robot: fixed bodies, and optionally the movable ones too heavy to push.
-std::vector<geometry::OrientedBox> blocking_footprints(const AbstractKnowledge& k, bool with_unpushable_bodies) {
-  std::vector<geometry::OrientedBox> boxes;
-  for (const auto& f : k.fixed_bodies) boxes.push_back(f.footprint);
+std::vector<geometry::Footprint> blocking_footprints(const AbstractKnowledge& k, bool with_unpushable_bodies) {
+  std::vector<geometry::Footprint> footprints;
+  for (const auto& f : k.fixed_bodies) footprints.push_back(f.footprint);
   if (with_unpushable_bodies) {
     for (const auto& m : k.movable_bodies) {
-      if (m.body_class == BodyClass::kFixed) boxes.push_back(m.footprint);
+      if (m.body_class == BodyClass::kFixed) footprints.push_back(m.footprint);
     }
   }
-  return boxes;
+  return footprints;
 }
 
 // Where a disc of `radius` can have its centre (cell centres tested exactly), and which of those cells
@@ -58,17 +58,18 @@ std::vector<geometry::OrientedBox> blocking_footprints(const AbstractKnowledge& 
 class ConfigurationSpace {
  public:
   ConfigurationSpace(const AbstractKnowledge& k, const Grid& grid, double radius,
-                     const std::vector<geometry::OrientedBox>& footprints)
+                     std::vector<geometry::Footprint> footprints)
       : grid_(grid),
         radius_(radius),
         inner_workspace_{k.workspace.min + Vec2::Constant(radius), k.workspace.max - Vec2::Constant(radius)},
         blocked_(grid.cells(), 0),
-        reached_(grid.cells(), 0) {
-    for (const auto& box : footprints) obstacles_.emplace_back(box);
+        reached_(grid.cells(), 0),
+        footprints_(std::move(footprints)) {
+    for (const auto& f : footprints_) obstacles_.emplace_back(f.shape, f.pose);
     for (int iy = 0; iy < grid.ny(); ++iy) {
       for (int ix = 0; ix < grid.nx(); ++ix) blocked_[grid.index(ix, iy)] = !inner_workspace_.contains(grid.center(ix, iy));
     }
-    for (size_t i = 0; i < footprints.size(); ++i) mark_blocked(footprints[i], obstacles_[i]);
+    for (size_t i = 0; i < footprints_.size(); ++i) mark_blocked(footprints_[i], obstacles_[i]);
     flood_fill(grid.index_of(k.robot.start));
   }
 
@@ -81,8 +82,8 @@ class ConfigurationSpace {
   }
 
  private:
-  void mark_blocked(const geometry::OrientedBox& box, const Obstacle& obstacle) {
-    const geometry::Rect reach = geometry::Polygon::from_box(box).bounds();
+  void mark_blocked(const geometry::Footprint& footprint, const Obstacle& obstacle) {
+    const geometry::Rect reach = geometry::bounds(footprint.shape, footprint.pose);
     for (int iy = grid_.row(reach.min.y() - radius_); iy <= grid_.row(reach.max.y() + radius_); ++iy) {
       for (int ix = grid_.column(reach.min.x() - radius_); ix <= grid_.column(reach.max.x() + radius_); ++ix) {
         if (obstacle.distance(grid_.center(ix, iy)) < radius_) blocked_[grid_.index(ix, iy)] = 1;
@@ -118,6 +119,7 @@ class ConfigurationSpace {
   std::vector<Obstacle> obstacles_;
   std::vector<std::uint8_t> blocked_;
   std::vector<std::uint8_t> reached_;
+  std::vector<geometry::Footprint> footprints_;  // the obstacles' shapes live here
 };
 
 // Calls accept(point, cell) for the points that stand for a region on the grid until it returns true: the
@@ -224,13 +226,13 @@ ObjectVerdict judge(const AbstractKnowledge& k, const ObjectProposition& object)
     return verdict;
   }
   if (starts_inside) return verdict;
-  std::vector<geometry::OrientedBox> obstacles = blocking_footprints(k, false);
+  std::vector<geometry::Footprint> obstacles = blocking_footprints(k, false);
   for (size_t b = 0; b < k.movable_bodies.size(); ++b) {
     if (static_cast<int>(b) != object.body && k.movable_bodies[b].body_class == BodyClass::kFixed) {
       obstacles.push_back(k.movable_bodies[b].footprint);
     }
   }
-  const double inscribed = body.footprint.half_extents.minCoeff();
+  const double inscribed = body.footprint.shape.centre_clearance();
   const Vec2 size = k.workspace.size();
   // Fine enough that the margin the soundness costs (half a cell diagonal) is a few centimetres; a
   // million cells at most.

@@ -56,15 +56,14 @@ void blocked_stretches(const AbstractKnowledge& k, const scenario::EnvironmentSt
                        const BodyLocator& bodies, size_t pushed, const ContactSegment& segment,
                        std::vector<Interval>& blocked) {
   const double r = k.robot.radius;
-  auto add = [&](const geometry::OrientedBox& box) {
-    const Interval stretch = Obstacle(box).closer_than(segment.from, segment.direction, r);
-    if (!stretch.empty()) blocked.push_back(stretch);
+  auto add = [&](const geometry::Shape& shape, const geometry::Pose2& pose) {
+    Obstacle(shape, pose).closer_than(segment.from, segment.direction, r, blocked);
   };
   // Every point of the segment lies within half its length of its middle.
   const Vec2 middle = segment.from + 0.5 * segment.length * segment.direction;
   for (int f : k.fixed_near.near(middle)) {
     const FixedBodyKnowledge& fixed = k.fixed_bodies[static_cast<size_t>(f)];
-    if (segment.may_reach(fixed.bounds, r)) add(fixed.footprint);
+    if (segment.may_reach(fixed.bounds, r)) add(fixed.footprint.shape, fixed.footprint.pose);
   }
   std::vector<int>& nearby = scratch().nearby;
   bodies.near(middle, 0.5 * segment.length + k.largest_bound_radius + r, nearby);
@@ -75,7 +74,7 @@ void blocked_stretches(const AbstractKnowledge& k, const scenario::EnvironmentSt
     const double near = 0.5 * segment.length + other.bound_radius + r;
     if (j == pushed || (pose.position - middle).squaredNorm() >= near * near) continue;
     if (segment.distance_to(pose.position) >= other.bound_radius + r) continue;
-    add({pose, other.footprint.half_extents});
+    add(other.footprint.shape, pose);
   }
 }
 
@@ -106,9 +105,9 @@ Vec2 to_world(const geometry::Pose2& pose, double cos_yaw, double sin_yaw, const
   return pose.position + Vec2(cos_yaw * local.x() - sin_yaw * local.y(), sin_yaw * local.x() + cos_yaw * local.y());
 }
 
-BodyType type_of(const MovableBodyKnowledge& body, SideSet active) {
+BodyType type_of(const MovableBodyKnowledge& body, FaceSet active) {
   if (body.body_class == BodyClass::kFixed || active.empty()) return BodyType::kImmovable;
-  return active.is_all() ? BodyType::kFree : BodyType::kConstraintOriented;
+  return active == FaceSet::first(body.faces) ? BodyType::kFree : BodyType::kConstraintOriented;
 }
 
 BodyKappa infer_body(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state,
@@ -116,13 +115,13 @@ BodyKappa infer_body(const AbstractKnowledge& knowledge, const scenario::Environ
   const MovableBodyKnowledge& body = knowledge.movable_bodies[i];
   const geometry::Pose2& pose = state.movable_poses[i];
   const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
-  SideSet active;
+  FaceSet active;
   for (const MRegionTemplate& m : body.mregions) {
     const Vec2 from = to_world(pose, c, s, m.contact_from);
     const Vec2 along = to_world(pose, c, s, m.contact_to) - from;
     const double length = along.norm();
     if (length > 0.0 && has_free_stretch(knowledge, state, bodies, i, {from, along / length, length}, blocked)) {
-      active.insert(m.side);
+      active.insert(m.face);
     }
   }
   return {type_of(body, active), active};
@@ -261,11 +260,17 @@ Kappa infer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState
   return kappa;
 }
 
+geometry::Vec2 push_direction(const MRegionTemplate& mregion, const geometry::Pose2& body_pose) {
+  const geometry::Vec2& n = mregion.push;
+  const double c = std::cos(body_pose.yaw), s = std::sin(body_pose.yaw);
+  return {c * n.x() - s * n.y(), s * n.x() + c * n.y()};
+}
+
 std::vector<geometry::Vec2> allowed_push_directions(const MovableBodyKnowledge& body, const BodyKappa& kappa,
                                                     const geometry::Pose2& pose) {
   std::vector<geometry::Vec2> directions;
   for (const MRegionTemplate& m : body.mregions) {
-    if (kappa.active_sides.contains(m.side)) directions.push_back(push_direction(m.side, pose));
+    if (kappa.active_faces.contains(m.face)) directions.push_back(push_direction(m, pose));
   }
   return directions;
 }

@@ -1,8 +1,11 @@
 #pragma once
-// An oriented box with its axes computed once: inference and the reachability grid test many robot
-// positions against few boxes, and OrientedBox recomputes its axes on every query.
+// A footprint with its axes computed once: inference and the reachability grid test many robot positions
+// against few bodies, and the shapes' own queries recompute the axes every time.
 
+#include "physltl/geometry/shape.h"
 #include "physltl/geometry/shapes.h"
+
+#include <vector>
 
 namespace physltl::knowledge {
 
@@ -17,25 +20,31 @@ struct Interval {
 // at the origin of coordinates.
 Interval inside_rectangle(const geometry::Vec2& origin, const geometry::Vec2& direction, const geometry::Vec2& half);
 
+// A body's footprint where it stands, as INFERENCE and the reachability grid ask about it.
 class Obstacle {
  public:
-  explicit Obstacle(const geometry::OrientedBox& box);
+  // `shape` must outlive the obstacle.
+  Obstacle(const geometry::Shape& shape, const geometry::Pose2& pose);
 
   double distance(const geometry::Vec2& p) const;
 
   // The t for which the robot's centre at origin + t * direction (direction of unit length) is closer than
-  // `radius` to the box, i.e. inside the box grown by a disc: an interval, as that shape is convex.
-  Interval closer_than(const geometry::Vec2& origin, const geometry::Vec2& direction, double radius) const;
+  // `radius` to the footprint, i.e. inside it grown by a disc: one interval per convex part (a box and a
+  // circle have one), appended to `out` unless empty.
+  void closer_than(const geometry::Vec2& origin, const geometry::Vec2& direction, double radius,
+                   std::vector<Interval>& out) const;
 
  private:
   geometry::Vec2 local(const geometry::Vec2& world_vector) const {
     return {world_vector.dot(axis_x_), world_vector.dot(axis_y_)};
   }
+  Interval box_closer_than(const geometry::Vec2& origin, const geometry::Vec2& direction, double radius) const;
 
+  const geometry::Shape& shape_;
+  geometry::Pose2 pose_;
   geometry::Vec2 center_;
   geometry::Vec2 axis_x_;
   geometry::Vec2 axis_y_;
-  geometry::Vec2 half_extents_;
 };
 
 }  // namespace physltl::knowledge

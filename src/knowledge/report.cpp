@@ -12,16 +12,19 @@ using json = nlohmann::ordered_json;
 
 json point(const geometry::Vec2& p) { return {p.x(), p.y()}; }
 
-json mregion_json(const MRegionTemplate& m) {
-  return {{"side", scenario::side_name(m.side)},
-          {"center", point(m.strip.pose.position)},
-          {"size", point(2.0 * m.strip.half_extents)}};
+// A box's strips lie along its own axes, as they always did; other shapes' strips are turned too.
+json mregion_json(const MovableBodyKnowledge& body, const MRegionTemplate& m) {
+  json j = {{"side", scenario::face_name(body.footprint.shape, m.face)},
+            {"center", point(m.strip.pose.position)},
+            {"size", point(2.0 * m.strip.half_extents)}};
+  if (!body.footprint.shape.is_box()) j["yaw_deg"] = m.strip.pose.yaw * 180.0 / std::numbers::pi;
+  return j;
 }
 
 json movable_report(const MovableBodyKnowledge& body, const BodyKappa& kappa, const geometry::Pose2& pose) {
   json active = json::array(), inactive = json::array(), directions = json::array();
   for (const MRegionTemplate& m : body.mregions) {
-    (kappa.active_sides.contains(m.side) ? active : inactive).push_back(scenario::side_name(m.side));
+    (kappa.active_faces.contains(m.face) ? active : inactive).push_back(scenario::face_name(body.footprint.shape, m.face));
   }
   for (const geometry::Vec2& d : allowed_push_directions(body, kappa, pose)) directions.push_back(direction_name(d));
   return {{"name", body.name},
@@ -51,11 +54,12 @@ json to_json(const AbstractKnowledge& k) {
   }
   for (const auto& m : k.movable_bodies) {
     json mregions = json::array();
-    for (const auto& t : m.mregions) mregions.push_back(mregion_json(t));
+    for (const auto& t : m.mregions) mregions.push_back(mregion_json(m, t));
+    const geometry::Shape& shape = m.footprint.shape;
     bodies.push_back({{"name", m.name},
                       {"class", class_name(m.body_class)},
                       {"class_reason", m.class_reason},
-                      {"size", point(2.0 * m.footprint.half_extents)},
+                      {"size", point(geometry::bounds(shape, {}).max - geometry::bounds(shape, {}).min)},
                       {"mass", m.mass},
                       {"friction", m.friction},
                       {"floor_friction_force", m.floor_friction_force},

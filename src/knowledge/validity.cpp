@@ -16,7 +16,7 @@ bool robot_inside_workspace(const AbstractKnowledge& k, const geometry::Vec2& ce
 bool pushes_from_active_mregion(const MovableBodyKnowledge& body, const BodyKappa& kappa,
                                 const geometry::Pose2& pose, const geometry::Vec2& robot_centre) {
   for (const MRegionTemplate& m : body.mregions) {
-    if (kappa.active_sides.contains(m.side) && mregion_at(m, pose).contains(robot_centre)) return true;
+    if (kappa.active_faces.contains(m.face) && mregion_at(m, pose).contains(robot_centre)) return true;
   }
   return false;
 }
@@ -50,8 +50,8 @@ Validity check(const AbstractKnowledge& knowledge, const Kappa& kappa, const sce
   if (!robot_inside_workspace(knowledge, state.robot_position)) return {Violation::kLeftWorkspace, -1};
   for (const auto body : tested) {
     const auto i = static_cast<size_t>(body);
-    const geometry::OrientedBox footprint{state.movable_poses[i], knowledge.movable_bodies[i].footprint.half_extents};
-    if (!geometry::inside(footprint, knowledge.workspace, kWorkspaceTolerance)) {
+    if (!geometry::inside(knowledge.movable_bodies[i].footprint.shape, state.movable_poses[i], knowledge.workspace,
+                          kWorkspaceTolerance)) {
       return {Violation::kLeftWorkspace, static_cast<int>(i)};
     }
   }

@@ -2,6 +2,7 @@
 
 #include "drive.h"
 #include "ode_runtime.h"
+#include "shape_geoms.h"
 #include "physltl/geometry/point_grid.h"
 #include "physltl/geometry/rect_grid.h"
 
@@ -18,7 +19,6 @@ namespace physltl::physics {
 namespace {
 
 constexpr double kGravity = 9.81;           // m/s^2, for floor friction only: motion is planar
-constexpr double kCollisionHeight = 1.0;    // m; every body spans z = ±0.5 so contact normals stay horizontal
 constexpr int kMaxContactsPerPair = 4;
 constexpr std::size_t kValuesPerBody = PhysicsState::kValuesPerBody;
 constexpr std::size_t kBodiesPerBlock = PhysicsState::kBodiesPerBlock;
@@ -63,7 +63,8 @@ struct Simulation::Impl {
   dThreadingImplementationID threading = nullptr;
   dJointGroupID contact_group = nullptr;
   std::vector<Geom> dynamic;  // robot first, then movables in World order
-  std::vector<Geom> fixed;
+  std::vector<Geom> fixed;  // one per convex part of each fixed body
+  ConvexStore convex_store;  // the prisms' data, which ODE reads in place
   geometry::RectGrid fixed_near;  // the fixed bodies' bounds, within reach of the largest dynamic body
   // The PhysicsState of the dynamic bodies, kept equal to what ODE holds: every change goes through
   // set_body(). Reading it costs a copy; reading ODE costs calls into bodies spread over memory, and a
@@ -120,28 +121,27 @@ struct Simulation::Impl {
 
     for (size_t i = 0; i < w.movable_bodies.size(); ++i) {
       const auto& b = w.movable_bodies[i];
-      const scenario::Vec2 size = 2.0 * b.footprint.half_extents;
-      dMassSetBoxTotal(&mass, b.mass, size.x(), size.y(), kCollisionHeight);
+      const geometry::Shape& shape = b.footprint.shape;
       const double floor_force = mix_friction(floor, b.friction) * b.mass * kGravity;
-      // Turning a box on the floor resists like friction acting at two thirds of its half-size.
-      const double floor_torque = floor_force * (2.0 / 3.0) * b.footprint.half_extents.mean();
-      add_dynamic(dCreateBox(nullptr, size.x(), size.y(), kCollisionHeight), mass, b.friction,
-                  b.footprint.half_extents.norm(), static_cast<int>(i), floor_force, floor_torque);
-    }
-    for (size_t i = 0; i < w.fixed_bodies.size(); ++i) {
-      const auto& f = w.fixed_bodies[i];
-      const scenario::Vec2 size = 2.0 * f.footprint.half_extents;
-      Geom g;
-      g.id = dCreateBox(nullptr, size.x(), size.y(), kCollisionHeight);
-      g.index = static_cast<int>(i);
-      g.friction = 0.5;
-      g.bound_radius = f.footprint.half_extents.norm();
-      g.position = f.footprint.pose.position;
-      place(g.id, f.footprint.pose);
-      fixed.push_back(g);
+      // A movable body is convex: one geom.
+      add_dynamic(make_geoms(shape, convex_store).front(), body_mass(shape, b.mass), b.friction, shape.bound_radius(),
+                  static_cast<int>(i), floor_force, floor_torque(shape, floor_force));
     }
     std::vector<geometry::Rect> fixed_bounds;
-    for (const auto& f : w.fixed_bodies) fixed_bounds.push_back(geometry::Polygon::from_box(f.footprint).bounds());
+    for (size_t i = 0; i < w.fixed_bodies.size(); ++i) {
+      const auto& f = w.fixed_bodies[i];
+      for (dGeomID id : make_geoms(f.footprint.shape, convex_store)) {
+        Geom g;
+        g.id = id;
+        g.index = static_cast<int>(i);
+        g.friction = 0.5;
+        g.bound_radius = f.footprint.shape.bound_radius();
+        g.position = f.footprint.pose.position;
+        place(g.id, f.footprint.pose);
+        fixed.push_back(g);
+        fixed_bounds.push_back(geometry::bounds(f.footprint.shape, f.footprint.pose));
+      }
+    }
     double reach = 0.0;
     for (const Geom& g : dynamic) reach = std::max(reach, g.bound_radius);
     fixed_near = geometry::RectGrid(fixed_bounds, reach);

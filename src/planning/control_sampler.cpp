@@ -1,6 +1,6 @@
 #include "control_sampler.h"
 
-#include "physltl/knowledge/side_set.h"
+#include "physltl/knowledge/face_set.h"
 
 #include <algorithm>
 #include <cmath>
@@ -61,9 +61,9 @@ bool ControlSampler::push_towards(const scenario::EnvironmentState& state, const
     const auto& pose = state.movable_poses[b];
     if ((pose.position - state.robot_position).squaredNorm() > mregion_reach_[b] * mregion_reach_[b]) continue;
     for (const auto& mregion : body.mregions) {
-      if (!kappa.bodies[b].active_sides.contains(mregion.side)) continue;
+      if (!kappa.bodies[b].active_faces.contains(mregion.face)) continue;
       if (!knowledge::mregion_at(mregion, pose).contains(state.robot_position)) continue;
-      const Vec2 push = knowledge::push_direction(mregion.side, pose);
+      const Vec2 push = knowledge::push_direction(mregion, pose);
       if (push.dot(heading) < kPushAlignment) continue;
       // Reservoir choice among the pushes that help: each equally likely.
       if (random.uniform_int(0, candidates++) != 0) continue;

@@ -1,6 +1,6 @@
 #include "object_lead.h"
 
-#include "physltl/knowledge/side_set.h"
+#include "physltl/knowledge/face_set.h"
 
 #include <Eigen/Geometry>
 
@@ -32,11 +32,11 @@ Vec2 unit(const Vec2& v) {
   return n > 1e-12 ? Vec2(v / n) : Vec2(1.0, 0.0);
 }
 
-// Whether the segment from `a` to `b` passes through the box's interior (sampled every few centimetres).
-bool crosses(const geometry::OrientedBox& box, const Vec2& a, const Vec2& b) {
+// Whether the segment from `a` to `b` passes through the placed shape (sampled every few centimetres).
+bool crosses(const geometry::Shape& shape, const geometry::Pose2& pose, const Vec2& a, const Vec2& b) {
   const int samples = std::max(2, static_cast<int>((b - a).norm() / 0.05));
   for (int i = 1; i < samples; ++i) {
-    if (box.contains(a + (b - a) * (static_cast<double>(i) / samples))) return true;
+    if (geometry::contains(shape, pose, a + (b - a) * (static_cast<double>(i) / samples))) return true;
   }
   return false;
 }
@@ -52,13 +52,13 @@ ObjectLead::Goal ObjectLead::goal(const Labelling& labelling, const BodyMove& mo
   std::unique_ptr<geometry::DiscField>& way = ways_[{named.body, move.place}];
   if (!way) {
     const auto& body = knowledge_.movable_bodies[static_cast<std::size_t>(named.body)];
-    std::vector<geometry::OrientedBox> obstacles;
+    std::vector<geometry::Footprint> obstacles;
     for (const auto& f : knowledge_.fixed_bodies) obstacles.push_back(f.footprint);
     for (std::size_t b = 0; b < knowledge_.movable_bodies.size(); ++b) {
       const auto& other = knowledge_.movable_bodies[b];
       if (static_cast<int>(b) != named.body && other.body_class == knowledge::BodyClass::kFixed) obstacles.push_back(other.footprint);
     }
-    const double inscribed = body.footprint.half_extents.minCoeff();
+    const double inscribed = body.footprint.shape.centre_clearance();
     const Vec2 size = knowledge_.workspace.size();
     const double cell = std::max({0.5 * inscribed, 0.05, std::sqrt(size.x() * size.y() / kMaxWayCells)});
     way = std::make_unique<geometry::DiscField>(knowledge_.workspace, std::min(cell, inscribed), inscribed, obstacles);
@@ -132,8 +132,8 @@ Vec2 ObjectLead::target(const Goal& goal, const scenario::EnvironmentState& stat
   const knowledge::MRegionTemplate* best = nullptr;
   double best_help = -std::numeric_limits<double>::infinity();
   for (const auto& m : body.mregions) {
-    if (!kappa.bodies[static_cast<std::size_t>(goal.body)].active_sides.contains(m.side)) continue;
-    const double help = knowledge::push_direction(m.side, pose).dot(wanted);
+    if (!kappa.bodies[static_cast<std::size_t>(goal.body)].active_faces.contains(m.face)) continue;
+    const double help = knowledge::push_direction(m, pose).dot(wanted);
     if (help > best_help) best_help = help, best = &m;
   }
   if (best == nullptr) {
@@ -141,7 +141,7 @@ Vec2 ObjectLead::target(const Goal& goal, const scenario::EnvironmentState& stat
     const double a = random.uniform(-3.14159265358979, 3.14159265358979);
     return pose.position + (body.bound_radius + 2 * world_.robot.radius) * Vec2(std::cos(a), std::sin(a));
   }
-  const Vec2 push = knowledge::push_direction(best->side, pose);
+  const Vec2 push = knowledge::push_direction(*best, pose);
   if (knowledge::mregion_at(*best, pose).contains(robot)) return robot + push;
   // The middle of the side's contact segment, where the robot touches it; round the body if it is in the way.
   const Eigen::Rotation2Dd rotation(pose.yaw);
@@ -149,13 +149,14 @@ Vec2 ObjectLead::target(const Goal& goal, const scenario::EnvironmentState& stat
   // Where the robot's centre would hit the body (the contact point lies just outside), and the corners
   // it goes round by.
   const double r = world_.robot.radius;
-  const geometry::OrientedBox blocking{pose, body.footprint.half_extents + Vec2::Constant(0.9 * r)};
-  if (!crosses(blocking, robot, contact)) return contact;
-  const geometry::OrientedBox round{pose, body.footprint.half_extents + Vec2::Constant(r + kRoundClearance)};
+  const geometry::Shape blocking = geometry::grown(body.footprint.shape, 0.9 * r);
+  if (!crosses(blocking, pose, robot, contact)) return contact;
+  const geometry::Shape round = geometry::grown(body.footprint.shape, r + kRoundClearance);
   Vec2 corner_target = contact;
   double shortest = std::numeric_limits<double>::infinity();
-  for (const Vec2& corner : round.corners()) {
-    if (crosses(blocking, robot, corner)) continue;
+  const geometry::Polygon round_corners = geometry::convex_parts_at(round, pose, geometry::CircleAs::kCircumscribed).front();
+  for (const Vec2& corner : round_corners.vertices) {
+    if (crosses(blocking, pose, robot, corner)) continue;
     const double way = (corner - robot).norm() + (contact - corner).norm();
     if (way < shortest) shortest = way, corner_target = corner;
   }

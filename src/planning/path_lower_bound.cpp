@@ -54,9 +54,12 @@ double shortest_accepted_route(const scenario::World& world, const TaskAutomaton
 geometry::FreeSpace robot_free_space(const scenario::World& world, RobotObstacles obstacles) {
   const double r = world.robot.radius;
   std::vector<geometry::Polygon> grown;
-  for (const auto& f : world.fixed_bodies) grown.push_back(geometry::grown_from_inside(f.footprint, r));
+  const auto add = [&](const geometry::Footprint& f) {
+    for (geometry::Polygon& part : geometry::grown_from_inside(f.shape, f.pose, r)) grown.push_back(std::move(part));
+  };
+  for (const auto& f : world.fixed_bodies) add(f.footprint);
   if (obstacles == RobotObstacles::kAllBodies) {
-    for (const auto& m : world.movable_bodies) grown.push_back(geometry::grown_from_inside(m.footprint, r));
+    for (const auto& m : world.movable_bodies) add(m.footprint);
   }
   const geometry::Rect bounds{world.workspace.bounds.min + geometry::Vec2::Constant(r),
                               world.workspace.bounds.max - geometry::Vec2::Constant(r)};

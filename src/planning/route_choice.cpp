@@ -167,18 +167,18 @@ RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& tas
 
 std::vector<bool> triangles_under_bodies(const scenario::World& world, const TaskAutomaton& task,
                                          const decomposition::Decomposition& decomposition) {
-  std::vector<geometry::OrientedBox> bodies;
+  std::vector<const geometry::Footprint*> bodies;
   for (size_t b = 0; b < world.movable_bodies.size(); ++b) {
     const auto& named = task.labelling.named_bodies();
     const bool moved_on_purpose =
         std::any_of(named.begin(), named.end(), [&](const Labelling::NamedBody& n) { return n.body == static_cast<int>(b); });
-    if (!moved_on_purpose) bodies.push_back(world.movable_bodies[b].footprint);
+    if (!moved_on_purpose) bodies.push_back(&world.movable_bodies[b].footprint);
   }
   std::vector<bool> under;
   under.reserve(decomposition.triangles().size());
   for (const auto& triangle : decomposition.triangles()) {
-    under.push_back(std::any_of(bodies.begin(), bodies.end(), [&](const geometry::OrientedBox& box) {
-      return geometry::overlap(box, triangle.centroid, world.robot.radius);
+    under.push_back(std::any_of(bodies.begin(), bodies.end(), [&](const geometry::Footprint* f) {
+      return geometry::overlap(f->shape, f->pose, triangle.centroid, world.robot.radius);
     }));
   }
   return under;

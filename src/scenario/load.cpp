@@ -26,6 +26,33 @@ const char* side_name(Side side) {
   return "?";
 }
 
+int face_count(const geometry::Shape& shape) {
+  switch (shape.kind()) {
+    case geometry::Shape::Kind::kBox: return 4;
+    case geometry::Shape::Kind::kCircle: return kCylinderSectors;
+    case geometry::Shape::Kind::kPolygon: break;
+  }
+  return static_cast<int>(shape.outline().vertices.size());
+}
+
+std::string face_name(const geometry::Shape& shape, int face) {
+  switch (shape.kind()) {
+    case geometry::Shape::Kind::kBox: return side_name(static_cast<Side>(face));
+    case geometry::Shape::Kind::kCircle: return "sector " + std::to_string(face + 1);
+    case geometry::Shape::Kind::kPolygon: break;
+  }
+  return "face " + std::to_string(face + 1);
+}
+
+const char* shape_name(const geometry::Shape& shape) {
+  switch (shape.kind()) {
+    case geometry::Shape::Kind::kBox: return "box";
+    case geometry::Shape::Kind::kCircle: return "cylinder";
+    case geometry::Shape::Kind::kPolygon: break;
+  }
+  return "polygon";
+}
+
 const char* drive_name(Drive drive) {
   switch (drive) {
     case Drive::kHolonomic: return "holonomic";

@@ -2,6 +2,10 @@
 
 #include "table_reader.h"
 
+#include "physltl/geometry/convex_partition.h"
+#include "physltl/geometry/mesh.h"
+
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -33,12 +37,66 @@ std::string element_label(const Element& e, int index_of_kind) {
   return e.kind + " #" + std::to_string(index_of_kind);
 }
 
-geometry::OrientedBox read_footprint(TableReader& r) {
-  geometry::OrientedBox box;
-  box.pose.position = r.point("center");
-  box.half_extents = 0.5 * r.point("size");
-  box.pose.yaw = r.number("yaw_deg", 0.0) * kDegree;
-  return box;
+// Far beyond a body anyone draws by hand, and within what a movable body's faces can number (kappa keeps
+// them in 32 bits).
+constexpr std::size_t kMaxFixedPolygonCorners = 1000;
+constexpr std::size_t kMaxMovablePolygonCorners = 32;
+
+geometry::Pose2 read_pose(TableReader& r) { return {r.point("center"), r.number("yaw_deg", 0.0) * kDegree}; }
+
+// A polygon given as `polygon` (world frame) or as `points` about `center` turned by `yaw_deg`: its pose is
+// its area centroid with that heading, its outline the corners about it. A movable polygon must be convex;
+// a fixed one may be any simple polygon, cut into convex parts here.
+geometry::Footprint read_polygon(TableReader& r, bool movable) {
+  const bool in_world = r.has("polygon"), about_centre = r.has("points");
+  if (in_world == about_centre) {
+    r.error("a polygon takes exactly one of 'polygon' = {{x, y}, ...} (world frame) or 'points' = {{x, y}, ...} "
+            "about 'center'");
+    return {};
+  }
+  geometry::Pose2 placed;
+  std::vector<Vec2> corners;
+  if (in_world) {
+    corners = r.points("polygon");
+  } else {
+    placed = read_pose(r);
+    corners = r.points("points");
+  }
+  const std::size_t limit = movable ? kMaxMovablePolygonCorners : kMaxFixedPolygonCorners;
+  const geometry::Polygon authored{corners};
+  if (corners.size() < 3 || corners.size() > limit || !authored.is_simple()) {
+    r.error("a polygon needs 3 to " + std::to_string(limit) + " corners, a positive area and no crossing edges");
+    return {};
+  }
+  if (movable && !geometry::is_convex(authored)) {
+    r.error("a movable polygon must be convex (it is one rigid body ODE collides as a convex shape); split it, or "
+            "make it fixed");
+    return {};
+  }
+  // The centre the pose names, and the object propositions test, is the area centroid.
+  const Vec2 centroid = authored.centroid();
+  geometry::Polygon outline;
+  for (const Vec2& c : corners) outline.vertices.push_back(c - centroid);
+  geometry::Pose2 pose{geometry::to_world(placed, centroid), placed.yaw};
+  if (in_world) pose = {centroid, 0.0};
+  std::vector<geometry::Polygon> parts = geometry::convex_partition(outline);
+  return {pose, geometry::Shape::polygon(std::move(outline), std::move(parts))};
+}
+
+// The body's outline and pose from its `shape` and that shape's keys (docs/scenarios.md, "Shapes").
+geometry::Footprint read_footprint(TableReader& r, bool movable) {
+  const std::string shape = r.string("shape", "box");
+  if (shape == "box") {
+    const geometry::Pose2 pose = read_pose(r);
+    return {pose, geometry::Shape::box(0.5 * r.point("size"))};
+  }
+  if (shape == "cylinder") {
+    // A cylinder has no heading to give: it looks and collides the same however it is turned.
+    return {{r.point("center"), 0.0}, geometry::Shape::circle(r.number("radius"))};
+  }
+  if (shape == "polygon") return read_polygon(r, movable);
+  r.error("'shape' is \"box\", \"cylinder\" or \"polygon\", got \"" + shape + "\"");
+  return {};
 }
 
 void read_workspace(TableReader& r, Workspace& w) {
@@ -75,11 +133,25 @@ void read_robot(TableReader& r, Robot& robot) {
 FixedBody read_fixed(TableReader& r, const std::string& default_name, const std::string& script_dir) {
   FixedBody body;
   body.name = r.string("name", default_name);
-  body.footprint = read_footprint(r);
-  body.height = r.number("height", body.height);
   body.mesh = r.string("mesh", "");
-  if (!body.mesh.empty() && std::filesystem::path(body.mesh).is_relative()) {
-    body.mesh = (std::filesystem::path(script_dir) / body.mesh).lexically_normal().string();
+  if (body.mesh.empty()) {
+    body.footprint = read_footprint(r, false);
+  } else {
+    // A mesh collides as it is drawn: its footprint is found once the robot's size is known (read_world).
+    if (r.has("size") || r.has("shape")) {
+      r.error("a mesh collides as its own footprint: give 'mesh' with 'center', 'yaw_deg' and 'scale', not 'size' or "
+              "'shape'");
+    }
+    body.footprint.pose = read_pose(r);
+    body.mesh_scale = r.number("scale", 1.0);
+    if (std::filesystem::path(body.mesh).is_relative()) {
+      body.mesh = (std::filesystem::path(script_dir) / body.mesh).lexically_normal().string();
+    }
+  }
+  if (const auto height = r.optional_number("height")) {
+    body.height = *height;
+  } else if (!body.mesh.empty()) {
+    body.height = 0.0;  // the mesh's own, once it is read
   }
   return body;
 }
@@ -87,15 +159,32 @@ FixedBody read_fixed(TableReader& r, const std::string& default_name, const std:
 MovableBody read_movable(TableReader& r, const std::string& default_name) {
   MovableBody body;
   body.name = r.string("name", default_name);
-  body.footprint = read_footprint(r);
+  body.footprint = read_footprint(r, true);
   body.height = r.number("height", body.height);
   body.mass = r.number("mass", body.mass);
   body.friction = r.number("friction", body.friction);
-  for (const auto& text : r.strings("push_from")) {
-    if (auto side = parse_side(text)) {
-      body.push_from.push_back(*side);
-    } else {
-      r.error("'push_from' sides are \"-x\", \"+x\", \"-y\" or \"+y\" (in the body's frame), got \"" + text + "\"");
+  const geometry::Shape& shape = body.footprint.shape;
+  if (shape.kind() == geometry::Shape::Kind::kPolygon && r.has("push_from")) {
+    const int faces = face_count(shape);
+    for (int face : r.integers("push_from")) {
+      if (face >= 1 && face <= faces) {
+        body.push_from.push_back(face - 1);
+      } else {
+        r.error("'push_from' faces of a polygon are 1 to " + std::to_string(faces) + " (face k runs from corner k to " +
+                "the next), got " + std::to_string(face));
+      }
+    }
+  } else if (shape.kind() == geometry::Shape::Kind::kCircle && r.has("push_from")) {
+    r.strings("push_from");
+    r.error("'push_from' is for boxes and polygons: a cylinder is pushed from wherever the robot touches it, towards "
+            "its axis");
+  } else {
+    for (const auto& text : r.strings("push_from")) {
+      if (auto side = parse_side(text)) {
+        body.push_from.push_back(static_cast<int>(*side));
+      } else {
+        r.error("'push_from' sides are \"-x\", \"+x\", \"-y\" or \"+y\" (in the body's frame), got \"" + text + "\"");
+      }
     }
   }
   body.mregion_depth = r.optional_number("mregion_depth");
@@ -149,6 +238,37 @@ void read_render(TableReader& r, RenderSettings& s) {
 }
 
 void read_task(TableReader& r, Task& task) { task.formula = r.string("formula"); }
+
+// Each mesh's footprint: the floor projection of what stands below the robot's top, so the robot never
+// passes under anything it would hit; its height, unless given, the mesh's own.
+void place_meshes(World& world, std::vector<Diagnostic>& diagnostics) {
+  const double robot_top = 2.0 * world.robot.radius;
+  for (FixedBody& body : world.fixed_bodies) {
+    if (body.mesh.empty()) continue;
+    const std::string what = "fixed '" + body.name + "': ";
+    if (!(body.mesh_scale > 0.0) || body.mesh_scale > 1e3) {
+      diagnostics.push_back({body.where, what + "'scale' must be greater than 0 and at most 1000"});
+      continue;
+    }
+    try {
+      const geometry::Mesh mesh = geometry::read_obj(body.mesh);
+      std::vector<geometry::Polygon> parts = geometry::floor_footprint(mesh, body.mesh_scale, robot_top);
+      if (parts.empty()) {
+        diagnostics.push_back({body.where, what + "mesh '" + body.mesh + "' has nothing at or below the robot's top (" +
+                                               std::to_string(robot_top) + " m) to collide with"});
+        continue;
+      }
+      body.footprint.shape = geometry::Shape::polygon({}, std::move(parts));
+      if (body.height == 0.0) {
+        for (const auto& triangle : mesh.triangles) {
+          for (const auto& corner : triangle) body.height = std::max(body.height, body.mesh_scale * corner.z());
+        }
+      }
+    } catch (const geometry::MeshError& e) {
+      diagnostics.push_back({body.where, what + e.what()});
+    }
+  }
+}
 
 }  // namespace
 
@@ -208,6 +328,7 @@ World read_world(const std::vector<Element>& elements, const std::string& path, 
     }
     r.finish();
   }
+  place_meshes(world, diagnostics);
   for (const char* required : {"workspace", "robot", "task"}) {
     if (!count_of.count(required)) {
       diagnostics.push_back({{path, 1}, std::string("the scenario has no ") + required + " { ... }"});

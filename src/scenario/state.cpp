@@ -22,8 +22,4 @@ bool EnvironmentState::at_rest() const {
          std::all_of(movable_velocities.begin(), movable_velocities.end(), stopped);
 }
 
-geometry::OrientedBox footprint_at(const MovableBody& body, const geometry::Pose2& pose) {
-  return {pose, body.footprint.half_extents};
-}
-
 }  // namespace physltl::scenario

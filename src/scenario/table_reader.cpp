@@ -177,6 +177,21 @@ std::vector<std::string> TableReader::strings(const std::string& key) {
   return result;
 }
 
+std::vector<int> TableReader::integers(const std::string& key) {
+  const LuaValue* v = take(key, LuaValue::Kind::kTable, "a list of whole numbers");
+  std::vector<int> result;
+  if (v == nullptr) return result;
+  for (const auto& item : v->array) {
+    if (item.kind != LuaValue::Kind::kNumber || item.number != std::floor(item.number) || std::abs(item.number) > 1e9) {
+      error("'" + key + "' must be a list of whole numbers");
+      return {};
+    }
+    result.push_back(static_cast<int>(item.number));
+  }
+  if (!v->fields.empty()) error("'" + key + "' must be a list of whole numbers");
+  return result;
+}
+
 std::optional<TableReader> TableReader::nested(const std::string& key) {
   const LuaValue* v = take(key, LuaValue::Kind::kTable, "a table { ... }");
   if (v == nullptr) return std::nullopt;

@@ -31,6 +31,7 @@ class TableReader {
   geometry::Vec2 point(const std::string& key, const geometry::Vec2& fallback);
   std::vector<geometry::Vec2> points(const std::string& key);  // a list of {x, y}
   std::vector<std::string> strings(const std::string& key);    // a list of strings; empty when absent
+  std::vector<int> integers(const std::string& key);           // a list of whole numbers; empty when absent
   // A reader for a nested table such as `camera = { ... }`; nullopt when absent or not a table.
   std::optional<TableReader> nested(const std::string& key);
 

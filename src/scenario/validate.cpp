@@ -10,6 +10,8 @@
 #include <numbers>
 #include <optional>
 #include <set>
+#include <utility>
+#include <vector>
 
 namespace physltl::scenario {
 namespace {
@@ -102,23 +104,37 @@ class Validator {
       error(r.where, "robot: 'start' must keep the robot (radius " + fmt(r.radius) + ") inside the workspace");
     }
     for (const auto& f : world_.fixed_bodies) {
-      if (geometry::overlap(f.footprint, r.start, r.radius)) {
+      if (geometry::overlap(f.footprint.shape, f.footprint.pose, r.start, r.radius)) {
         error(r.where, "robot: 'start' is inside fixed '" + f.name + "' (" + f.where.str() + ")");
       }
     }
     for (const auto& m : world_.movable_bodies) {
-      if (geometry::overlap(m.footprint, r.start, r.radius)) {
+      if (geometry::overlap(m.footprint.shape, m.footprint.pose, r.start, r.radius)) {
         error(r.where, "robot: 'start' is inside movable '" + m.name + "' (" + m.where.str() + ")");
       }
     }
   }
 
-  void check_body_shape(const std::string& what, const geometry::OrientedBox& box, double height, const Location& where) {
-    check_range(where, what + ": 'size' x", 2 * box.half_extents.x(), 0.0, kMaxLength);
-    check_range(where, what + ": 'size' y", 2 * box.half_extents.y(), 0.0, kMaxLength);
+  void check_body_shape(const std::string& what, const geometry::Footprint& footprint, double height,
+                        const Location& where) {
+    const geometry::Shape& shape = footprint.shape;
+    switch (shape.kind()) {
+      case geometry::Shape::Kind::kBox:
+        check_range(where, what + ": 'size' x", 2 * shape.half_extents().x(), 0.0, kMaxLength);
+        check_range(where, what + ": 'size' y", 2 * shape.half_extents().y(), 0.0, kMaxLength);
+        break;
+      case geometry::Shape::Kind::kCircle:
+        check_range(where, what + ": 'radius'", shape.radius(), 0.0, kMaxLength);
+        break;
+      case geometry::Shape::Kind::kPolygon:
+        // Corners, convexity and area were checked as the polygon was read.
+        if (shape.bound_radius() > kMaxLength) error(where, what + " is too large");
+        break;
+    }
     check_range(where, what + ": 'height'", height, 0.0, kMaxLength);
-    if (box.pose.position.cwiseAbs().maxCoeff() > kMaxLength) error(where, what + ": 'center' is too far away");
-    if (workspace_ok() && !geometry::inside(box, world_.workspace.bounds, 1e-6)) {
+    if (footprint.pose.position.cwiseAbs().maxCoeff() > kMaxLength) error(where, what + ": 'center' is too far away");
+    const bool has_outline = shape.kind() == geometry::Shape::Kind::kCircle || !shape.parts().empty();
+    if (workspace_ok() && has_outline && !geometry::inside(shape, footprint.pose, world_.workspace.bounds, 1e-6)) {
       error(where, what + " reaches outside the workspace");
     }
   }
@@ -129,10 +145,36 @@ class Validator {
     check_range(b.where, what + ": 'mass'", b.mass, 0.0, kMaxMass);
     check_range(b.where, what + ": 'friction'", b.friction, 0.0, kMaxFriction, true);
     if (b.mregion_depth) check_range(b.where, what + ": 'mregion_depth'", *b.mregion_depth, 0.0, kMaxLength);
-    std::set<Side> seen;
-    for (Side s : b.push_from) {
-      if (!seen.insert(s).second) error(b.where, what + ": 'push_from' lists " + side_name(s) + " twice");
+    std::set<int> seen;
+    for (int face : b.push_from) {
+      if (!seen.insert(face).second) {
+        error(b.where, what + ": 'push_from' lists " + face_name(b.footprint.shape, face) + " twice");
+      }
     }
+  }
+
+  // Pairs of bodies whose bounds meet, each pair once with the later body first: a sweep along x, so that
+  // thousands of bodies cost what their neighbours cost, not every pair.
+  template <class Bodies>
+  static std::vector<std::pair<size_t, size_t>> close_pairs(const Bodies& bodies) {
+    std::vector<geometry::Rect> bounds;
+    std::vector<size_t> order(bodies.size());
+    for (size_t i = 0; i < bodies.size(); ++i) {
+      bounds.push_back(geometry::bounds(bodies[i].footprint.shape, bodies[i].footprint.pose));
+      order[i] = i;
+    }
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return bounds[a].min.x() < bounds[b].min.x(); });
+    std::vector<std::pair<size_t, size_t>> pairs;
+    for (size_t k = 0; k < order.size(); ++k) {
+      const geometry::Rect& a = bounds[order[k]];
+      for (size_t l = k + 1; l < order.size() && bounds[order[l]].min.x() <= a.max.x(); ++l) {
+        const geometry::Rect& b = bounds[order[l]];
+        if (b.min.y() > a.max.y() || b.max.y() < a.min.y()) continue;
+        pairs.push_back({std::max(order[k], order[l]), std::min(order[k], order[l])});
+      }
+    }
+    std::sort(pairs.begin(), pairs.end());  // reported in the order of the file
+    return pairs;
   }
 
   void check_body_overlaps() {
@@ -146,30 +188,25 @@ class Validator {
     };
     const auto& fixed = world_.fixed_bodies;
     const auto& movable = world_.movable_bodies;
-    for (size_t i = 0; i < fixed.size(); ++i) {
-      check_name(fixed[i].name, fixed[i].where);
-      if (!fixed[i].mesh.empty() && !std::filesystem::is_regular_file(fixed[i].mesh)) {
-        error(fixed[i].where, "fixed '" + fixed[i].name + "': mesh file '" + fixed[i].mesh + "' does not exist");
+    for (const auto& f : fixed) check_name(f.name, f.where);
+    for (const auto& [i, j] : close_pairs(fixed)) {
+      if (geometry::overlap(fixed[i].footprint, fixed[j].footprint, 1e-6)) {
+        error(fixed[i].where, "fixed '" + fixed[i].name + "' overlaps fixed '" + fixed[j].name + "' (" +
+                                  fixed[j].where.str() + ")");
       }
-      for (size_t j = 0; j < i; ++j) {
-        if (geometry::overlap(fixed[i].footprint, fixed[j].footprint, 1e-6)) {
-          error(fixed[i].where, "fixed '" + fixed[i].name + "' overlaps fixed '" + fixed[j].name + "' (" +
-                                    fixed[j].where.str() + ")");
+    }
+    for (const auto& m : movable) {
+      check_name(m.name, m.where);
+      for (const auto& f : fixed) {
+        if (geometry::overlap(m.footprint, f.footprint, 1e-6)) {
+          error(m.where, "movable '" + m.name + "' overlaps fixed '" + f.name + "' (" + f.where.str() + ")");
         }
       }
     }
-    for (size_t i = 0; i < movable.size(); ++i) {
-      check_name(movable[i].name, movable[i].where);
-      for (const auto& f : fixed) {
-        if (geometry::overlap(movable[i].footprint, f.footprint, 1e-6)) {
-          error(movable[i].where, "movable '" + movable[i].name + "' overlaps fixed '" + f.name + "' (" + f.where.str() + ")");
-        }
-      }
-      for (size_t j = 0; j < i; ++j) {
-        if (geometry::overlap(movable[i].footprint, movable[j].footprint, 1e-6)) {
-          error(movable[i].where, "movable '" + movable[i].name + "' overlaps movable '" + movable[j].name + "' (" +
-                                      movable[j].where.str() + ")");
-        }
+    for (const auto& [i, j] : close_pairs(movable)) {
+      if (geometry::overlap(movable[i].footprint, movable[j].footprint, 1e-6)) {
+        error(movable[i].where, "movable '" + movable[i].name + "' overlaps movable '" + movable[j].name + "' (" +
+                                    movable[j].where.str() + ")");
       }
     }
   }

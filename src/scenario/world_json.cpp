@@ -8,10 +8,27 @@ namespace {
 
 nlohmann::ordered_json point(const Vec2& p) { return {p.x(), p.y()}; }
 
-nlohmann::ordered_json footprint(const geometry::OrientedBox& box) {
-  return {{"center", point(box.pose.position)},
-          {"size", point(2.0 * box.half_extents)},
-          {"yaw_deg", box.pose.yaw * 180.0 / std::numbers::pi}};
+// A box as it always was ({center, size, yaw_deg}); other shapes say which they are and their outline.
+nlohmann::ordered_json footprint(const geometry::Footprint& f) {
+  const double yaw_deg = f.pose.yaw * 180.0 / std::numbers::pi;
+  const geometry::Shape& shape = f.shape;
+  switch (shape.kind()) {
+    case geometry::Shape::Kind::kBox:
+      return {{"center", point(f.pose.position)}, {"size", point(2.0 * shape.half_extents())}, {"yaw_deg", yaw_deg}};
+    case geometry::Shape::Kind::kCircle:
+      return {{"shape", "cylinder"}, {"center", point(f.pose.position)}, {"radius", shape.radius()}};
+    case geometry::Shape::Kind::kPolygon: break;
+  }
+  nlohmann::ordered_json parts = nlohmann::ordered_json::array();
+  for (const geometry::Polygon& part : shape.parts()) {
+    nlohmann::ordered_json corners = nlohmann::ordered_json::array();
+    for (const Vec2& v : part.vertices) corners.push_back(point(v));
+    parts.push_back(std::move(corners));
+  }
+  nlohmann::ordered_json outline = nlohmann::ordered_json::array();
+  for (const Vec2& v : shape.outline().vertices) outline.push_back(point(v));
+  return {{"shape", "polygon"}, {"center", point(f.pose.position)}, {"yaw_deg", yaw_deg},
+          {"points", outline}, {"convex_parts", parts}};
 }
 
 nlohmann::ordered_json robot_json(const Robot& robot) {
@@ -40,7 +57,7 @@ nlohmann::ordered_json to_json(const World& world) {
     j["name"] = b.name;
     j["kind"] = "fixed";
     j["height"] = b.height;
-    if (!b.mesh.empty()) j["mesh"] = b.mesh;
+    if (!b.mesh.empty()) j["mesh"] = b.mesh, j["scale"] = b.mesh_scale;
     j["defined_at"] = b.where.str();
     bodies.push_back(std::move(j));
   }
@@ -52,7 +69,7 @@ nlohmann::ordered_json to_json(const World& world) {
     j["mass"] = b.mass;
     j["friction"] = b.friction;
     json sides = json::array();
-    for (Side s : b.push_from) sides.push_back(side_name(s));
+    for (int face : b.push_from) sides.push_back(face_name(b.footprint.shape, face));
     j["push_from"] = sides;
     j["mregion_depth"] = b.mregion_depth ? json(*b.mregion_depth) : json(nullptr);
     j["defined_at"] = b.where.str();

@@ -23,7 +23,7 @@ TEST(MRegionOverlays, OnePerPushableSideActiveAsKappaSays) {
   // Each doorway box can be pushed from -y and +y only; the overlays follow the body order, then the sides.
   EXPECT_EQ(std::count_if(overlays.begin(), overlays.end(), [](const auto& m) { return m.active; }), 6);
   for (std::size_t i = 0; i < overlays.size(); ++i) {
-    const scenario::Side side = r.knowledge.movable_bodies[i / 4].mregions[i % 4].side;
+    const auto side = static_cast<scenario::Side>(r.knowledge.movable_bodies[i / 4].mregions[i % 4].face);
     const bool along_y = side == scenario::Side::kMinusY || side == scenario::Side::kPlusY;
     EXPECT_EQ(overlays[i].active, along_y) << "overlay " << i;
   }
@@ -35,7 +35,7 @@ TEST(MRegionOverlays, SitAgainstTheirSideInTheWorldFrame) {
   // B1 (0.5 x 1 m at (-3, 1.7)): its +y strip starts at the box's top edge, y = 2.2.
   const auto& b1 = r.knowledge.movable_bodies[0];
   const auto plus_y = std::find_if(b1.mregions.begin(), b1.mregions.end(),
-                                   [](const auto& m) { return m.side == scenario::Side::kPlusY; });
+                                   [](const auto& m) { return m.face == static_cast<int>(scenario::Side::kPlusY); });
   ASSERT_NE(plus_y, b1.mregions.end());
   const geometry::Rect bounds = overlays[plus_y - b1.mregions.begin()].polygon.bounds();
   EXPECT_NEAR(bounds.min.y(), 2.2, 1e-9);

@@ -34,8 +34,8 @@ TEST(ReasonAbout, RoomsKappaZeroTypesTheDoorwayBoxesConstraintOriented) {
   ASSERT_EQ(r.initial_kappa.bodies.size(), 3u);
   for (const knowledge::BodyKappa& body : r.initial_kappa.bodies) {
     EXPECT_EQ(body.type, knowledge::BodyType::kConstraintOriented);
-    EXPECT_FALSE(body.active_sides.contains(scenario::Side::kMinusX));
-    EXPECT_TRUE(body.active_sides.contains(scenario::Side::kPlusY));
+    EXPECT_FALSE(body.active_faces.contains(static_cast<int>(scenario::Side::kMinusX)));
+    EXPECT_TRUE(body.active_faces.contains(static_cast<int>(scenario::Side::kPlusY)));
   }
   EXPECT_EQ(r.initial_state.robot_position, r.knowledge.robot.start);
 }

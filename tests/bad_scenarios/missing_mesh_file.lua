@@ -1,7 +1,7 @@
 -- expect: 4: does not exist
 workspace { bounds = { { 0, 0 }, { 10, 10 } } }
 robot { radius = 0.25, start = { 1, 1 } }
-fixed { name = "wall", center = { 5, 5 }, size = { 1, 4 }, mesh = "no_such_mesh.obj" }
+fixed { name = "wall", center = { 5, 5 }, mesh = "no_such_mesh.obj" }
 movable { name = "B1", center = { 3, 3 }, size = { 0.5, 0.5 } }
 region { name = "p1", rect = { { 7, 7 }, { 8, 8 } } }
 task { formula = "F p1" }

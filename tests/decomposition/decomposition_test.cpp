@@ -14,7 +14,7 @@ scenario::World rooms() { return scenario::load_scenario(std::string(PHYSLTL_SOU
 
 double free_area(const scenario::World& w) {
   double area = w.workspace.bounds.size().prod();
-  for (const auto& f : w.fixed_bodies) area -= 4 * f.footprint.half_extents.prod();
+  for (const auto& f : w.fixed_bodies) area -= f.footprint.shape.area();
   return area;
 }
 
@@ -25,7 +25,7 @@ TEST(Decomposition, TrianglesCoverExactlyTheFreeWorkspace) {
                                       [](double a, const Triangle& t) { return a + t.area; });
   EXPECT_NEAR(area, free_area(w), 1e-6);
   for (const auto& t : d.triangles()) {
-    for (const auto& f : w.fixed_bodies) EXPECT_FALSE(f.footprint.contains(t.centroid)) << f.name;
+    for (const auto& f : w.fixed_bodies) EXPECT_FALSE(geometry::contains(f.footprint.shape, f.footprint.pose, t.centroid)) << f.name;
   }
 }
 

@@ -16,7 +16,7 @@ using testing::open_world;
 
 const MRegionTemplate& mregion(const MovableBodyKnowledge& body, Side side) {
   for (const auto& m : body.mregions) {
-    if (m.side == side) return m;
+    if (m.face == testing::face(side)) return m;
   }
   throw std::runtime_error("no mRegion on that side");
 }
@@ -32,19 +32,19 @@ TEST(Formulate, MovableBodyWithoutAuthoredSidesIsFreelyMovableWithAnMRegionOnEac
 
 TEST(Formulate, AuthoredPushSidesMakeABodyConstraintOrientedWithOnlyThoseMRegions) {
   auto w = open_world();
-  add_box(w, "Car", {0, 0}, {1.0, 0.5}).push_from = {Side::kPlusX, Side::kMinusX};
+  add_box(w, "Car", {0, 0}, {1.0, 0.5}).push_from = {testing::face(Side::kPlusX), testing::face(Side::kMinusX)};
   const auto k = formulate(w);
   const auto& car = k.movable_bodies[0];
   EXPECT_EQ(car.body_class, BodyClass::kConstraintOriented);
   ASSERT_EQ(car.mregions.size(), 2u);
-  EXPECT_EQ(car.mregions[0].side, Side::kMinusX);
-  EXPECT_EQ(car.mregions[1].side, Side::kPlusX);
+  EXPECT_EQ(car.mregions[0].face, testing::face(Side::kMinusX));
+  EXPECT_EQ(car.mregions[1].face, testing::face(Side::kPlusX));
   EXPECT_NE(car.class_reason.find("-x"), std::string::npos) << car.class_reason;
 }
 
 TEST(Formulate, AuthoringAllFourSidesIsTheSameAsAuthoringNone) {
   auto w = open_world();
-  add_box(w, "B", {0, 0}, {0.5, 0.5}).push_from = {Side::kPlusY, Side::kMinusX, Side::kMinusY, Side::kPlusX};
+  add_box(w, "B", {0, 0}, {0.5, 0.5}).push_from = {testing::face(Side::kPlusY), testing::face(Side::kMinusX), testing::face(Side::kMinusY), testing::face(Side::kPlusX)};
   EXPECT_EQ(formulate(w).movable_bodies[0].body_class, BodyClass::kFreelyMovable);
 }
 

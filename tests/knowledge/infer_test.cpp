@@ -31,7 +31,7 @@ TEST(Infer, BoxInTheOpenIsFreeWithEveryMRegionActive) {
   const Kappa kappa = initial_kappa(w);
   ASSERT_EQ(kappa.bodies.size(), 1u);
   EXPECT_EQ(kappa.bodies[0].type, BodyType::kFree);
-  EXPECT_EQ(sides(kappa.bodies[0].active_sides), "-x +x -y +y");
+  EXPECT_EQ(sides(kappa.bodies[0].active_faces), "-x +x -y +y");
 }
 
 TEST(Infer, WallsCloserThanTheRobotsDiameterDeactivateTheSidesFacingThem) {
@@ -41,7 +41,7 @@ TEST(Infer, WallsCloserThanTheRobotsDiameterDeactivateTheSidesFacingThem) {
   add_wall(w, "east", {0.45, -1.5}, {0.65, 1.5});
   const Kappa kappa = initial_kappa(w);
   EXPECT_EQ(kappa.bodies[0].type, BodyType::kConstraintOriented);
-  EXPECT_EQ(sides(kappa.bodies[0].active_sides), "-y +y");
+  EXPECT_EQ(sides(kappa.bodies[0].active_faces), "-y +y");
 }
 
 TEST(Infer, WallFartherThanTheRobotsDiameterLeavesTheSideActive) {
@@ -56,10 +56,10 @@ TEST(Infer, SideStaysActiveWhileTheRobotFitsAlongPartOfIt) {
   add_box(w, "B", {0, 0}, {0.5, 2.0});
   // The wall faces only the upper half of the +x side; the robot can still push at the lower end.
   add_wall(w, "east", {0.35, 0.2}, {0.55, 1.5});
-  EXPECT_TRUE(initial_kappa(w).bodies[0].active_sides.contains(Side::kPlusX));
-  w.fixed_bodies[0].footprint.half_extents.y() = 1.2;  // now it faces the whole side
+  EXPECT_TRUE(initial_kappa(w).bodies[0].active_faces.contains(testing::face(Side::kPlusX)));
+  w.fixed_bodies[0].footprint.shape = geometry::Shape::box({w.fixed_bodies[0].footprint.shape.half_extents().x(), 1.2});  // now it faces the whole side
   w.fixed_bodies[0].footprint.pose.position.y() = 0.0;
-  EXPECT_FALSE(initial_kappa(w).bodies[0].active_sides.contains(Side::kPlusX));
+  EXPECT_FALSE(initial_kappa(w).bodies[0].active_faces.contains(testing::face(Side::kPlusX)));
 }
 
 TEST(Infer, AnotherBoxBlocksTheSideItSitsAgainstAndTheTypeIsRestoredWhenItLeaves) {
@@ -72,8 +72,8 @@ TEST(Infer, AnotherBoxBlocksTheSideItSitsAgainstAndTheTypeIsRestoredWhenItLeaves
 
   state.movable_poses[1].position = {0.1, 0.6};  // B's lower side 0.1 m above A's upper side
   const Kappa blocked = infer(k, state);
-  EXPECT_EQ(sides(blocked.bodies[0].active_sides), "-x +x -y");
-  EXPECT_EQ(sides(blocked.bodies[1].active_sides), "-x +x +y");
+  EXPECT_EQ(sides(blocked.bodies[0].active_faces), "-x +x -y");
+  EXPECT_EQ(sides(blocked.bodies[1].active_faces), "-x +x +y");
   EXPECT_EQ(blocked.bodies[0].type, BodyType::kConstraintOriented);
 
   state.movable_poses[1].position = {0, 2};
@@ -83,7 +83,7 @@ TEST(Infer, AnotherBoxBlocksTheSideItSitsAgainstAndTheTypeIsRestoredWhenItLeaves
 TEST(Infer, WorkspaceBoundaryBlocksTheSideFacingItEvenWithoutWalls) {
   auto w = open_world(/*half=*/3.0);
   add_box(w, "B", {2.6, 0}, {0.5, 0.5});  // 0.15 m from the east bound
-  EXPECT_EQ(sides(initial_kappa(w).bodies[0].active_sides), "-x -y +y");
+  EXPECT_EQ(sides(initial_kappa(w).bodies[0].active_faces), "-x -y +y");
 }
 
 TEST(Infer, BoxBlockedOnEverySideIsImmovable) {
@@ -95,7 +95,7 @@ TEST(Infer, BoxBlockedOnEverySideIsImmovable) {
   add_wall(w, "north", {-0.35, 0.35}, {0.35, 0.55});
   const Kappa kappa = initial_kappa(w);
   EXPECT_EQ(kappa.bodies[0].type, BodyType::kImmovable);
-  EXPECT_TRUE(kappa.bodies[0].active_sides.empty());
+  EXPECT_TRUE(kappa.bodies[0].active_faces.empty());
 }
 
 TEST(Infer, BodyTooHeavyToPushIsImmovableEvenInTheOpen) {
@@ -108,15 +108,15 @@ TEST(Infer, HeavyBodyStillBlocksTheSidesOfItsNeighbours) {
   auto w = open_world();
   add_box(w, "B", {0, 0}, {0.5, 0.5});
   add_box(w, "Safe", {0.6, 0}, {0.5, 0.5}, /*mass=*/10.0);
-  EXPECT_EQ(sides(initial_kappa(w).bodies[0].active_sides), "-x -y +y");
+  EXPECT_EQ(sides(initial_kappa(w).bodies[0].active_faces), "-x -y +y");
 }
 
 TEST(Infer, AuthoredConstraintOrientedBodyNeverBecomesFree) {
   auto w = open_world();
-  add_box(w, "Car", {0, 0}, {1.0, 0.5}).push_from = {Side::kMinusX, Side::kPlusX};
+  add_box(w, "Car", {0, 0}, {1.0, 0.5}).push_from = {testing::face(Side::kMinusX), testing::face(Side::kPlusX)};
   const Kappa kappa = initial_kappa(w);
   EXPECT_EQ(kappa.bodies[0].type, BodyType::kConstraintOriented);
-  EXPECT_EQ(sides(kappa.bodies[0].active_sides), "-x +x");
+  EXPECT_EQ(sides(kappa.bodies[0].active_faces), "-x +x");
 }
 
 TEST(Infer, SidesFollowTheBodysRotation) {
@@ -129,8 +129,10 @@ TEST(Infer, SidesFollowTheBodysRotation) {
   state.movable_poses[0].yaw = std::numbers::pi / 2;  // the long body axis now lies along world x
   const Kappa kappa = infer(k, state);
   // The body's ±x sides face the walls (world ±y) and are blocked; its ±y sides face along the corridor.
-  EXPECT_EQ(sides(kappa.bodies[0].active_sides), "-y +y");
-  EXPECT_TRUE(push_direction(Side::kMinusY, state.movable_poses[0]).isApprox(Vec2(-1, 0)));
+  EXPECT_EQ(sides(kappa.bodies[0].active_faces), "-y +y");
+  const auto& south = *std::find_if(k.movable_bodies[0].mregions.begin(), k.movable_bodies[0].mregions.end(),
+                                     [](const MRegionTemplate& m) { return m.face == testing::face(Side::kMinusY); });
+  EXPECT_TRUE(push_direction(south, state.movable_poses[0]).isApprox(Vec2(-1, 0)));
 }
 
 TEST(Infer, InPlaceInferenceEqualsFreshInferenceWhateverThePreviousKappa) {
@@ -139,7 +141,7 @@ TEST(Infer, InPlaceInferenceEqualsFreshInferenceWhateverThePreviousKappa) {
   add_box(w, "B", {0.1, 0.6}, {0.5, 0.5});
   const auto k = formulate(w);
   const auto state = scenario::EnvironmentState::initial(w);
-  Kappa previous{{{BodyType::kImmovable, {}}, {BodyType::kFree, SideSet::all()}}};
+  Kappa previous{{{BodyType::kImmovable, {}}, {BodyType::kFree, FaceSet::first(4)}}};
   infer(k, state, previous);
   EXPECT_EQ(previous, infer(k, state));
   EXPECT_EQ(infer(k, state), infer(k, state));
@@ -210,7 +212,7 @@ TEST(MRegionAt, PlacesTheStripInTheWorldFrame) {
   const auto& body = knowledge.movable_bodies[0];
   const geometry::Pose2 pose{{1, 2}, std::numbers::pi / 2};
   const auto strip = mregion_at(body.mregions[1], pose);  // +x side, now facing world +y
-  ASSERT_EQ(body.mregions[1].side, Side::kPlusX);
+  ASSERT_EQ(body.mregions[1].face, testing::face(Side::kPlusX));
   EXPECT_TRUE(strip.pose.position.isApprox(Vec2(1, 2 + 0.25 + 0.275)));
   EXPECT_TRUE(strip.contains({1, 2.5}));
   EXPECT_FALSE(strip.contains({1, 1.5}));

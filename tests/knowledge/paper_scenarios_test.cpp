@@ -52,14 +52,14 @@ TEST_F(Rooms, EveryBoxIsFreelyMovableInK) {
 TEST_F(Rooms, B1InItsCorridorIsConstraintOrientedAndPushableOnlyAlongTheCorridor) {
   const size_t b1 = movable_index(world_, "B1");
   EXPECT_EQ(kappa_.bodies[b1].type, BodyType::kConstraintOriented);
-  EXPECT_EQ(sides(kappa_.bodies[b1].active_sides), "-y +y");
+  EXPECT_EQ(sides(kappa_.bodies[b1].active_faces), "-y +y");
   EXPECT_EQ(push_directions(kappa_.bodies[b1], knowledge_.movable_bodies[b1], state_.movable_poses[b1]), "+y -y");
 }
 
 TEST_F(Rooms, DoorwayBoxesLoseTheSidesFacingTheDoorJambs) {
   for (const char* name : {"B2", "B4"}) {
     EXPECT_EQ(body(name).type, BodyType::kConstraintOriented) << name;
-    EXPECT_EQ(sides(body(name).active_sides), "-y +y") << name;
+    EXPECT_EQ(sides(body(name).active_faces), "-y +y") << name;
   }
 }
 
@@ -106,13 +106,13 @@ TEST_F(Ordered, B1PushedAlongXLeavesB2PushableOnlyAlongMinusX) {
   state.movable_poses[b1_].position = {0.9, 0.0};  // just below B2 at (1.0, 0.75), a 0.25 m gap between them
   const Kappa kappa = infer(k, state);
   EXPECT_EQ(kappa.bodies[b2_].type, BodyType::kConstraintOriented);
-  EXPECT_EQ(sides(kappa.bodies[b2_].active_sides), "+x");
+  EXPECT_EQ(sides(kappa.bodies[b2_].active_faces), "+x");
   EXPECT_EQ(push_directions(kappa.bodies[b2_], k.movable_bodies[b2_], state.movable_poses[b2_]), "-x");
 }
 
 TEST_F(Ordered, MovingB1AwayRestoresB2sSides) {
-  EXPECT_EQ(sides(with_b1_at({0.9, 0.0}).bodies[b2_].active_sides), "+x");
-  EXPECT_EQ(sides(with_b1_at({0.9, -1.0}).bodies[b2_].active_sides), "+x -y");
+  EXPECT_EQ(sides(with_b1_at({0.9, 0.0}).bodies[b2_].active_faces), "+x");
+  EXPECT_EQ(sides(with_b1_at({0.9, -1.0}).bodies[b2_].active_faces), "+x -y");
 }
 
 TEST_F(Ordered, EveryRegionIsReachable) {

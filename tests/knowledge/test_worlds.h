@@ -10,7 +10,11 @@
 #include <stdexcept>
 #include <string>
 
-namespace physltl::knowledge::testing {
+namespace physltl::knowledge {
+
+using scenario::Side;  // a box's sides, faces 0 to 3
+
+namespace testing {
 
 using geometry::Vec2;
 
@@ -32,7 +36,7 @@ inline void add_wall(scenario::World& w, const std::string& name, Vec2 min, Vec2
   scenario::FixedBody f;
   f.name = name;
   f.footprint.pose.position = 0.5 * (min + max);
-  f.footprint.half_extents = 0.5 * (max - min);
+  f.footprint.shape = geometry::Shape::box(0.5 * (max - min));
   w.fixed_bodies.push_back(f);
 }
 
@@ -41,7 +45,7 @@ inline scenario::MovableBody& add_box(scenario::World& w, const std::string& nam
   scenario::MovableBody b;
   b.name = name;
   b.footprint.pose.position = center;
-  b.footprint.half_extents = 0.5 * size;
+  b.footprint.shape = geometry::Shape::box(0.5 * size);
   b.mass = mass;
   w.movable_bodies.push_back(b);
   return w.movable_bodies.back();
@@ -61,13 +65,17 @@ inline size_t movable_index(const scenario::World& w, const std::string& name) {
   return static_cast<size_t>(it - w.movable_bodies.begin());
 }
 
-// "-x +y": the active sides, in kAllSides order, for readable expectations.
-inline std::string sides(SideSet set) {
+// A box's side as the face number kappa and the mRegions use.
+inline int face(scenario::Side side) { return static_cast<int>(side); }
+
+// "-x +y": a box's active sides, in the order of scenario::Side, for readable expectations.
+inline std::string sides(FaceSet set) {
   std::string out;
-  for (Side s : kAllSides) {
-    if (set.contains(s)) out += (out.empty() ? "" : " ") + std::string(scenario::side_name(s));
+  for (int f = 0; f < 4; ++f) {
+    if (set.contains(f)) out += (out.empty() ? "" : " ") + std::string(scenario::side_name(static_cast<scenario::Side>(f)));
   }
   return out;
 }
 
-}  // namespace physltl::knowledge::testing
+}  // namespace testing
+}  // namespace physltl::knowledge

@@ -23,11 +23,11 @@ scenario::World small_world(double box_mass = 0.5) {
   w.robot.max_speed = 1.0;
   scenario::FixedBody wall;
   wall.name = "wall";
-  wall.footprint = {{{6.1, 5}, 0.0}, {0.1, 4}};
+  wall.footprint = geometry::box_footprint({{{6.1, 5}, 0.0}, {0.1, 4}});
   w.fixed_bodies.push_back(wall);
   scenario::MovableBody box;
   box.name = "B";
-  box.footprint = {{{3, 5}, 0.0}, {0.25, 0.25}};
+  box.footprint = geometry::box_footprint({{{3, 5}, 0.0}, {0.25, 0.25}});
   box.mass = box_mass;
   w.movable_bodies.push_back(box);
   return w;

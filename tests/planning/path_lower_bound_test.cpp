@@ -56,7 +56,7 @@ TEST(PathLowerBound, AWallInTheWayIsWalkedRoundGrownByTheRobotsRadius) {
   scenario::World world = open_floor("F a");
   scenario::FixedBody wall;
   wall.name = "wall";
-  wall.footprint = kBar;
+  wall.footprint = geometry::box_footprint(kBar);
   world.fixed_bodies.push_back(wall);
   const double around = way_over_the_bar();
   const double b = bound(world);
@@ -71,14 +71,14 @@ TEST(PathLowerBound, APushFreePathGoesRoundTheMovableBodiesOrIsNone) {
   scenario::World world = open_floor("F a");
   scenario::MovableBody bar;
   bar.name = "bar";
-  bar.footprint = kBar;
+  bar.footprint = geometry::box_footprint(kBar);
   world.movable_bodies.push_back(bar);
   const TaskAutomaton task = TaskAutomaton::make(ltl::parse(world.task.formula), world);
   EXPECT_NEAR(shortest_free_path_length(world, task), 4.5, 1e-12);
   const double around = way_over_the_bar(), push_free = shortest_push_free_path_length(world, task);
   EXPECT_LE(push_free, around);
   EXPECT_GT(push_free, around - 0.05);
-  world.movable_bodies[0].footprint.half_extents.y() = 10.0;  // from the floor's south edge to its north edge
+  world.movable_bodies[0].footprint.shape = geometry::Shape::box({0.1, 10.0});  // from the floor's south edge to its north edge
   EXPECT_TRUE(std::isinf(shortest_push_free_path_length(world, TaskAutomaton::make(ltl::parse(world.task.formula), world))));
 }
 
@@ -90,7 +90,7 @@ TEST(PathLowerBound, AnUnreachableRegionHasNoBound) {
                                      std::pair{geometry::Vec2(6.5, 0), geometry::Vec2(0.5, 2)}}) {
     scenario::FixedBody f;
     f.name = "w";
-    f.footprint = {{centre, 0.0}, half};
+    f.footprint = {{centre, 0.0}, geometry::Shape::box(half)};
     world.fixed_bodies.push_back(f);
   }
   EXPECT_TRUE(std::isinf(bound(world)));

@@ -22,10 +22,10 @@ scenario::World walled(const Rect& bounds, double wall_height) {
   const Vec2 size = bounds.size(), centre = 0.5 * (bounds.min + bounds.max);
   const double t = 0.2;
   world.fixed_bodies = {
-      {"south", OrientedBox{{{centre.x(), bounds.min.y() + t / 2}, 0}, {size.x() / 2, t / 2}}, wall_height, "", {}},
-      {"north", OrientedBox{{{centre.x(), bounds.max.y() - t / 2}, 0}, {size.x() / 2, t / 2}}, wall_height, "", {}},
-      {"west", OrientedBox{{{bounds.min.x() + t / 2, centre.y()}, 0}, {t / 2, size.y() / 2 - t}}, wall_height, "", {}},
-      {"east", OrientedBox{{{bounds.max.x() - t / 2, centre.y()}, 0}, {t / 2, size.y() / 2 - t}}, wall_height, "", {}}};
+      {"south", geometry::box_footprint(OrientedBox{{{centre.x(), bounds.min.y() + t / 2}, 0}, {size.x() / 2, t / 2}}), wall_height, "", 1.0, {}},
+      {"north", geometry::box_footprint(OrientedBox{{{centre.x(), bounds.max.y() - t / 2}, 0}, {size.x() / 2, t / 2}}), wall_height, "", 1.0, {}},
+      {"west", geometry::box_footprint(OrientedBox{{{bounds.min.x() + t / 2, centre.y()}, 0}, {t / 2, size.y() / 2 - t}}), wall_height, "", 1.0, {}},
+      {"east", geometry::box_footprint(OrientedBox{{{bounds.max.x() - t / 2, centre.y()}, 0}, {t / 2, size.y() / 2 - t}}), wall_height, "", 1.0, {}}};
   const double r = 0.12 * std::min(size.x(), size.y());
   const auto square = [&](double x, double y) {
     return geometry::Polygon::from_rect({{x - r, y - r}, {x + r, y + r}});
@@ -35,7 +35,7 @@ scenario::World walled(const Rect& bounds, double wall_height) {
                    {"charger_north_east", square(bounds.max.x() - in, bounds.max.y() - in), {}},
                    {"p3", square(bounds.min.x() + in, bounds.min.y() + in), {}},
                    {"p4", square(bounds.max.x() - in, bounds.min.y() + in), {}}};
-  world.movable_bodies = {{"B1", OrientedBox{{centre, 0.3}, {0.4, 0.25}}, 0.5, 0.5, 0.5, {}, {}, {}}};
+  world.movable_bodies = {{"B1", geometry::box_footprint(OrientedBox{{centre, 0.3}, {0.4, 0.25}}), 0.5, 0.5, 0.5, {}, {}, {}}};
   world.robot.start = centre + Vec2(0, 0.25 * size.y());
   return world;
 }

@@ -25,7 +25,7 @@ class Sequence {
 Overlay mregions_around_boxes(const scenario::World& world, double depth, int active_per_box) {
   Overlay overlay;
   for (const scenario::MovableBody& body : world.movable_bodies) {
-    const Vec2 c = body.footprint.pose.position, h = body.footprint.half_extents;
+    const Vec2 c = body.footprint.pose.position, h = body.footprint.shape.half_extents();
     const Rect sides[4] = {{{c.x() - h.x() - depth, c.y() - h.y()}, {c.x() - h.x(), c.y() + h.y()}},
                            {{c.x() + h.x(), c.y() - h.y()}, {c.x() + h.x() + depth, c.y() + h.y()}},
                            {{c.x() - h.x(), c.y() - h.y() - depth}, {c.x() + h.x(), c.y() - h.y()}},

@@ -78,7 +78,7 @@ TEST(ScenarioFiles, RoomsHasFourRegionsThreeDoorwayBoxesAndThePapersTask) {
   EXPECT_EQ(w.task.formula, "F(p1 & F(p2 & F(p3 | p4)))");
   // B1 is longer (along the corridor) than the corridor is wide.
   const auto& b1 = movable(w, "B1");
-  EXPECT_GT(b1.footprint.half_extents.y(), b1.footprint.half_extents.x());
+  EXPECT_GT(b1.footprint.shape.half_extents().y(), b1.footprint.shape.half_extents().x());
   // The robot starts in the hall, between the hall walls.
   EXPECT_GT(w.robot.start.y(), -1.0);
   EXPECT_LT(w.robot.start.y(), 1.0);
@@ -111,7 +111,7 @@ const FixedBody& fixed_named(const World& world, const std::string& name) {
 }
 
 geometry::Rect bounds_of(const FixedBody& f) {
-  return {f.footprint.pose.position - f.footprint.half_extents, f.footprint.pose.position + f.footprint.half_extents};
+  return {f.footprint.pose.position - f.footprint.shape.half_extents(), f.footprint.pose.position + f.footprint.shape.half_extents()};
 }
 
 TEST(ScenarioHelpers, ARoomHasFourWallsAndDoorwaysOnAnySide) {

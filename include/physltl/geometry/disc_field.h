@@ -1,5 +1,5 @@
 #pragma once
-// Where the centre of a disc can go among box obstacles inside a rectangle, on a grid, and how far it is
+// Where the centre of a disc can go among obstacles of any shape inside a rectangle, on a grid, and how far it is
 // from every place to a set of target places: the way a body's centre must travel to reach a region.
 //
 // Sound by construction, for "it cannot get there" conclusions: a cell counts as free when its centre
@@ -7,7 +7,7 @@
 // place the real disc can reach lies in a free cell, and any continuous way it can take runs through
 // 8-connected free cells. Distances are along those cells (8-connected, diagonal steps sqrt(2) cells).
 
-#include "physltl/geometry/shapes.h"
+#include "physltl/geometry/shape.h"
 
 #include <functional>
 #include <limits>
@@ -21,7 +21,7 @@ class DiscField {
   static constexpr double kUnreachable = std::numeric_limits<double>::infinity();
 
   // `cell`: the grid's cell edge, in metres.
-  DiscField(const Rect& bounds, double cell, double radius, std::span<const OrientedBox> obstacles);
+  DiscField(const Rect& bounds, double cell, double radius, std::span<const Footprint> obstacles);
 
   // Distances to the free cells for which `is_target` holds of their square (given as its centre and half
   // edge), by Dijkstra over the free cells.

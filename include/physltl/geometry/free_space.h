@@ -3,6 +3,7 @@
 // obstacles' corners. With each obstacle the configuration-space obstacle of a disc robot (a fixed body
 // grown by the robot's radius), these are shortest paths of the robot's centre.
 
+#include "physltl/geometry/shape.h"
 #include "physltl/geometry/shapes.h"
 
 #include <utility>
@@ -14,6 +15,9 @@ namespace physltl::geometry {
 // inside: the rounded corners become chords of their arcs, so the polygon is contained in the true set
 // and a path that avoids it is at most as long as one that avoids the true set.
 Polygon grown_from_inside(const OrientedBox& box, double radius, int chords_per_corner = 2);
+// The same for a placed shape of any kind, one convex polygon per part: a circle grown is a circle, drawn
+// with its corners on it; a polygon's corners round off into chords.
+std::vector<Polygon> grown_from_inside(const Shape& shape, const Pose2& pose, double radius);
 
 class FreeSpace {
  public:

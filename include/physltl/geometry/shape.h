@@ -18,8 +18,9 @@ class Shape {
   Shape() = default;  // a box of no size
   static Shape box(const Vec2& half_extents);
   static Shape circle(double radius);
-  // `outline`: a simple polygon in the body frame, its area centroid at the origin; `parts`: convex
-  // polygons that tile it (the outline alone when it is convex). Without an outline, the parts are the
+  // `outline`: a simple polygon in the body frame, its area centroid at the origin, its corners in the
+  // author's order (faces are numbered along it); `parts`: convex polygons that tile it (the outline alone
+  // when it is convex). Without an outline, the parts are the
   // whole of it (a mesh's footprint, which may come in pieces or with holes).
   static Shape polygon(Polygon outline, std::vector<Polygon> parts);
 
@@ -27,13 +28,17 @@ class Shape {
   bool is_box() const { return kind_ == Kind::kBox; }
   const Vec2& half_extents() const { return half_extents_; }  // a box's; zero otherwise
   double radius() const { return radius_; }                    // a circle's; zero otherwise
-  // A box's four corners, a polygon's outline, counter-clockwise; empty for a circle and for parts alone.
+  // A box's four corners counter-clockwise, a polygon's outline as authored (either way round); empty for
+  // a circle and for parts alone.
   const Polygon& outline() const { return outline_; }
   // Convex, counter-clockwise: a box's rectangle, a polygon's parts; none for a circle.
   const std::vector<Polygon>& parts() const { return parts_; }
   // Of the shape about its centre: no point of it is farther.
   double bound_radius() const { return bound_radius_; }
   double area() const;
+  // The radius of the largest disc about the centre that lies inside the shape (a box's smaller half
+  // extent): where the body's centre can go, such a disc fits.
+  double centre_clearance() const;
 
  private:
   Kind kind_ = Kind::kBox;
@@ -49,6 +54,8 @@ struct Footprint {
   Pose2 pose;
   Shape shape;
 };
+
+inline Footprint box_footprint(const OrientedBox& box) { return {box.pose, Shape::box(box.half_extents)}; }
 
 Vec2 to_world(const Pose2& pose, const Vec2& local);
 Vec2 to_local(const Pose2& pose, const Vec2& world);
@@ -71,6 +78,10 @@ enum class CircleAs { kInscribed, kCircumscribed };
 inline constexpr int kCircleCorners = 24;
 // The placed shape's convex parts in the world frame (a circle as one polygon).
 std::vector<Polygon> convex_parts_at(const Shape& shape, const Pose2& pose, CircleAs circle);
+
+// The shape grown outwards by `by` metres: a box's half extents and a circle's radius longer by it, a
+// polygon's sides moved out by it (the corners mitred, so the grown polygon holds the rounded one).
+Shape grown(const Shape& shape, double by);
 
 inline bool overlap(const Footprint& a, const Footprint& b, double tolerance = 1e-9) {
   return overlap(a.shape, a.pose, b.shape, b.pose, tolerance);

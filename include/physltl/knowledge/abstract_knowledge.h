@@ -5,7 +5,8 @@
 
 #include "physltl/geometry/rect_grid.h"
 #include "physltl/geometry/shapes.h"
-#include "physltl/knowledge/side_set.h"
+#include "physltl/geometry/shape.h"
+#include "physltl/knowledge/face_set.h"
 #include "physltl/scenario/world.h"
 
 #include <string>
@@ -29,21 +30,27 @@ struct RobotCapabilities {
   geometry::Vec2 start = geometry::Vec2::Zero();
 };
 
-// One side the robot may push from. Both shapes are in the body's frame (body centre at the origin).
+// One face the robot may push from (scenario::face_count). Every shape is in the body's frame (body centre
+// at the origin).
 struct MRegionTemplate {
-  Side side = Side::kPlusX;
-  // The mRegion: a strip along the whole side, as deep as the robot's footprint while it pushes. The
-  // robot's centre must be inside it for a contact with a constraint-oriented body to count as a push.
+  int face = 0;
+  // The mRegion: a strip along the whole face, as deep as the robot's footprint while it pushes (for a
+  // cylinder's sector, the strip that covers that sector's arc). The robot's centre must be inside it for
+  // a contact with a constraint-oriented body to count as a push.
   geometry::OrientedBox strip;
-  // Where the robot's centre is when it touches the side: the segment at one robot radius from the side,
-  // as long as the side. The mRegion is active while some stretch of it is free for the robot.
+  // Where the robot's centre is when it touches the face: the segment at one robot radius from it, as long
+  // as the face (a sector: the chord of its arc). The mRegion is active while some stretch of it is free
+  // for the robot.
   geometry::Vec2 contact_from = geometry::Vec2::Zero();
   geometry::Vec2 contact_to = geometry::Vec2::Zero();
+  // Which way the body goes when pushed from here: into the face, along its inward normal (a sector: at
+  // the axis, through the middle of its arc), of unit length.
+  geometry::Vec2 push = geometry::Vec2::Zero();
 };
 
 struct FixedBodyKnowledge {
   std::string name;
-  geometry::OrientedBox footprint;
+  geometry::Footprint footprint;
   geometry::Rect bounds;  // axis-aligned bounds of the footprint, for cheap rejection tests (walls are long)
 };
 
@@ -52,13 +59,14 @@ struct MovableBodyKnowledge {
   // kFixed when the robot cannot overcome the body's floor friction: it is then an obstacle like a wall.
   BodyClass body_class = BodyClass::kFreelyMovable;
   std::string class_reason;
-  geometry::OrientedBox footprint;  // where the world puts it; stays there when it is too heavy to push
+  geometry::Footprint footprint;  // where the world puts it; stays there when it is too heavy to push
   double bound_radius = 0.0;  // of the footprint about its centre, for cheap rejection tests
+  int faces = 0;              // scenario::face_count of its shape
   double mass = 0.0;
   double friction = 0.0;            // the body's own coefficient
   double floor_friction_force = 0.0;  // N needed to start it sliding
-  std::vector<MRegionTemplate> mregions;  // the pushable sides; empty for class kFixed
-  // How far from the body's centre the robot's centre can be while it touches a pushable side.
+  std::vector<MRegionTemplate> mregions;  // the pushable faces; empty for class kFixed
+  // How far from the body's centre the robot's centre can be while it touches a pushable face.
   double contact_reach = 0.0;
 };
 

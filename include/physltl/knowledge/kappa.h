@@ -4,7 +4,7 @@
 
 #include "physltl/geometry/point_grid.h"
 #include "physltl/knowledge/abstract_knowledge.h"
-#include "physltl/knowledge/side_set.h"
+#include "physltl/knowledge/face_set.h"
 #include "physltl/scenario/state.h"
 
 #include <span>
@@ -12,14 +12,14 @@
 
 namespace physltl::knowledge {
 
-// free: pushable from every side; constraint-oriented: from some sides only; immovable: from none (or too
+// free: pushable from every face; constraint-oriented: from some faces only; immovable: from none (or too
 // heavy to push at all).
 enum class BodyType { kFree, kConstraintOriented, kImmovable };
 const char* type_name(BodyType type);  // "free", "constraint-oriented", "immovable"
 
 struct BodyKappa {
   BodyType type = BodyType::kFree;
-  SideSet active_sides;  // sides (body frame) whose mRegion the robot can stand in right now
+  FaceSet active_faces;  // faces whose mRegion the robot can stand in right now
   bool operator==(const BodyKappa&) const = default;
 };
 
@@ -68,7 +68,10 @@ void reinfer(const AbstractKnowledge& knowledge, const scenario::EnvironmentStat
 void reinfer(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state, BodyLocator& inferred_for,
              Kappa& kappa, std::span<const int> maybe_moved);
 
-// The world-frame directions a body at `pose` can be pushed in now, one per active side.
+// The world-frame direction a body at `pose` moves in when pushed from `mregion`'s face.
+geometry::Vec2 push_direction(const MRegionTemplate& mregion, const geometry::Pose2& body_pose);
+
+// The world-frame directions a body at `pose` can be pushed in now, one per active face.
 std::vector<geometry::Vec2> allowed_push_directions(const MovableBodyKnowledge& body, const BodyKappa& kappa,
                                                     const geometry::Pose2& pose);
 

@@ -34,7 +34,4 @@ struct RobotContact {
   Vec2 point = Vec2::Zero();  // world frame, on the floor plane
 };
 
-// A movable body's footprint at a given pose.
-geometry::OrientedBox footprint_at(const MovableBody& body, const geometry::Pose2& pose);
-
 }  // namespace physltl::scenario

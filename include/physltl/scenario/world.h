@@ -2,6 +2,7 @@
 // The World: everything a scenario file describes, in SI units, with the file:line of each element.
 // Built by load_scenario(); read-only for every layer above.
 
+#include "physltl/geometry/shape.h"
 #include "physltl/geometry/shapes.h"
 #include "physltl/scenario/diagnostic.h"
 
@@ -45,22 +46,35 @@ struct Robot {
 enum class Side { kMinusX, kPlusX, kMinusY, kPlusY };
 const char* side_name(Side side);  // "-x", "+x", "-y", "+y"
 
+// The faces the robot can push a body from, numbered 0, 1, ...: a box's four sides (as Side), a polygon's
+// sides (face k from corner k to corner k + 1 of its outline), and a cylinder's sectors, kCylinderSectors
+// equal arcs (sector k about the direction 2 pi k / kCylinderSectors of its frame).
+inline constexpr int kCylinderSectors = 12;
+int face_count(const geometry::Shape& shape);
+// "-x" for a box, "face 2" for a polygon (1-based, as scenarios write them), "sector 3" for a cylinder.
+std::string face_name(const geometry::Shape& shape, int face);
+// "box", "cylinder", "polygon".
+const char* shape_name(const geometry::Shape& shape);
+
 struct FixedBody {
   std::string name;
-  geometry::OrientedBox footprint;
+  // Pose and outline; a mesh's outline is its floor footprint below the robot's top (geometry/mesh.h).
+  geometry::Footprint footprint;
   double height = 0.5;
-  std::string mesh;  // optional OBJ file, drawn instead of the box
+  std::string mesh;  // optional OBJ file: drawn, and its footprint collides
+  double mesh_scale = 1.0;
   Location where;
 };
 
 struct MovableBody {
   std::string name;
-  geometry::OrientedBox footprint;
+  geometry::Footprint footprint;  // pose: the centre (a polygon's area centroid) and the heading
   double height = 0.5;
   double mass = 0.5;
   double friction = 0.5;
-  // Authored manipulation constraints; empty push_from means every side (the knowledge layer decides).
-  std::vector<Side> push_from;
+  // Authored manipulation constraints, as faces (face_count); empty means every face (the knowledge
+  // layer decides).
+  std::vector<int> push_from;
   std::optional<double> mregion_depth;  // m; default derived from the robot's size
   Location where;
 };

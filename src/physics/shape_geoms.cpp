@@ -1,0 +1,109 @@
+#include "shape_geoms.h"
+
+#include <cmath>
+
+namespace physltl::physics {
+namespace {
+
+using geometry::Vec2;
+
+// Integrals over a convex polygon by its fan of triangles from the first corner, each cut into `n` x `n`
+// small triangles evaluated at their centroids: f's integral over the area.
+template <class F>
+double integrate(const geometry::Polygon& p, F&& f, int n = 16) {
+  double total = 0.0;
+  const auto& v = p.vertices;
+  for (size_t k = 1; k + 1 < v.size(); ++k) {
+    const Vec2 a = v[0], u = (v[k] - a) / n, w = (v[k + 1] - a) / n;
+    const double small = 0.5 * std::abs(u.x() * w.y() - u.y() * w.x());
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; i + j < n; ++j) {
+        const Vec2 corner = a + i * u + j * w;
+        total += small * f(corner + (u + w) / 3.0);
+        if (i + j + 1 < n) total += small * f(corner + 2.0 * (u + w) / 3.0);  // the upside-down one
+      }
+    }
+  }
+  return total;
+}
+
+}  // namespace
+
+dGeomID ConvexStore::prism(const geometry::Polygon& outline) {
+  Prism& p = prisms_.emplace_back();
+  const auto& v = outline.vertices;
+  const auto n = static_cast<unsigned>(v.size());
+  const double half = kCollisionHeight / 2;
+  for (const Vec2& c : v) p.points.insert(p.points.end(), {c.x(), c.y(), half});
+  for (const Vec2& c : v) p.points.insert(p.points.end(), {c.x(), c.y(), -half});
+  p.planes.insert(p.planes.end(), {0, 0, 1, half});
+  p.faces.push_back(n);
+  for (unsigned i = 0; i < n; ++i) p.faces.push_back(i);
+  p.planes.insert(p.planes.end(), {0, 0, -1, half});
+  p.faces.push_back(n);
+  for (unsigned i = n; i-- > 0;) p.faces.push_back(n + i);
+  for (unsigned i = 0; i < n; ++i) {
+    const unsigned j = (i + 1) % n;
+    const Vec2 edge = v[j] - v[i];
+    const Vec2 normal = Vec2(edge.y(), -edge.x()).normalized();
+    p.planes.insert(p.planes.end(), {normal.x(), normal.y(), 0, normal.dot(v[i])});
+    p.faces.insert(p.faces.end(), {4u, i, n + i, n + j, j});
+  }
+  return dCreateConvex(nullptr, p.planes.data(), n + 2, p.points.data(), 2 * n, p.faces.data());
+}
+
+std::vector<dGeomID> make_geoms(const geometry::Shape& shape, ConvexStore& store) {
+  switch (shape.kind()) {
+    case geometry::Shape::Kind::kBox: {
+      const Vec2 size = 2.0 * shape.half_extents();
+      return {dCreateBox(nullptr, size.x(), size.y(), kCollisionHeight)};
+    }
+    case geometry::Shape::Kind::kCircle: return {dCreateCylinder(nullptr, shape.radius(), kCollisionHeight)};
+    case geometry::Shape::Kind::kPolygon: break;
+  }
+  std::vector<dGeomID> geoms;
+  for (const geometry::Polygon& part : shape.parts()) geoms.push_back(store.prism(part));
+  return geoms;
+}
+
+dMass body_mass(const geometry::Shape& shape, double mass) {
+  dMass m;
+  switch (shape.kind()) {
+    case geometry::Shape::Kind::kBox: {
+      const Vec2 size = 2.0 * shape.half_extents();
+      dMassSetBoxTotal(&m, mass, size.x(), size.y(), kCollisionHeight);
+      return m;
+    }
+    case geometry::Shape::Kind::kCircle:
+      dMassSetCylinderTotal(&m, mass, 3, shape.radius(), kCollisionHeight);
+      return m;
+    case geometry::Shape::Kind::kPolygon: break;
+  }
+  // The prism's second moments about its centroid (the body's origin).
+  double area = 0.0, xx = 0.0, yy = 0.0, xy = 0.0;
+  for (const geometry::Polygon& part : shape.parts()) {
+    area += integrate(part, [](const Vec2&) { return 1.0; });
+    xx += integrate(part, [](const Vec2& p) { return p.x() * p.x(); });
+    yy += integrate(part, [](const Vec2& p) { return p.y() * p.y(); });
+    xy += integrate(part, [](const Vec2& p) { return p.x() * p.y(); });
+  }
+  const double density = mass / area, z2 = mass * kCollisionHeight * kCollisionHeight / 12.0;
+  dMassSetParameters(&m, mass, 0, 0, 0, density * yy + z2, density * xx + z2, density * (xx + yy), -density * xy, 0, 0);
+  return m;
+}
+
+double floor_torque(const geometry::Shape& shape, double floor_force) {
+  switch (shape.kind()) {
+    case geometry::Shape::Kind::kBox: return floor_force * (2.0 / 3.0) * shape.half_extents().mean();
+    case geometry::Shape::Kind::kCircle: return floor_force * (2.0 / 3.0) * shape.radius();  // exact for a disc
+    case geometry::Shape::Kind::kPolygon: break;
+  }
+  double area = 0.0, moment = 0.0;
+  for (const geometry::Polygon& part : shape.parts()) {
+    area += integrate(part, [](const Vec2&) { return 1.0; });
+    moment += integrate(part, [](const Vec2& p) { return p.norm(); });
+  }
+  return floor_force * moment / area;
+}
+
+}  // namespace physltl::physics

@@ -1,0 +1,43 @@
+#pragma once
+// What ODE makes of a footprint: its geoms (a box, an upright cylinder, a convex prism per convex part),
+// and for a movable body its mass distribution and the floor's friction torque. Every body spans
+// z = +-kCollisionHeight / 2, so contact normals stay horizontal.
+
+#include "physltl/geometry/shape.h"
+
+#include <ode/ode.h>
+
+#include <deque>
+#include <vector>
+
+namespace physltl::physics {
+
+inline constexpr double kCollisionHeight = 1.0;  // m
+
+// The planes, points and faces of the convex prisms: ODE keeps pointers to them, not copies.
+class ConvexStore {
+ public:
+  // A prism over the convex, counter-clockwise `outline`, as a geom of no space.
+  dGeomID prism(const geometry::Polygon& outline);
+
+ private:
+  struct Prism {
+    std::vector<dReal> planes;   // a, b, c, d per face: a x + b y + c z = d
+    std::vector<dReal> points;   // x, y, z per corner
+    std::vector<unsigned> faces;  // per face: its corner count, then its corners counter-clockwise from outside
+  };
+  std::deque<Prism> prisms_;
+};
+
+// One geom per convex part (a box and a cylinder are one), in the body's frame.
+std::vector<dGeomID> make_geoms(const geometry::Shape& shape, ConvexStore& store);
+
+// A body of `mass` kg, uniformly dense over its footprint.
+dMass body_mass(const geometry::Shape& shape, double mass);
+
+// The floor's resistance to turning a body pressed down with `floor_force` (its sliding friction): the
+// friction at the mean distance of its footprint from its centre, as for uniform pressure (a box keeps
+// the estimate it always had, two thirds of its mean half extent).
+double floor_torque(const geometry::Shape& shape, double floor_force);
+
+}  // namespace physltl::physics
