@@ -29,9 +29,10 @@ double integrate(const geometry::Polygon& p, F&& f, int n = 16) {
 
 }  // namespace
 
-dGeomID ConvexStore::prism(const geometry::Polygon& outline) {
+dGeomID ConvexStore::prism(const geometry::Polygon& outline, const Vec2& centre) {
   Prism& p = prisms_.emplace_back();
-  const auto& v = outline.vertices;
+  std::vector<Vec2> v;
+  for (const Vec2& c : outline.vertices) v.push_back(c - centre);
   const auto n = static_cast<unsigned>(v.size());
   const double half = kCollisionHeight / 2;
   for (const Vec2& c : v) p.points.insert(p.points.end(), {c.x(), c.y(), half});
@@ -52,17 +53,23 @@ dGeomID ConvexStore::prism(const geometry::Polygon& outline) {
   return dCreateConvex(nullptr, p.planes.data(), n + 2, p.points.data(), 2 * n, p.faces.data());
 }
 
-std::vector<dGeomID> make_geoms(const geometry::Shape& shape, ConvexStore& store) {
+std::vector<PartGeom> make_geoms(const geometry::Shape& shape, ConvexStore& store) {
   switch (shape.kind()) {
     case geometry::Shape::Kind::kBox: {
       const Vec2 size = 2.0 * shape.half_extents();
-      return {dCreateBox(nullptr, size.x(), size.y(), kCollisionHeight)};
+      return {{dCreateBox(nullptr, size.x(), size.y(), kCollisionHeight)}};
     }
-    case geometry::Shape::Kind::kCircle: return {dCreateCylinder(nullptr, shape.radius(), kCollisionHeight)};
+    case geometry::Shape::Kind::kCircle: return {{dCreateCylinder(nullptr, shape.radius(), kCollisionHeight)}};
     case geometry::Shape::Kind::kPolygon: break;
   }
-  std::vector<dGeomID> geoms;
-  for (const geometry::Polygon& part : shape.parts()) geoms.push_back(store.prism(part));
+  std::vector<PartGeom> geoms;
+  // A convex body's one part is about its centroid already, the body's centre; a fixed body's parts each
+  // about their own.
+  const bool one = shape.parts().size() == 1;
+  for (const geometry::Polygon& part : shape.parts()) {
+    const Vec2 centre = one ? Vec2::Zero() : part.centroid();
+    geoms.push_back({store.prism(part, centre), centre});
+  }
   return geoms;
 }
 

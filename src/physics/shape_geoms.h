@@ -17,8 +17,9 @@ inline constexpr double kCollisionHeight = 1.0;  // m
 // The planes, points and faces of the convex prisms: ODE keeps pointers to them, not copies.
 class ConvexStore {
  public:
-  // A prism over the convex, counter-clockwise `outline`, as a geom of no space.
-  dGeomID prism(const geometry::Polygon& outline);
+  // A prism over the convex, counter-clockwise `outline`, as a geom of no space whose origin is
+  // `centre` of the outline's frame (ODE wants its origin inside the prism).
+  dGeomID prism(const geometry::Polygon& outline, const geometry::Vec2& centre);
 
  private:
   struct Prism {
@@ -29,8 +30,13 @@ class ConvexStore {
   std::deque<Prism> prisms_;
 };
 
-// One geom per convex part (a box and a cylinder are one), in the body's frame.
-std::vector<dGeomID> make_geoms(const geometry::Shape& shape, ConvexStore& store);
+// One geom per convex part (a box and a cylinder are one), each about its own origin, which stands at
+// `offset` in the body's frame (a box's and a cylinder's at the body's centre).
+struct PartGeom {
+  dGeomID id = nullptr;
+  geometry::Vec2 offset = geometry::Vec2::Zero();
+};
+std::vector<PartGeom> make_geoms(const geometry::Shape& shape, ConvexStore& store);
 
 // A body of `mass` kg, uniformly dense over its footprint.
 dMass body_mass(const geometry::Shape& shape, double mass);

@@ -124,20 +124,20 @@ struct Simulation::Impl {
       const geometry::Shape& shape = b.footprint.shape;
       const double floor_force = mix_friction(floor, b.friction) * b.mass * kGravity;
       // A movable body is convex: one geom.
-      add_dynamic(make_geoms(shape, convex_store).front(), body_mass(shape, b.mass), b.friction, shape.bound_radius(),
+      add_dynamic(make_geoms(shape, convex_store).front().id, body_mass(shape, b.mass), b.friction, shape.bound_radius(),
                   static_cast<int>(i), floor_force, floor_torque(shape, floor_force));
     }
     std::vector<geometry::Rect> fixed_bounds;
     for (size_t i = 0; i < w.fixed_bodies.size(); ++i) {
       const auto& f = w.fixed_bodies[i];
-      for (dGeomID id : make_geoms(f.footprint.shape, convex_store)) {
+      for (const PartGeom& part : make_geoms(f.footprint.shape, convex_store)) {
         Geom g;
-        g.id = id;
+        g.id = part.id;
         g.index = static_cast<int>(i);
         g.friction = 0.5;
-        g.bound_radius = f.footprint.shape.bound_radius();
-        g.position = f.footprint.pose.position;
-        place(g.id, f.footprint.pose);
+        g.bound_radius = f.footprint.shape.bound_radius() + part.offset.norm();
+        g.position = geometry::to_world(f.footprint.pose, part.offset);
+        place(g.id, {g.position, f.footprint.pose.yaw});
         fixed.push_back(g);
         fixed_bounds.push_back(geometry::bounds(f.footprint.shape, f.footprint.pose));
       }
@@ -354,8 +354,13 @@ struct Simulation::Impl {
     const int found = dCollide(a.id, b.id, kMaxContactsPerPair, contact_buffer, sizeof(dContactGeom));
     // Tall boxes touch at the top and the bottom of the same vertical edge; in the plane those are one
     // contact, and the duplicate rows make the LCP singular ("LCP internal error"), so keep one.
+    // ODE's separating-axis test for convex prisms, at zero depth (bodies that just touch, as a polygon
+    // placed flush against a wall), picks any axis: a contact along the wall that holds the body fast.
+    // Touching without depth pushes nothing; the next step, with depth, has the true normal.
+    const bool convex = dGeomGetClass(a.id) == dConvexClass || dGeomGetClass(b.id) == dConvexClass;
     int n = 0;
     for (int i = 0; i < found; ++i) {
+      if (convex && (contact_buffer[i].depth <= 1e-9 || std::abs(contact_buffer[i].normal[2]) > 0.5)) continue;
       const dReal* p = contact_buffer[i].pos;
       bool duplicate = false;
       for (int k = 0; k < n; ++k) {

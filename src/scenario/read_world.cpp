@@ -96,6 +96,7 @@ geometry::Footprint read_footprint(TableReader& r, bool movable) {
   }
   if (shape == "polygon") return read_polygon(r, movable);
   r.error("'shape' is \"box\", \"cylinder\" or \"polygon\", got \"" + shape + "\"");
+  r.skip_unread();
   return {};
 }
 
@@ -141,6 +142,7 @@ FixedBody read_fixed(TableReader& r, const std::string& default_name, const std:
     if (r.has("size") || r.has("shape")) {
       r.error("a mesh collides as its own footprint: give 'mesh' with 'center', 'yaw_deg' and 'scale', not 'size' or "
               "'shape'");
+      r.skip_unread();
     }
     body.footprint.pose = read_pose(r);
     body.mesh_scale = r.number("scale", 1.0);

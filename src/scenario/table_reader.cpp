@@ -198,6 +198,10 @@ std::optional<TableReader> TableReader::nested(const std::string& key) {
   return TableReader(*v, what_ + " " + key, where_, diagnostics_);
 }
 
+void TableReader::skip_unread() {
+  for (const auto& field : table_.fields) used_.insert(field.key);
+}
+
 void TableReader::finish() {
   std::vector<std::string> known(known_.begin(), known_.end());
   for (const auto& [key, value] : table_.fields) {

@@ -35,6 +35,9 @@ class TableReader {
   // A reader for a nested table such as `camera = { ... }`; nullopt when absent or not a table.
   std::optional<TableReader> nested(const std::string& key);
 
+  // Counts every key as read: after an error that makes the others meaningless (an unknown shape), so
+  // that they are not reported as unknown too.
+  void skip_unread();
   // Reports keys nobody read. Call once, after all getters.
   void finish();
 

@@ -74,5 +74,17 @@ TEST(ReasonAbout, AStartThatKeepsTheTaskOpenLeavesItFeasible) {
   EXPECT_TRUE(reason_about_file("scenarios/avoid.lua").feasible());
 }
 
+TEST(ReasonAbout, AnLShapedDeskMeshKeepsItsInnerCornerReachable) {
+  // The corner region lies inside the rectangle round the desk, so a desk that collided as its bounds
+  // would wall it off; the mesh collides as its L.
+  const Reasoning r = reason_about_file("tests/app/l_desk_corner.lua");
+  EXPECT_TRUE(r.feasibility.invalid.empty()) << r.feasibility.invalid.front().reason;
+  EXPECT_TRUE(r.feasible());
+  const geometry::Footprint& desk = r.knowledge.fixed_bodies.at(0).footprint;
+  EXPECT_TRUE(geometry::contains(desk.shape, desk.pose, {2.3, 3.2}));   // in the short bar
+  EXPECT_FALSE(geometry::contains(desk.shape, desk.pose, {3.2, 3.2}));  // in the corner
+  EXPECT_NEAR(desk.shape.area(), 2 * 0.6 + 0.6 * 0.9, 1e-6);
+}
+
 }  // namespace
 }  // namespace physltl::app
