@@ -1,8 +1,8 @@
--- An office of three rooms on bodies of every shape: round tables (fixed cylinders), a mesh cabinet that
--- collides as it is drawn (cabinet.obj beside this file), a chair (a movable pentagon) and a bin (a movable
--- cylinder) standing in the only doorway from the reception to the office. Visit the reception desk, the
--- office desk and the meeting room in turn: F(reception & F(desk & F meeting)). The bin must be pushed
--- out of the doorway; a round body slides off sideways when it is not pushed through its axis.
+-- An office of three rooms on bodies of every shape: round tables (fixed cylinders), an L-shaped counter (a
+-- fixed polygon), a mesh cabinet that collides as it is drawn (cabinet.obj beside this file), a chair (a
+-- movable pentagon) and a bin (a movable cylinder) standing in the only doorway from the reception to the
+-- office. Visit the reception desk, the office desk and the meeting room in turn:
+-- F(reception & F(desk & F meeting)). The bin must be pushed out of the doorway.
 --
 --   y
 --   8 +---------------+--------------+-------------+
@@ -27,6 +27,9 @@ fixed { name = "reception_table", shape = "cylinder", center = { 2.0, 6.0 }, rad
 fixed { name = "meeting_table", shape = "cylinder", center = { 11.8, 4.6 }, radius = 0.8, height = 0.75 }
 fixed { name = "side_table", shape = "cylinder", center = { 12.8, 1.4 }, radius = 0.4, height = 0.6 }
 fixed { name = "cabinet", mesh = "cabinet.obj", center = { 7.2, 7.8 }, yaw_deg = 0 }
+-- The reception's counter: an L (a fixed polygon need not be convex), open towards the room.
+fixed { name = "counter", shape = "polygon", height = 1.0,
+        polygon = { { 3.0, 0.2 }, { 3.5, 0.2 }, { 3.5, 1.6 }, { 4.9, 1.6 }, { 4.9, 2.0 }, { 3.0, 2.0 } } }
 
 movable { name = "bin", shape = "cylinder", center = { 5.0, 4.05 }, radius = 0.3, height = 0.6, mass = 0.6 }
 movable { name = "chair", shape = "polygon", center = { 7.6, 3.0 }, yaw_deg = 15, height = 0.9, mass = 0.8,

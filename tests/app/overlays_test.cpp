@@ -2,6 +2,9 @@
 
 #include "overlays.h"
 
+#include "golden_image.h"
+#include "physltl/render/renderer.h"
+
 #include "physltl/scenario/load.h"
 
 #include <gtest/gtest.h>
@@ -50,6 +53,21 @@ TEST(PreviewOverlay, LegendShowsTaskUnreachableRegionsAndThePlannedTask) {
   EXPECT_EQ(overlay.legend[0], "task: F(p1 & F(p2 & F(p3 | p4)))");
   EXPECT_EQ(overlay.legend[1], "unreachable p3: region enclosed by fixed walls");
   EXPECT_EQ(overlay.legend[2], "planned: F(p1 & F(p2 & F p4))");
+}
+
+// Bodies of every shape (scenarios/office.lua): fixed cylinders, an L-shaped fixed polygon and a mesh, a
+// movable pentagon and a movable cylinder, with the mRegions of each (a cylinder's twelve sectors, two of
+// them blocked by the doorway's jambs).
+TEST(PreviewOverlay, OfficeWithBodiesOfEveryShapeAndTheirMRegions) {
+  const scenario::World world = scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/scenarios/office.lua");
+  const Reasoning r = reason_about(world);
+  const auto overlays = mregion_overlays(r.knowledge, r.initial_kappa, r.initial_state);
+  EXPECT_EQ(overlays.size(), 12u + 5u);  // the bin's sectors, the chair's faces
+  EXPECT_EQ(std::count_if(overlays.begin(), overlays.end(), [](const auto& m) { return !m.active; }), 2);
+  render::Renderer renderer(world, 320, 200);
+  EXPECT_TRUE(render::matches_golden(
+      renderer.draw(scenario::EnvironmentState::initial(world), preview_overlay(world, r), render::View::kPerspective),
+      "office_preview"));
 }
 
 }  // namespace
