@@ -49,6 +49,19 @@ TEST(OmplPlanners, EachSolvesOrderedWithAPlanOurReplayValidates) {
   }
 }
 
+// Bodies of every shape (office.lua: cylinders, polygons, a mesh) change nothing for OMPL's planners or
+// the baseline: the same physics, validity and decomposition, whatever the shapes.
+TEST(OmplPlanners, TheySolveAWorldOfBodiesOfEveryShapeAsTheBaselineDoes) {
+  const TestProblem p("office.lua");
+  for (const PlannerKind planner : {PlannerKind::kOmplRrt, PlannerKind::kOmplKpiece, PlannerKind::kBaseline}) {
+    PlannerOptions options = ompl_options(planner, 2);
+    const PlanResult result = plan(p.world, p.task, p.knowledge, p.decomposition, options);
+    ASSERT_TRUE(result.solved) << planner_name(planner) << ": " << result.stop_reason;
+    const Replay replayed = planning::replay(p.world, result.plan, p.original, p.knowledge, validity_mode(planner));
+    EXPECT_TRUE(replayed.validated()) << planner_name(planner) << ": " << replayed.failure;
+  }
+}
+
 TEST(OmplPlanners, RrtKpieceSstAndPdstGiveTheSamePlanForTheSameSeed) {
   const TestProblem p("ordered.lua");
   for (const PlannerKind planner : {PlannerKind::kOmplRrt, PlannerKind::kOmplKpiece, PlannerKind::kOmplSst,
