@@ -32,8 +32,9 @@ struct Constructor {
 const std::array<Constructor, 8> kConstructors = {{
     {"workspace", {"bounds", "floor_friction"}},
     {"robot", {"drive", "radius", "mass", "max_force", "max_speed", "max_turn_rate_deg", "start_yaw_deg", "friction", "start"}},
-    {"fixed", {"name", "center", "size", "yaw_deg", "height", "mesh"}},
-    {"movable", {"name", "center", "size", "yaw_deg", "height", "mass", "friction", "push_from", "mregion_depth"}},
+    {"fixed", {"name", "shape", "center", "size", "radius", "points", "polygon", "yaw_deg", "height", "mesh", "scale"}},
+    {"movable", {"name", "shape", "center", "size", "radius", "points", "polygon", "yaw_deg", "height", "mass", "friction",
+                 "push_from", "mregion_depth"}},
     {"region", {"name", "rect", "polygon"}},
     {"task", {"formula"}},
     {"planner", {"time_limit", "step_size", "min_steps", "max_steps", "seed"}},
@@ -186,7 +187,11 @@ class ScriptWriter {
   std::string typed_value(const std::string& key, int depth) {
     if (key == "start" || key == "center" || key == "size" || key == "target") return point();
     if (key == "bounds" || key == "rect") return "{ " + point() + ", " + point() + " }";
-    if (key == "polygon") return points();
+    if (key == "polygon" || key == "points") return points();
+    if (key == "shape") {
+      static const std::array<const char*, 4> kShapes = {"\"box\"", "\"cylinder\"", "\"polygon\"", "\"sphere\""};
+      return kShapes[in_.ConsumeIntegralInRange<std::size_t>(0, kShapes.size() - 1)];
+    }
     if (key == "name" || key == "mesh") return string_value();
     if (key == "formula") return "\"" + formula(0) + "\"";
     if (key == "push_from") return "{ \"-x\", \"+y\", " + string_value() + " }";
