@@ -1,28 +1,20 @@
-// `physltl-studio bench`: the planners on a range of seeds, side by side (issue 7).
+// `physltl-studio bench`: the planners on a range of seeds, side by side (issue 7), over one scenario or a
+// campaign of several, in one process or as one shard of a campaign (docs/campaigns.md).
 
-#include "bench_results.h"
-#include "bench_sweep.h"
+#include "bench/bench_case.h"
+#include "bench/campaign.h"
+#include "bench/manifest.h"
+#include "bench/outputs.h"
+#include "bench/shard_folder.h"
+#include "bench/unit_runner.h"
 #include "command.h"
-#include "output_folder.h"
-#include "physltl/planning/improve.h"
-#include "physltl/planning/path_lower_bound.h"
-#include "plan_files.h"
-#include "physltl/render/png.h"
 #include "planner_names.h"
-#include "planning_job.h"
-#include "scenario_args.h"
 #include "stop_signal.h"
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
-#include <chrono>
-#include <ctime>
-#include <fstream>
-#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -32,7 +24,8 @@ namespace physltl::app {
 namespace {
 
 struct BenchArgs {
-  ScenarioArgs scenario;
+  std::vector<std::string> scenarios;
+  std::vector<std::string> settings;  // --set
   int runs = 10;
   std::optional<std::uint64_t> seed;
   std::optional<double> time_limit;
@@ -45,272 +38,175 @@ struct BenchArgs {
   std::string out_dir = "out/bench";
   bool quiet = false;
   int improve = 0;
+  std::optional<std::string> campaign;
+  std::optional<std::string> shard;  // K/N
+  bool list = false;
+  bool resume = false;
 };
 
-BenchRun measure(const PreparedRun& prepared, const SolveOptions& options) {
-  const auto started = std::chrono::steady_clock::now();
-  const planning::ValidatedPlan solution = solve(prepared, options);
-  BenchRun run;
-  run.improve_s = solution.improvement ? solution.improvement->time_s : 0.0;
-  run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() - run.improve_s;
-  run.seed = options.seed;
-  const planning::PlanResult& result = solution.result;
-  run.solved = solution.solved();
-  run.stop_reason = solution.solved() || !result.solved ? result.stop_reason : "failed replay";
-  run.tree_nodes = result.stats.tree_nodes;
-  run.propagations = result.stats.propagations;
-  run.physics_steps = result.stats.physics_steps;
-  if (run.solved) {
-    run.controls = static_cast<int>(result.plan.controls.size());
-    run.pushes = solution.replay->pushes;
-    run.bodies_moved = static_cast<int>(solution.replay->moved_bodies.size());
-    run.solution_duration_s = result.plan.total_steps() * prepared.world().planner.step_size;
-    run.path_length_m = planning::measure(prepared.world(), result.plan, *solution.replay).path_length_m;
-    run.first_pushes = solution.improvement ? solution.improvement->first.pushes : run.pushes;
-    run.first_duration_s = solution.improvement ? solution.improvement->first.duration_s : run.solution_duration_s;
-  }
-  run.cell_skips_refused = result.stats.cell_skips_refused;
-  run.settings = result.settings;
-  return run;
-}
-
-std::string local_time_now() {
-  const std::time_t now = std::time(nullptr);
-  std::ostringstream text;
-  text << std::put_time(std::localtime(&now), "%F %T");
-  return text.str();
-}
-
-std::string host_name() {
-  char name[256] = {};
-  return gethostname(name, sizeof name - 1) == 0 ? name : "";
-}
-
-// "<count> x <model name>" from /proc/cpuinfo, or empty.
-std::string cpu_info() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line, model;
-  int count = 0;
-  while (std::getline(in, line)) {
-    if (line.rfind("model name", 0) != 0) continue;
-    ++count;
-    model = line.substr(line.find(':') + 2);
-  }
-  return count > 0 ? fmt::format("{} x {}\n", count, model) : "";
-}
-
-// Outputs of one scenario and its settings: <out>/<name>[-key-value...].
-// One path component whatever the settings hold: `=` becomes `-`, and any character but letters, digits,
-// `.`, `_` and `-` becomes `_`, so `--set task='!hazard U goal'` or a value with `/` or `..` stays inside --out.
-std::string folder_name(const std::string& scenario, const std::vector<std::string>& settings) {
-  std::string name = scenario;
-  for (const auto& setting : settings) {
-    name += "-";
-    for (const char c : setting) {
-      const bool plain = std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-';
-      name += c == '=' ? '-' : plain ? c : '_';
-    }
-  }
-  return name;
-}
-
-// With --sweep, one log per value: rooms.log -> rooms-rooms-4.log.
-std::filesystem::path log_file_for(const std::string& file, const std::optional<SweepSpec>& sweep, const std::string& value) {
-  std::filesystem::path path(file);
-  if (!sweep) return path;
-  return path.parent_path() / (path.stem().string() + "-" + sweep->key + "-" + value + path.extension().string());
-}
-
-// Log files appear whole or not at all, like the output folders: each is written beside its final name
-// and renamed into place by commit(); those not committed are removed.
-class PendingLogs {
- public:
-  PendingLogs() = default;
-  PendingLogs(const PendingLogs&) = delete;
-  PendingLogs& operator=(const PendingLogs&) = delete;
-  ~PendingLogs() {
-    std::error_code ignored;
-    for (const auto& [temp, file] : logs_) std::filesystem::remove(temp, ignored);
-  }
-
-  void write(const std::filesystem::path& file, const OmplExperiment& experiment) {
-    const std::filesystem::path temp = file.string() + ".tmp";
-    logs_.emplace_back(temp, file);
-    std::ofstream out(temp);
-    write_ompl_log(out, experiment);
-    if (!out) throw BadInput("cannot write " + file.string());
-  }
-
-  void commit() {
-    for (const auto& [temp, file] : logs_) std::filesystem::rename(temp, file);
-    logs_.clear();
-  }
-
- private:
-  std::vector<std::pair<std::filesystem::path, std::filesystem::path>> logs_;  // temporary, final
-};
-
-// One setting of the scenario measured: its World, what the planners need, and what they did.
-struct BenchCase {
-  std::string swept_value;  // empty without --sweep
-  scenario::World world;
-  std::optional<Reasoning> reasoning;  // set once the world is loaded
-  std::unique_ptr<PreparedRun> prepared;
-  BenchResults results;
-};
-
-void write_bench_json(const std::filesystem::path& file, const nlohmann::ordered_json& json) {
-  std::ofstream out(file);
-  out << json.dump(2) << "\n";
-  if (!out) throw BadInput("cannot write " + file.string());
-}
-
-int bench(const BenchArgs& args) {
+CampaignSettings campaign_settings(const BenchArgs& args) {
   for (size_t i = 0; i < args.threads.size(); ++i) {
     if (std::count(args.threads.begin(), args.threads.begin() + static_cast<long>(i), args.threads[i]) > 0) {
       throw BadInput(fmt::format("--threads: {} is given twice", args.threads[i]));
     }
   }
+  CampaignSettings settings;
+  settings.planners = args.planners ? parse_planner_list(*args.planners) : std::vector{planning::PlannerKind::kKnowledge};
+  if (args.compare && std::find(settings.planners.begin(), settings.planners.end(), planning::PlannerKind::kBaseline) ==
+                          settings.planners.end()) {
+    settings.planners.push_back(planning::PlannerKind::kBaseline);
+  }
+  settings.threads = args.threads;
+  settings.runs = args.runs;
+  settings.seed = args.seed;
+  settings.time_limit = args.time_limit;
+  settings.improve = args.improve;
+  settings.ompl_sampler = parse_ompl_sampler(args.ompl_sampler);
+  return settings;
+}
+
+std::vector<ScenarioEntry> scenario_entries(const BenchArgs& args) {
+  for (const auto& setting : args.settings) {
+    const auto eq = setting.find('=');
+    if (eq == std::string::npos || eq == 0) throw BadInput("--set expects key=value, got '" + setting + "'");
+  }
   std::optional<SweepSpec> sweep;
   if (args.sweep) {
     sweep = parse_sweep(*args.sweep);
-    for (const auto& setting : args.scenario.settings) {
+    for (const auto& setting : args.settings) {
       if (setting.rfind(sweep->key + "=", 0) == 0) throw BadInput("--sweep " + sweep->key + " is also given to --set");
     }
   }
-  const planning::OmplControlSampler ompl_sampler = parse_ompl_sampler(args.ompl_sampler);
-  std::vector<planning::PlannerKind> planners =
-      args.planners ? parse_planner_list(*args.planners) : std::vector{planning::PlannerKind::kKnowledge};
-  if (args.compare && std::find(planners.begin(), planners.end(), planning::PlannerKind::kBaseline) == planners.end()) {
-    planners.push_back(planning::PlannerKind::kBaseline);
-  }
-  // Every case is loaded and reasoned about before the first run: a bad value fails at once.
-  std::vector<std::unique_ptr<BenchCase>> cases;
-  const std::vector<std::string> no_sweep{""};
-  for (const auto& value : sweep ? sweep->values : no_sweep) {
-    auto c = std::make_unique<BenchCase>();
-    c->swept_value = value;
-    ScenarioArgs scenario = args.scenario;
-    if (sweep) scenario.settings.push_back(sweep->key + "=" + value);
-    c->world = scenario.load();
-    if (args.time_limit) c->world.planner.time_limit = *args.time_limit;
-    c->reasoning.emplace(reason_about(c->world));
-    if (!c->reasoning->feasible()) {
-      std::cerr << "physltl-studio: the task is infeasible" << (sweep ? " with " + sweep->key + "=" + value : "")
-                << ": " << c->reasoning->task.infeasibility() << "\n";
-      return kExitNoPlan;
-    }
-    c->prepared = std::make_unique<PreparedRun>(c->world, *c->reasoning);
-    BenchResults& results = c->results;
-    results.scenario = c->world.name;
-    results.scenario_file = c->world.source_file;
-    results.settings = scenario.settings;
-    results.first_seed = args.seed.value_or(c->world.planner.seed);
-    results.runs = args.runs;
-    results.time_limit_s = c->world.planner.time_limit;
-    results.threads = args.threads;
-    results.improve = args.improve;
-    results.ompl_with_our_sampler = ompl_sampler == planning::OmplControlSampler::kOurs;
-    results.started_at = local_time_now();
-    results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->prepared->as_written());
-    results.shortest_push_free_path_m = planning::shortest_push_free_path_length(c->world, c->prepared->as_written());
-    results.preparation_s = c->prepared->preparation_s();
-    for (const auto planner : planners) {
-      if (const auto why = planning::refusal(planner, c->prepared->search_task(planner))) throw BadInput(*why);
-      // OMPL's planners grow their trees on one thread.
-      for (int threads : args.threads) {
-        if (!planning::is_ompl(planner) || threads == args.threads.front()) results.planners.push_back({planner, threads, {}});
-      }
-    }
-    cases.push_back(std::move(c));
-  }
+  std::vector<ScenarioEntry> entries;
+  for (const auto& text : args.scenarios) entries.push_back(parse_scenario_entry(text, args.settings, sweep));
+  return entries;
+}
 
-  // Every value runs on the same seeds, even if a script chose its default seed by its params.
-  const std::uint64_t first_seed = cases.front()->results.first_seed;
-  for (auto& c : cases) c->results.first_seed = first_seed;
+// --log FILE: one case writes FILE; the values of one swept scenario write FILE's stem-key-value; several
+// scenarios write FILE's stem-<case folder>.
+std::vector<std::filesystem::path> log_files(const std::string& file, const std::vector<ScenarioEntry>& entries,
+                                             const CampaignResults& results) {
+  std::vector<std::filesystem::path> logs;
+  if (file.empty()) return logs;
+  const std::filesystem::path path(file);
+  for (const auto& c : results.cases) {
+    std::string part;
+    if (entries.size() > 1) {
+      part = folder_name(c.results.scenario, c.results.settings);
+    } else if (entries.front().sweep) {
+      part = entries.front().sweep->key + "-" + c.swept_value;
+    }
+    logs.push_back(part.empty() ? path
+                                : path.parent_path() / (path.stem().string() + "-" + part + path.extension().string()));
+  }
+  return logs;
+}
 
+int list_units(const std::vector<Unit>& units, const std::vector<size_t>& which) {
+  for (const size_t i : which) fmt::print("{}\t{}\n", i, units[i].key);
+  return kExitOk;
+}
+
+int run_whole(const BenchArgs& args, const std::vector<ScenarioEntry>& entries, const CampaignSettings& settings,
+              const std::vector<std::unique_ptr<BenchCase>>& cases, const std::vector<Unit>& units) {
+  std::vector<size_t> all(units.size());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = i;
+  std::map<size_t, UnitRecord> records;
   StopSignal stop;
-  const bool show_progress = !args.quiet && isatty(STDERR_FILENO);
+  const UnitProgress progress{!args.quiet && isatty(STDERR_FILENO), "", 0, units.size()};
+  if (!run_units(cases, units, all, settings, progress, stop.flag(),
+                 [&](const UnitRecord& record) { records.emplace(record.index, record); })) {
+    std::cerr << "physltl-studio: interrupted; nothing written\n";
+    return kExitInterrupted;
+  }
+  const CampaignResults results = collect_results(entries, cases, units, records);
   // --quiet prints only errors; the files are written all the same.
   std::ostringstream silenced;
-  std::ostream& out_text = args.quiet ? silenced : std::cout;
-  // Interleaved (seed S: knowledge, baseline, each thread count, each swept value; then seed S+1, ...) so
-  // that drift in the machine's speed hits every configuration alike.
-  for (int i = 0; i < args.runs; ++i) {
-    const std::uint64_t seed = first_seed + static_cast<std::uint64_t>(i);
-    for (auto& c : cases) {
-      const auto started = std::chrono::steady_clock::now();
-      for (auto& planner : c->results.planners) {
-        if (show_progress) {
-          const std::string where = sweep ? fmt::format(" {}={}", sweep->key, c->swept_value) : "";
-          fmt::print(stderr, "\r{:<72}", fmt::format("run {}/{}{}: {} seed {} ...", i + 1, args.runs, where,
-                                                     planner_label(c->results, planner), seed));
-        }
-        planner.runs.push_back(measure(*c->prepared, {.planner = planner.planner,
-                                                      .ompl_control_sampler = ompl_sampler,
-                                                      .seed = seed,
-                                                      .time_limit = c->world.planner.time_limit,
-                                                      .threads = planner.threads,
-                                                      .improve = args.improve,
-                                                      .stop = &stop.flag()}));
-        if (stop.received()) {
-          if (show_progress) fmt::print(stderr, "\n");
-          std::cerr << "physltl-studio: interrupted; nothing written\n";
-          return kExitInterrupted;
-        }
-      }
-      c->results.total_duration_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    }
-  }
-  if (show_progress) fmt::print(stderr, "\r{:<72}\r", "");
-
-  // Every folder and log is written before any is committed: all appear, or none. The folders come first:
-  // they create <out>, where a log may go.
-  std::vector<std::string> written;
-  std::vector<std::unique_ptr<OutputFolder>> folders;
-  for (const auto& c : cases) {
-    out_text << bench_table(c->results);
-    auto& out = folders.emplace_back(std::make_unique<OutputFolder>(
-        std::filesystem::path(args.out_dir) / folder_name(c->world.name, c->results.settings)));
-    write_bench_json(out->path() / "bench.json", bench_json(c->results));
-    render::write_png(bench_chart(c->results), out->path() / "bench.png");
-    written.push_back(out->final_path().string() + "/bench.json");
-    written.push_back(out->final_path().string() + "/bench.png");
-  }
-  if (sweep) {
-    Sweep result{sweep->key, args.scenario.settings, {}};
-    for (const auto& c : cases) result.points.push_back({c->swept_value, c->results});
-    out_text << sweep_table(result);
-    std::vector<std::string> folder_settings = args.scenario.settings;
-    folder_settings.push_back("sweep=" + sweep->key);
-    auto& out = folders.emplace_back(std::make_unique<OutputFolder>(
-        std::filesystem::path(args.out_dir) / folder_name(cases.front()->world.name, folder_settings)));
-    write_bench_json(out->path() / "sweep.json", sweep_json(result));
-    render::write_png(sweep_chart(result), out->path() / "sweep.png");
-    written.push_back(out->final_path().string() + "/sweep.json");
-    written.push_back(out->final_path().string() + "/sweep.png");
-  }
-  PendingLogs logs;
-  if (!args.log_file.empty()) {
-    for (const auto& c : cases) {
-      const auto file = log_file_for(args.log_file, sweep, c->swept_value);
-      logs.write(file, ompl_experiment(c->results, host_name(), cpu_info()));
-      written.push_back(file.string());
-    }
-  }
-  for (auto& out : folders) out->commit();
-  logs.commit();
-  out_text << "outputs    " << fmt::format("{}", fmt::join(written, ", ")) << "\n";
+  write_campaign_outputs(results, args.out_dir, log_files(args.log_file, entries, results),
+                         args.quiet ? silenced : std::cout);
   return kExitOk;
+}
+
+int run_shard(const BenchArgs& args, const std::vector<ScenarioEntry>& entries, const CampaignSettings& settings,
+              const std::vector<std::unique_ptr<BenchCase>>& cases, const std::vector<Unit>& units,
+              const ShardSpec& shard, const std::vector<size_t>& mine) {
+  const nlohmann::ordered_json manifest = shard_manifest(
+      campaign_manifest(*args.campaign, shard.count, entries, settings, cases, units), shard, mine, cases);
+  ShardFolder folder(shard_folder_path(args.out_dir, *args.campaign, shard), manifest, args.resume);
+  std::vector<size_t> left;
+  for (const size_t i : mine) {
+    if (!folder.records().count(i)) left.push_back(i);
+  }
+  if (!args.quiet && folder.discarded() > 0) {
+    fmt::print(stderr, "physltl-studio: started {} afresh: {} earlier results deleted (--resume keeps them)\n",
+               folder.path().string(), folder.discarded());
+  }
+  StopSignal stop;
+  const UnitProgress progress{!args.quiet && isatty(STDERR_FILENO), fmt::format("shard {}/{}: ", shard.index, shard.count),
+                              mine.size() - left.size(), mine.size()};
+  if (!run_units(cases, units, left, settings, progress, stop.flag(),
+                 [&](const UnitRecord& record) { folder.record(record); })) {
+    std::cerr << fmt::format("physltl-studio: interrupted; {} of {} units have results in {}, --resume runs the rest\n",
+                             folder.records().size(), mine.size(), folder.path().string());
+    return kExitInterrupted;
+  }
+  folder.write_logs(collect_results(entries, cases, units, folder.records()));
+  if (!args.quiet) {
+    const long solved = std::count_if(folder.records().begin(), folder.records().end(),
+                                      [](const auto& entry) { return entry.second.run.solved; });
+    fmt::print("shard {} of {} of campaign {}: {} units ({} run now, {} earlier), {} solved\n", shard.index, shard.count,
+               *args.campaign, mine.size(), left.size(), mine.size() - left.size(), solved);
+    fmt::print("outputs    {}\nmerge with physltl-studio bench merge {}\n", folder.path().string(),
+               folder.path().parent_path().string());
+  }
+  return kExitOk;
+}
+
+int bench(const BenchArgs& args) {
+  if (args.campaign) check_campaign_name(*args.campaign);
+  if (args.campaign && !args.shard && !args.list) {
+    throw BadInput("--campaign names the campaign of a shard: give --shard K/N too (1/1 runs it all as one shard)");
+  }
+  if (args.shard && !args.log_file.empty()) {
+    throw BadInput("--log: a shard writes its OMPL logs into its folder, one per scenario (docs/campaigns.md)");
+  }
+  const std::optional<ShardSpec> shard = args.shard ? std::optional(parse_shard(*args.shard)) : std::nullopt;
+  const CampaignSettings settings = campaign_settings(args);
+  const std::vector<ScenarioEntry> entries = scenario_entries(args);
+  std::vector<std::unique_ptr<BenchCase>> cases;
+  try {
+    cases = load_cases(entries, settings);
+  } catch (const InfeasibleCase& e) {
+    std::cerr << "physltl-studio: the task is infeasible: " << e.what() << "\n";
+    return kExitNoPlan;
+  }
+  const std::vector<CaseUnits> described = case_units(cases);
+  const std::vector<Unit> units = campaign_units(described, settings.runs);
+  if (!shard) {
+    if (args.list) {
+      std::vector<size_t> all(units.size());
+      for (size_t i = 0; i < all.size(); ++i) all[i] = i;
+      return list_units(units, all);
+    }
+    return run_whole(args, entries, settings, cases, units);
+  }
+  const std::vector<size_t> mine = shard_units(units, described, *args.campaign, *shard);
+  if (args.list) return list_units(units, mine);
+  return run_shard(args, entries, settings, cases, units, *shard, mine);
 }
 
 }  // namespace
 
 CommandRunner add_bench_command(CLI::App& app) {
   auto args = std::make_shared<BenchArgs>();
-  args->scenario.add_to(app);
+  app.add_option("scenarios", args->scenarios,
+                 "Scenario files (Lua); FILE::key=value::... gives one its own settings, FILE::sweep:key=v1,v2,... "
+                 "its own sweep")
+      ->required();
+  app.add_option("--set", args->settings, "Pass key=value to every script's `params` table (repeatable)")
+      ->allow_extra_args(false);
   app.add_option("--runs", args->runs, "Number of seeds per planner")->check(CLI::PositiveNumber)->capture_default_str();
-  app.add_option("--seed", args->seed, "First seed; runs use S, S+1, ... (default: the scenario's)");
+  app.add_option("--seed", args->seed, "First seed; runs use S, S+1, ... (default: each scenario's)");
   app.add_option("--time-limit", args->time_limit, "Planning time limit per run in seconds (default: the scenario's)")
       ->check(CLI::PositiveNumber);
   app.add_option("--planners", args->planners,
@@ -330,11 +226,21 @@ CommandRunner add_bench_command(CLI::App& app) {
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
   app.add_option("--sweep", args->sweep,
-                 "Also measure the scenario with key set to each value (key=v1,v2,...), on the same seeds, "
+                 "Also measure each scenario with key set to each value (key=v1,v2,...), on the same seeds, "
                  "interleaved; reports how the time grows");
   app.add_option("--log", args->log_file, "Also write an OMPL benchmark log (for ompl_benchmark_statistics.py)");
   app.add_option("--out", args->out_dir, "Folder for outputs; writes <out>/<scenario>/bench.json")->capture_default_str();
   app.add_flag("--quiet", args->quiet, "Print only errors (no progress, no table); the files are written");
+  auto* campaign = app.add_option("--campaign", args->campaign,
+                                  "Name of the campaign a shard belongs to; its shards go to <out>/<NAME>/");
+  auto* shard = app.add_option("--shard", args->shard,
+                               "Run only shard K of N (1-based) of the campaign's units, into "
+                               "<out>/<campaign>/shard-K-of-N/; merge the shards with `bench merge`")
+                    ->needs(campaign);
+  app.add_flag("--list", args->list, "Print the units (of the shard, with --shard) and run nothing");
+  app.add_flag("--resume", args->resume,
+               "Keep the results of an earlier run of the shard and run only the units without one")
+      ->needs(shard);
   return [args] { return bench(*args); };
 }
 

@@ -16,5 +16,6 @@ CommandRunner add_run_command(CLI::App& app);  // the main job: plan (and render
 CommandRunner add_check_command(CLI::App& app);
 CommandRunner add_ltl_command(CLI::App& app);
 CommandRunner add_bench_command(CLI::App& app);
+CommandRunner add_bench_merge_command(CLI::App& app);  // `bench merge`
 
 }  // namespace physltl::app

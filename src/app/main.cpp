@@ -1,3 +1,4 @@
+#include "build_version.h"
 #include "command.h"
 #include "physltl/scenario/diagnostic.h"
 
@@ -56,8 +57,15 @@ int main(int argc, char** argv) {
                                           "Parse a co-safe LTL formula, simplify it, translate it to a minimal DFA.",
                                           add_ltl_command));
   subcommands.emplace("bench", make_command("physltl-studio bench",
-                                            "Benchmark the planners on a range of seeds: table, bench.json, OMPL log.",
+                                            "Benchmark the planners on a range of seeds: table, bench.json, OMPL log; campaigns in shards, `bench merge`.",
                                             add_bench_command));
+  // `bench merge` is a command of its own: bench's first word is a scenario file.
+  if (argc > 2 && std::string(argv[1]) == "bench" && std::string(argv[2]) == "merge") {
+    Command merge = make_command("physltl-studio bench merge",
+                                 "Merge the shards of a benchmark campaign into what one unsharded run writes.",
+                                 add_bench_merge_command);
+    return parse_and_run(merge, argc - 2, argv + 2);
+  }
   if (argc > 1) {
     auto it = subcommands.find(argv[1]);
     if (it != subcommands.end()) return parse_and_run(it->second, argc - 1, argv + 1);
@@ -71,6 +79,6 @@ int main(int argc, char** argv) {
   for (const auto& [name, command] : subcommands) footer += fmt::format("  {:<7}{}\n", name, command.app->get_description());
   footer += "\nExit codes: 0 ok, 1 no plan found (or task infeasible), 2 bad input or usage.";
   main_job.app->footer(footer);
-  main_job.app->set_version_flag("--version", "physltl-studio 0.1.0");
+  main_job.app->set_version_flag("--version", build_version());
   return parse_and_run(main_job, argc, argv);
 }

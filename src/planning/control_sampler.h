@@ -8,7 +8,7 @@
 #include "physltl/knowledge/kappa.h"
 #include "physltl/planning/plan.h"
 #include "physltl/scenario/state.h"
-#include "random.h"
+#include "physltl/planning/random.h"
 
 namespace physltl::planning {
 

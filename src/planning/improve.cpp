@@ -1,6 +1,6 @@
 #include "physltl/planning/improve.h"
 
-#include "random.h"
+#include "physltl/planning/random.h"
 
 #include <algorithm>
 #include <chrono>

@@ -13,7 +13,7 @@
 #include "physltl/knowledge/kappa.h"
 #include "physltl/planning/labelling.h"
 #include "physltl/planning/plan.h"
-#include "random.h"
+#include "physltl/planning/random.h"
 #include "stage_graph.h"
 
 #include <map>

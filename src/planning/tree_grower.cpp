@@ -1,6 +1,6 @@
 #include "tree_grower.h"
 
-#include "random.h"
+#include "physltl/planning/random.h"
 
 #include <algorithm>
 #include <cmath>

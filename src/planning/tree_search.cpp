@@ -3,7 +3,7 @@
 #include "lead_search.h"
 #include "object_lead.h"
 #include "product_graph.h"
-#include "random.h"
+#include "physltl/planning/random.h"
 #include "stage_graph.h"
 #include "tree_grower.h"
 #include "worker_pool.h"

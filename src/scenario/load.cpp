@@ -67,9 +67,14 @@ World load_scenario(const std::string& path, const LoadOptions& options) {
   if (!std::filesystem::is_regular_file(path) || !std::ifstream(path)) {
     throw ScenarioError({{{path, 0}, "cannot read the scenario file (missing, a folder, or not readable)"}});
   }
-  const std::vector<Element> elements = run_scenario_script(path, options);
+  ScriptRun script = run_scenario_script(path, options);
   std::vector<Diagnostic> diagnostics;
-  World world = read_world(elements, path, diagnostics);
+  World world = read_world(script.elements, path, diagnostics);
+  world.inputs = {path};
+  world.inputs.insert(world.inputs.end(), script.modules.begin(), script.modules.end());
+  for (const FixedBody& body : world.fixed_bodies) {
+    if (!body.mesh.empty()) world.inputs.push_back(body.mesh);
+  }
   if (diagnostics.empty()) diagnostics = validate(world);
   if (!diagnostics.empty()) throw ScenarioError(std::move(diagnostics));
   return world;

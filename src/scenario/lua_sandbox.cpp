@@ -30,6 +30,7 @@ struct Sandbox {
   long long instructions = 0;
   int last_line = 0;
   std::vector<Element> elements;
+  std::vector<std::string> modules;  // the files `require` read
   // The message of the Lua error being raised. It lives here, not on the C stack, because pushing it may
   // itself fail for lack of memory, and that error longjmps too.
   std::string raised_message;
@@ -222,9 +223,11 @@ int sandboxed_require(lua_State* L) {
   lua_pushfstring(L, "%s/%s.lua", box.options.lua_dir.c_str(), name);
   lua_pushfstring(L, "%s/%s.lua", box.script_dir.c_str(), name);
   int status = LUA_ERRFILE;
+  int file = 0;  // the stack index of the file that loaded, once the chunk is on top
   for (int candidate = -2; candidate <= -1 && status == LUA_ERRFILE; ++candidate) {
     status = luaL_loadfilex(L, lua_tostring(L, candidate), "t");
     if (status == LUA_ERRFILE) lua_pop(L, 1);
+    file = candidate - 1;
   }
   if (status == LUA_ERRFILE) {
     return guarded(L, [&]() -> int {
@@ -233,6 +236,12 @@ int sandboxed_require(lua_State* L) {
     });
   }
   if (status != LUA_OK) return lua_error(L);
+  // Which file it was, for whoever must know what a World was made of (bench's campaign manifests).
+  const char* loaded = lua_tostring(L, file);
+  guarded(L, [&]() -> int {
+    sandbox_of(L).modules.emplace_back(loaded);
+    return 0;
+  });
   lua_replace(L, -3);  // the chunk in place of the first file name
   lua_pop(L, 1);   // the second file name
   lua_call(L, 0, 1);
@@ -353,7 +362,7 @@ const std::vector<std::string>& element_kinds() {
   return kinds;
 }
 
-std::vector<Element> run_scenario_script(const std::string& path, const LoadOptions& options) {
+ScriptRun run_scenario_script(const std::string& path, const LoadOptions& options) {
   auto box = std::make_unique<Sandbox>();
   box->path = path;
   box->script_dir = std::filesystem::path(path).parent_path().string();
@@ -385,7 +394,7 @@ std::vector<Element> run_scenario_script(const std::string& path, const LoadOpti
                                                                  : "error object is not a string";
     throw ScenarioError({diagnostic_from_lua_message(*box, message)});
   }
-  return std::move(box->elements);
+  return {std::move(box->elements), std::move(box->modules)};
 }
 
 }  // namespace physltl::scenario

@@ -1,4 +1,4 @@
-#include "ompl_log.h"
+#include "bench/ompl_log.h"
 
 #include <gtest/gtest.h>
 

@@ -118,6 +118,8 @@ struct RenderSettings {
 struct World {
   std::string name;  // file stem, names the output folder
   std::string source_file;
+  // Every file the World was made from: the scenario, each module it required, each mesh, in that order.
+  std::vector<std::string> inputs;
   Workspace workspace;
   Robot robot;
   std::vector<FixedBody> fixed_bodies;

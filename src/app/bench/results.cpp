@@ -1,4 +1,4 @@
-#include "bench_results.h"
+#include "results.h"
 
 #include "physltl/render/chart.h"
 #include "plan_files.h"

@@ -1,4 +1,4 @@
-#include "bench_sweep.h"
+#include "sweep.h"
 
 #include "physltl/render/chart.h"
 

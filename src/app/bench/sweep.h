@@ -3,7 +3,7 @@
 // seeds, interleaved so that drift in the machine's speed hits every value alike. How the planning time
 // grows with the parameter, as a table, a least-squares line and sweep.json (docs/benchmarks.md).
 
-#include "bench_results.h"
+#include "results.h"
 #include "physltl/render/image.h"
 
 #include <nlohmann/json.hpp>

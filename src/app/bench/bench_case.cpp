@@ -1,0 +1,146 @@
+#include "bench_case.h"
+
+#include "bad_input.h"
+#include "physltl/planning/improve.h"
+#include "physltl/planning/path_lower_bound.h"
+#include "scenario_args.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+#include <iomanip>
+#include <sstream>
+
+namespace physltl::app {
+namespace {
+
+std::string local_time_now() {
+  const std::time_t now = std::time(nullptr);
+  std::ostringstream text;
+  text << std::put_time(std::localtime(&now), "%F %T");
+  return text.str();
+}
+
+std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, const std::string& value,
+                                     const CampaignSettings& settings) {
+  auto c = std::make_unique<BenchCase>();
+  c->entry = index;
+  c->swept_value = value;
+  ScenarioArgs scenario{entry.path, entry.settings};
+  if (entry.sweep) scenario.settings.push_back(entry.sweep->key + "=" + value);
+  c->world = scenario.load();
+  if (settings.time_limit) c->world.planner.time_limit = *settings.time_limit;
+  c->reasoning.emplace(reason_about(c->world));
+  if (!c->reasoning->feasible()) {
+    throw InfeasibleCase(fmt::format("{}{}: {}", entry.path, entry.sweep ? " with " + entry.sweep->key + "=" + value : "",
+                                     c->reasoning->task.infeasibility()));
+  }
+  c->prepared = std::make_unique<PreparedRun>(c->world, *c->reasoning);
+  BenchResults& results = c->results;
+  results.scenario = c->world.name;
+  results.scenario_file = c->world.source_file;
+  results.settings = scenario.settings;
+  results.first_seed = settings.seed.value_or(c->world.planner.seed);
+  results.runs = settings.runs;
+  results.time_limit_s = c->world.planner.time_limit;
+  results.threads = settings.threads;
+  results.improve = settings.improve;
+  results.ompl_with_our_sampler = settings.ompl_sampler == planning::OmplControlSampler::kOurs;
+  results.started_at = local_time_now();
+  results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->prepared->as_written());
+  results.shortest_push_free_path_m = planning::shortest_push_free_path_length(c->world, c->prepared->as_written());
+  results.preparation_s = c->prepared->preparation_s();
+  for (const auto planner : settings.planners) {
+    if (const auto why = planning::refusal(planner, c->prepared->search_task(planner))) throw BadInput(*why);
+    // OMPL's planners grow their trees on one thread.
+    for (const int threads : settings.threads) {
+      if (!planning::is_ompl(planner) || threads == settings.threads.front()) results.planners.push_back({planner, threads, {}});
+    }
+  }
+  return c;
+}
+
+}  // namespace
+
+std::vector<std::unique_ptr<BenchCase>> load_cases(const std::vector<ScenarioEntry>& entries,
+                                                   const CampaignSettings& settings) {
+  std::vector<std::unique_ptr<BenchCase>> cases;
+  const std::vector<std::string> no_sweep{""};
+  for (size_t e = 0; e < entries.size(); ++e) {
+    const size_t first = cases.size();
+    for (const auto& value : entries[e].sweep ? entries[e].sweep->values : no_sweep) {
+      cases.push_back(load_case(entries[e], e, value, settings));
+    }
+    for (size_t c = first; c < cases.size(); ++c) cases[c]->results.first_seed = cases[first]->results.first_seed;
+  }
+  for (size_t c = 0; c < cases.size(); ++c) {
+    for (size_t d = 0; d < c; ++d) {
+      if (folder_name(cases[c]->results.scenario, cases[c]->results.settings) ==
+          folder_name(cases[d]->results.scenario, cases[d]->results.settings)) {
+        throw BadInput(fmt::format("'{}' and '{}' give the same scenario with the same settings",
+                                   entries[cases[d]->entry].text, entries[cases[c]->entry].text));
+      }
+    }
+  }
+  return cases;
+}
+
+std::vector<CaseUnits> case_units(const std::vector<std::unique_ptr<BenchCase>>& cases) {
+  std::vector<CaseUnits> units;
+  for (const auto& c : cases) {
+    CaseUnits u{folder_name(c->results.scenario, c->results.settings), c->results.first_seed, {}};
+    for (const auto& planner : c->results.planners) u.planners.push_back({planner.planner, planner.threads});
+    units.push_back(std::move(u));
+  }
+  return units;
+}
+
+CampaignResults collect_results(const std::vector<ScenarioEntry>& entries,
+                                const std::vector<std::unique_ptr<BenchCase>>& cases, const std::vector<Unit>& units,
+                                const std::map<size_t, UnitRecord>& records) {
+  CampaignResults campaign;
+  for (const auto& entry : entries) {
+    campaign.entries.push_back({entry.settings, entry.sweep ? std::optional(entry.sweep->key) : std::nullopt});
+  }
+  for (const auto& c : cases) campaign.cases.push_back({c->entry, c->swept_value, c->results});
+  for (const auto& [index, record] : records) {
+    const Unit& unit = units[index];
+    BenchResults& results = campaign.cases[unit.case_index].results;
+    results.planners[unit.planner_index].runs.push_back(record.run);
+    results.total_duration_s += record.elapsed_s;
+  }
+  campaign.host = this_host();
+  campaign.cpu_info = this_cpu_info();
+  return campaign;
+}
+
+BenchRun measure(const PreparedRun& prepared, const SolveOptions& options) {
+  const auto started = std::chrono::steady_clock::now();
+  const planning::ValidatedPlan solution = solve(prepared, options);
+  BenchRun run;
+  run.improve_s = solution.improvement ? solution.improvement->time_s : 0.0;
+  run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() - run.improve_s;
+  run.seed = options.seed;
+  const planning::PlanResult& result = solution.result;
+  run.solved = solution.solved();
+  run.stop_reason = solution.solved() || !result.solved ? result.stop_reason : "failed replay";
+  run.tree_nodes = result.stats.tree_nodes;
+  run.propagations = result.stats.propagations;
+  run.physics_steps = result.stats.physics_steps;
+  if (run.solved) {
+    run.controls = static_cast<int>(result.plan.controls.size());
+    run.pushes = solution.replay->pushes;
+    run.bodies_moved = static_cast<int>(solution.replay->moved_bodies.size());
+    run.solution_duration_s = result.plan.total_steps() * prepared.world().planner.step_size;
+    run.path_length_m = planning::measure(prepared.world(), result.plan, *solution.replay).path_length_m;
+    run.first_pushes = solution.improvement ? solution.improvement->first.pushes : run.pushes;
+    run.first_duration_s = solution.improvement ? solution.improvement->first.duration_s : run.solution_duration_s;
+  }
+  run.cell_skips_refused = result.stats.cell_skips_refused;
+  run.settings = result.settings;
+  return run;
+}
+
+}  // namespace physltl::app

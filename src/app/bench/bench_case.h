@@ -1,0 +1,66 @@
+#pragma once
+// The cases of a campaign loaded: one World per scenario entry and swept value, reasoned about and
+// prepared for the planners once, with the facts bench reports about it (bench/campaign.h).
+
+#include "campaign.h"
+#include "outputs.h"
+#include "results.h"
+#include "unit_record.h"
+
+#include "physltl/scenario/world.h"
+#include "planning_job.h"
+#include "reasoning.h"
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace physltl::app {
+
+// What every case shares: the command line's settings but the scenarios.
+struct CampaignSettings {
+  std::vector<planning::PlannerKind> planners;
+  std::vector<int> threads{1};
+  int runs = 10;
+  std::optional<std::uint64_t> seed;
+  std::optional<double> time_limit;
+  int improve = 0;
+  planning::OmplControlSampler ompl_sampler = planning::OmplControlSampler::kOmpl;
+};
+
+struct BenchCase {
+  size_t entry = 0;         // the scenario entry it comes from
+  std::string swept_value;  // empty unless the entry sweeps
+  scenario::World world;
+  std::optional<Reasoning> reasoning;
+  std::unique_ptr<PreparedRun> prepared;
+  BenchResults results;  // the case's facts, and its planners without runs yet
+};
+
+// A case whose task is infeasible: bench says why and exits 1 (nothing to measure).
+struct InfeasibleCase : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Loads every case before any run, so a bad value fails at once. Throws BadInput, ScenarioError or
+// InfeasibleCase. Every value of an entry runs on the same seeds (--seed, or the first value's scenario
+// seed), even if a script chose its default seed by its params.
+std::vector<std::unique_ptr<BenchCase>> load_cases(const std::vector<ScenarioEntry>& entries,
+                                                   const CampaignSettings& settings);
+
+// The cases as the campaign's units see them.
+std::vector<CaseUnits> case_units(const std::vector<std::unique_ptr<BenchCase>>& cases);
+
+// The cases with the runs of `records` (by canonical unit index) in their planners, in unit order; each
+// case's total duration is the sum of its units' times. Host and CPU are this machine's.
+CampaignResults collect_results(const std::vector<ScenarioEntry>& entries,
+                                const std::vector<std::unique_ptr<BenchCase>>& cases, const std::vector<Unit>& units,
+                                const std::map<size_t, UnitRecord>& records);
+
+// One unit: plans and validates, timing the search apart from --improve.
+BenchRun measure(const PreparedRun& prepared, const SolveOptions& options);
+
+}  // namespace physltl::app

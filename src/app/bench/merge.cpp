@@ -1,0 +1,219 @@
+#include "merge.h"
+
+#include "bad_input.h"
+#include "campaign.h"
+#include "manifest.h"
+#include "planner_names.h"
+#include "shard_folder.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <optional>
+#include <set>
+
+namespace physltl::app {
+namespace fs = std::filesystem;
+namespace {
+
+struct Shard {
+  fs::path folder;
+  nlohmann::json manifest;
+  int index = 0;
+  std::map<size_t, UnitRecord> records;
+};
+
+std::vector<fs::path> shard_folders(const std::vector<fs::path>& dirs) {
+  std::vector<fs::path> folders;
+  for (const auto& dir : dirs) {
+    if (fs::exists(dir / "manifest.json")) {
+      folders.push_back(dir);
+      continue;
+    }
+    if (!fs::is_directory(dir)) throw BadInput(dir.string() + ": no such folder");
+    std::vector<fs::path> inside;
+    for (const auto& entry : fs::directory_iterator(dir)) {
+      if (entry.is_directory() && entry.path().filename().string().rfind("shard-", 0) == 0 &&
+          fs::exists(entry.path() / "manifest.json")) {
+        inside.push_back(entry.path());
+      }
+    }
+    if (inside.empty()) throw BadInput(dir.string() + ": neither a shard folder nor a campaign folder holding shards");
+    std::sort(inside.begin(), inside.end());
+    folders.insert(folders.end(), inside.begin(), inside.end());
+  }
+  return folders;
+}
+
+double number_or_infinity(const nlohmann::json& value) {
+  return value.is_null() ? std::numeric_limits<double>::infinity() : value.get<double>();
+}
+
+// The cases as the manifest describes them, with the facts the first shard found.
+CampaignResults skeleton(const nlohmann::json& campaign, const nlohmann::json& first_shard) {
+  CampaignResults results;
+  for (const auto& entry : campaign.at("scenarios")) {
+    const auto& sweep = entry.at("sweep");
+    results.entries.push_back({entry.at("settings").get<std::vector<std::string>>(),
+                               sweep.is_null() ? std::nullopt : std::optional(sweep.at("key").get<std::string>())});
+  }
+  const auto& settings = campaign.at("settings");
+  const auto& facts = first_shard.at("cases");
+  for (size_t c = 0; c < campaign.at("cases").size(); ++c) {
+    const auto& description = campaign.at("cases")[c];
+    CaseResults result{description.at("entry").get<size_t>(), description.at("swept_value").get<std::string>(), {}};
+    BenchResults& r = result.results;
+    r.scenario = description.at("scenario").get<std::string>();
+    r.scenario_file = description.at("scenario_file").get<std::string>();
+    r.settings = description.at("settings").get<std::vector<std::string>>();
+    r.first_seed = description.at("first_seed").get<std::uint64_t>();
+    r.time_limit_s = description.at("time_limit_s").get<double>();
+    r.runs = settings.at("runs").get<int>();
+    r.threads = settings.at("threads").get<std::vector<int>>();
+    r.improve = settings.at("improve").get<int>();
+    r.ompl_with_our_sampler = settings.at("ompl_sampler") == "ours";
+    r.started_at = facts.at(c).at("started_at").get<std::string>();
+    r.preparation_s = facts.at(c).at("preparation_s").get<double>();
+    r.shortest_free_path_m = number_or_infinity(facts.at(c).at("shortest_free_path_m"));
+    r.shortest_push_free_path_m = number_or_infinity(facts.at(c).at("shortest_push_free_path_m"));
+    for (const auto& p : description.at("planners")) {
+      r.planners.push_back({parse_planner(p.at("name").get<std::string>()), p.at("threads").get<int>(), {}});
+    }
+    results.cases.push_back(std::move(result));
+  }
+  return results;
+}
+
+std::vector<CaseUnits> case_units(const CampaignResults& results) {
+  std::vector<CaseUnits> cases;
+  for (const auto& c : results.cases) {
+    CaseUnits units{folder_name(c.results.scenario, c.results.settings), c.results.first_seed, {}};
+    for (const auto& p : c.results.planners) units.planners.push_back({p.planner, p.threads});
+    cases.push_back(std::move(units));
+  }
+  return cases;
+}
+
+// "a, b, c and 12 more"
+std::string some(const std::vector<std::string>& items) {
+  constexpr size_t kShown = 5;
+  std::vector<std::string> shown(items.begin(), items.begin() + static_cast<long>(std::min(items.size(), kShown)));
+  std::string text = fmt::format("{}", fmt::join(shown, "; "));
+  if (items.size() > kShown) text += fmt::format(" and {} more", items.size() - kShown);
+  return text;
+}
+
+// Shards 1..N of one campaign, each once: throws naming what is wrong otherwise.
+void check_shard_set(const std::vector<Shard>& shards) {
+  std::vector<std::string> problems;
+  const nlohmann::json& reference = shards.front().manifest.at("campaign");
+  const int count = reference.at("shards").get<int>();
+  std::map<int, fs::path> seen;
+  for (const auto& shard : shards) {
+    if (const auto difference = first_difference(reference, shard.manifest.at("campaign"),
+                                                 "in shard " + std::to_string(shards.front().index),
+                                                 "in " + shard.folder.string(), "campaign")) {
+      problems.push_back(fmt::format("{} does not belong with {}: {}", shard.folder.string(),
+                                     shards.front().folder.string(), *difference));
+      continue;
+    }
+    const auto [at, fresh] = seen.emplace(shard.index, shard.folder);
+    if (!fresh) {
+      problems.push_back(fmt::format("shard {} of {} is given twice: {} and {}", shard.index, count, at->second.string(),
+                                     shard.folder.string()));
+    }
+  }
+  if (problems.empty()) {
+    for (int k = 1; k <= count; ++k) {
+      if (!seen.count(k)) problems.push_back(fmt::format("shard {} of {} is missing", k, count));
+    }
+  }
+  if (!problems.empty()) throw BadInput("bench merge refuses: " + fmt::format("{}", fmt::join(problems, "; ")));
+}
+
+}  // namespace
+
+MergedCampaign merge_shards(const std::vector<fs::path>& dirs) {
+  std::vector<Shard> shards;
+  for (const auto& folder : shard_folders(dirs)) {
+    Shard shard{folder, read_manifest(folder), 0, {}};
+    try {
+      shard.index = shard.manifest.at("shard").at("index").get<int>();
+    } catch (const nlohmann::json::exception& e) {
+      throw BadInput((folder / "manifest.json").string() + ": not a shard manifest (" + e.what() + ")");
+    }
+    shard.records = read_unit_records(folder);
+    shards.push_back(std::move(shard));
+  }
+  check_shard_set(shards);
+  std::sort(shards.begin(), shards.end(), [](const Shard& a, const Shard& b) { return a.index < b.index; });
+
+  const nlohmann::json& campaign = shards.front().manifest.at("campaign");
+  MergedCampaign merged;
+  try {
+    merged.name = campaign.at("name").get<std::string>();
+    merged.results = skeleton(campaign, shards.front().manifest.at("shard"));
+  } catch (const nlohmann::json::exception& e) {
+    throw BadInput((shards.front().folder / "manifest.json").string() + ": not a shard manifest (" + e.what() + ")");
+  }
+  merged.folder = shards.front().folder.parent_path();
+  const std::vector<CaseUnits> cases = case_units(merged.results);
+  const std::vector<Unit> units = campaign_units(cases, merged.results.cases.empty() ? 0 : merged.results.cases.front().results.runs);
+  std::vector<std::string> keys;
+  for (const auto& unit : units) keys.push_back(unit.key);
+  if (campaign.at("units").get<std::vector<std::string>>() != keys) {
+    throw BadInput("bench merge refuses: the manifests' unit list is not the one their campaign makes (another version?)");
+  }
+
+  // Every unit exactly once: in the shard that was dealt it, with its result.
+  std::vector<std::string> missing, misplaced;
+  std::vector<const UnitRecord*> found(units.size(), nullptr);
+  const int count = campaign.at("shards").get<int>();
+  for (const auto& shard : shards) {
+    const std::vector<size_t> expected = shard_units(units, cases, merged.name, {shard.index, count});
+    if (shard.manifest.at("shard").at("units").get<std::vector<size_t>>() != expected) {
+      misplaced.push_back(fmt::format("{} lists other units than shard {} of {} holds", shard.folder.string(), shard.index, count));
+    }
+    for (const size_t index : expected) {
+      const auto it = shard.records.find(index);
+      if (it == shard.records.end() || it->second.key != units[index].key) {
+        missing.push_back(fmt::format("{} (shard {})", units[index].key, shard.index));
+      } else {
+        found[index] = &it->second;
+      }
+    }
+    for (const auto& [index, record] : shard.records) {
+      if (!std::binary_search(expected.begin(), expected.end(), index)) {
+        misplaced.push_back(fmt::format("{} holds a result of unit {}, not its own", shard.folder.string(), index));
+      }
+    }
+  }
+  if (!misplaced.empty()) throw BadInput("bench merge refuses: " + some(misplaced));
+  if (!missing.empty()) {
+    throw BadInput(fmt::format("bench merge refuses: {} of {} units have no result (run their shards again with "
+                               "--resume): {}", missing.size(), units.size(), some(missing)));
+  }
+
+  std::set<std::string> hosts;
+  for (const auto& shard : shards) hosts.insert(shard.manifest.at("shard").at("host").get<std::string>());
+  merged.results.host = fmt::format("{}", fmt::join(hosts, ","));
+  merged.results.cpu_info = shards.front().manifest.at("shard").at("cpu_info").get<std::string>();
+  for (size_t index = 0; index < units.size(); ++index) {
+    BenchResults& r = merged.results.cases[units[index].case_index].results;
+    r.planners[units[index].planner_index].runs.push_back(found[index]->run);
+    r.total_duration_s += found[index]->elapsed_s;
+  }
+  for (const auto& shard : shards) {
+    const auto& facts = shard.manifest.at("shard").at("cases");
+    for (size_t c = 0; c < merged.results.cases.size(); ++c) {
+      BenchResults& r = merged.results.cases[c].results;
+      r.started_at = std::min(r.started_at, facts.at(c).at("started_at").get<std::string>());
+    }
+  }
+  return merged;
+}
+
+}  // namespace physltl::app

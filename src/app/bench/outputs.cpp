@@ -1,0 +1,157 @@
+#include "outputs.h"
+
+#include "bad_input.h"
+#include "campaign.h"
+#include "output_folder.h"
+#include "physltl/render/png.h"
+#include "sweep.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <unistd.h>
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <memory>
+
+namespace physltl::app {
+namespace {
+
+void write_json(const std::filesystem::path& file, const nlohmann::ordered_json& json) {
+  std::ofstream out(file);
+  out << json.dump(2) << "\n";
+  if (!out) throw BadInput("cannot write " + file.string());
+}
+
+// The SQL type ompl_benchmark_statistics gives the swept value's column.
+std::string property_type(const CampaignResults& campaign, size_t entry) {
+  bool integers = true, numbers = true;
+  for (const auto& c : campaign.cases) {
+    if (c.entry != entry) continue;
+    const std::string& v = c.swept_value;
+    long long whole = 0;
+    double real = 0.0;
+    integers = integers && std::from_chars(v.data(), v.data() + v.size(), whole).ptr == v.data() + v.size();
+    const auto [end, error] = std::from_chars(v.data(), v.data() + v.size(), real);
+    numbers = numbers && error == std::errc() && end == v.data() + v.size() && std::isfinite(real);
+  }
+  return integers ? "INTEGER" : numbers ? "REAL" : "TEXT";
+}
+
+// Logs appear whole or not at all, like the output folders: each is written beside its final name and
+// renamed into place by commit(); those not committed are removed.
+class PendingLogs {
+ public:
+  PendingLogs() = default;
+  PendingLogs(const PendingLogs&) = delete;
+  PendingLogs& operator=(const PendingLogs&) = delete;
+  ~PendingLogs() {
+    std::error_code ignored;
+    for (const auto& [temp, file] : logs_) std::filesystem::remove(temp, ignored);
+  }
+
+  void write(const std::filesystem::path& file, const OmplExperiment& experiment) {
+    const std::filesystem::path temp = file.string() + ".tmp";
+    logs_.emplace_back(temp, file);
+    std::ofstream out(temp);
+    write_ompl_log(out, experiment);
+    if (!out) throw BadInput("cannot write " + file.string());
+  }
+
+  void commit() {
+    for (const auto& [temp, file] : logs_) std::filesystem::rename(temp, file);
+    logs_.clear();
+  }
+
+ private:
+  std::vector<std::pair<std::filesystem::path, std::filesystem::path>> logs_;  // temporary, final
+};
+
+}  // namespace
+
+std::string this_host() {
+  char name[256] = {};
+  return gethostname(name, sizeof name - 1) == 0 ? name : "";
+}
+
+// "<count> x <model name>" from /proc/cpuinfo, or empty.
+std::string this_cpu_info() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line, model;
+  int count = 0;
+  while (std::getline(in, line)) {
+    if (line.rfind("model name", 0) != 0) continue;
+    ++count;
+    model = line.substr(line.find(':') + 2);
+  }
+  return count > 0 ? fmt::format("{} x {}\n", count, model) : "";
+}
+
+OmplExperiment case_experiment(const CampaignResults& campaign, size_t case_index) {
+  const CaseResults& c = campaign.cases[case_index];
+  const EntryResults& entry = campaign.entries[c.entry];
+  OmplExperiment experiment = ompl_experiment(c.results, campaign.host, campaign.cpu_info);
+  experiment.name = folder_name(c.results.scenario, entry.settings);
+  if (entry.sweep_key) {
+    // ompl_benchmark_statistics names the column after the property; a key that is one of its own
+    // columns gets a prefix.
+    static const std::vector<std::string> taken{"id", "name", "totaltime", "timelimit", "memorylimit", "runcount",
+                                                "version", "hostname", "cpuinfo", "date", "seed", "setup"};
+    const bool clash = std::find(taken.begin(), taken.end(), *entry.sweep_key) != taken.end();
+    experiment.parameters[(clash ? "param_" : "") + *entry.sweep_key + " " + property_type(campaign, c.entry)] =
+        c.swept_value;
+  }
+  return experiment;
+}
+
+void write_ompl_log_file(const std::filesystem::path& file, const OmplExperiment& experiment) {
+  PendingLogs log;
+  log.write(file, experiment);
+  log.commit();
+}
+
+std::vector<std::string> write_campaign_outputs(const CampaignResults& campaign, const std::filesystem::path& out_dir,
+                                                const std::vector<std::filesystem::path>& logs, std::ostream& text) {
+  // Every folder and log is written before any is committed. The folders come first: they create
+  // out_dir, where a log may go.
+  std::vector<std::string> written;
+  std::vector<std::unique_ptr<OutputFolder>> folders;
+  for (const auto& c : campaign.cases) {
+    text << bench_table(c.results);
+    auto& out = folders.emplace_back(
+        std::make_unique<OutputFolder>(out_dir / folder_name(c.results.scenario, c.results.settings)));
+    write_json(out->path() / "bench.json", bench_json(c.results));
+    render::write_png(bench_chart(c.results), out->path() / "bench.png");
+    written.push_back(out->final_path().string() + "/bench.json");
+    written.push_back(out->final_path().string() + "/bench.png");
+  }
+  for (size_t e = 0; e < campaign.entries.size(); ++e) {
+    const EntryResults& entry = campaign.entries[e];
+    if (!entry.sweep_key) continue;
+    Sweep sweep{*entry.sweep_key, entry.settings, {}};
+    for (const auto& c : campaign.cases) {
+      if (c.entry == e) sweep.points.push_back({c.swept_value, c.results});
+    }
+    text << sweep_table(sweep);
+    std::vector<std::string> folder_settings = entry.settings;
+    folder_settings.push_back("sweep=" + sweep.key);
+    auto& out = folders.emplace_back(std::make_unique<OutputFolder>(
+        out_dir / folder_name(sweep.points.front().results.scenario, folder_settings)));
+    write_json(out->path() / "sweep.json", sweep_json(sweep));
+    render::write_png(sweep_chart(sweep), out->path() / "sweep.png");
+    written.push_back(out->final_path().string() + "/sweep.json");
+    written.push_back(out->final_path().string() + "/sweep.png");
+  }
+  PendingLogs pending;
+  for (size_t i = 0; i < logs.size(); ++i) {
+    pending.write(logs[i], case_experiment(campaign, i));
+    written.push_back(logs[i].string());
+  }
+  for (auto& out : folders) out->commit();
+  pending.commit();
+  text << "outputs    " << fmt::format("{}", fmt::join(written, ", ")) << "\n";
+  return written;
+}
+
+}  // namespace physltl::app

@@ -1,0 +1,41 @@
+// `physltl-studio bench merge DIR...`: a campaign's shards put back together (docs/campaigns.md).
+
+#include "bench/campaign.h"
+#include "bench/merge.h"
+#include "command.h"
+
+#include <memory>
+#include <sstream>
+
+namespace physltl::app {
+namespace {
+
+struct MergeArgs {
+  std::vector<std::string> dirs;
+  std::optional<std::string> out_dir;
+  bool quiet = false;
+};
+
+int merge(const MergeArgs& args) {
+  const MergedCampaign merged = merge_shards({args.dirs.begin(), args.dirs.end()});
+  const std::filesystem::path out = args.out_dir ? std::filesystem::path(*args.out_dir) : merged.folder / "merged";
+  std::vector<std::filesystem::path> logs;
+  for (const auto& c : merged.results.cases) logs.push_back(out / (folder_name(c.results.scenario, c.results.settings) + ".log"));
+  std::ostringstream silenced;
+  write_campaign_outputs(merged.results, out, logs, args.quiet ? silenced : std::cout);
+  return kExitOk;
+}
+
+}  // namespace
+
+CommandRunner add_bench_merge_command(CLI::App& app) {
+  auto args = std::make_shared<MergeArgs>();
+  app.add_option("dirs", args->dirs, "Shard folders (shard-K-of-N), or campaign folders holding them")->required();
+  app.add_option("--out", args->out_dir,
+                 "Folder for outputs: <out>/<case>/bench.json, sweep.json, <out>/<case>.log (default: "
+                 "<campaign folder>/merged)");
+  app.add_flag("--quiet", args->quiet, "Print only errors; the files are written");
+  return [args] { return merge(*args); };
+}
+
+}  // namespace physltl::app
