@@ -38,6 +38,8 @@ struct BenchArgs {
   std::string out_dir = "out/bench";
   bool quiet = false;
   int improve = 0;
+  int robustness = 0;
+  std::optional<std::string> uncertainty;
   std::optional<std::string> campaign;
   std::optional<std::string> shard;  // K/N
   bool list = false;
@@ -61,6 +63,8 @@ CampaignSettings campaign_settings(const BenchArgs& args) {
   settings.seed = args.seed;
   settings.time_limit = args.time_limit;
   settings.improve = args.improve;
+  settings.robustness = args.robustness;
+  settings.uncertainty = args.uncertainty;
   settings.ompl_sampler = parse_ompl_sampler(args.ompl_sampler);
   return settings;
 }
@@ -219,6 +223,12 @@ CommandRunner add_bench_command(CLI::App& app) {
                  "Candidates spent shortening each first validated plan, timed apart from the search (default: none)")
       ->check(CLI::Range(0, 1000000))
       ->capture_default_str();
+  app.add_option("--robustness", args->robustness,
+                 "Replay each solved plan in N perturbed worlds drawn from the scenario's uncertainty (timed apart); "
+                 "a robustness line per planner (docs/robustness.md)")
+      ->check(CLI::Range(0, 100000));
+  app.add_option("--uncertainty", args->uncertainty,
+                 "Override each scenario's uncertainty, e.g. mass=0.3,friction=0.1");
   app.add_option("--threads", args->threads,
                  "Threads growing each run's search tree (same plans, sooner); a list such as 1,2 measures each, "
                  "interleaved")

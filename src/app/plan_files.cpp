@@ -1,5 +1,7 @@
 #include "plan_files.h"
 
+#include "robustness_report.h"
+
 #include "physltl/ltl/formula.h"
 
 namespace physltl::app {
@@ -50,6 +52,7 @@ json report_json(const RunSummary& run) {
         {"peak_speed", run.replay->peak_speed},
         {"failure", run.replay->failure.empty() ? json(nullptr) : json(run.replay->failure)},
     };
+    if (run.robustness != nullptr) report["robustness"] = robustness_json(*run.robustness, *run.uncertainty);
     // Where the bodies the task names are at the end: the object facts that hold then.
     report["object_facts_at_end"] = run.as_written.labelling.object_facts(run.replay->facts_trace.back());
     report["controls"] = r.plan.controls.size();

@@ -2,6 +2,7 @@
 // plan.json and report.json: what a run found, for people and for scripts. Keys documented in
 // docs/outputs.md; the ones named there as stable stay.
 
+#include "physltl/planning/robustness.h"
 #include "physltl/planning/planner.h"
 #include "physltl/planning/validated_plan.h"
 #include "physltl/planning/replay.h"
@@ -23,6 +24,8 @@ struct RunSummary {
   const planning::PlanResult& result;
   const planning::Replay* replay;  // null when nothing was solved
   const planning::Improvement* improvement = nullptr;  // when the plan was improved
+  const planning::Robustness* robustness = nullptr;    // with --robustness N
+  const scenario::Uncertainty* uncertainty = nullptr;  // what the robustness was measured under
 };
 
 nlohmann::ordered_json report_json(const RunSummary& run);

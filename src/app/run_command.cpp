@@ -6,8 +6,11 @@
 #include "plan_files.h"
 #include "plan_pictures.h"
 #include "planning_job.h"
+#include "physltl/planning/perturbation.h"
 #include "reasoning.h"
+#include "robustness_report.h"
 #include "scenario_args.h"
+#include "uncertainty_args.h"
 #include "stop_signal.h"
 #include "world_summary.h"
 
@@ -43,6 +46,8 @@ struct RunArgs {
   // One per core: threads change how soon the plan is found, never which plan (bench defaults to one
   // thread, the fair figure).
   int threads = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
+  int robustness = 0;                      // perturbed worlds to replay the plan in (docs/robustness.md)
+  std::optional<std::string> uncertainty;  // overrides the scenario's uncertainty { ... }
 };
 
 void write_json(const std::filesystem::path& file, const nlohmann::ordered_json& j) {
@@ -76,6 +81,7 @@ int run(const RunArgs& args) {
   scenario::World world = args.scenario.load();
   if (args.seed) world.planner.seed = *args.seed;
   if (args.time_limit) world.planner.time_limit = *args.time_limit;
+  if (args.uncertainty) world.uncertainty = override_uncertainty(world.uncertainty, *args.uncertainty);
   const auto say = [&](const std::string& line) {
     if (!args.quiet) std::cout << line << "\n";
   };
@@ -138,8 +144,19 @@ int run(const RunArgs& args) {
   say(fmt::format("plan       {} controls, {:.1f} s of motion, {} pushes, validated by replay",
                   result.plan.controls.size(), result.plan.total_steps() * world.planner.step_size, replay.pushes));
 
+  std::optional<planning::Robustness> robustness;
+  if (args.robustness > 0) {
+    try {
+      robustness = planning::measure_robustness(world, world.uncertainty, args.robustness, world.planner.seed,
+                                                result.plan, replay, prepared.as_written());
+    } catch (const planning::PerturbationError& e) {
+      throw BadInput(std::string("--robustness: ") + e.what());
+    }
+    say("robustness " + robustness_line(*robustness, world.uncertainty));
+  }
   const RunSummary summary{world, reasoning, prepared.as_written(), planner, result, &replay,
-                           solution.improvement ? &*solution.improvement : nullptr};
+                           solution.improvement ? &*solution.improvement : nullptr,
+                           robustness ? &*robustness : nullptr, &world.uncertainty};
   write_json(out.path() / "report.json", report_json(summary));
   write_json(out.path() / "plan.json", plan_json(summary));
   if (args.render) {
@@ -191,6 +208,13 @@ CommandRunner add_run_command(CLI::App& app) {
                  "Threads growing the search tree (default: one per core; the same plan with any number)")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
+  app.add_option("--robustness", args->robustness,
+                 "Also replay the plan in N perturbed worlds drawn from the scenario's uncertainty and report the "
+                 "share that still satisfies the task (docs/robustness.md)")
+      ->check(CLI::Range(0, 100000));
+  app.add_option("--uncertainty", args->uncertainty,
+                 "Override the scenario's uncertainty, e.g. mass=0.3,friction=0.1 (keys: mass, friction, start, "
+                 "body_pose, body_yaw_deg)");
   return [args] { return run(*args); };
 }
 

@@ -111,6 +111,9 @@ Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomato
       }
       const auto validity = knowledge::check_validity(knowledge, kappa, state, contacts, mode);
       if (!validity.valid()) {
+        if (std::find(r.violations.begin(), r.violations.end(), validity.violation) == r.violations.end()) {
+          r.violations.push_back(validity.violation);
+        }
         fail(r.valid, fmt::format("step {} (control {}): {}", step, c, knowledge::violation_name(validity.violation)));
       }
       if (until_first_failure && !r.failure.empty()) return r;

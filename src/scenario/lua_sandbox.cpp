@@ -357,8 +357,8 @@ Diagnostic diagnostic_from_lua_message(const Sandbox& box, const std::string& me
 }  // namespace
 
 const std::vector<std::string>& element_kinds() {
-  static const std::vector<std::string> kinds = {"workspace", "robot", "fixed",   "movable",
-                                                 "region",    "task",  "planner", "render"};
+  static const std::vector<std::string> kinds = {"workspace", "robot",   "fixed",  "movable",    "region",
+                                                 "task",      "planner", "render", "uncertainty"};
   return kinds;
 }
 

@@ -239,6 +239,14 @@ void read_render(TableReader& r, RenderSettings& s) {
   }
 }
 
+void read_uncertainty(TableReader& r, Uncertainty& u) {
+  u.mass = r.number("mass", u.mass);
+  u.friction = r.number("friction", u.friction);
+  u.start = r.number("start", u.start);
+  u.body_pose = r.number("body_pose", u.body_pose);
+  u.body_yaw_deg = r.number("body_yaw_deg", u.body_yaw_deg);
+}
+
 void read_task(TableReader& r, Task& task) { task.formula = r.string("formula"); }
 
 // Each mesh's footprint: the floor projection of what stands below the robot's top, so the robot never
@@ -280,7 +288,7 @@ World read_world(const std::vector<Element>& elements, const std::string& path, 
   world.name = std::filesystem::path(path).stem().string();
   const std::string script_dir = std::filesystem::path(path).parent_path().string();
 
-  // Singletons: exactly once (workspace, robot, task) or at most once (planner, render).
+  // Singletons: exactly once (workspace, robot, task) or at most once (planner, render, uncertainty).
   std::map<std::string, const Element*> first_of;
   std::map<std::string, int> count_of;
   std::size_t region_corners = 0;
@@ -327,6 +335,9 @@ World read_world(const std::vector<Element>& elements, const std::string& path, 
     } else if (e.kind == "render") {
       read_render(r, world.render);
       world.render.where = e.where;
+    } else if (e.kind == "uncertainty") {
+      read_uncertainty(r, world.uncertainty);
+      world.uncertainty.where = e.where;
     }
     r.finish();
   }
@@ -337,7 +348,7 @@ World read_world(const std::vector<Element>& elements, const std::string& path, 
     }
   }
   // Elements that were not given point at the top of the file, where an author would add them.
-  for (Location* where : {&world.planner.where, &world.render.where}) {
+  for (Location* where : {&world.planner.where, &world.render.where, &world.uncertainty.where}) {
     if (where->file.empty()) *where = {path, 1};
   }
   return world;

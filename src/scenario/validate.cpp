@@ -37,6 +37,11 @@ class Validator {
  public:
   explicit Validator(const World& world) : world_(world) {}
 
+  std::vector<Diagnostic> check_only_uncertainty(const Uncertainty& u) {
+    check_uncertainty(u);
+    return std::move(out_);
+  }
+
   std::vector<Diagnostic> run() {
     check_workspace();
     check_robot();
@@ -47,6 +52,7 @@ class Validator {
     check_task();
     check_planner();
     check_render();
+    check_uncertainty(world_.uncertainty);
     return std::move(out_);
   }
 
@@ -300,6 +306,15 @@ class Validator {
     if (p.min_steps > p.max_steps) error(p.where, "planner: 'min_steps' must not exceed 'max_steps'");
   }
 
+  void check_uncertainty(const Uncertainty& u) {
+    // A relative spread of 1 or more could make a mass or a friction zero or negative.
+    check_range(u.where, "uncertainty: 'mass'", u.mass, 0.0, 0.9, true);
+    check_range(u.where, "uncertainty: 'friction'", u.friction, 0.0, 0.9, true);
+    check_range(u.where, "uncertainty: 'start'", u.start, 0.0, 1.0, true);
+    check_range(u.where, "uncertainty: 'body_pose'", u.body_pose, 0.0, 1.0, true);
+    check_range(u.where, "uncertainty: 'body_yaw_deg'", u.body_yaw_deg, 0.0, 180.0, true);
+  }
+
   void check_render() {
     const auto& r = world_.render;
     check_range(r.where, "render: 'width'", r.width, 16.0, 8192.0, true);
@@ -318,5 +333,9 @@ class Validator {
 }  // namespace
 
 std::vector<Diagnostic> validate(const World& world) { return Validator(world).run(); }
+
+std::vector<Diagnostic> validate_uncertainty(const Uncertainty& uncertainty) {
+  return Validator(World{}).check_only_uncertainty(uncertainty);
+}
 
 }  // namespace physltl::scenario

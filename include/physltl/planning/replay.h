@@ -27,6 +27,9 @@ struct Replay {
 
   bool reproduces_plan = false;  // every state after a control equals the planned one, bit for bit
   bool valid = false;            // every step passes the validity rules of the mode it was planned in
+  // Each rule some step broke, once, in the order first broken (a step reports the first rule it breaks,
+  // in check_validity's order: limits, workspace, fixed bodies, then kappa's).
+  std::vector<knowledge::Violation> violations;
   // The trace of letters (the robot's region and the facts BODY@REGION) satisfies the formula as written,
   // by direct LTL semantics on the trace followed by its last letter forever (ltl::holds_when_staying); a
   // co-safe task's trace must also be a good prefix.

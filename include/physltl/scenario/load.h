@@ -28,5 +28,7 @@ World load_scenario(const std::string& path, const LoadOptions& options = {});
 // Semantic checks on a World read from a script: sizes, overlaps, containment, names, the formula.
 // Returns every problem; empty when the world is valid.
 std::vector<Diagnostic> validate(const World& world);
+// The ranges of an uncertainty alone (each value of validate's own check), for one given on the command line.
+std::vector<Diagnostic> validate_uncertainty(const Uncertainty& uncertainty);
 
 }  // namespace physltl::scenario

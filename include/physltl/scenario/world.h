@@ -115,6 +115,19 @@ struct RenderSettings {
   Location where;
 };
 
+// How far reality may differ from the model (docs/robustness.md): what `--robustness` and `execute` draw
+// perturbed worlds from. Relative for mass and friction, metres and degrees for poses; all 0 by default.
+struct Uncertainty {
+  double mass = 0.0;          // each movable body's mass times U[1 - mass, 1 + mass]
+  double friction = 0.0;      // each movable body's floor friction times U[1 - friction, 1 + friction]
+  double start = 0.0;         // m: the robot's start, uniform in a disc of this radius
+  double body_pose = 0.0;     // m: each movable body's position, uniform in a disc of this radius
+  double body_yaw_deg = 0.0;  // deg: each movable body's heading, uniform in [-body_yaw_deg, body_yaw_deg]
+  Location where;
+
+  bool none() const { return mass == 0 && friction == 0 && start == 0 && body_pose == 0 && body_yaw_deg == 0; }
+};
+
 struct World {
   std::string name;  // file stem, names the output folder
   std::string source_file;
@@ -128,6 +141,7 @@ struct World {
   Task task;
   PlannerSettings planner;
   RenderSettings render;
+  Uncertainty uncertainty;
 };
 
 }  // namespace physltl::scenario

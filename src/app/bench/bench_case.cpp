@@ -3,7 +3,10 @@
 #include "bad_input.h"
 #include "physltl/planning/improve.h"
 #include "physltl/planning/path_lower_bound.h"
-#include "scenario_args.h"
+#include "physltl/planning/perturbation.h"
+#include "physltl/planning/robustness.h"
+#include "physltl/scenario/load.h"
+#include "uncertainty_args.h"
 
 #include <fmt/format.h>
 
@@ -28,10 +31,15 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   auto c = std::make_unique<BenchCase>();
   c->entry = index;
   c->swept_value = value;
-  ScenarioArgs scenario{entry.path, entry.settings};
-  if (entry.sweep) scenario.settings.push_back(entry.sweep->key + "=" + value);
-  c->world = scenario.load();
+  std::vector<std::string> settings_of_case = entry.settings;
+  if (entry.sweep) settings_of_case.push_back(entry.sweep->key + "=" + value);
+  scenario::LoadOptions options;
+  for (const auto& setting : settings_of_case) {  // each key=value, checked by parse_scenario_entry
+    options.params[setting.substr(0, setting.find('='))] = setting.substr(setting.find('=') + 1);
+  }
+  c->world = scenario::load_scenario(entry.path, options);
   if (settings.time_limit) c->world.planner.time_limit = *settings.time_limit;
+  if (settings.uncertainty) c->world.uncertainty = override_uncertainty(c->world.uncertainty, *settings.uncertainty);
   c->reasoning.emplace(reason_about(c->world));
   if (!c->reasoning->feasible()) {
     throw InfeasibleCase(fmt::format("{}{}: {}", entry.path, entry.sweep ? " with " + entry.sweep->key + "=" + value : "",
@@ -41,12 +49,13 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   BenchResults& results = c->results;
   results.scenario = c->world.name;
   results.scenario_file = c->world.source_file;
-  results.settings = scenario.settings;
+  results.settings = settings_of_case;
   results.first_seed = settings.seed.value_or(c->world.planner.seed);
   results.runs = settings.runs;
   results.time_limit_s = c->world.planner.time_limit;
   results.threads = settings.threads;
   results.improve = settings.improve;
+  results.robustness = settings.robustness;
   results.ompl_with_our_sampler = settings.ompl_sampler == planning::OmplControlSampler::kOurs;
   results.started_at = local_time_now();
   results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->prepared->as_written());
@@ -116,7 +125,7 @@ CampaignResults collect_results(const std::vector<ScenarioEntry>& entries,
   return campaign;
 }
 
-BenchRun measure(const PreparedRun& prepared, const SolveOptions& options) {
+BenchRun measure(const PreparedRun& prepared, const SolveOptions& options, int robustness_worlds) {
   const auto started = std::chrono::steady_clock::now();
   const planning::ValidatedPlan solution = solve(prepared, options);
   BenchRun run;
@@ -137,6 +146,18 @@ BenchRun measure(const PreparedRun& prepared, const SolveOptions& options) {
     run.path_length_m = planning::measure(prepared.world(), result.plan, *solution.replay).path_length_m;
     run.first_pushes = solution.improvement ? solution.improvement->first.pushes : run.pushes;
     run.first_duration_s = solution.improvement ? solution.improvement->first.duration_s : run.solution_duration_s;
+    if (robustness_worlds > 0) {
+      const scenario::World& world = prepared.world();
+      try {
+        const planning::Robustness robustness = planning::measure_robustness(
+            world, world.uncertainty, robustness_worlds, options.seed, result.plan, *solution.replay, prepared.as_written());
+        run.robust_worlds = robustness.worlds;
+        run.robust_succeeded = robustness.succeeded;
+        run.robust_failures = robustness.failures;
+      } catch (const planning::PerturbationError& e) {
+        throw BadInput(world.source_file + ": --robustness: " + e.what());
+      }
+    }
   }
   run.cell_skips_refused = result.stats.cell_skips_refused;
   run.settings = result.settings;

@@ -28,6 +28,8 @@ struct CampaignSettings {
   std::optional<std::uint64_t> seed;
   std::optional<double> time_limit;
   int improve = 0;
+  int robustness = 0;                      // perturbed worlds per solved run
+  std::optional<std::string> uncertainty;  // --uncertainty: overrides each scenario's
   planning::OmplControlSampler ompl_sampler = planning::OmplControlSampler::kOmpl;
 };
 
@@ -60,7 +62,8 @@ CampaignResults collect_results(const std::vector<ScenarioEntry>& entries,
                                 const std::vector<std::unique_ptr<BenchCase>>& cases, const std::vector<Unit>& units,
                                 const std::map<size_t, UnitRecord>& records);
 
-// One unit: plans and validates, timing the search apart from --improve.
-BenchRun measure(const PreparedRun& prepared, const SolveOptions& options);
+// One unit: plans and validates, timing the search apart from --improve; with robustness_worlds > 0, a
+// solved plan is replayed in as many worlds drawn from the world's uncertainty (seeded by the run's seed).
+BenchRun measure(const PreparedRun& prepared, const SolveOptions& options, int robustness_worlds = 0);
 
 }  // namespace physltl::app

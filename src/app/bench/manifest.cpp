@@ -87,6 +87,8 @@ json campaign_manifest(const std::string& name, int shard_count, const std::vect
             {"seed", settings.seed ? json(*settings.seed) : json(nullptr)},
             {"time_limit_s", optional_number(settings.time_limit)},
             {"improve", settings.improve},
+            {"robustness", settings.robustness},
+            {"uncertainty", settings.uncertainty ? json(*settings.uncertainty) : json(nullptr)},
             {"ompl_sampler", settings.ompl_sampler == planning::OmplControlSampler::kOurs ? "ours" : "ompl"}}},
           {"scenarios", std::move(scenarios)},
           {"cases", std::move(case_list)},

@@ -53,6 +53,9 @@ std::map<std::string, std::string> ompl_run(const BenchRun& run, double counted_
     values["pushes INTEGER"] = std::to_string(run.pushes);
     values["bodies moved INTEGER"] = std::to_string(run.bodies_moved);
     values["solution duration REAL"] = fmt::format("{}", run.solution_duration_s);
+    if (run.robust_worlds > 0) {
+      values["robustness REAL"] = fmt::format("{}", static_cast<double>(run.robust_succeeded) / run.robust_worlds);
+    }
   }
   return values;
 }
@@ -61,7 +64,7 @@ std::map<std::string, std::string> ompl_run(const BenchRun& run, double counted_
 
 PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
   PlannerSummary s;
-  std::vector<double> nodes, pushes, moved, durations, improve, first_pushes, first_durations, paths;
+  std::vector<double> nodes, pushes, moved, durations, improve, first_pushes, first_durations, paths, shares;
   double wall = 0.0, propagations = 0.0;
   for (const auto& run : planner.runs) {
     s.solved += run.solved;
@@ -77,6 +80,7 @@ PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
       first_durations.push_back(run.first_duration_s);
       durations.push_back(run.solution_duration_s);
       paths.push_back(run.path_length_m);
+      if (run.robust_worlds > 0) shares.push_back(static_cast<double>(run.robust_succeeded) / run.robust_worlds);
     }
   }
   s.median_s = statistics::median(s.times_s);
@@ -92,6 +96,7 @@ PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
   s.first_duration_median_s = statistics::median(first_durations);
   s.solution_duration_median_s = statistics::median(durations);
   s.path_length_median_m = statistics::median(paths);
+  if (!shares.empty()) s.robustness_mean = statistics::mean(shares);
   return s;
 }
 
@@ -126,16 +131,26 @@ std::string planner_label(const BenchResults& results, const PlannerRuns& planne
 std::string bench_table(const BenchResults& r) {
   std::string text = fmt::format("{}: {} runs ({}), time limit {:g} s, {}\n", r.scenario, r.runs, seeds_text(r),
                                  r.time_limit_s, threads_text(r.threads));
-  text += fmt::format("{:<12} {:>7} {:>9} {:>8} {:>8} {:>8} {:>7} {:>8} {:>7} {:>6} {:>10} {:>7}\n", "planner", "solved",
-                      "median_s", "mean_s", "p90_s", "max_s", "nodes", "prop/s", "pushes", "moved", "duration_s", "path_m");
+  // With --robustness, a last column: the mean share of perturbed worlds a solved run's plan succeeds in.
+  const bool robust = r.robustness > 0;
+  text += fmt::format("{:<12} {:>7} {:>9} {:>8} {:>8} {:>8} {:>7} {:>8} {:>7} {:>6} {:>10} {:>7}{}\n", "planner", "solved",
+                      "median_s", "mean_s", "p90_s", "max_s", "nodes", "prop/s", "pushes", "moved", "duration_s", "path_m",
+                      robust ? fmt::format(" {:>7}", "robust") : "");
   for (const auto& p : r.planners) {
     const PlannerSummary s = summarize(p, r.time_limit_s);
-    text += fmt::format("{:<12} {:>7} {:>9.3f} {:>8.3f} {:>8.3f} {:>8.3f} {:>7.0f} {:>8.0f} {:>7.1f} {:>6.1f} {:>10.2f} {:>7.2f}\n",
+    const std::string robustness = !robust                ? ""
+                                   : s.robustness_mean ? fmt::format(" {:>7.2f}", *s.robustness_mean)
+                                                       : fmt::format(" {:>7}", "-");
+    text += fmt::format("{:<12} {:>7} {:>9.3f} {:>8.3f} {:>8.3f} {:>8.3f} {:>7.0f} {:>8.0f} {:>7.1f} {:>6.1f} {:>10.2f} {:>7.2f}{}\n",
                         planner_label(r, p), fmt::format("{}/{}", s.solved, p.runs.size()), s.median_s,
                         s.mean_s, s.p90_s, s.max_s, s.tree_nodes_median, s.propagations_per_s, s.pushes_median,
-                        s.bodies_moved_median, s.solution_duration_median_s, s.path_length_median_m);
+                        s.bodies_moved_median, s.solution_duration_median_s, s.path_length_median_m, robustness);
   }
   if (r.ompl_with_our_sampler) text += "OMPL's planners sample controls with ours (--ompl-sampler ours)\n";
+  if (robust) {
+    text += fmt::format("robust: the mean share, over solved runs, of {} perturbed worlds in which the plan succeeds open loop\n",
+                        r.robustness);
+  }
   if (const auto ratio = ratio_of_medians(r)) {
     text += fmt::format("ratio of medians (baseline / knowledge): {:.2f}\n", *ratio);
   }
@@ -198,6 +213,11 @@ json bench_json(const BenchResults& r) {
         entry["first_duration_s"] = run.first_duration_s;
         entry["solution_duration_s"] = run.solution_duration_s;
         entry["path_length_m"] = run.path_length_m;
+        if (run.robust_worlds > 0) {
+          entry["robustness"] = {{"worlds", run.robust_worlds},
+                                 {"succeeded", run.robust_succeeded},
+                                 {"failures", run.robust_failures}};
+        }
       }
       runs.push_back(std::move(entry));
     }
@@ -218,6 +238,7 @@ json bench_json(const BenchResults& r) {
                         {"first_duration_median_s", s.first_duration_median_s},
                         {"solution_duration_median_s", s.solution_duration_median_s},
                         {"path_length_median_m", s.path_length_median_m},
+                        {"robustness_mean", s.robustness_mean ? json(*s.robustness_mean) : json(nullptr)},
                         {"settings", planner_settings(p)},
                         {"per_run", std::move(runs)}});
   }
@@ -231,6 +252,7 @@ json bench_json(const BenchResults& r) {
           {"first_seed", r.first_seed},
           {"time_limit_s", r.time_limit_s},
           {"improve", r.improve},
+          {"robustness", r.robustness},
           {"threads", r.threads},
           {"started_at", r.started_at},
           {"total_duration_s", r.total_duration_s},

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,6 +33,10 @@ struct BenchRun {
   int first_pushes = 0;              // of the first validated plan
   double first_duration_s = 0.0;
   long long cell_skips_refused = 0;  // OMPL's planners (PlannerStats)
+  // With --robustness N (solved runs): the plan replayed in N perturbed worlds, timed apart from wall_s.
+  int robust_worlds = 0;
+  int robust_succeeded = 0;
+  std::map<std::string, int> robust_failures;  // kind -> worlds (planning/robustness.h)
   std::vector<std::pair<std::string, std::string>> settings;  // how the planner was configured
 };
 
@@ -44,6 +49,7 @@ struct PlannerRuns {
 
 struct BenchResults {
   int improve = 0;             // --improve candidates per run
+  int robustness = 0;          // --robustness worlds per solved run
   bool ompl_with_our_sampler = false;  // --ompl-sampler ours
   std::string scenario;       // the World's name
   std::string scenario_file;
@@ -77,6 +83,7 @@ struct PlannerSummary {
   double first_duration_median_s = 0.0;
   double solution_duration_median_s = 0.0;  // over solved runs
   double path_length_median_m = 0.0;         // over solved runs
+  std::optional<double> robustness_mean;     // over solved runs with --robustness: their shares' mean
 };
 
 PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s);

@@ -40,7 +40,8 @@ bool run_units(const std::vector<std::unique_ptr<BenchCase>>& cases, const std::
                                          .time_limit = c.world.planner.time_limit,
                                          .threads = planner.threads,
                                          .improve = settings.improve,
-                                         .stop = &stop});
+                                         .stop = &stop},
+                           settings.robustness);
     if (stop) {
       if (progress.show) fmt::print(stderr, "\n");
       return false;

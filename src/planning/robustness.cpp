@@ -1,0 +1,65 @@
+#include "physltl/planning/robustness.h"
+
+#include "physltl/knowledge/abstract_knowledge.h"
+#include "physltl/planning/perturbation.h"
+
+#include <algorithm>
+
+namespace physltl::planning {
+namespace {
+
+constexpr double kElsewhere = 0.1;  // m
+
+bool saw(const Replay& replay, knowledge::Violation violation) {
+  return std::find(replay.violations.begin(), replay.violations.end(), violation) != replay.violations.end();
+}
+
+// Why the formula failed: the first of a push that missed, a body that ended elsewhere, or a region not
+// reached.
+const char* formula_failure(const Replay& run, const Replay& nominal) {
+  for (const int body : nominal.moved_bodies) {
+    if (std::find(run.moved_bodies.begin(), run.moved_bodies.end(), body) == run.moved_bodies.end()) return "push_missed";
+  }
+  for (const int body : nominal.moved_bodies) {
+    const auto b = static_cast<size_t>(body);
+    if ((run.states.back().movable_poses[b].position - nominal.states.back().movable_poses[b].position).norm() > kElsewhere) {
+      return "box_elsewhere";
+    }
+  }
+  return "region_not_reached";
+}
+
+}  // namespace
+
+WorldRun judge_in_world(const scenario::World& world, const Plan& plan, const Replay& nominal,
+                        const TaskAutomaton& formula) {
+  // The truth's own K: its masses decide what kappa calls immovable.
+  const knowledge::AbstractKnowledge truth = knowledge::formulate(world);
+  // Every planner's plan is judged by every rule, so kappa's count for the baseline's plans too.
+  const Replay run = replay(world, plan, formula, truth, knowledge::ValidityMode::kKnowledge);
+  WorldRun result;
+  auto add = [&](const char* kind) { result.failures.emplace_back(kind); };
+  if (!run.accepted) add(formula_failure(run, nominal));
+  if (saw(run, knowledge::Violation::kLeftWorkspace)) add("left_workspace");
+  if (saw(run, knowledge::Violation::kTouchesFixedBody)) add("touched_fixed_body");
+  if (!run.within_limits || saw(run, knowledge::Violation::kExceedsRobotLimits)) add("beyond_limits");
+  if (!run.ends_at_rest) add("not_at_rest");
+  result.succeeded = result.failures.empty();
+  if (saw(run, knowledge::Violation::kTouchesImmovableBody)) add("touched_immovable_body");
+  if (saw(run, knowledge::Violation::kPushesFromForbiddenSide)) add("forbidden_push_side");
+  return result;
+}
+
+Robustness measure_robustness(const scenario::World& model, const scenario::Uncertainty& uncertainty, int worlds,
+                              std::uint64_t seed, const Plan& plan, const Replay& nominal, const TaskAutomaton& formula) {
+  Robustness robustness;
+  for (int i = 0; i < worlds; ++i) {
+    const WorldRun run = judge_in_world(perturbed_world(model, uncertainty, seed, i), plan, nominal, formula);
+    ++robustness.worlds;
+    robustness.succeeded += run.succeeded;
+    for (const auto& kind : run.failures) ++robustness.failures[kind];
+  }
+  return robustness;
+}
+
+}  // namespace physltl::planning
