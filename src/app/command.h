@@ -17,5 +17,6 @@ CommandRunner add_check_command(CLI::App& app);
 CommandRunner add_ltl_command(CLI::App& app);
 CommandRunner add_bench_command(CLI::App& app);
 CommandRunner add_bench_merge_command(CLI::App& app);  // `bench merge`
+CommandRunner add_execute_command(CLI::App& app);
 
 }  // namespace physltl::app

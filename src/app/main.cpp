@@ -53,6 +53,10 @@ int main(int argc, char** argv) {
   subcommands.emplace("check", make_command("physltl-studio check",
                                             "Validate a scenario, report it with the planner's reasoning, write preview.png.",
                                             add_check_command));
+  subcommands.emplace("execute",
+                      make_command("physltl-studio execute",
+                                   "Run the plan in perturbed worlds, replanning where it leaves its tolerance: execution.json.",
+                                   add_execute_command));
   subcommands.emplace("ltl", make_command("physltl-studio ltl",
                                           "Parse a co-safe LTL formula, simplify it, translate it to a minimal DFA.",
                                           add_ltl_command));

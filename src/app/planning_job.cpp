@@ -27,6 +27,7 @@ planning::ValidatedPlan solve(const PreparedRun& run, const SolveOptions& option
   planner.stop = options.stop;
   planner.threads = options.threads;
   planner.improve = options.improve;
+  planner.max_propagations = options.max_propagations;
   planner.routes = &run.routes();
   const planning::Problem problem{run.world(), run.search_task(options.planner), run.as_written(),
                                   run.reasoning().knowledge, run.decomposition()};

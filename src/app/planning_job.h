@@ -52,6 +52,7 @@ struct SolveOptions {
   double time_limit = 60.0;
   int threads = 1;
   int improve = 0;  // candidates spent shortening the first validated plan
+  long long max_propagations = 0;  // 0: none; the knowledge planner and the baseline stop at it ("budget")
   const std::atomic<bool>* stop = nullptr;  // Ctrl-C
 };
 

@@ -45,6 +45,7 @@ WorldRun judge_in_world(const scenario::World& world, const Plan& plan, const Re
   if (!run.within_limits || saw(run, knowledge::Violation::kExceedsRobotLimits)) add("beyond_limits");
   if (!run.ends_at_rest) add("not_at_rest");
   result.succeeded = result.failures.empty();
+  if (!result.succeeded) result.first_failure = run.failure;
   if (saw(run, knowledge::Violation::kTouchesImmovableBody)) add("touched_immovable_body");
   if (saw(run, knowledge::Violation::kPushesFromForbiddenSide)) add("forbidden_push_side");
   return result;

@@ -159,6 +159,7 @@ class Search {
       return "time limit";
     }
     if (motions_.size() >= options_.max_tree_nodes) return "tree full";
+    if (options_.max_propagations > 0 && stats_.propagations >= options_.max_propagations) return "budget";
     return nullptr;
   }
 

@@ -71,3 +71,57 @@ TEST(Robustness, BenchShowsAColumnPerPlannerAndEachRunsWorldsInBenchJson) {
 }
 
 }  // namespace robustness_cli
+
+namespace execute_cli {
+
+using namespace physltl::testing_support;
+
+TEST(Execute, WritesExecutionJsonWithEveryWorldsControlsAndKeepsTheFolderElse) {
+  const fs::path out = fresh_out_dir();
+  const std::string scenario = small_ordered(test_dir()).string();
+  ASSERT_EQ(run(scenario + " --quiet --out " + out.string()).exit_code, 0);  // report.json, plan.json first
+  const Result r = run("execute " + scenario + " --worlds 4 --uncertainty mass=0.3,friction=0.3,start=0.02 --out " +
+                       out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("worlds succeed with replanning"), std::string::npos) << r.out;
+  const auto j = nlohmann::json::parse(slurp(out / "ordered" / "execution.json"));
+  EXPECT_EQ(j["worlds"], 4);
+  EXPECT_EQ(j["per_world"].size(), 4u);
+  EXPECT_TRUE(j["replans_median"].is_number());
+  EXPECT_TRUE(j["extra_motion_s_median"].is_number());
+  EXPECT_EQ(j["uncertainty"]["friction"], 0.3);
+  for (const auto& world : j["per_world"]) {
+    EXPECT_FALSE(world["controls"].empty());
+    EXPECT_EQ(world["controls"][0].size(), 3u);  // set-point x, y, steps
+    EXPECT_EQ(world["replans"].get<size_t>(), world["replan_results"].size());
+  }
+  EXPECT_TRUE(fs::exists(out / "ordered" / "plan.json"));  // the run's outputs stay
+  // The same seed, the same executions.
+  const std::string first = slurp(out / "ordered" / "execution.json");
+  ASSERT_EQ(run("execute " + scenario + " --worlds 4 --uncertainty mass=0.3,friction=0.3,start=0.02 --quiet --out " +
+                out.string()).exit_code, 0);
+  const auto again = nlohmann::json::parse(slurp(out / "ordered" / "execution.json"));
+  for (size_t w = 0; w < 4; ++w) {
+    EXPECT_EQ(again["per_world"][w]["controls"], j["per_world"][w]["controls"]) << w;
+    EXPECT_EQ(again["per_world"][w]["planning_propagations"], j["per_world"][w]["planning_propagations"]) << w;
+  }
+}
+
+TEST(Execute, RefusesOmplsPlannersAndBadValuesWithoutWritingAnything) {
+  const fs::path out = fresh_out_dir();
+  const std::string execute = "execute " + small_ordered(test_dir()).string() + " --worlds 2 --out " + out.string();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {" --planner ompl-rrt", "OMPL's planners do not take"},
+      {" --uncertainty mass=5", "'mass' is too large"},
+      {" --worlds 0", "--worlds"},
+      {" --tolerance 0", "--tolerance"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    const Result r = run(execute + arguments);
+    EXPECT_EQ(r.exit_code, 2) << arguments;
+    EXPECT_NE(r.err.find(message), std::string::npos) << arguments << ": " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(out / "ordered"));
+}
+
+}  // namespace execute_cli

@@ -8,6 +8,7 @@
 // It also minimises the residual graph over explicit letters to check the automaton's size is minimal.
 
 #include "physltl/ltl/lasso.h"
+#include "physltl/ltl/progression.h"
 #include "physltl/ltl/translate.h"
 
 #include <gtest/gtest.h>
@@ -455,6 +456,45 @@ TEST(TranslateProperty, AGoodPrefixAlsoSatisfiesTheTaskWhenTheRobotStopsAndStays
       ASSERT_TRUE(holds(f, prefix, {trace.back()}, 0)) << to_string(f);
     }
   }
+}
+
+// Execution hands the planner the task progressed over the letters executed so far: a trace satisfies f
+// exactly when its rest satisfies f progressed over its first letter, and however long the trace the
+// progressed formula stays small.
+TEST(ProgressionProperty, ATraceSatisfiesTheFormulaExactlyWhenItsRestSatisfiesTheProgressedOne) {
+  std::mt19937_64 rng(20261202);
+  std::uniform_int_distribution<int> letter(0, 3);
+  std::uniform_int_distribution<int> length(2, 10);
+  int checked = 0, satisfied = 0;
+  for (int i = 0; i < 300; ++i) {
+    const Formula f = random_formula(rng, 4, true);
+    SCOPED_TRACE(to_string(f));
+    for (int t = 0; t < 200; ++t) {
+      std::vector<std::vector<std::string>> trace(static_cast<std::size_t>(length(rng)));
+      for (auto& l : trace) {
+        const int bits = kRegionLetters[letter(rng)];
+        if (bits != 0) l.push_back(kNames[std::countr_zero(static_cast<unsigned>(bits))]);
+      }
+      const bool whole = holds_when_staying(f, trace);
+      Formula rest = f;
+      for (size_t k = 0; k + 1 < trace.size(); ++k) {
+        rest = progress(rest, trace[k]);
+        const std::vector<std::vector<std::string>> after(trace.begin() + static_cast<long>(k) + 1, trace.end());
+        ASSERT_EQ(holds_when_staying(rest, after), whole) << "after " << k + 1 << " letters: " << to_string(rest);
+      }
+      ++checked;
+      satisfied += whole;
+    }
+    Formula long_run = f;
+    for (int k = 0; k < 500; ++k) {
+      const int bits = kRegionLetters[letter(rng)];
+      long_run = progress(long_run, bits == 0 ? std::vector<std::string>{}
+                                              : std::vector<std::string>{kNames[std::countr_zero(static_cast<unsigned>(bits))]});
+    }
+    EXPECT_LT(to_string(long_run).size(), 40 * to_string(f).size() + 40);
+  }
+  EXPECT_GT(satisfied, checked / 10);
+  EXPECT_LT(satisfied, checked * 9 / 10);
 }
 
 }  // namespace

@@ -28,6 +28,10 @@ struct PlannerOptions {
   double time_limit = 60.0;                     // s of wall-clock planning
   const std::atomic<bool>* stop = nullptr;      // set from elsewhere (Ctrl-C, another thread's success)
   std::size_t max_tree_nodes = 2'000'000;       // memory bound: ~0.5 KiB per node
+  // The knowledge planner and the baseline stop with "budget" after this many propagations (0: no bound),
+  // checked between batches, so a seed gives the same plan or the same failure on any machine and load
+  // (execution's replanning, docs/robustness.md). OMPL's planners do not take it.
+  long long max_propagations = 0;
   // Threads growing the one tree, each with its own ODE world. The plan does not depend on it: a seed
   // gives the same plan with any number of threads, only sooner.
   int threads = 1;
@@ -51,7 +55,7 @@ struct PlannerStats {
 
 struct PlanResult {
   bool solved = false;
-  std::string stop_reason;  // "solved", "time limit", "interrupted", "tree full", "no lead", "no solution"
+  std::string stop_reason;  // "solved", "time limit", "budget", "interrupted", "tree full", "no lead", "no solution"
   Plan plan;
   std::vector<TreeEdge> tree;
   PlannerStats stats;

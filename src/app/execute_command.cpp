@@ -1,0 +1,156 @@
+// `physltl-studio execute SCENARIO.lua --worlds N`: the plan run in N perturbed worlds, monitored, with
+// replanning from the observed state when it leaves the plan's tolerance (docs/robustness.md).
+
+#include "command.h"
+#include "execution_report.h"
+#include "output_folder.h"
+#include "physltl/execution/executor.h"
+#include "physltl/planning/perturbation.h"
+#include "physltl/planning/robustness.h"
+#include "planner_names.h"
+#include "planning_job.h"
+#include "reasoning.h"
+#include "scenario_args.h"
+#include "uncertainty_args.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+namespace physltl::app {
+namespace {
+
+struct ExecuteArgs {
+  ScenarioArgs scenario;
+  int worlds = 20;
+  std::optional<std::string> uncertainty;
+  int replans = 5;
+  double tolerance = execution::ExecutionOptions{}.tolerance_m;
+  long long budget = 200'000;
+  std::string planner = "knowledge";
+  std::optional<std::uint64_t> seed;
+  std::string out_dir = "out";
+  bool quiet = false;
+};
+
+// Plans the rest of the task in the model from the observed state, with a budget of propagations so that
+// an execution is the same on any machine. `seed` differs for every world and replanning.
+execution::Replanned replan(const scenario::World& from_here, planning::PlannerKind planner, std::uint64_t seed,
+                            long long budget) {
+  execution::Replanned out;
+  const Reasoning reasoning = reason_about(from_here);
+  if (!reasoning.feasible()) {
+    out.stop_reason = "infeasible: " + reasoning.task.infeasibility();
+    return out;
+  }
+  const PreparedRun prepared(from_here, reasoning);
+  // The budget, not the clock, ends the search: the time limit only guards against a budget too large.
+  const planning::ValidatedPlan solution =
+      solve(prepared, {.planner = planner, .seed = seed, .time_limit = 3600.0, .threads = 1, .max_propagations = budget});
+  out.propagations = solution.result.stats.propagations;
+  out.planning_s = solution.result.stats.planning_time_s;
+  out.stop_reason = solution.result.stop_reason;
+  if (solution.solved()) {
+    out.plan = solution.result.plan;
+    out.nominal = *solution.replay;
+  }
+  return out;
+}
+
+int execute(const ExecuteArgs& args) {
+  const planning::PlannerKind planner = parse_planner(args.planner);
+  if (planner != planning::PlannerKind::kKnowledge && planner != planning::PlannerKind::kBaseline) {
+    throw BadInput("execute replans with a budget of propagations, which OMPL's planners do not take: use knowledge or baseline");
+  }
+  scenario::World world = args.scenario.load();
+  if (args.seed) world.planner.seed = *args.seed;
+  if (args.uncertainty) world.uncertainty = override_uncertainty(world.uncertainty, *args.uncertainty);
+  const auto say = [&](const std::string& line) {
+    if (!args.quiet) std::cout << line << "\n";
+  };
+  const Reasoning reasoning = reason_about(world);
+  if (!reasoning.feasible()) {
+    std::cerr << "physltl-studio: the task is infeasible: " << reasoning.task.infeasibility() << "\n";
+    return kExitNoPlan;
+  }
+  OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
+  const PreparedRun prepared(world, reasoning);
+  const planning::ValidatedPlan solution = solve(prepared, {.planner = planner,
+                                                            .seed = world.planner.seed,
+                                                            .time_limit = world.planner.time_limit,
+                                                            .threads = 1});
+  if (!solution.solved()) {
+    std::cerr << fmt::format("physltl-studio: no plan found ({}); nothing written\n", solution.result.stop_reason);
+    return kExitNoPlan;
+  }
+  const planning::Plan& plan = solution.result.plan;
+  const planning::Replay& nominal = *solution.replay;
+  say(fmt::format("plan       {} controls, {:.1f} s of motion ({} planner, seed {})", plan.controls.size(),
+                  plan.total_steps() * world.planner.step_size, planning::planner_name(planner), world.planner.seed));
+
+  ExecutionReport report{world, planner, args.replans, args.tolerance, args.budget, plan.total_steps() * world.planner.step_size, {}};
+  const execution::ExecutionOptions options{.tolerance_m = args.tolerance, .max_replans = args.replans};
+  for (int i = 0; i < args.worlds; ++i) {
+    scenario::World truth;
+    try {
+      truth = planning::perturbed_world(world, world.uncertainty, world.planner.seed, i);
+    } catch (const planning::PerturbationError& e) {
+      throw BadInput(std::string("execute: ") + e.what());
+    }
+    const planning::WorldRun open_loop = planning::judge_in_world(truth, plan, nominal, prepared.as_written());
+    execution::SimulatedWorld reality(truth);
+    int attempt = 0;
+    const execution::Execution run = execution::execute(
+        world, prepared.as_written(), plan, nominal, reality,
+        [&](const scenario::World& from_here) {
+          // Every world and replanning its own seed, the same on every run.
+          const std::uint64_t seed = world.planner.seed + 1'000'003ull * static_cast<std::uint64_t>(i + 1) +
+                                     static_cast<std::uint64_t>(attempt++);
+          return replan(from_here, planner, seed, args.budget);
+        },
+        options);
+    const planning::WorldRun judged =
+        planning::judge_in_world(truth, planning::Plan{run.controls, {}}, nominal, prepared.as_written());
+    report.worlds.push_back({i, open_loop, judged, run});
+  }
+  say("execution  " + execution_summary(report));
+  std::ofstream file(out.path() / "execution.json");
+  file << execution_json(report).dump(2) << "\n";
+  if (!file) throw BadInput("cannot write " + (out.path() / "execution.json").string());
+  file.close();
+  out.commit_entries();
+  say("outputs    " + (out.final_path() / "execution.json").string());
+  return kExitOk;
+}
+
+}  // namespace
+
+CommandRunner add_execute_command(CLI::App& app) {
+  auto args = std::make_shared<ExecuteArgs>();
+  args->scenario.add_to(app);
+  app.add_option("--worlds", args->worlds, "Perturbed worlds to execute the plan in")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  app.add_option("--uncertainty", args->uncertainty,
+                 "Override the scenario's uncertainty, e.g. mass=0.3,friction=0.1 (keys: mass, friction, start, "
+                 "body_pose, body_yaw_deg)");
+  app.add_option("--replans", args->replans, "Replannings allowed per world")->check(CLI::Range(0, 1000))->capture_default_str();
+  app.add_option("--tolerance", args->tolerance,
+                 "Metres the robot or a body the plan moves may be from its planned position before replanning")
+      ->check(CLI::Range(0.001, 10.0))
+      ->capture_default_str();
+  app.add_option("--budget", args->budget, "Propagations each replanning may spend")
+      ->check(CLI::Range(1000LL, 100'000'000LL))
+      ->capture_default_str();
+  app.add_option("--planner", args->planner, "knowledge or baseline (plans and replans)")->capture_default_str();
+  app.add_option("--seed", args->seed, "Seed of the plan and of the perturbed worlds (default: the scenario's)");
+  app.add_option("--out", args->out_dir, "Folder for outputs; writes <out>/<scenario>/execution.json")->capture_default_str();
+  app.add_flag("--quiet", args->quiet, "Print only errors");
+  return [args] { return execute(*args); };
+}
+
+}  // namespace physltl::app

@@ -1,0 +1,36 @@
+#pragma once
+// What `execute` found, as out/<scenario>/execution.json and one summary line (docs/robustness.md).
+
+#include "physltl/execution/executor.h"
+#include "physltl/planning/planner_kind.h"
+#include "physltl/planning/robustness.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace physltl::app {
+
+struct WorldExecution {
+  int index = 0;                 // of the perturbed world (planning/perturbation.h)
+  planning::WorldRun open_loop;  // the plan without monitoring, for comparison
+  planning::WorldRun executed;   // the executed controls, judged as robustness judges a plan
+  execution::Execution run;
+};
+
+struct ExecutionReport {
+  const scenario::World& model;
+  planning::PlannerKind planner;
+  int max_replans = 0;
+  double tolerance_m = 0.0;
+  long long budget = 0;
+  double nominal_motion_s = 0.0;
+  std::vector<WorldExecution> worlds;
+};
+
+nlohmann::ordered_json execution_json(const ExecutionReport& report);
+// "19/20 worlds succeed with replanning (12/20 open loop); median 1 replan, +3.2 s of motion, 0.41 s planning"
+std::string execution_summary(const ExecutionReport& report);
+
+}  // namespace physltl::app
