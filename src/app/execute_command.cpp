@@ -7,6 +7,7 @@
 #include "physltl/execution/executor.h"
 #include "physltl/planning/perturbation.h"
 #include "physltl/planning/robustness.h"
+#include "plan_pictures.h"
 #include "planner_names.h"
 #include "planning_job.h"
 #include "reasoning.h"
@@ -15,7 +16,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
+#include <functional>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -35,7 +38,40 @@ struct ExecuteArgs {
   std::optional<std::uint64_t> seed;
   std::string out_dir = "out";
   bool quiet = false;
+  bool render = false;
 };
+
+// --render: one executed world (the first that replanned, else the first) as frames and a video, with the
+// path the first plan meant in grey and a red cross where each replanning began.
+void render_execution(const scenario::World& model, const Reasoning& reasoning, const planning::TaskAutomaton& formula,
+                      const planning::Replay& nominal, const WorldExecution& shown, const std::filesystem::path& folder,
+                      const std::function<void(const std::string&)>& say) {
+  const scenario::World truth = planning::perturbed_world(model, model.uncertainty, model.planner.seed, shown.index);
+  const planning::Replay executed = planning::replay(truth, planning::Plan{shown.run.controls, {}}, formula,
+                                                     knowledge::formulate(truth), knowledge::ValidityMode::kKnowledge);
+  std::vector<render::SegmentOverlay> marks;
+  const render::Color planned{0.55f, 0.55f, 0.55f, 1.0f}, replanned{0.9f, 0.1f, 0.1f, 1.0f};
+  for (size_t i = 1; i < nominal.states.size(); ++i) {
+    marks.push_back({nominal.states[i - 1].robot_position, nominal.states[i].robot_position, planned});
+  }
+  for (const int step : shown.run.replan_steps) {
+    const scenario::Vec2 at = shown.run.states[static_cast<size_t>(step)].robot_position;
+    // Segments are drawn one pixel wide: a cross of three strokes each, to be seen beside the path.
+    for (const scenario::Vec2& arm : {scenario::Vec2(0.25, 0.25), scenario::Vec2(0.25, -0.25)}) {
+      for (const double shift : {-0.02, 0.0, 0.02}) {
+        const scenario::Vec2 offset = shift * scenario::Vec2(-arm.y(), arm.x()).normalized();
+        marks.push_back({at - arm + offset, at + arm + offset, replanned});
+      }
+    }
+  }
+  const PlanFrames pictures =
+      write_plan_frames(truth, reasoning, executed, static_cast<int>(formula.dfa.size()), folder / "execution",
+                        folder / "execution.mp4", nullptr, marks,
+                        fmt::format("world {}: {} replans (red), the first plan grey", shown.index, shown.run.replans));
+  say(fmt::format("render     world {}: {} frames{}", shown.index, pictures.frames,
+                  pictures.video.written ? ", execution.mp4" : ""));
+  if (!pictures.video.written) std::cerr << "physltl-studio: no video: " << pictures.video.message << "\n";
+}
 
 // Plans the rest of the task in the model from the observed state, with a budget of propagations so that
 // an execution is the same on any machine. `seed` differs for every world and replanning.
@@ -101,7 +137,7 @@ int execute(const ExecuteArgs& args) {
     } catch (const planning::PerturbationError& e) {
       throw BadInput(std::string("execute: ") + e.what());
     }
-    const planning::WorldRun open_loop = planning::judge_in_world(truth, plan, nominal, prepared.as_written());
+    const planning::WorldRun open_loop = planning::judge_in_world(truth, plan, &nominal, prepared.as_written());
     execution::SimulatedWorld reality(truth);
     int attempt = 0;
     const execution::Execution run = execution::execute(
@@ -114,10 +150,15 @@ int execute(const ExecuteArgs& args) {
         },
         options);
     const planning::WorldRun judged =
-        planning::judge_in_world(truth, planning::Plan{run.controls, {}}, nominal, prepared.as_written());
+        planning::judge_in_world(truth, planning::Plan{run.controls, {}}, nullptr, prepared.as_written());
     report.worlds.push_back({i, open_loop, judged, run});
   }
   say("execution  " + execution_summary(report));
+  if (args.render) {
+    const auto shown = std::find_if(report.worlds.begin(), report.worlds.end(), [](const WorldExecution& w) { return w.run.replans > 0; });
+    render_execution(world, reasoning, prepared.as_written(), nominal, shown != report.worlds.end() ? *shown : report.worlds.front(),
+                     out.path(), say);
+  }
   std::ofstream file(out.path() / "execution.json");
   file << execution_json(report).dump(2) << "\n";
   if (!file) throw BadInput("cannot write " + (out.path() / "execution.json").string());
@@ -150,6 +191,8 @@ CommandRunner add_execute_command(CLI::App& app) {
   app.add_option("--seed", args->seed, "Seed of the plan and of the perturbed worlds (default: the scenario's)");
   app.add_option("--out", args->out_dir, "Folder for outputs; writes <out>/<scenario>/execution.json")->capture_default_str();
   app.add_flag("--quiet", args->quiet, "Print only errors");
+  app.add_flag("--render", args->render,
+               "Also draw one executed world (the first that replanned) as execution/frame_*.png and execution.mp4");
   return [args] { return execute(*args); };
 }
 

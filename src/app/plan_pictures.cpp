@@ -43,11 +43,14 @@ render::Color automaton_state_color(int state, int states) {
 
 PlanFrames write_plan_frames(const scenario::World& world, const Reasoning& reasoning, const planning::Replay& replay,
                              int automaton_states, const std::filesystem::path& folder,
-                             const std::filesystem::path& video, const Progress& progress) {
+                             const std::filesystem::path& video, const Progress& progress,
+                             const std::vector<render::SegmentOverlay>& marks, const std::string& mark_legend) {
   std::filesystem::create_directories(folder);
   const double dt = world.planner.step_size;
   const double duration = dt * static_cast<double>(replay.states.size() - 1);
-  const int frames = static_cast<int>(std::floor(duration * world.render.fps)) + 1;
+  // One frame per 1/fps from the start, and the last one at the final state: the plan's end (a region
+  // entered on its very last step) is always seen.
+  const int frames = static_cast<int>(std::ceil(duration * world.render.fps - 1e-9)) + 1;
   const std::string task = "task: " + world.task.formula;
 
   render::Renderer renderer(world, world.render.width, world.render.height);
@@ -56,6 +59,7 @@ PlanFrames write_plan_frames(const scenario::World& world, const Reasoning& reas
   knowledge::Kappa kappa;
   // One overlay for all frames: the travelled path only grows, so it is extended, not rebuilt per frame.
   render::Overlay overlay;
+  overlay.segments = marks;
   overlay.avoided_regions = ltl::avoided_propositions(reasoning.task.normal_form);
   const auto time_line = [](double time, const std::string& region) {
     return fmt::format("t = {:.2f} s   region: {}", time, region);
@@ -64,6 +68,7 @@ PlanFrames write_plan_frames(const scenario::World& world, const Reasoning& reas
     return fmt::format("automaton state {} of {}{}", state, automaton_states, accepting ? " (accepting)" : "");
   };
   overlay.legend_room = {{task}, {time_line(duration, "p0")}, {automaton_line(automaton_states, true)}};
+  if (!mark_legend.empty()) overlay.legend_room.push_back({mark_legend});
   for (const scenario::Region& r : world.regions) overlay.legend_room[1].push_back(time_line(duration, r.name));
   for (render::ObjectGoalOverlay goal : object_goal_overlays(world, reasoning, replay.states.front())) {
     goal.holds = false;
@@ -72,7 +77,7 @@ PlanFrames write_plan_frames(const scenario::World& world, const Reasoning& reas
     overlay.legend_room.push_back({not_yet, object_goal_line(world, goal)});
   }
   for (int f = 0; f < frames; ++f) {
-    const double time = static_cast<double>(f) / world.render.fps;
+    const double time = std::min(static_cast<double>(f) / world.render.fps, duration);
     const double index = std::min(time / dt, static_cast<double>(replay.states.size() - 1));
     const size_t i = static_cast<size_t>(index);
     const size_t j = std::min(i + 1, replay.states.size() - 1);
@@ -84,6 +89,7 @@ PlanFrames write_plan_frames(const scenario::World& world, const Reasoning& reas
     const int q = replay.automaton_trace[i];
     overlay.legend = {task, time_line(time, region < 0 ? "p0" : world.regions[region].name),
                       automaton_line(q, q == replay.automaton_trace.back() && replay.accepted)};
+    if (!mark_legend.empty()) overlay.legend.push_back(mark_legend);
     overlay.object_goals = object_goal_overlays(world, reasoning, state);
     for (const render::ObjectGoalOverlay& goal : overlay.object_goals) overlay.legend.push_back(object_goal_line(world, goal));
     while (overlay.path.size() <= i) overlay.path.push_back(replay.states[overlay.path.size()].robot_position);

@@ -25,9 +25,12 @@ struct PlanFrames {
 // frames/frame_00000.png ... at the World's fps, linearly interpolated between physics steps so boxes
 // glide as they were pushed, and the same frames as `video` (plan.mp4), encoded alongside.
 // `automaton_states` is the size of the automaton the replay's trace runs on.
+// `marks` are drawn on the floor under the path in every frame (`execute --render`: the path the plan
+// meant and where replanning began), with `mark_legend` as one more line of the legend.
 PlanFrames write_plan_frames(const scenario::World& world, const Reasoning& reasoning, const planning::Replay& replay,
                              int automaton_states, const std::filesystem::path& folder,
-                             const std::filesystem::path& video, const Progress& progress);
+                             const std::filesystem::path& video, const Progress& progress,
+                             const std::vector<render::SegmentOverlay>& marks = {}, const std::string& mark_legend = "");
 
 // tree.png: the decomposition faintly, the tree's edges coloured by automaton state, the path on top;
 // `reasoning` names the regions the task avoids.

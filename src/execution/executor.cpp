@@ -85,7 +85,7 @@ class Run {
 // How close the plan takes the robot to a fixed body at each of its steps: where it passes a jamb with 3 cm
 // to spare, a deviation of 3 cm already touches it, so there the robot's tolerance shrinks to that (but
 // never below kTightest, or every step of a close pass would replan).
-constexpr double kTightest = 0.02;  // m
+constexpr double kTightest = 0.01;  // m
 
 std::vector<double> planned_clearance(const scenario::World& model, const planning::Replay& nominal) {
   std::vector<double> clearance;

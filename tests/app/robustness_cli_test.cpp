@@ -107,6 +107,16 @@ TEST(Execute, WritesExecutionJsonWithEveryWorldsControlsAndKeepsTheFolderElse) {
   }
 }
 
+TEST(Execute, RenderDrawsOneExecutedWorldAsFramesAndAVideo) {
+  const fs::path out = fresh_out_dir();
+  const Result r = run("execute " + small_ordered(test_dir()).string() +
+                       " --worlds 3 --uncertainty mass=0.3,friction=0.3,start=0.02 --render --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("render     world "), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(out / "ordered" / "execution" / "frame_00000.png"));
+  EXPECT_TRUE(fs::exists(out / "ordered" / "execution.mp4")) << r.err;
+}
+
 TEST(Execute, RefusesOmplsPlannersAndBadValuesWithoutWritingAnything) {
   const fs::path out = fresh_out_dir();
   const std::string execute = "execute " + small_ordered(test_dir()).string() + " --worlds 2 --out " + out.string();

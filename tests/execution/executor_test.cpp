@@ -59,7 +59,7 @@ class Executing : public ::testing::Test {
         ASSERT_EQ(again.states[i].movable_poses[b].yaw, run.states[i].movable_poses[b].yaw) << "step " << i;
       }
     }
-    EXPECT_EQ(judge_in_world(truth, executed, nominal_, problem_.original).succeeded, succeeds);
+    EXPECT_EQ(judge_in_world(truth, executed, nullptr, problem_.original).succeeded, succeeds);
     if (succeeds) EXPECT_TRUE(again.accepted) << again.failure;
   }
 
@@ -84,7 +84,7 @@ TEST_F(Executing, TheModelItselfNeedsNoReplanningAndRunsThePlanAsPlanned) {
 TEST_F(Executing, ABoxThreeTimesHeavierThanModelledFailsOpenLoopAndSucceedsWithReplanning) {
   scenario::World truth = problem_.world;
   truth.movable_bodies[static_cast<size_t>(nominal_.moved_bodies.front())].mass *= 3;
-  ASSERT_FALSE(judge_in_world(truth, result_.plan, nominal_, problem_.original).succeeded);
+  ASSERT_FALSE(judge_in_world(truth, result_.plan, &nominal_, problem_.original).succeeded);
   const execution::Execution run = run_in(truth);
   EXPECT_GE(run.replans, 1);
   EXPECT_EQ(run.stopped, "");
@@ -101,7 +101,7 @@ TEST_F(Executing, PerturbedWorldsReproduceTheirRunsAndTheSameSeedTheSameExecutio
   for (int i = 0; i < 6; ++i) {
     const scenario::World truth = perturbed_world(problem_.world, u, 9, i);
     const execution::Execution run = run_in(truth);
-    const bool ok = judge_in_world(truth, Plan{run.controls, {}}, nominal_, problem_.original).succeeded;
+    const bool ok = judge_in_world(truth, Plan{run.controls, {}}, nullptr, problem_.original).succeeded;
     succeeded += ok;
     expect_replay_reproduces(truth, run, ok);
     const execution::Execution again = run_in(truth);

@@ -92,7 +92,7 @@ TEST_F(ARobustPlan, FailsOpenLoopWhenItsFirstPushedBoxIsThreeTimesHeavierThanMod
   // Still pushable: the robot's force limit moves it (the knowledge says so).
   const auto k = knowledge::formulate(truth);
   ASSERT_NE(k.movable_bodies[static_cast<size_t>(nominal_.moved_bodies.front())].body_class, knowledge::BodyClass::kFixed);
-  const WorldRun run = judge_in_world(truth, result_.plan, nominal_, problem_.original);
+  const WorldRun run = judge_in_world(truth, result_.plan, &nominal_, problem_.original);
   EXPECT_FALSE(run.succeeded);
   ASSERT_FALSE(run.failures.empty());
 }

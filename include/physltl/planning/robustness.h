@@ -19,7 +19,7 @@ namespace physltl::planning {
 inline constexpr const char* kFailureKinds[] = {
     "push_missed",         // a body the plan moves did not move
     "box_elsewhere",       // the formula failed and a body the plan moves ended over 0.1 m from where it did
-    "region_not_reached",  // the formula failed otherwise
+    "region_not_reached",  // the formula failed otherwise (or without a nominal replay to compare with)
     "left_workspace",      // the robot or a body left the workspace
     "touched_fixed_body",  // the robot touched a wall or another fixed body
     "beyond_limits",       // the robot broke a declared limit (speed, turn rate, force)
@@ -34,8 +34,10 @@ struct WorldRun {
   std::string first_failure;          // the replay's own words for the first check that failed, for people
 };
 
-// One perturbed world's run of `plan`, against `nominal`, the plan's replay in the model.
-WorldRun judge_in_world(const scenario::World& world, const Plan& plan, const Replay& nominal,
+// One perturbed world's run of `plan`, against `nominal`, the plan's replay in the model, which tells a
+// push that missed and a box that ended elsewhere from a region not reached; without it (controls that
+// no single plan made, such as an execution's) a failed formula counts as region_not_reached.
+WorldRun judge_in_world(const scenario::World& world, const Plan& plan, const Replay* nominal,
                         const TaskAutomaton& formula);
 
 struct Robustness {
