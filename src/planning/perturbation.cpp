@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -25,10 +26,13 @@ geometry::Vec2 in_disc(Random& random, double radius) {
 scenario::World draw(const scenario::World& model, const scenario::Uncertainty& u, Random& random) {
   scenario::World world = model;
   for (auto& body : world.movable_bodies) {
-    body.mass *= random.uniform(1.0 - u.mass, 1.0 + u.mass);
-    body.friction *= random.uniform(1.0 - u.friction, 1.0 + u.friction);
-    body.footprint.pose.position += in_disc(random, u.body_pose);
-    body.footprint.pose.yaw += random.uniform(-u.body_yaw_deg, u.body_yaw_deg) * std::numbers::pi / 180.0;
+    const scenario::BodyUncertainty& own = body.uncertainty;
+    const double mass = own.mass.value_or(u.mass), friction = own.friction.value_or(u.friction);
+    const double yaw_deg = own.yaw_deg.value_or(u.body_yaw_deg);
+    body.mass *= random.uniform(1.0 - mass, 1.0 + mass);
+    body.friction *= random.uniform(1.0 - friction, 1.0 + friction);
+    body.footprint.pose.position += in_disc(random, own.pose.value_or(u.body_pose));
+    body.footprint.pose.yaw += random.uniform(-yaw_deg, yaw_deg) * std::numbers::pi / 180.0;
   }
   world.robot.start += in_disc(random, u.start);
   return world;
@@ -38,7 +42,11 @@ scenario::World draw(const scenario::World& model, const scenario::Uncertainty& 
 
 scenario::World perturbed_world(const scenario::World& model, const scenario::Uncertainty& uncertainty,
                                 std::uint64_t seed, int index) {
-  if (uncertainty.none()) return model;
+  const bool own_ranges = std::any_of(model.movable_bodies.begin(), model.movable_bodies.end(), [](const auto& body) {
+    const scenario::BodyUncertainty& u = body.uncertainty;
+    return u.mass.value_or(0) > 0 || u.friction.value_or(0) > 0 || u.pose.value_or(0) > 0 || u.yaw_deg.value_or(0) > 0;
+  });
+  if (uncertainty.none() && !own_ranges) return model;
   Random seeder(seed ^ kPerturbationStream);
   for (int i = 0; i < index; ++i) seeder.next();
   Random random(seeder.next());

@@ -190,6 +190,11 @@ MovableBody read_movable(TableReader& r, const std::string& default_name) {
     }
   }
   body.mregion_depth = r.optional_number("mregion_depth");
+  if (auto u = r.nested("uncertainty")) {
+    body.uncertainty = {u->optional_number("mass"), u->optional_number("friction"), u->optional_number("pose"),
+                        u->optional_number("yaw_deg")};
+    u->finish();
+  }
   return body;
 }
 

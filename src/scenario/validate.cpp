@@ -151,6 +151,12 @@ class Validator {
     check_range(b.where, what + ": 'mass'", b.mass, 0.0, kMaxMass);
     check_range(b.where, what + ": 'friction'", b.friction, 0.0, kMaxFriction, true);
     if (b.mregion_depth) check_range(b.where, what + ": 'mregion_depth'", *b.mregion_depth, 0.0, kMaxLength);
+    // The same ranges as uncertainty { ... }.
+    const auto& u = b.uncertainty;
+    if (u.mass) check_range(b.where, what + ": uncertainty 'mass'", *u.mass, 0.0, 0.9, true);
+    if (u.friction) check_range(b.where, what + ": uncertainty 'friction'", *u.friction, 0.0, 0.9, true);
+    if (u.pose) check_range(b.where, what + ": uncertainty 'pose'", *u.pose, 0.0, 1.0, true);
+    if (u.yaw_deg) check_range(b.where, what + ": uncertainty 'yaw_deg'", *u.yaw_deg, 0.0, 180.0, true);
     std::set<int> seen;
     for (int face : b.push_from) {
       if (!seen.insert(face).second) {

@@ -4,6 +4,7 @@
 #   slurm_cluster.sh start DIR   prints the SLURM_CONF to export, once the node is idle
 #   slurm_cluster.sh stop DIR
 # Needs root (slurmd runs jobs as their user), Debian's slurm-wlm and munge, and no systemd.
+# The short folder stays after stop, with the daemons' logs, until the next start replaces it.
 set -eu
 action=$1
 tag=$(realpath -ms "$2" | cksum | cut -d' ' -f1)

@@ -47,6 +47,23 @@ TEST(PerturbedWorld, IsAFunctionOfTheSeedAndIndexStaysInItsRangesAndIsValid) {
   EXPECT_NE(perturbed_world(p.world, u, 7, 0).robot.start, perturbed_world(p.world, u, 8, 0).robot.start);
 }
 
+TEST(PerturbedWorld, ABodysOwnRangesReplaceTheWorldsForItAlone) {
+  const TestProblem p("ordered.lua");
+  ASSERT_GE(p.world.movable_bodies.size(), 2u);
+  scenario::World model = p.world;
+  model.movable_bodies[0].uncertainty.mass = 0.5;  // the world's uncertainty stays zero
+  bool varied = false;
+  for (int index = 0; index < 10; ++index) {
+    const scenario::World drawn = perturbed_world(model, model.uncertainty, 3, index);
+    varied |= drawn.movable_bodies[0].mass != model.movable_bodies[0].mass;
+    EXPECT_LE(std::abs(drawn.movable_bodies[0].mass / model.movable_bodies[0].mass - 1), 0.5);
+    EXPECT_EQ(drawn.movable_bodies[1].mass, model.movable_bodies[1].mass);
+    EXPECT_EQ(drawn.movable_bodies[1].footprint.pose.position, model.movable_bodies[1].footprint.pose.position);
+    EXPECT_EQ(drawn.robot.start, model.robot.start);
+  }
+  EXPECT_TRUE(varied);
+}
+
 TEST(PerturbedWorld, ThatCannotBeValidIsAnErrorNotALoop) {
   const TestProblem p("ordered.lua");
   ASSERT_GE(p.world.movable_bodies.size(), 2u);

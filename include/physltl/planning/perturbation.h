@@ -10,8 +10,9 @@
 namespace physltl::planning {
 
 // Drawn uniformly and independently: mass x U[1-m, 1+m] and friction x U[1-f, 1+f] per movable body, its
-// position uniform in a disc of radius body_pose, its heading plus U[-yaw, yaw]; the robot's start uniform
-// in a disc of radius start. A draw that is not a valid world (scenario::validate: a body outside the
+// position uniform in a disc of radius body_pose, its heading plus U[-yaw, yaw] (a body's own ranges,
+// MovableBody::uncertainty, replacing the world's for it); the robot's start uniform in a disc of radius
+// start. A draw that is not a valid world (scenario::validate: a body outside the
 // workspace or overlapping another, the robot starting inside one) is drawn again. World `index` of
 // `seed` comes from a generator of its own, seeded apart from the planner's, so the same seed and index
 // give the same world whatever else is drawn. Zero uncertainty gives the model itself.

@@ -66,6 +66,13 @@ struct FixedBody {
   Location where;
 };
 
+// A movable body's own ranges (movable { uncertainty = { ... } }), each replacing the world's for it.
+struct BodyUncertainty {
+  std::optional<double> mass, friction;  // relative
+  std::optional<double> pose;            // m
+  std::optional<double> yaw_deg;
+};
+
 struct MovableBody {
   std::string name;
   geometry::Footprint footprint;  // pose: the centre (a polygon's area centroid) and the heading
@@ -76,6 +83,7 @@ struct MovableBody {
   // layer decides).
   std::vector<int> push_from;
   std::optional<double> mregion_depth;  // m; default derived from the robot's size
+  BodyUncertainty uncertainty;
   Location where;
 };
 

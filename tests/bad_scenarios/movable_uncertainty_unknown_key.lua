@@ -1,0 +1,6 @@
+-- expect: 4: movable 'B1' uncertainty: unknown key 'yaw'
+workspace { bounds = { { 0, 0 }, { 10, 10 } } }
+robot { radius = 0.25, start = { 1, 1 } }
+movable { name = "B1", center = { 3, 3 }, size = { 0.5, 0.5 }, uncertainty = { yaw = 2 } }
+region { name = "p1", rect = { { 7, 7 }, { 8, 8 } } }
+task { formula = "F p1" }
