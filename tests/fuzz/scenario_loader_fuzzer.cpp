@@ -29,18 +29,20 @@ struct Constructor {
 };
 
 // What the reader accepts (src/scenario/read_world.cpp); the generator also misspells and invents keys.
-const std::array<Constructor, 8> kConstructors = {{
+const std::array<Constructor, 9> kConstructors = {{
     {"workspace", {"bounds", "floor_friction"}},
     {"robot", {"drive", "radius", "mass", "max_force", "max_speed", "max_turn_rate_deg", "start_yaw_deg", "friction", "start"}},
     {"fixed", {"name", "shape", "center", "size", "radius", "points", "polygon", "yaw_deg", "height", "mesh", "scale"}},
     {"movable", {"name", "shape", "center", "size", "radius", "points", "polygon", "yaw_deg", "height", "mass", "friction",
-                 "push_from", "mregion_depth"}},
+                 "push_from", "mregion_depth", "uncertainty"}},
     {"region", {"name", "rect", "polygon"}},
     {"task", {"formula"}},
     {"planner", {"time_limit", "step_size", "min_steps", "max_steps", "seed"}},
     {"render", {"width", "height", "fps", "camera"}},
+    {"uncertainty", {"mass", "friction", "start", "body_pose", "body_yaw_deg"}},
 }};
 const std::vector<const char*> kCameraKeys = {"target", "distance", "elevation_deg", "azimuth_deg", "fov_deg"};
+const std::vector<const char*> kBodyUncertaintyKeys = {"mass", "friction", "pose", "yaw_deg"};
 
 const std::vector<const char*> kNumbers = {
     "0",          "1",         "-1",          "0.5",           "2",           "3",        "10",        "0.25",
@@ -196,6 +198,7 @@ class ScriptWriter {
     if (key == "formula") return "\"" + formula(0) + "\"";
     if (key == "push_from") return "{ \"-x\", \"+y\", " + string_value() + " }";
     if (key == "camera") return table(kCameraKeys, depth);
+    if (key == "uncertainty") return table(kBodyUncertaintyKeys, depth);
     return number();
   }
 
