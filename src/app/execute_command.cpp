@@ -2,7 +2,7 @@
 // replanning from the observed state when it leaves the plan's tolerance (docs/robustness.md).
 
 #include "command.h"
-#include "execution_report.h"
+#include "robustness/execution_report.h"
 #include "output_folder.h"
 #include "physltl/execution/executor.h"
 #include "physltl/planning/perturbation.h"
@@ -12,7 +12,7 @@
 #include "planning_job.h"
 #include "reasoning.h"
 #include "scenario_args.h"
-#include "uncertainty_args.h"
+#include "robustness/uncertainty_args.h"
 
 #include <fmt/format.h>
 

@@ -1,6 +1,6 @@
 #include "plan_files.h"
 
-#include "robustness_report.h"
+#include "robustness/robustness_report.h"
 
 #include "physltl/ltl/formula.h"
 

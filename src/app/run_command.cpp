@@ -8,9 +8,9 @@
 #include "planning_job.h"
 #include "physltl/planning/perturbation.h"
 #include "reasoning.h"
-#include "robustness_report.h"
+#include "robustness/robustness_report.h"
 #include "scenario_args.h"
-#include "uncertainty_args.h"
+#include "robustness/uncertainty_args.h"
 #include "stop_signal.h"
 #include "world_summary.h"
 

@@ -6,7 +6,7 @@
 #include "physltl/planning/perturbation.h"
 #include "physltl/planning/robustness.h"
 #include "physltl/scenario/load.h"
-#include "uncertainty_args.h"
+#include "robustness/uncertainty_args.h"
 
 #include <fmt/format.h>
 
