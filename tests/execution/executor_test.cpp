@@ -32,16 +32,8 @@ execution::Replanned replan(const scenario::World& from_here) {
   return out;
 }
 
-class Executing : public ::testing::Test {
+class Executing : public OrderedPlanPushingBoxes {
  protected:
-  void SetUp() override {
-    result_ = problem_.solve(3);
-    ASSERT_TRUE(result_.solved);
-    nominal_ = problem_.check(result_.plan);
-    ASSERT_TRUE(nominal_.validated()) << nominal_.failure;
-    ASSERT_FALSE(nominal_.moved_bodies.empty());
-  }
-
   execution::Execution run_in(const scenario::World& truth) const {
     execution::SimulatedWorld reality(truth);
     return execution::execute(problem_.world, problem_.original, result_.plan, nominal_, reality, replan, {});
@@ -63,9 +55,6 @@ class Executing : public ::testing::Test {
     if (succeeds) EXPECT_TRUE(again.accepted) << again.failure;
   }
 
-  TestProblem problem_{"ordered.lua"};
-  PlanResult result_;
-  Replay nominal_;
 };
 
 TEST_F(Executing, TheModelItselfNeedsNoReplanningAndRunsThePlanAsPlanned) {

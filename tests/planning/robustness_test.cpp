@@ -81,19 +81,7 @@ TEST(PerturbedWorld, ThatCannotBeValidIsAnErrorNotALoop) {
   EXPECT_THROW(perturbed_world(crowded, u, 1, 0), PerturbationError);
 }
 
-class ARobustPlan : public ::testing::Test {
- protected:
-  void SetUp() override {
-    result_ = problem_.solve(3);
-    ASSERT_TRUE(result_.solved);
-    nominal_ = problem_.check(result_.plan);
-    ASSERT_TRUE(nominal_.validated()) << nominal_.failure;
-    ASSERT_FALSE(nominal_.moved_bodies.empty());
-  }
-  TestProblem problem_{"ordered.lua"};
-  PlanResult result_;
-  Replay nominal_;
-};
+using ARobustPlan = OrderedPlanPushingBoxes;
 
 TEST_F(ARobustPlan, ZeroUncertaintyGivesRobustnessOne) {
   const Robustness r = measure_robustness(problem_.world, {}, 5, 3, result_.plan, nominal_, problem_.original);

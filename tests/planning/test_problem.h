@@ -10,6 +10,8 @@
 #include "physltl/planning/validated_plan.h"
 #include "physltl/scenario/load.h"
 
+#include <gtest/gtest.h>
+
 #include <map>
 #include <string>
 
@@ -50,6 +52,23 @@ struct TestProblem {
     options.planner = planner;
     return plan(world, task, knowledge, decomposition, options);
   }
+};
+
+// ordered.lua's plan of seed 3, validated, that pushes boxes: what the robustness and execution tests run
+// in worlds that are not the model.
+class OrderedPlanPushingBoxes : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    result_ = problem_.solve(3);
+    ASSERT_TRUE(result_.solved);
+    nominal_ = problem_.check(result_.plan);
+    ASSERT_TRUE(nominal_.validated()) << nominal_.failure;
+    ASSERT_FALSE(nominal_.moved_bodies.empty());
+  }
+
+  TestProblem problem_{"ordered.lua"};
+  PlanResult result_;
+  Replay nominal_;
 };
 
 }  // namespace physltl::planning
