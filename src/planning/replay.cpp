@@ -111,10 +111,12 @@ Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomato
       }
       const auto validity = knowledge::check_validity(knowledge, kappa, state, contacts, mode);
       if (!validity.valid()) {
+        std::string why = fmt::format("step {} (control {}): {}", step, c, knowledge::violation_name(validity.violation));
         if (std::find(r.violations.begin(), r.violations.end(), validity.violation) == r.violations.end()) {
           r.violations.push_back(validity.violation);
+          r.violation_messages.push_back(why);
         }
-        fail(r.valid, fmt::format("step {} (control {}): {}", step, c, knowledge::violation_name(validity.violation)));
+        fail(r.valid, std::move(why));
       }
       if (until_first_failure && !r.failure.empty()) return r;
       knowledge::infer(knowledge, state, kappa);

@@ -29,17 +29,20 @@ const char* formula_failure(const Replay& run, const Replay& nominal) {
   return "region_not_reached";
 }
 
-// The first failure in words: the replay's own, with its step, when it is about that failure (the replay
-// may have met one of kappa's rules first, which fails no world).
+// The first failure in words, with the step that broke a rule.
 std::string describe(const std::string& kind, const Replay& run) {
-  const auto about = [&](knowledge::Violation v) { return run.failure.find(knowledge::violation_name(v)) != std::string::npos; };
-  if (kind == "left_workspace" && about(knowledge::Violation::kLeftWorkspace)) return run.failure;
-  if (kind == "touched_fixed_body" && about(knowledge::Violation::kTouchesFixedBody)) return run.failure;
+  const auto first_step = [&](knowledge::Violation v) {
+    const auto it = std::find(run.violations.begin(), run.violations.end(), v);
+    return it == run.violations.end() ? std::string() : run.violation_messages[static_cast<size_t>(it - run.violations.begin())];
+  };
+  if (kind == "left_workspace") return first_step(knowledge::Violation::kLeftWorkspace);
+  if (kind == "touched_fixed_body") return first_step(knowledge::Violation::kTouchesFixedBody);
   if (kind == "push_missed") return "a body the plan moves did not move";
   if (kind == "box_elsewhere") return "a body the plan moves ended more than 0.1 m from where the plan leaves it";
   if (kind == "region_not_reached") return "the trace does not satisfy the formula";
   if (kind == "not_at_rest") return "the run does not end with the robot and the boxes at rest";
-  return kind == "beyond_limits" ? "the robot broke a declared limit" : kind;
+  const std::string limits = first_step(knowledge::Violation::kExceedsRobotLimits);
+  return limits.empty() ? "the robot broke a declared limit (speed, turn rate or force)" : limits;
 }
 
 }  // namespace
@@ -58,7 +61,13 @@ WorldRun judge_in_world(const scenario::World& world, const Plan& plan, const Re
   if (!run.within_limits || saw(run, knowledge::Violation::kExceedsRobotLimits)) add("beyond_limits");
   if (!run.ends_at_rest) add("not_at_rest");
   result.succeeded = result.failures.empty();
-  if (!result.succeeded) result.first_failure = describe(result.failures.front(), run);
+  // In words, the cause before its consequence: a rule broken at a step before the formula that failed.
+  for (const char* kind : {"touched_fixed_body", "left_workspace", "beyond_limits", "push_missed", "box_elsewhere",
+                           "region_not_reached", "not_at_rest"}) {
+    if (result.first_failure.empty() && std::find(result.failures.begin(), result.failures.end(), kind) != result.failures.end()) {
+      result.first_failure = describe(kind, run);
+    }
+  }
   if (saw(run, knowledge::Violation::kTouchesImmovableBody)) add("touched_immovable_body");
   if (saw(run, knowledge::Violation::kPushesFromForbiddenSide)) add("forbidden_push_side");
   return result;

@@ -100,6 +100,7 @@ TEST_F(ARobustPlan, FailsOpenLoopWhenItsFirstPushedBoxIsThreeTimesHeavierThanMod
   const WorldRun run = judge_in_world(truth, result_.plan, &nominal_, problem_.original);
   EXPECT_FALSE(run.succeeded);
   ASSERT_FALSE(run.failures.empty());
+  EXPECT_FALSE(run.first_failure.empty());
 }
 
 TEST_F(ARobustPlan, IsDeterministicForASeedAndCountsEveryFailedWorld) {

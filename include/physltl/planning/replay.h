@@ -30,6 +30,7 @@ struct Replay {
   // Each rule some step broke, once, in the order first broken (a step reports the first rule it breaks,
   // in check_validity's order: limits, workspace, fixed bodies, then kappa's).
   std::vector<knowledge::Violation> violations;
+  std::vector<std::string> violation_messages;  // for each of them, the first step that broke it, in words
   // The trace of letters (the robot's region and the facts BODY@REGION) satisfies the formula as written,
   // by direct LTL semantics on the trace followed by its last letter forever (ltl::holds_when_staying); a
   // co-safe task's trace must also be a good prefix.

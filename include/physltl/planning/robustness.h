@@ -31,7 +31,7 @@ inline constexpr const char* kFailureKinds[] = {
 struct WorldRun {
   bool succeeded = false;
   std::vector<std::string> failures;  // kinds, in kFailureKinds' order
-  std::string first_failure;          // the replay's own words for the first check that failed, for people
+  std::string first_failure;          // for people: the rule broken (with its step) or else how the task failed
 };
 
 // One perturbed world's run of `plan`, against `nominal`, the plan's replay in the model, which tells a
