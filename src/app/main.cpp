@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
       "Plans (and with --render draws) the task of a scenario file; outputs go to <out>/<scenario>/.",
       add_run_command);
   std::string footer = "\nCommands (each has --help):\n";
-  for (const auto& [name, command] : subcommands) footer += fmt::format("  {:<7}{}\n", name, command.app->get_description());
+  for (const auto& [name, command] : subcommands) footer += fmt::format("  {:<9}{}\n", name, command.app->get_description());
   footer += "\nExit codes: 0 ok, 1 no plan found (or task infeasible), 2 bad input or usage.";
   main_job.app->footer(footer);
   main_job.app->set_version_flag("--version", build_version());
