@@ -129,26 +129,20 @@ int execute(const ExecuteArgs& args) {
                   plan.total_steps() * world.planner.step_size, planning::planner_name(planner), world.planner.seed));
 
   ExecutionReport report{world, planner, args.replans, args.tolerance, args.budget, plan.total_steps() * world.planner.step_size, {}};
-  const execution::ExecutionOptions options{.tolerance_m = args.tolerance, .max_replans = args.replans};
+  const execution::Executor executor(world, prepared.as_written(), plan, nominal,
+                                     {.tolerance_m = args.tolerance, .max_replans = args.replans});
   for (int i = 0; i < args.worlds; ++i) {
-    scenario::World truth;
-    try {
-      truth = planning::perturbed_world(world, world.uncertainty, world.planner.seed, i);
-    } catch (const planning::PerturbationError& e) {
-      throw BadInput(std::string("execute: ") + e.what());
-    }
+    const scenario::World truth = planning::perturbed_world(world, world.uncertainty, world.planner.seed, i);
     const planning::WorldRun open_loop = planning::judge_in_world(truth, plan, &nominal, prepared.as_written());
     execution::SimulatedWorld reality(truth);
     int attempt = 0;
-    const execution::Execution run = execution::execute(
-        world, prepared.as_written(), plan, nominal, reality,
-        [&](const scenario::World& from_here) {
+    const execution::Execution run = executor.run(
+        reality, [&](const scenario::World& from_here) {
           // Every world and replanning its own seed, the same on every run.
           const std::uint64_t seed = world.planner.seed + 1'000'003ull * static_cast<std::uint64_t>(i + 1) +
                                      static_cast<std::uint64_t>(attempt++);
           return replan(from_here, planner, seed, args.budget);
-        },
-        options);
+        });
     const planning::WorldRun judged =
         planning::judge_in_world(truth, planning::Plan{run.controls, {}}, nullptr, prepared.as_written());
     report.worlds.push_back({i, open_loop, judged, run});

@@ -1,5 +1,6 @@
 #include "build_version.h"
 #include "command.h"
+#include "physltl/planning/perturbation.h"
 #include "physltl/scenario/diagnostic.h"
 
 #include <fmt/format.h>
@@ -36,6 +37,9 @@ int parse_and_run(Command& command, int argc, char** argv) {
   } catch (const physltl::scenario::ScenarioError& e) {
     for (const auto& d : e.diagnostics()) std::cerr << d.str() << "\n";
   } catch (const BadInput& e) {
+    std::cerr << "physltl-studio: " << e.what() << "\n";
+  } catch (const physltl::planning::PerturbationError& e) {
+    // An uncertainty too wide for the world (--robustness, execute): the user's to narrow.
     std::cerr << "physltl-studio: " << e.what() << "\n";
   } catch (const std::filesystem::filesystem_error& e) {
     // An --out folder that cannot be made or written (a file in the way, no permission, a full disk).

@@ -6,7 +6,6 @@
 #include "plan_files.h"
 #include "plan_pictures.h"
 #include "planning_job.h"
-#include "physltl/planning/perturbation.h"
 #include "reasoning.h"
 #include "robustness/robustness_report.h"
 #include "scenario_args.h"
@@ -146,12 +145,8 @@ int run(const RunArgs& args) {
 
   std::optional<planning::Robustness> robustness;
   if (args.robustness > 0) {
-    try {
-      robustness = planning::measure_robustness(world, world.uncertainty, args.robustness, world.planner.seed,
-                                                result.plan, replay, prepared.as_written());
-    } catch (const planning::PerturbationError& e) {
-      throw BadInput(std::string("--robustness: ") + e.what());
-    }
+    robustness = planning::measure_robustness(world, world.uncertainty, args.robustness, world.planner.seed,
+                                              result.plan, replay, prepared.as_written());
     say("robustness " + robustness_line(*robustness, world.uncertainty));
   }
   const RunSummary summary{world, reasoning, prepared.as_written(), planner, result, &replay,

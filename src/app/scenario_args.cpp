@@ -1,6 +1,7 @@
 #include "scenario_args.h"
 
 #include "command.h"
+#include "scenario_settings.h"
 
 namespace physltl::app {
 
@@ -9,14 +10,6 @@ void ScenarioArgs::add_to(CLI::App& app) {
   app.add_option("--set", settings, "Pass key=value to the script's `params` table (repeatable)")->allow_extra_args(false);
 }
 
-scenario::World ScenarioArgs::load() const {
-  scenario::LoadOptions options;
-  for (const auto& setting : settings) {
-    const auto eq = setting.find('=');
-    if (eq == std::string::npos || eq == 0) throw BadInput("--set expects key=value, got '" + setting + "'");
-    options.params[setting.substr(0, eq)] = setting.substr(eq + 1);
-  }
-  return scenario::load_scenario(path, options);
-}
+scenario::World ScenarioArgs::load() const { return load_with_settings(path, settings); }
 
 }  // namespace physltl::app

@@ -114,9 +114,8 @@ bool deviates(const scenario::EnvironmentState& observed, const planning::Replay
 }
 
 // Runs `plan` from where the world is; monitored, it stops at the first deviation. True when it deviated.
-bool follow(Run& run, const scenario::World& model, const planning::Plan& plan, const planning::Replay& nominal,
+bool follow(Run& run, const planning::Plan& plan, const planning::Replay& nominal, const std::vector<double>& clearance,
             bool monitored, double tolerance) {
-  const std::vector<double> clearance = monitored ? planned_clearance(model, nominal) : std::vector<double>{};
   size_t t = 0;
   for (const auto& control : plan.controls) {
     for (int s = 0; s < control.steps; ++s) {
@@ -140,16 +139,27 @@ scenario::World world_from_state(const scenario::World& model, const scenario::E
   return world;
 }
 
-Execution execute(const scenario::World& model, const planning::TaskAutomaton& formula, const planning::Plan& plan,
-                  const planning::Replay& nominal, ExecutionWorld& world, const Replanner& replanner,
-                  const ExecutionOptions& options) {
-  Run run(model, formula, world);
-  const planning::Plan* current = &plan;
-  const planning::Replay* current_nominal = &nominal;
+Executor::Executor(const scenario::World& model, const planning::TaskAutomaton& formula, const planning::Plan& plan,
+                   const planning::Replay& nominal, const ExecutionOptions& options)
+    : model_(model),
+      formula_(formula),
+      plan_(plan),
+      nominal_(nominal),
+      clearance_(planned_clearance(model, nominal)),
+      options_(options) {}
+
+Execution Executor::run(ExecutionWorld& world, const Replanner& replanner) const {
+  const ExecutionOptions& options = options_;
+  const scenario::World& model = model_;
+  Run run(model, formula_, world);
+  const planning::Plan* current = &plan_;
+  const planning::Replay* current_nominal = &nominal_;
+  const std::vector<double>* clearance = &clearance_;
   Replanned latest;  // owns the plan being followed once replanned
+  std::vector<double> latest_clearance;
   while (true) {
     const bool monitored = run.result().replans < options.max_replans;
-    const bool deviated = follow(run, model, *current, *current_nominal, monitored, options.tolerance_m);
+    const bool deviated = follow(run, *current, *current_nominal, *clearance, monitored, options.tolerance_m);
     if (!deviated && run.task_done()) break;
     if (!monitored) break;  // out of replans: the plan ran to its end open loop
     if (!run.brake(options.max_braking_steps)) {
@@ -174,6 +184,8 @@ Execution execute(const scenario::World& model, const planning::TaskAutomaton& f
     }
     current = &*latest.plan;
     current_nominal = &*latest.nominal;
+    latest_clearance = planned_clearance(model, *current_nominal);
+    clearance = &latest_clearance;
   }
   return std::move(run.result());
 }

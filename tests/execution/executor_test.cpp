@@ -36,7 +36,7 @@ class Executing : public OrderedPlanPushingBoxes {
  protected:
   execution::Execution run_in(const scenario::World& truth) const {
     execution::SimulatedWorld reality(truth);
-    return execution::execute(problem_.world, problem_.original, result_.plan, nominal_, reality, replan, {});
+    return execution::Executor(problem_.world, problem_.original, result_.plan, nominal_, {}).run(reality, replan);
   }
 
   // The executed controls replayed from the truth's start: the same run, bit for bit, judged as robustness is.

@@ -46,11 +46,23 @@ struct Execution {
   std::vector<scenario::EnvironmentState> states;  // the observed state after each step, the initial one first
 };
 
-// Runs `plan` (validated in `model`, whose replay is `nominal`) in `world`, which starts in the truth's
-// initial state. `formula` is the task as written.
-Execution execute(const scenario::World& model, const planning::TaskAutomaton& formula, const planning::Plan& plan,
-                  const planning::Replay& nominal, ExecutionWorld& world, const Replanner& replanner,
-                  const ExecutionOptions& options);
+// Runs `plan` (validated in `model`, whose replay is `nominal`; `formula` is the task as written) in any
+// number of worlds; what monitoring it needs of the plan is computed once, here. All must outlive it.
+class Executor {
+ public:
+  Executor(const scenario::World& model, const planning::TaskAutomaton& formula, const planning::Plan& plan,
+           const planning::Replay& nominal, const ExecutionOptions& options);
+  // One execution in `world`, which starts in the truth's initial state.
+  Execution run(ExecutionWorld& world, const Replanner& replanner) const;
+
+ private:
+  const scenario::World& model_;
+  const planning::TaskAutomaton& formula_;
+  const planning::Plan& plan_;
+  const planning::Replay& nominal_;
+  std::vector<double> clearance_;  // the robot's from the fixed bodies at each step of `nominal`
+  ExecutionOptions options_;
+};
 
 // The model world as it stands in `state`: the robot's start and every movable body where `state` has
 // them, and `formula` as its task.

@@ -3,10 +3,9 @@
 #include "bad_input.h"
 #include "physltl/planning/improve.h"
 #include "physltl/planning/path_lower_bound.h"
-#include "physltl/planning/perturbation.h"
 #include "physltl/planning/robustness.h"
-#include "physltl/scenario/load.h"
 #include "robustness/uncertainty_args.h"
+#include "scenario_settings.h"
 
 #include <fmt/format.h>
 
@@ -33,11 +32,7 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   c->swept_value = value;
   std::vector<std::string> settings_of_case = entry.settings;
   if (entry.sweep) settings_of_case.push_back(entry.sweep->key + "=" + value);
-  scenario::LoadOptions options;
-  for (const auto& setting : settings_of_case) {  // each key=value, checked by parse_scenario_entry
-    options.params[setting.substr(0, setting.find('='))] = setting.substr(setting.find('=') + 1);
-  }
-  c->world = scenario::load_scenario(entry.path, options);
+  c->world = load_with_settings(entry.path, settings_of_case);
   if (settings.time_limit) c->world.planner.time_limit = *settings.time_limit;
   if (settings.uncertainty) c->world.uncertainty = override_uncertainty(c->world.uncertainty, *settings.uncertainty);
   c->reasoning.emplace(reason_about(c->world));
@@ -98,11 +93,7 @@ std::vector<std::unique_ptr<BenchCase>> load_cases(const std::vector<ScenarioEnt
 
 std::vector<CaseUnits> case_units(const std::vector<std::unique_ptr<BenchCase>>& cases) {
   std::vector<CaseUnits> units;
-  for (const auto& c : cases) {
-    CaseUnits u{folder_name(c->results.scenario, c->results.settings), c->results.first_seed, {}};
-    for (const auto& planner : c->results.planners) u.planners.push_back({planner.planner, planner.threads});
-    units.push_back(std::move(u));
-  }
+  for (const auto& c : cases) units.push_back(case_units_of(c->results));
   return units;
 }
 
@@ -148,15 +139,11 @@ BenchRun measure(const PreparedRun& prepared, const SolveOptions& options, int r
     run.first_duration_s = solution.improvement ? solution.improvement->first.duration_s : run.solution_duration_s;
     if (robustness_worlds > 0) {
       const scenario::World& world = prepared.world();
-      try {
-        const planning::Robustness robustness = planning::measure_robustness(
-            world, world.uncertainty, robustness_worlds, options.seed, result.plan, *solution.replay, prepared.as_written());
-        run.robust_worlds = robustness.worlds;
-        run.robust_succeeded = robustness.succeeded;
-        run.robust_failures = robustness.failures;
-      } catch (const planning::PerturbationError& e) {
-        throw BadInput(world.source_file + ": --robustness: " + e.what());
-      }
+      const planning::Robustness robustness = planning::measure_robustness(
+          world, world.uncertainty, robustness_worlds, options.seed, result.plan, *solution.replay, prepared.as_written());
+      run.robust_worlds = robustness.worlds;
+      run.robust_succeeded = robustness.succeeded;
+      run.robust_failures = robustness.failures;
     }
   }
   run.cell_skips_refused = result.stats.cell_skips_refused;

@@ -80,6 +80,12 @@ ScenarioEntry parse_scenario_entry(const std::string& text, const std::vector<st
   return entry;
 }
 
+CaseUnits case_units_of(const BenchResults& results) {
+  CaseUnits units{folder_name(results.scenario, results.settings), results.first_seed, {}};
+  for (const auto& planner : results.planners) units.planners.push_back({planner.planner, planner.threads});
+  return units;
+}
+
 std::vector<Unit> campaign_units(const std::vector<CaseUnits>& cases, int runs) {
   std::vector<Unit> units;
   for (int i = 0; i < runs; ++i) {

@@ -41,6 +41,9 @@ struct CaseUnits {
   std::vector<PlannerConfig> planners;
 };
 
+// A case's folder, first seed and planners, as its results describe them.
+CaseUnits case_units_of(const BenchResults& results);
+
 struct Unit {
   size_t case_index = 0;
   size_t planner_index = 0;  // into the case's planners

@@ -90,11 +90,7 @@ CampaignResults skeleton(const nlohmann::json& campaign, const nlohmann::json& f
 
 std::vector<CaseUnits> case_units(const CampaignResults& results) {
   std::vector<CaseUnits> cases;
-  for (const auto& c : results.cases) {
-    CaseUnits units{folder_name(c.results.scenario, c.results.settings), c.results.first_seed, {}};
-    for (const auto& p : c.results.planners) units.planners.push_back({p.planner, p.threads});
-    cases.push_back(std::move(units));
-  }
+  for (const auto& c : results.cases) cases.push_back(case_units_of(c.results));
   return cases;
 }
 
@@ -135,46 +131,15 @@ void check_shard_set(const std::vector<Shard>& shards) {
   if (!problems.empty()) throw BadInput("bench merge refuses: " + fmt::format("{}", fmt::join(problems, "; ")));
 }
 
-}  // namespace
-
-MergedCampaign merge_shards(const std::vector<fs::path>& dirs) {
-  std::vector<Shard> shards;
-  for (const auto& folder : shard_folders(dirs)) {
-    Shard shard{folder, read_manifest(folder), 0, {}};
-    try {
-      shard.index = shard.manifest.at("shard").at("index").get<int>();
-    } catch (const nlohmann::json::exception& e) {
-      throw BadInput((folder / "manifest.json").string() + ": not a shard manifest (" + e.what() + ")");
-    }
-    shard.records = read_unit_records(folder);
-    shards.push_back(std::move(shard));
-  }
-  check_shard_set(shards);
-  std::sort(shards.begin(), shards.end(), [](const Shard& a, const Shard& b) { return a.index < b.index; });
-
-  const nlohmann::json& campaign = shards.front().manifest.at("campaign");
-  MergedCampaign merged;
-  try {
-    merged.name = campaign.at("name").get<std::string>();
-    merged.results = skeleton(campaign, shards.front().manifest.at("shard"));
-  } catch (const nlohmann::json::exception& e) {
-    throw BadInput((shards.front().folder / "manifest.json").string() + ": not a shard manifest (" + e.what() + ")");
-  }
-  merged.folder = shards.front().folder.parent_path();
-  const std::vector<CaseUnits> cases = case_units(merged.results);
-  const std::vector<Unit> units = campaign_units(cases, merged.results.cases.empty() ? 0 : merged.results.cases.front().results.runs);
-  std::vector<std::string> keys;
-  for (const auto& unit : units) keys.push_back(unit.key);
-  if (campaign.at("units").get<std::vector<std::string>>() != keys) {
-    throw BadInput("bench merge refuses: the manifests' unit list is not the one their campaign makes (another version?)");
-  }
-
-  // Every unit exactly once: in the shard that was dealt it, with its result.
+// The unit results of the shards, by canonical index: each from the shard that was dealt the unit, or
+// BadInput naming the misplaced and the missing ones.
+std::vector<const UnitRecord*> unit_results(const std::vector<Shard>& shards, const std::vector<Unit>& units,
+                                            const std::vector<CaseUnits>& cases, const std::string& campaign,
+                                            int count) {
   std::vector<std::string> missing, misplaced;
   std::vector<const UnitRecord*> found(units.size(), nullptr);
-  const int count = campaign.at("shards").get<int>();
   for (const auto& shard : shards) {
-    const std::vector<size_t> expected = shard_units(units, cases, merged.name, {shard.index, count});
+    const std::vector<size_t> expected = shard_units(units, cases, campaign, {shard.index, count});
     if (shard.manifest.at("shard").at("units").get<std::vector<size_t>>() != expected) {
       misplaced.push_back(fmt::format("{} lists other units than shard {} of {} holds", shard.folder.string(), shard.index, count));
     }
@@ -197,6 +162,26 @@ MergedCampaign merge_shards(const std::vector<fs::path>& dirs) {
     throw BadInput(fmt::format("bench merge refuses: {} of {} units have no result (run their shards again with "
                                "--resume): {}", missing.size(), units.size(), some(missing)));
   }
+  return found;
+}
+
+MergedCampaign merge_checked(std::vector<Shard> shards) {
+  check_shard_set(shards);
+  std::sort(shards.begin(), shards.end(), [](const Shard& a, const Shard& b) { return a.index < b.index; });
+  const nlohmann::json& campaign = shards.front().manifest.at("campaign");
+  MergedCampaign merged;
+  merged.name = campaign.at("name").get<std::string>();
+  merged.results = skeleton(campaign, shards.front().manifest.at("shard"));
+  merged.folder = shards.front().folder.parent_path();
+  const std::vector<CaseUnits> cases = case_units(merged.results);
+  const std::vector<Unit> units = campaign_units(cases, campaign.at("settings").at("runs").get<int>());
+  std::vector<std::string> keys;
+  for (const auto& unit : units) keys.push_back(unit.key);
+  if (campaign.at("units").get<std::vector<std::string>>() != keys) {
+    throw BadInput("bench merge refuses: the manifests' unit list is not the one their campaign makes (another version?)");
+  }
+  const std::vector<const UnitRecord*> found =
+      unit_results(shards, units, cases, merged.name, campaign.at("shards").get<int>());
 
   std::set<std::string> hosts;
   for (const auto& shard : shards) hosts.insert(shard.manifest.at("shard").at("host").get<std::string>());
@@ -215,6 +200,27 @@ MergedCampaign merge_shards(const std::vector<fs::path>& dirs) {
     }
   }
   return merged;
+}
+
+}  // namespace
+
+MergedCampaign merge_shards(const std::vector<fs::path>& dirs) {
+  std::vector<Shard> shards;
+  for (const auto& folder : shard_folders(dirs)) {
+    Shard shard{folder, read_manifest(folder), 0, read_unit_records(folder)};
+    try {
+      shard.index = shard.manifest.at("shard").at("index").get<int>();
+    } catch (const nlohmann::json::exception& e) {
+      throw BadInput((folder / "manifest.json").string() + ": not a shard manifest (" + e.what() + ")");
+    }
+    shards.push_back(std::move(shard));
+  }
+  try {
+    return merge_checked(std::move(shards));
+  } catch (const nlohmann::json::exception& e) {
+    // A manifest that parses but lacks what this version writes: made by hand, or by another version.
+    throw BadInput(std::string("bench merge refuses: a shard manifest is not one this version writes (") + e.what() + ")");
+  }
 }
 
 }  // namespace physltl::app

@@ -32,10 +32,15 @@ void write_durably(const fs::path& file, const std::string& text) {
   fs::rename(temp, file);
 }
 
-// The parts of a manifest that say what the results are, not what this shard measured along the way.
+// The parts of a manifest that say what the results are, not what this shard measured along the way;
+// null for a manifest without them (made by hand or by another version), which then differs from any.
 nlohmann::json identity(const nlohmann::json& manifest) {
-  return {{"campaign", manifest.at("campaign")},
-          {"shard", {{"index", manifest.at("shard").at("index")}, {"units", manifest.at("shard").at("units")}}}};
+  try {
+    return {{"campaign", manifest.at("campaign")},
+            {"shard", {{"index", manifest.at("shard").at("index")}, {"units", manifest.at("shard").at("units")}}}};
+  } catch (const nlohmann::json::exception&) {
+    return nullptr;
+  }
 }
 
 }  // namespace

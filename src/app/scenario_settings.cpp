@@ -1,0 +1,18 @@
+#include "scenario_settings.h"
+
+#include "bad_input.h"
+#include "physltl/scenario/load.h"
+
+namespace physltl::app {
+
+scenario::World load_with_settings(const std::string& path, const std::vector<std::string>& settings) {
+  scenario::LoadOptions options;
+  for (const auto& setting : settings) {
+    const auto eq = setting.find('=');
+    if (eq == std::string::npos || eq == 0) throw BadInput("--set expects key=value, got '" + setting + "'");
+    options.params[setting.substr(0, eq)] = setting.substr(eq + 1);
+  }
+  return scenario::load_scenario(path, options);
+}
+
+}  // namespace physltl::app
