@@ -3,6 +3,7 @@
 
 #include "command.h"
 #include "robustness/execution_report.h"
+#include "failed_search.h"
 #include "output_folder.h"
 #include "physltl/execution/executor.h"
 #include "physltl/planning/perturbation.h"
@@ -120,7 +121,7 @@ int execute(const ExecuteArgs& args) {
                                                             .time_limit = world.planner.time_limit,
                                                             .threads = 1});
   if (!solution.solved()) {
-    std::cerr << fmt::format("physltl-studio: no plan found ({}); nothing written\n", solution.result.stop_reason);
+    std::cerr << "physltl-studio: " << no_plan_line(solution.result) << "; nothing written\n";
     return kExitNoPlan;
   }
   const planning::Plan& plan = solution.result.plan;

@@ -4,6 +4,9 @@
 
 #include "physltl/ltl/formula.h"
 
+#include <fstream>
+#include <stdexcept>
+
 namespace physltl::app {
 namespace {
 
@@ -12,6 +15,21 @@ using json = nlohmann::ordered_json;
 json point(const scenario::Vec2& p) { return {p.x(), p.y()}; }
 
 }  // namespace
+
+void write_json(const std::filesystem::path& file, const json& j) {
+  std::ofstream out(file);
+  out << j.dump(2) << "\n";
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+json refusals_json(const planning::Refusals& refused) {
+  json counts = json::object();
+  for (int k = 0; k < planning::kRefusalKinds; ++k) {
+    const auto rule = static_cast<planning::Refusal>(k);
+    counts[planning::refusal_name(rule)] = refused[rule];
+  }
+  return counts;
+}
 
 json report_json(const RunSummary& run) {
   const auto& r = run.result;
@@ -41,6 +59,7 @@ json report_json(const RunSummary& run) {
       {"propagations", r.stats.propagations},
       {"physics_steps", r.stats.physics_steps},
       {"invalid_steps", r.stats.invalid_steps},
+      {"refused", refusals_json(r.stats.refused)},
   };
   if (run.replay != nullptr) {
     report["validation"] = {

@@ -3,6 +3,7 @@
 #include "output_folder.h"
 #include "physltl/ltl/formula.h"
 #include "physltl/render/video.h"
+#include "failed_search.h"
 #include "plan_files.h"
 #include "plan_pictures.h"
 #include "planning_job.h"
@@ -48,12 +49,6 @@ struct RunArgs {
   int robustness = 0;                      // perturbed worlds to replay the plan in (docs/robustness.md)
   std::optional<std::string> uncertainty;  // overrides the scenario's uncertainty { ... }
 };
-
-void write_json(const std::filesystem::path& file, const nlohmann::ordered_json& j) {
-  std::ofstream out(file);
-  out << j.dump(2) << "\n";
-  if (!out) throw std::runtime_error("cannot write " + file.string());
-}
 
 // Progress goes to stderr only when a person watches it.
 class ProgressLine {
@@ -124,7 +119,12 @@ int run(const RunArgs& args) {
     return kExitInterrupted;
   }
   if (!result.solved) {
-    std::cerr << fmt::format("physltl-studio: no plan found ({}); nothing written\n", result.stop_reason);
+    if (search_was_cut_short(result)) {
+      const RunSummary summary{world, reasoning, prepared.as_written(), planner, result, nullptr};
+      write_failed_search(summary, prepared.decomposition(), out.final_path() / "failed", args.render);
+      say("outputs    " + (out.final_path() / "failed").string() + "/");
+    }
+    std::cerr << "physltl-studio: " << no_plan_line(result) << "\n";
     return kExitNoPlan;
   }
 

@@ -90,9 +90,11 @@ Validity check_validity(const AbstractKnowledge& knowledge, const Kappa& kappa, 
   return check(knowledge, kappa, state, contacts, mode, AllBodies{state.movable_poses.size()});
 }
 
-bool is_valid_after_step(const AbstractKnowledge& knowledge, const Kappa& kappa, const scenario::EnvironmentState& state,
-                         std::span<const scenario::RobotContact> contacts, ValidityMode mode, std::span<const int> moved) {
-  return check(knowledge, kappa, state, contacts, mode, moved).valid();
+Validity check_validity_after_step(const AbstractKnowledge& knowledge, const Kappa& kappa,
+                                   const scenario::EnvironmentState& state,
+                                   std::span<const scenario::RobotContact> contacts, ValidityMode mode,
+                                   std::span<const int> moved) {
+  return check(knowledge, kappa, state, contacts, mode, moved);
 }
 
 bool within_robot_limits(const RobotCapabilities& robot, const scenario::EnvironmentState& state) {

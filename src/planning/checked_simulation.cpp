@@ -18,15 +18,17 @@ void CheckedSimulation::restore(const physics::PhysicsState& state) {
   }
 }
 
-bool CheckedSimulation::step(const scenario::Vec2& setpoint) {
+knowledge::Violation CheckedSimulation::step(const scenario::Vec2& setpoint) {
   simulation_.step(setpoint, contacts_);
   // Only the robot and the bodies the step integrated changed: read, test and infer for those.
   simulation_.update_environment(environment_);
   const std::span<const int> movers = simulation_.last_step_movers();
   // VALIDITYCHECKER(E_new, kappa_j), then kappa_{j+1} = INFERENCE(E_new, kappa_j).
-  if (!knowledge::is_valid_after_step(knowledge_, kappa_, environment_, contacts_, mode_, movers)) return false;
+  const knowledge::Violation violation =
+      knowledge::check_validity_after_step(knowledge_, kappa_, environment_, contacts_, mode_, movers).violation;
+  if (violation != knowledge::Violation::kNone) return violation;
   if (mode_ == knowledge::ValidityMode::kKnowledge) knowledge::reinfer(knowledge_, environment_, kappa_poses_, kappa_, movers);
-  return true;
+  return violation;
 }
 
 }  // namespace physltl::planning

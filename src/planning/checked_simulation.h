@@ -20,9 +20,9 @@ class CheckedSimulation {
 
   // Puts the world in `state` and kappa in step with it.
   void restore(const physics::PhysicsState& state);
-  // One physics step with the drive tracking `setpoint`; false when the step was invalid (the world then
-  // stands in the invalid state).
-  bool step(const scenario::Vec2& setpoint);
+  // One physics step with the drive tracking `setpoint`; the rule it broke, kNone for a valid step (after
+  // an invalid one the world stands in the invalid state).
+  knowledge::Violation step(const scenario::Vec2& setpoint);
   void save(physics::PhysicsState& out) const { simulation_.save(out); }
 
   const scenario::EnvironmentState& environment() const { return environment_; }

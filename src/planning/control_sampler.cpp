@@ -76,6 +76,13 @@ bool ControlSampler::push_towards(const scenario::EnvironmentState& state, const
   return candidates > 0;
 }
 
+Control ControlSampler::sample_uniform(Random& random) const {
+  Control control;
+  control.steps = random.uniform_int(world_.planner.min_steps, world_.planner.max_steps);
+  control.setpoint = uniform_setpoint(random);
+  return control;
+}
+
 Control ControlSampler::sample(const scenario::EnvironmentState& state, const knowledge::Kappa& kappa,
                                const Vec2& target, bool may_push, Random& random) const {
   Control control;

@@ -20,6 +20,8 @@ class ControlSampler {
   // where the task needs no push (the lead goes round the bodies), so the knowledge sampler only steers.
   Control sample(const scenario::EnvironmentState& state, const knowledge::Kappa& kappa, const Vec2& target,
                  bool may_push, Random& random) const;
+  // A control as the baseline samples it: a uniform set-point for a uniform number of steps.
+  Control sample_uniform(Random& random) const;
 
  private:
   Vec2 uniform_setpoint(Random& random) const;

@@ -243,7 +243,7 @@ class PhysicsPropagator : public oc::StatePropagator {
     bool beyond_graph = false;
     int triangle = decomposition_.locate({in[0], in[1]});
     for (int s = 0; s < steps && valid && !beyond_graph; ++s) {
-      valid = simulation_.step(setpoint);
+      valid = simulation_.step(setpoint) == knowledge::Violation::kNone;
       ++counts_.steps;
       const int next = decomposition_.locate(simulation_.environment().robot_position);
       const auto& neighbours = neighbours_[static_cast<std::size_t>(triangle)];

@@ -51,9 +51,10 @@ double shortest_accepted_route(const scenario::World& world, const TaskAutomaton
 
 }  // namespace
 
-geometry::FreeSpace robot_free_space(const scenario::World& world, RobotObstacles obstacles) {
-  const double r = world.robot.radius;
-  std::vector<geometry::Polygon> grown;
+geometry::FreeSpace robot_free_space(const scenario::World& world, RobotObstacles obstacles, double clearance,
+                                     const std::vector<geometry::Polygon>& avoided) {
+  const double r = world.robot.radius + clearance / 2.0;
+  std::vector<geometry::Polygon> grown = avoided;
   const auto add = [&](const geometry::Footprint& f) {
     for (geometry::Polygon& part : geometry::grown_from_inside(f.shape, f.pose, r)) grown.push_back(std::move(part));
   };

@@ -2,6 +2,7 @@
 
 #include "stage_graph.h"
 
+#include "physltl/geometry/convex_partition.h"
 #include "physltl/planning/path_lower_bound.h"
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <deque>
 #include <functional>
 #include <limits>
+#include <map>
 #include <queue>
 #include <set>
 #include <utility>
@@ -101,6 +103,51 @@ std::vector<int> place_triangles(const scenario::World& world, const decompositi
   return triangles;
 }
 
+// Per stage, the regions the robot may not enter there: entering one loses the task (the hazard under
+// `G !hazard`, or before the goal in `!hazard U goal`).
+std::vector<std::vector<int>> forbidden_regions(const TaskAutomaton& task, const StageGraph& stages) {
+  std::vector<std::vector<int>> forbidden(static_cast<size_t>(stages.stages()));
+  for (int s = 0; s < stages.stages(); ++s) {
+    for (int region = 0; region < task.labelling.regions(); ++region) {
+      if (stages.distance(stages.after_robot(s, region)) < 0) forbidden[static_cast<size_t>(s)].push_back(region);
+    }
+  }
+  return forbidden;
+}
+
+// Shortest ways between the places, through the bodies and round them, for the robot's centre kept out of
+// some regions. A push-free way needs kMinFreeWidth of room.
+struct PlaceWays {
+  std::vector<std::vector<double>> through, push_free;
+};
+
+PlaceWays place_ways(const scenario::World& world, const std::vector<int>& avoided_regions) {
+  std::vector<geometry::Polygon> avoided;
+  for (int region : avoided_regions) {
+    for (geometry::Polygon& part : geometry::convex_partition(world.regions[static_cast<size_t>(region)].polygon)) {
+      avoided.push_back(std::move(part));
+    }
+  }
+  return {place_distances(world, robot_free_space(world, RobotObstacles::kFixedBodies, 0.0, avoided)),
+          place_distances(world, robot_free_space(world, RobotObstacles::kAllBodies, kMinFreeWidth, avoided))};
+}
+
+// Whether stage `s` goes round: from every place it is entered at, a push-free way to a region that brings
+// the task closer is at most (1 + kDetourFactor) times the way through plus kDetourAllowance.
+bool stage_goes_round(const std::set<int>& entries, const std::vector<int>& targets, const PlaceWays& ways) {
+  bool goes_round = true;
+  for (int from : entries) {
+    double best_through = kInfinity, best_round = kInfinity;
+    for (int target : targets) {
+      best_through = std::min(best_through, ways.through[static_cast<size_t>(from)][static_cast<size_t>(target)]);
+      best_round = std::min(best_round, ways.push_free[static_cast<size_t>(from)][static_cast<size_t>(target)]);
+    }
+    if (!std::isfinite(best_through)) continue;  // nothing gets there from here: no say
+    goes_round = goes_round && best_round <= (1.0 + kDetourFactor) * best_through + kDetourAllowance;
+  }
+  return goes_round;
+}
+
 }  // namespace
 
 RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& task,
@@ -110,12 +157,10 @@ RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& tas
   RouteChoice choice{std::vector<bool>(static_cast<size_t>(count), false), {}};
   const std::vector<bool> under = triangles_under_bodies(world, task, decomposition);
   if (std::none_of(under.begin(), under.end(), [](bool u) { return u; })) return choice;
-  std::vector<bool> clear(under.size());
-  for (size_t t = 0; t < under.size(); ++t) clear[t] = !under[t];
 
-  // Shortest ways between the places: through the bodies, and round them (geometry::FreeSpace, exact).
-  const auto through = place_distances(world, robot_free_space(world, RobotObstacles::kFixedBodies));
-  const auto push_free = place_distances(world, robot_free_space(world, RobotObstacles::kAllBodies));
+  // The ways for each set of forbidden regions the stages have (geometry::FreeSpace, exact).
+  const std::vector<std::vector<int>> forbidden = forbidden_regions(task, stages);
+  std::map<std::vector<int>, PlaceWays> ways;
   const int places = task.labelling.regions() + 1;
   std::vector<std::vector<int>> triangles_of(static_cast<size_t>(places));
   for (int place = 0; place < places; ++place) triangles_of[static_cast<size_t>(place)] = place_triangles(world, decomposition, place);
@@ -124,25 +169,25 @@ RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& tas
   for (int s = 0; s < count; ++s) {
     const std::vector<int> targets = target_places(task, stages, s);
     if (targets.empty() || entries[static_cast<size_t>(s)].empty()) continue;
-    bool goes_round = true;
-    for (int from : entries[static_cast<size_t>(s)]) {
-      double best_through = kInfinity, best_round = kInfinity;
-      for (int target : targets) {
-        best_through = std::min(best_through, through[static_cast<size_t>(from)][static_cast<size_t>(target)]);
-        best_round = std::min(best_round, push_free[static_cast<size_t>(from)][static_cast<size_t>(target)]);
-      }
-      if (!std::isfinite(best_through)) continue;  // nothing gets there from here: no say
-      goes_round = goes_round && best_round <= (1.0 + kDetourFactor) * best_through + kDetourAllowance;
-    }
-    choice.going_round[static_cast<size_t>(s)] = goes_round;
+    const std::vector<int>& avoided = forbidden[static_cast<size_t>(s)];
+    auto found = ways.find(avoided);
+    if (found == ways.end()) found = ways.emplace(avoided, place_ways(world, avoided)).first;
+    choice.going_round[static_cast<size_t>(s)] = stage_goes_round(entries[static_cast<size_t>(s)], targets, found->second);
   }
   if (std::none_of(choice.going_round.begin(), choice.going_round.end(), [](bool b) { return b; })) return choice;
 
   // In a stage that goes round, each state costs the lead more the longer the way through its triangle is
-  // than the stage's shortest push-free way, and a triangle under a body kUnderBodyCost times more.
+  // than the stage's shortest push-free way (kept out of the stage's forbidden regions), and a triangle
+  // under a body kUnderBodyCost times more.
   choice.lead_factor.assign(static_cast<size_t>(decomposition.size()) * static_cast<size_t>(count), 1.0f);
   for (int s = 0; s < count; ++s) {
     if (!choice.going_round[static_cast<size_t>(s)]) continue;
+    const std::vector<int>& avoided = forbidden[static_cast<size_t>(s)];
+    std::vector<bool> clear(under.size());
+    for (size_t t = 0; t < under.size(); ++t) {
+      const int region = decomposition.triangles()[t].region;
+      clear[t] = !under[t] && std::find(avoided.begin(), avoided.end(), region) == avoided.end();
+    }
     std::vector<int> from;
     for (int place : entries[static_cast<size_t>(s)]) {
       for (int t : triangles_of[static_cast<size_t>(place)]) from.push_back(t);

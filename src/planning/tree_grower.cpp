@@ -30,13 +30,15 @@ TreeGrower::TreeGrower(const scenario::World& world, const TaskAutomaton& task, 
   for (const Labelling::NamedBody& n : task.labelling.named_bodies()) named_[static_cast<size_t>(n.body)] = true;
 }
 
-void TreeGrower::grow(const Motion& from, const Vec2& target, const ObjectLead::Goal* goal, bool may_push,
+void TreeGrower::grow(const Motion& from, const Vec2& target, const ObjectLead::Goal* goal, Guidance guidance,
                       std::uint64_t seed, Growth& growth) {
   growth = Growth{};
   Random random(seed);
   simulation_.restore(from.state);
+  if (guidance == Guidance::kWidened) return propagate(sampler_.sample_uniform(random), from.stage, true, growth);
   const scenario::EnvironmentState& state = simulation_.environment();
   const Vec2 aim = goal != nullptr ? object_lead_.target(*goal, state, simulation_.kappa(), random) : target;
+  const bool may_push = guidance == Guidance::kPushing;
   propagate(sampler_.sample(state, simulation_.kappa(), aim, may_push, random), from.stage, may_push, growth);
 }
 
@@ -53,8 +55,10 @@ bool TreeGrower::valid_step(const Vec2& setpoint, bool may_push, Growth& growth)
       return c.body == scenario::RobotContact::Body::kMovable && !named_[static_cast<size_t>(c.index)];
     });
   };
-  if (simulation_.step(setpoint) && (may_push || !pushes_unasked())) return true;
+  const knowledge::Violation violation = simulation_.step(setpoint);
+  if (violation == knowledge::Violation::kNone && (may_push || !pushes_unasked())) return true;
   growth.stopped_by_invalid_step = true;
+  growth.refusal = violation == knowledge::Violation::kNone ? Refusal::kRouteChoiceCut : *refusal_of(violation);
   return false;
 }
 
@@ -64,7 +68,10 @@ void TreeGrower::propagate(const Control& control, int stage, bool may_push, Gro
   for (int step = 1; step <= control.steps; ++step) {
     if (!valid_step(control.setpoint, may_push, growth)) break;
     const int next = stage_after_step(stage);
-    if (next < 0) break;
+    if (next < 0) {
+      growth.refusal = Refusal::kTaskLetter;
+      break;
+    }
     stage = next;
     valid_steps = step;
     simulation_.save(last_valid_);
@@ -85,7 +92,10 @@ bool TreeGrower::brake(int stage, Growth& growth) {
   for (int step = 1; step <= max_braking_steps_; ++step) {
     if (!valid_step(stop, true, growth)) return false;
     stage = stage_after_step(stage);
-    if (stage < 0) return false;
+    if (stage < 0) {
+      growth.refusal = Refusal::kTaskLetter;
+      return false;
+    }
     ++steps;
     const bool at_rest = simulation_.environment().at_rest();
     if (at_rest && !accepting(stage)) return false;

@@ -12,6 +12,7 @@
 #include "physltl/knowledge/validity.h"
 #include "physltl/physics/simulation.h"
 #include "object_lead.h"
+#include "physltl/planning/refusal.h"
 #include "physltl/planning/task.h"
 #include "product_graph.h"
 #include "stage_graph.h"
@@ -43,6 +44,14 @@ struct Growth {
   bool accepted = false;  // the motion (and the braking, where the task needs it) reached acceptance
   int physics_steps = 0;
   bool stopped_by_invalid_step = false;
+  std::optional<Refusal> refusal;  // the rule that ended the motion (or its braking), if one did
+};
+
+// How an expansion samples its control and what it may touch.
+enum class Guidance {
+  kPushing,     // the knowledge sampler, pushing where a push helps towards the target
+  kGoingRound,  // the knowledge sampler steering only; touching a body the task does not name is cut
+  kWidened,     // as the baseline grows: a uniform control, nothing cut but what the task and the world forbid
 };
 
 class TreeGrower {
@@ -53,9 +62,9 @@ class TreeGrower {
 
   // Replaces `growth` with what grows from `from` towards `target`, drawing from a generator seeded with
   // `seed`. With an object goal the target is where that goal's body move needs the robot (object_lead.h),
-  // found in `from`'s state. Without `may_push` the control steers only, never deliberately pushes.
-  void grow(const Motion& from, const Vec2& target, const ObjectLead::Goal* goal, bool may_push, std::uint64_t seed,
-            Growth& growth);
+  // found in `from`'s state.
+  void grow(const Motion& from, const Vec2& target, const ObjectLead::Goal* goal, Guidance guidance,
+            std::uint64_t seed, Growth& growth);
 
  private:
   // Applies `control` from the simulation's current state until the end, an invalid step, a dead
@@ -65,7 +74,7 @@ class TreeGrower {
   // every step valid and the automaton still accepting at the end. Whether that worked.
   bool brake(int stage, Growth& growth);
   // One valid step under `control`, then INFERENCE; false when the step was invalid, or when it touched a
-  // movable body the task does not name while `may_push` is false.
+  // movable body the task does not name while `may_push` is false (the growth then says which rule).
   bool valid_step(const Vec2& setpoint, bool may_push, Growth& growth);
   // The stage after the physics step just taken, from `stage`; -1 when the automaton died.
   int stage_after_step(int stage) const;

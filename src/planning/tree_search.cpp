@@ -55,13 +55,21 @@ constexpr int kObjectTournament = 4;
 constexpr double kObjectRobotWeight = 0.3;       // per metre between the robot and the body
 constexpr double kObjectSelectionPenalty = 0.2;  // metres per earlier choice of the node
 
+// The escape from the knowledge planner's heuristics (docs/planner.md, "Cuts and biases"): once this many
+// expansions have passed without a node getting closer to acceptance, kWidenedShare of the expansions
+// grow as the baseline grows them (a uniform control, no route-choice cut), half of them from any node
+// of the tree, dropped ones included. Given time, whatever the baseline's search can grow, these can.
+constexpr long long kStallExpansions = 4096;
+constexpr double kWidenedShare = 0.25;
+constexpr double kWidenedAnywhereShare = 0.5;
+
 // Where to grow from and towards, and the seed of the grower's own generator. With an object goal, the
 // grower finds the target in the node's state (object_lead.h).
 struct Expansion {
   int from = 0;
   Vec2 target = Vec2::Zero();
   std::optional<ObjectLead::Goal> goal;
-  bool may_push = true;  // false in a stage whose lead goes round the bodies
+  Guidance guidance = Guidance::kPushing;
   std::uint64_t seed = 0;
 };
 
@@ -85,7 +93,9 @@ class Search {
         random_(options.seed),
         pool_(options.threads),
         growers_(static_cast<size_t>(pool_.threads())),
-        stage_motions_(static_cast<size_t>(stages_.stages())) {}
+        stage_motions_(static_cast<size_t>(stages_.stages())),
+        stage_nodes_(static_cast<size_t>(stages_.stages()), 0),
+        stage_dropped_(static_cast<size_t>(stages_.stages()), 0) {}
 
   // `started`: when planning began, before this search prepared its lead (the route choice costs time too).
   PlanResult run(std::chrono::steady_clock::time_point started) {
@@ -97,6 +107,7 @@ class Search {
     }
     int lead_start = segment_start_;
     std::vector<int> lead = lead_search_.next(product_of(lead_start), horizon());
+    current_lead_ = &lead;
     while (true) {
       // Where the frontier's next move is a body's, the object lead guides the expansions; else the lead
       // through the decomposition, from the first node after the last body the tree moved for the task.
@@ -194,10 +205,13 @@ class Search {
       if (stages_.body_move(frontier_stage_)) segment_start_ = index;
       closest_to_accept_ = distance;
       frontier_stage_ = motion.stage;
+      expansions_since_progress_ = 0;
     }
+    if (stage_nodes_[static_cast<size_t>(motion.stage)]++ == 0) stages_reached_.push_back(motion.stage);
     motions_.push_back(std::move(motion));
     failed_starts_.push_back(0);
     chosen_.push_back(0);
+    dropped_.push_back(false);
   }
 
   // Lead states that already hold tree nodes, with their weights, for sampling where to grow.
@@ -240,9 +254,21 @@ class Search {
       const double u = random_.uniform01(), v = random_.uniform01();
       e.target = decomposition_.triangles()[graph_.triangle_of(lead[ahead])].point_at(u, v);
       e.goal.reset();
-      e.may_push = !goes_round(motions_[static_cast<size_t>(e.from)].stage);
+      e.guidance = goes_round(motions_[static_cast<size_t>(e.from)].stage) ? Guidance::kGoingRound : Guidance::kPushing;
+      widen_if_stalled(e);
       e.seed = random_.next();
     }
+  }
+
+  // Past a stall, some expansions grow as the baseline's would, some of those from anywhere in the tree.
+  void widen_if_stalled(Expansion& e) {
+    ++expansions_since_progress_;
+    if (options_.planner != PlannerKind::kKnowledge || expansions_since_progress_ < kStallExpansions) return;
+    widened_ = true;
+    if (!random_.chance(kWidenedShare)) return;
+    e.guidance = Guidance::kWidened;
+    e.goal.reset();
+    if (random_.chance(kWidenedAnywhereShare)) e.from = random_.uniform_int(0, static_cast<int>(motions_.size()) - 1);
   }
 
   // The object lead's expansions, kBatch of them, for moving a body of the frontier stage.
@@ -274,7 +300,8 @@ class Search {
       const std::optional<Vec2> approach = object_lead_.approach(motions_[static_cast<size_t>(from)].robot, body_at(from));
       e.target = approach.value_or(Vec2::Zero());
       e.goal = approach ? std::nullopt : std::optional<ObjectLead::Goal>(goal);
-      e.may_push = true;
+      e.guidance = Guidance::kPushing;
+      widen_if_stalled(e);
       e.seed = random_.next();
     }
   }
@@ -293,7 +320,7 @@ class Search {
                        options_.planner == PlannerKind::kKnowledge);
       }
       const Expansion& e = expansions_[static_cast<size_t>(task - extra)];
-      grower->grow(motions_[static_cast<size_t>(e.from)], e.target, e.goal ? &*e.goal : nullptr, e.may_push, e.seed,
+      grower->grow(motions_[static_cast<size_t>(e.from)], e.target, e.goal ? &*e.goal : nullptr, e.guidance, e.seed,
                    growths_[static_cast<size_t>(task - extra)]);
     });
   }
@@ -306,6 +333,7 @@ class Search {
       ++stats_.propagations;
       stats_.physics_steps += growth.physics_steps;
       stats_.invalid_steps += growth.stopped_by_invalid_step ? 1 : 0;
+      if (growth.refusal) stats_.refused.add(*growth.refusal);
       note_outcome(expansions_[i].from, growth);
       if (!growth.motion) continue;
       const int index = static_cast<int>(motions_.size());
@@ -332,7 +360,7 @@ class Search {
       return;
     }
     // The root stays: a robot at rest can always move.
-    if (++failures == kFailuresBeforeDropped && from != 0) drop(from);
+    if (++failures == kFailuresBeforeDropped && from != 0 && !dropped_[static_cast<size_t>(from)]) drop(from);
   }
 
   // No expansion grows from node `m` any more, neither along the lead nor for a body move. A stage where a
@@ -342,6 +370,9 @@ class Search {
   // goes back to the nearest stage to acceptance that still has a node, the lead starting from its first.
   void drop(int m) {
     const Motion& motion = motions_[static_cast<size_t>(m)];
+    stats_.refused.add(Refusal::kDroppedNode);
+    ++stage_dropped_[static_cast<size_t>(motion.stage)];
+    dropped_[static_cast<size_t>(m)] = true;
     graph_.remove_motion(motion.product_state, m);
     std::vector<int>& nodes = stage_motions_[static_cast<size_t>(motion.stage)];
     nodes.erase(std::find(nodes.begin(), nodes.end(), m));
@@ -383,6 +414,39 @@ class Search {
     stats_.tree_nodes = static_cast<long long>(motions_.size());
     stats_.planning_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     result.stats = stats_;
+    if (!result.solved) result.end = search_end();
+  }
+
+  SearchEnd::Stage describe(int stage) const {
+    return {stages_.automaton_state_of(stage), task_.labelling.object_facts(stages_.facts_of(stage)), stages_.distance(stage)};
+  }
+
+  SearchEnd search_end() const {
+    SearchEnd end;
+    end.known = true;
+    end.frontier = describe(frontier_stage_);
+    if (const auto& move = stages_.body_move(frontier_stage_)) {
+      const Labelling::NamedBody& body = task_.labelling.named_bodies()[static_cast<size_t>(move->named)];
+      const std::string& name = world_.movable_bodies[static_cast<size_t>(body.body)].name;
+      const auto region = [&](int place) { return world_.regions[static_cast<size_t>(body.regions[static_cast<size_t>(place - 1)])].name; };
+      if (move->place > 0) {
+        end.body_move = name + " to " + region(move->place);
+      } else {
+        const int from = task_.labelling.place(stages_.facts_of(frontier_stage_), move->named);
+        end.body_move = name + " out of " + (from > 0 ? region(from) : std::string("its regions"));
+      }
+    } else if (current_lead_ != nullptr) {
+      for (int product : *current_lead_) {
+        end.lead.push_back({decomposition_.triangles()[static_cast<size_t>(graph_.triangle_of(product))].centroid,
+                            stages_.automaton_state_of(graph_.stage_of(product))});
+      }
+    }
+    for (int stage : stages_reached_) {
+      end.nodes_per_stage.push_back({describe(stage), stage_nodes_[static_cast<size_t>(stage)], stage_dropped_[static_cast<size_t>(stage)]});
+    }
+    end.expansions_since_progress = expansions_since_progress_;
+    end.widened = widened_;
+    return end;
   }
 
   const scenario::World& world_;
@@ -402,6 +466,10 @@ class Search {
   int segment_start_ = 0;                 // where the lead starts: the root, or the frontier stage's first node
   std::vector<int> failed_starts_;        // per motion: expansions in a row that failed at once
   std::vector<int> chosen_;               // per motion: times the object lead grew from it
+  std::vector<bool> dropped_;             // per motion: no longer chosen but by a widened expansion
+  long long expansions_since_progress_ = 0;
+  bool widened_ = false;                  // the search has stalled at least once
+  const std::vector<int>* current_lead_ = nullptr;
   std::vector<int> available_;         // indices into the current lead
   std::vector<double> cumulative_;     // running sums of their weights
   double frontier_weight_ = 0.0;       // the running sum where the frontier starts
@@ -410,7 +478,10 @@ class Search {
   PlannerStats stats_;
   WorkerPool pool_;
   std::vector<std::optional<TreeGrower>> growers_;  // one per worker
-  std::vector<std::vector<int>> stage_motions_;     // per stage, its nodes
+  std::vector<std::vector<int>> stage_motions_;     // per stage, its nodes that are not dropped
+  std::vector<long long> stage_nodes_;              // per stage, every node grown into it
+  std::vector<long long> stage_dropped_;            // per stage, the nodes dropped
+  std::vector<int> stages_reached_;                 // the stages holding a node, in the order reached
 };
 
 }  // namespace

@@ -5,7 +5,7 @@
 namespace physltl::planning {
 
 ValidatedPlan plan_and_validate(const Problem& p, const PlannerOptions& options) {
-  ValidatedPlan validated{plan(p.world, p.task, p.knowledge, p.decomposition, options), std::nullopt};
+  ValidatedPlan validated{plan(p.world, p.task, p.knowledge, p.decomposition, options), std::nullopt, std::nullopt};
   if (validated.result.solved) {
     const knowledge::ValidityMode mode = validity_mode(options.planner);
     validated.replay = replay(p.world, validated.result.plan, p.formula, p.knowledge, mode);

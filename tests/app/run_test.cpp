@@ -168,6 +168,57 @@ TEST(Run, AnInfeasibleTaskExitsOneAndLeavesThePreviousOutputsAlone) {
   for (const auto& entry : fs::directory_iterator(out)) EXPECT_EQ(entry.path().filename(), "ordered");
 }
 
+TEST(Run, ASearchCutShortWritesFailedReportAndTreeAndLeavesTheEarlierPlanAlone) {
+  const fs::path out = fresh_out_dir();
+  const fs::path good = small_ordered(test_dir("good"));
+  ASSERT_EQ(run(good.string() + " --quiet --out " + out.string()).exit_code, 0);
+  const std::string report = slurp(out / "ordered" / "report.json");
+  const std::string plan = slurp(out / "ordered" / "plan.json");
+
+  // Same scenario name, a task of forty rooms in a row: far more than 20 ms of search allow.
+  std::string text = slurp(good);
+  std::string formula = "p4", close;
+  for (int lap = 0; lap < 10; ++lap) formula = "p1 & F(p3 & F(p2 & F(p4 & F(" + formula, close += "))))";
+  text.replace(text.find("task { formula ="), text.find('\n', text.find("task { formula =")) - text.find("task { formula ="),
+               "task { formula = 'F(" + formula + close + ")' }");
+  const fs::path long_task = test_dir("long") / "ordered.lua";
+  std::ofstream(long_task) << text;
+  const Result r = run(long_task.string() + " --time-limit 0.02 --render --quiet --out " + out.string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  // The last line says why, under --quiet too.
+  const std::string last = r.err.substr(r.err.rfind("physltl-studio: "));
+  EXPECT_TRUE(last.starts_with("physltl-studio: no plan found (time limit); most refused: ")) << r.err;
+
+  EXPECT_EQ(slurp(out / "ordered" / "report.json"), report);
+  EXPECT_EQ(slurp(out / "ordered" / "plan.json"), plan);
+  ASSERT_TRUE(fs::is_regular_file(out / "ordered" / "failed" / "report.json"));
+  EXPECT_TRUE(fs::is_regular_file(out / "ordered" / "failed" / "tree.png"));
+  EXPECT_FALSE(fs::exists(out / "ordered" / "failed" / "plan.json"));
+  const auto failed = nlohmann::json::parse(slurp(out / "ordered" / "failed" / "report.json"));
+  EXPECT_FALSE(failed.at("solved").get<bool>());
+  EXPECT_EQ(failed.at("stop_reason"), "time limit");
+  long long refused = 0, most = 0;
+  std::string most_rule;
+  for (const auto& [rule, n] : failed.at("refused").items()) {
+    refused += n.get<long long>();
+    if (n.get<long long>() > most) most = n.get<long long>(), most_rule = rule;
+  }
+  EXPECT_GT(refused, 0);
+  EXPECT_NE(last.find(most_rule + " (" + std::to_string(most) + " of " + std::to_string(refused) + " steps)"),
+            std::string::npos) << last;
+  const auto& end = failed.at("search_end");
+  EXPECT_GE(end.at("frontier").at("moves_to_acceptance").get<int>(), 1);
+  EXPECT_FALSE(end.at("lead").empty());
+  long long nodes = 0;
+  for (const auto& stage : end.at("nodes_per_stage")) nodes += stage.at("nodes").get<long long>();
+  EXPECT_EQ(nodes, failed.at("tree_nodes").get<long long>());
+
+  // The next successful run replaces the folder, failed/ with it.
+  ASSERT_EQ(run(good.string() + " --quiet --out " + out.string()).exit_code, 0);
+  EXPECT_FALSE(fs::exists(out / "ordered" / "failed"));
+}
+
 TEST(Run, CtrlCStopsPlanningPromptlyAndWritesNothing) {
   const fs::path scenario = rooms_laps(test_dir("scenario"));
   const fs::path out = fresh_out_dir();

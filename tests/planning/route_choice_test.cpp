@@ -7,14 +7,15 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <string>
 #include <utility>
 
 namespace physltl::planning {
 namespace {
 
-bool first_stage_goes_round(const std::string& scenario) {
-  const TestProblem p(scenario);
+bool first_stage_goes_round(const std::string& scenario, const std::map<std::string, std::string>& params = {}) {
+  const TestProblem p(scenario, params);
   const StageGraph stages(p.task);
   const scenario::EnvironmentState start = scenario::EnvironmentState::initial(p.world);
   return choose_routes(p.world, p.task, p.decomposition).going_round[static_cast<size_t>(
@@ -27,6 +28,22 @@ TEST(RouteChoice, GoesRoundWhereTheWayRoundIsALittleLongerAndPushesWhereItIsMuch
   EXPECT_FALSE(first_stage_goes_round("../tests/planning/data/through_a_box.lua"));  // no way round
   EXPECT_FALSE(first_stage_goes_round("rooms.lua"));  // B1 closes room 1's corridor
   EXPECT_TRUE(first_stage_goes_round("warehouse_rows.lua"));
+}
+
+TEST(RouteChoice, DoesNotGoRoundThroughARegionTheTaskForbidsThere) {
+  // The only push-free way crosses the hazard band; the other way is a gap holding a box.
+  const std::string world = "../tests/planning/data/regression/hazard_gap.lua";
+  EXPECT_FALSE(first_stage_goes_round(world));                                   // F goal & G !hazard
+  EXPECT_FALSE(first_stage_goes_round(world, {{"task", "!hazard U goal"}}));
+  EXPECT_TRUE(first_stage_goes_round(world, {{"task", "F goal"}}));              // the hazard is just floor
+}
+
+TEST(RouteChoice, AWayNarrowerThanTheMinimumFreeWidthIsNoWayRound) {
+  const std::string sliver = "../tests/planning/data/regression/narrow_sliver.lua";
+  EXPECT_FALSE(first_stage_goes_round(sliver));                         // 5 cm for the robot's centre
+  EXPECT_TRUE(first_stage_goes_round(sliver, {{"box_width", "0.3"}}));  // 20 cm
+  // 8 cm of the goal free beside a box the robot starts against: the goal is reached by pushing.
+  EXPECT_FALSE(first_stage_goes_round("../tests/planning/data/regression/start_at_box.lua"));
 }
 
 TEST(RouteChoice, OnlyTheTrianglesUnderBodiesTheTaskDoesNotNameAreGoneRound) {

@@ -55,8 +55,10 @@ bool is_valid(const AbstractKnowledge& knowledge, const Kappa& kappa, const scen
 
 // The same after one step from a valid state in which only the movable bodies `moved` (indices) can have
 // moved: the others are still inside the workspace, so only these are tested there. The planner's
-// propagation knows them from the physics; the verdict is the one of is_valid.
-bool is_valid_after_step(const AbstractKnowledge& knowledge, const Kappa& kappa, const scenario::EnvironmentState& state,
-                         std::span<const scenario::RobotContact> contacts, ValidityMode mode, std::span<const int> moved);
+// propagation knows them from the physics; the verdict is the one of check_validity.
+Validity check_validity_after_step(const AbstractKnowledge& knowledge, const Kappa& kappa,
+                                   const scenario::EnvironmentState& state,
+                                   std::span<const scenario::RobotContact> contacts, ValidityMode mode,
+                                   std::span<const int> moved);
 
 }  // namespace physltl::knowledge

@@ -20,8 +20,11 @@ enum class RobotObstacles {
 };
 
 // The robot's centre among the obstacles: each grown by its radius (from inside, so distances are at most
-// the true ones), inside the workspace shrunk by its radius.
-geometry::FreeSpace robot_free_space(const scenario::World& world, RobotObstacles obstacles);
+// the true ones), inside the workspace shrunk by its radius. With a `clearance`, every obstacle and the
+// workspace's edge grow by half of it more, so that no way narrower than `clearance` for the robot's centre
+// is left; `avoided` are more obstacles as they are (convex; regions the robot's centre may not enter).
+geometry::FreeSpace robot_free_space(const scenario::World& world, RobotObstacles obstacles, double clearance = 0.0,
+                                     const std::vector<geometry::Polygon>& avoided = {});
 
 // Shortest ways between the places a task's legs run between: place 0 is the robot's start, place k + 1
 // World region k. leg[from][to] is infinite where there is none; leg[from][0] is not computed.

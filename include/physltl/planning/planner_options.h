@@ -5,6 +5,7 @@
 #include "physltl/knowledge/abstract_knowledge.h"
 #include "physltl/planning/plan.h"
 #include "physltl/planning/planner_kind.h"
+#include "physltl/planning/refusal.h"
 #include "physltl/planning/route_choice.h"
 #include "physltl/planning/task.h"
 
@@ -51,6 +52,34 @@ struct PlannerStats {
   // OMPL's planners: steps refused because the robot crossed into a triangle that is not a neighbour of
   // the one it left, which OMPL's product graph cannot follow (docs/benchmarks.md).
   long long cell_skips_refused = 0;
+  // Our tree search: refused steps and dropped nodes by rule (refusal.h).
+  Refusals refused;
+};
+
+// Where our tree search stood when it stopped without a plan (failed/report.json, docs/report.md).
+struct SearchEnd {
+  struct Stage {
+    int automaton_state = 0;
+    std::vector<std::string> facts;  // the named bodies' places that matter there: "crate@dock"
+    int distance = -1;               // stage moves to acceptance
+  };
+  struct StageNodes {
+    Stage stage;
+    long long nodes = 0;    // grown into it, dropped ones included
+    long long dropped = 0;  // left out after failing expansions (refusal.h)
+  };
+  struct LeadStep {
+    Vec2 point = Vec2::Zero();  // the centroid of the lead's triangle
+    int automaton_state = 0;
+  };
+  bool known = false;  // false: the planner does not say (OMPL's)
+  Stage frontier;      // the stage closest to acceptance any node reached
+  // The lead the last expansions followed, from the node it started at; empty when the object lead led.
+  std::vector<LeadStep> lead;
+  std::string body_move;  // the object lead's move when it led: "crate to dock", "crate out of dock"
+  std::vector<StageNodes> nodes_per_stage;  // stages holding a node, in the order the tree reached them
+  long long expansions_since_progress = 0;  // since a node last got closer to acceptance
+  bool widened = false;  // the frontier had stalled: some expansions grew as the baseline grows
 };
 
 struct PlanResult {
@@ -59,6 +88,7 @@ struct PlanResult {
   Plan plan;
   std::vector<TreeEdge> tree;
   PlannerStats stats;
+  SearchEnd end;  // filled when not solved
   // How the planner was configured, for bench.json and the OMPL log (name, value as text).
   std::vector<std::pair<std::string, std::string>> settings;
 };

@@ -6,7 +6,9 @@
 // regions that pushes nothing (through no triangle under a movable body) is at most (1 + kDetourFactor)
 // times the shortest way through the bodies plus kDetourAllowance; otherwise pushing is how the task gets
 // done, and the bodies cost the lead nothing. Both ways are shortest paths of the robot's centre
-// (geometry::FreeSpace, path_lower_bound.h), exact up to the grown bodies' rounded corners.
+// (geometry::FreeSpace, path_lower_bound.h), exact up to the grown bodies' rounded corners, that enter no
+// region the task forbids in that stage (the hazard under `G !hazard`); a push-free way also needs
+// kMinFreeWidth of room for the robot's centre everywhere along it.
 //
 // Where a stage goes round, the lead also keeps near its shortest push-free way: a product state costs the
 // lead more the longer a way through its triangle is than that shortest way, so that the search does not
@@ -21,6 +23,9 @@ namespace physltl::planning {
 
 // Measured on the shipped scenarios and worlds of other layouts (docs/planner.md).
 inline constexpr double kDetourFactor = 0.5;
+// The narrowest way past the bodies that counts as push-free, in metres of room for the robot's centre:
+// the sampler's steered motions do not follow a narrower one (docs/planner.md).
+inline constexpr double kMinFreeWidth = 0.10;  // m
 inline constexpr double kDetourAllowance = 3.0;  // m
 // How much dearer the lead finds a triangle under a body, in a stage that goes round.
 inline constexpr double kUnderBodyCost = 100.0;

@@ -129,6 +129,7 @@ BenchRun measure(const PreparedRun& prepared, const SolveOptions& options, int r
   run.tree_nodes = result.stats.tree_nodes;
   run.propagations = result.stats.propagations;
   run.physics_steps = result.stats.physics_steps;
+  run.refused = result.stats.refused;
   if (run.solved) {
     run.controls = static_cast<int>(result.plan.controls.size());
     run.pushes = solution.replay->pushes;

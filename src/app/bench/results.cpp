@@ -200,6 +200,7 @@ json bench_json(const BenchResults& r) {
                     {"cell_skips_refused", run.cell_skips_refused},
                     {"solved", run.solved},
                     {"stop_reason", run.stop_reason},
+                    {"refused", refusals_json(run.refused)},
                     {"wall_s", run.wall_s},
                     {"tree_nodes", run.tree_nodes},
                     {"propagations", run.propagations},

@@ -33,6 +33,7 @@ struct BenchRun {
   int first_pushes = 0;              // of the first validated plan
   double first_duration_s = 0.0;
   long long cell_skips_refused = 0;  // OMPL's planners (PlannerStats)
+  planning::Refusals refused;        // our tree search: refused steps and dropped nodes by rule
   // With --robustness N (solved runs): the plan replayed in N perturbed worlds, timed apart from wall_s.
   int robust_worlds = 0;
   int robust_succeeded = 0;
