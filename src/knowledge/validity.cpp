@@ -12,11 +12,15 @@ bool robot_inside_workspace(const AbstractKnowledge& k, const geometry::Vec2& ce
 }
 
 // The robot's centre, not the contact point, decides the side: the contact point lies on the body's
-// outline, where the strips of two sides meet at every corner.
+// outline, where the strips of two sides meet at every corner. A centre up to `slack` beyond the ends of
+// an active side's strip still pushes from that side (kPushSideSlack).
 bool pushes_from_active_mregion(const MovableBodyKnowledge& body, const BodyKappa& kappa,
-                                const geometry::Pose2& pose, const geometry::Vec2& robot_centre) {
+                                const geometry::Pose2& pose, const geometry::Vec2& robot_centre, double slack) {
   for (const MRegionTemplate& m : body.mregions) {
-    if (kappa.active_faces.contains(m.face) && mregion_at(m, pose).contains(robot_centre)) return true;
+    if (!kappa.active_faces.contains(m.face)) continue;
+    geometry::OrientedBox strip = mregion_at(m, pose);
+    strip.half_extents += geometry::Vec2::Constant(slack);
+    if (strip.contains(robot_centre)) return true;
   }
   return false;
 }
@@ -63,7 +67,7 @@ Validity check(const AbstractKnowledge& knowledge, const Kappa& kappa, const sce
     if (body_kappa.type == BodyType::kImmovable) return {Violation::kTouchesImmovableBody, contact.index};
     if (body_kappa.type == BodyType::kConstraintOriented &&
         !pushes_from_active_mregion(knowledge.movable_bodies[i], body_kappa, state.movable_poses[i],
-                                    state.robot_position)) {
+                                    state.robot_position, kPushSideSlack)) {
       return {Violation::kPushesFromForbiddenSide, contact.index};
     }
   }

@@ -86,6 +86,12 @@ TEST_F(ValidityTest, TouchingAConstraintOrientedBodyFromAForbiddenSideIsInvalid)
   EXPECT_EQ(v.body_index, kCorridorBox);
 }
 
+TEST_F(ValidityTest, ACentreJustPastTheEndOfAnActiveMRegionStillPushesFromThatSide) {
+  // 5 cm beyond the end of the -y side's strip, within kPushSideSlack: the robot brushing the corner
+  // while it works the box along a lane.
+  EXPECT_TRUE(check({0.30, -0.74}, {touching_movable(kCorridorBox, {0.25, -0.5})}).valid());
+}
+
 TEST_F(ValidityTest, TouchingAConstraintOrientedBodyAtACornerIsInvalid) {
   // The centre is diagonally off the corner: in front of neither side, so not in any mRegion.
   EXPECT_EQ(check({0.43, -0.68}, {touching_movable(kCorridorBox, {0.25, -0.5})}).violation,

@@ -38,6 +38,11 @@ struct Validity {
 // How far a body may poke out of the workspace before it counts as having left (contact solvers let
 // bodies sink into walls by a fraction of a millimetre).
 inline constexpr double kWorkspaceTolerance = 1e-3;  // m
+// How far beyond the ends of an active mRegion the robot's centre may be and still push from that side. A
+// robot working a box along a 0.6 m lane brushes its corners with its centre just past the mRegion; without
+// this, grid push puzzles the baseline solves were lost (docs/planner.md, "Cuts and biases"). Larger values
+// admit pushes at the corner itself, which slip in worlds heavier than modelled.
+inline constexpr double kPushSideSlack = 0.1;  // m
 // How much faster than its declared limits the robot may move: ODE's contact correction can add a little
 // velocity of its own (physics::Simulation), and the integrator rounds.
 inline constexpr double kLimitTolerance = 0.01;  // relative
