@@ -55,14 +55,14 @@ inline fs::path small_ordered(const fs::path& dir, const std::string& name = "or
   return dir / name;
 }
 
-// rooms.lua with a task that goes around the rooms thirty times: far more than a few seconds of search
-// (five laps took the planner under 1.5 s).
+// rooms.lua with a task that goes around the rooms 120 times: far more than a few seconds of search
+// (thirty laps took the planner under 2 s).
 inline fs::path rooms_laps(const fs::path& dir) {
   std::string text = slurp(fs::path(PHYSLTL_SOURCE_DIR) / "scenarios" / "rooms.lua");
   const auto at = text.find("task { formula =");
   text.erase(at, text.find('\n', at) - at);
   std::string formula = "p4", close;
-  for (int lap = 0; lap < 30; ++lap) formula = "p1 & F(p2 & F(p4 & F(" + formula, close += ")))";
+  for (int lap = 0; lap < 120; ++lap) formula = "p1 & F(p2 & F(p4 & F(" + formula, close += ")))";
   text += "\ntask { formula = 'F(" + formula + close + ")' }\n";
   fs::create_directories(dir);
   std::ofstream(dir / "laps.lua") << text;

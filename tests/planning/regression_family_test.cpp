@@ -48,6 +48,8 @@ INSTANTIATE_TEST_SUITE_P(
                       FamilyWorld{"hazard_gap_ordered.lua", {}, {1, 2, 3}},
                       FamilyWorld{"start_at_box.lua", {}, {1, 2, 3}},
                       FamilyWorld{"start_at_wall.lua", {}, {1, 2, 3}},
+                      FamilyWorld{"start_at_wall.lua", {{"gap", "0"}}, {1, 2, 3}},
+                      FamilyWorld{"grid_round_the_pillars.lua", {}, {1, 2, 3}},
                       FamilyWorld{"narrow_sliver.lua", {}, {1, 2, 3}},
                       FamilyWorld{"fetch_past.lua", {}, {1, 2}},
                       FamilyWorld{"grid_corner_turn.lua", {}, {1, 2}}),
