@@ -25,8 +25,9 @@ bool pushes_from_active_mregion(const MovableBodyKnowledge& body, const BodyKapp
   return false;
 }
 
-// A robot that starts a step against a wall (at rest after braking there, or placed there by the scenario)
-// is still in contact during the step that takes it away: that step leaves the wall, it does not touch it.
+// A robot that starts a step against a wall or a box (at rest after braking there, or placed there by the
+// scenario) is still in contact during the step that takes it away: that step leaves the body, it neither
+// touches the wall nor pushes the box.
 bool leaves_contact(const scenario::EnvironmentState& state, const scenario::RobotContact& contact) {
   return state.robot_velocity.dot(contact.point - state.robot_position) < 0.0;
 }
@@ -70,7 +71,8 @@ Validity check(const AbstractKnowledge& knowledge, const Kappa& kappa, const sce
       if (leaves_contact(state, contact)) continue;
       return {Violation::kTouchesFixedBody, contact.index};
     }
-    if (!uses_kappa) continue;
+    // Backing away from a body is no push, from whichever side.
+    if (!uses_kappa || leaves_contact(state, contact)) continue;
     const auto i = static_cast<size_t>(contact.index);
     const BodyKappa& body_kappa = kappa.bodies.at(i);
     if (body_kappa.type == BodyType::kImmovable) return {Violation::kTouchesImmovableBody, contact.index};

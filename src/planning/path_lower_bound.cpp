@@ -49,6 +49,17 @@ double shortest_accepted_route(const scenario::World& world, const TaskAutomaton
   return std::numeric_limits<double>::infinity();
 }
 
+// A robot braked against a wall or a box, or placed touching one, has its centre on or a hair inside the
+// grown obstacle (physics contacts are soft: ODE lets a body sink about a millimetre into another); its
+// start is then the free floor within kStartReach of that centre, or it would have no way anywhere.
+constexpr double kStartReach = 0.02;
+
+geometry::Polygon start_place(const geometry::FreeSpace& space, const geometry::Vec2& start) {
+  if (space.free(start, start)) return geometry::Polygon{{start}};
+  const geometry::Vec2 dx(kStartReach, 0.0), dy(0.0, kStartReach);
+  return geometry::Polygon{{start - dx - dy, start + dx - dy, start + dx + dy, start - dx + dy}};
+}
+
 }  // namespace
 
 geometry::FreeSpace robot_free_space(const scenario::World& world, RobotObstacles obstacles, double clearance,
@@ -68,7 +79,7 @@ geometry::FreeSpace robot_free_space(const scenario::World& world, RobotObstacle
 }
 
 std::vector<std::vector<double>> place_distances(const scenario::World& world, const geometry::FreeSpace& space) {
-  std::vector<geometry::FreeSpace::Place> places{space.place(geometry::Polygon{{world.robot.start}})};
+  std::vector<geometry::FreeSpace::Place> places{space.place(start_place(space, world.robot.start))};
   for (const auto& region : world.regions) places.push_back(space.place(region.polygon));
   std::vector<std::vector<double>> leg(places.size(), std::vector<double>(places.size(), 0.0));
   for (size_t from = 0; from < places.size(); ++from) {

@@ -135,7 +135,7 @@ PlaceWays place_ways(const scenario::World& world, const std::vector<int>& avoid
 // Whether stage `s` goes round: from every place it is entered at, a push-free way to a region that brings
 // the task closer is at most (1 + kDetourFactor) times the way through plus kDetourAllowance.
 bool stage_goes_round(const std::set<int>& entries, const std::vector<int>& targets, const PlaceWays& ways) {
-  bool goes_round = true;
+  bool goes_round = true, any_way = false;
   for (int from : entries) {
     double best_through = kInfinity, best_round = kInfinity;
     for (int target : targets) {
@@ -143,9 +143,10 @@ bool stage_goes_round(const std::set<int>& entries, const std::vector<int>& targ
       best_round = std::min(best_round, ways.push_free[static_cast<size_t>(from)][static_cast<size_t>(target)]);
     }
     if (!std::isfinite(best_through)) continue;  // nothing gets there from here: no say
+    any_way = true;
     goes_round = goes_round && best_round <= (1.0 + kDetourFactor) * best_through + kDetourAllowance;
   }
-  return goes_round;
+  return any_way && goes_round;  // with no say from anywhere, nothing is cut
 }
 
 }  // namespace

@@ -46,6 +46,18 @@ TEST(RouteChoice, AWayNarrowerThanTheMinimumFreeWidthIsNoWayRound) {
   EXPECT_FALSE(first_stage_goes_round("../tests/planning/data/regression/start_at_box.lua"));
 }
 
+TEST(RouteChoice, ARobotBrakedAHairIntoAWallStillPushesTheBoxThatClosesItsCorridor) {
+  // ODE lets a robot pressed against a wall sink about a millimetre into it: its centre is then inside the
+  // wall's grown outline, and the start must still count as a place with ways out of it.
+  const TestProblem p("../tests/planning/data/regression/start_at_wall.lua", {{"gap", "0"}});
+  scenario::World world = p.world;
+  world.robot.start += geometry::Vec2(0.2, 0.151);  // 1 mm into the corridor's north wall
+  const StageGraph stages(p.task);
+  const scenario::EnvironmentState start = scenario::EnvironmentState::initial(world);
+  EXPECT_FALSE(choose_routes(world, p.task, p.decomposition)
+                   .going_round[static_cast<size_t>(stages.stage(p.task.start_state(start), p.task.labelling.facts(start)))]);
+}
+
 TEST(RouteChoice, OnlyTheTrianglesUnderBodiesTheTaskDoesNotNameAreGoneRound) {
   const TestProblem p("delivery.lua");  // B1 in room 1's corridor; the crate is moved on purpose
   const std::vector<bool> under = triangles_under_bodies(p.world, p.task, p.decomposition);
