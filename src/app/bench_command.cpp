@@ -53,10 +53,10 @@ CampaignSettings campaign_settings(const BenchArgs& args) {
     }
   }
   CampaignSettings settings;
-  settings.planners = args.planners ? parse_planner_list(*args.planners) : std::vector{planning::PlannerKind::kKnowledge};
-  if (args.compare && std::find(settings.planners.begin(), settings.planners.end(), planning::PlannerKind::kBaseline) ==
+  settings.planners = args.planners ? parse_planner_list(*args.planners) : std::vector{&planning::PlannerRegistry::instance().default_planner()};
+  if (args.compare && std::find(settings.planners.begin(), settings.planners.end(), &planning::PlannerRegistry::instance().reference_planner()) ==
                           settings.planners.end()) {
-    settings.planners.push_back(planning::PlannerKind::kBaseline);
+    settings.planners.push_back(&planning::PlannerRegistry::instance().reference_planner());
   }
   settings.threads = args.threads;
   settings.runs = args.runs;

@@ -3,7 +3,7 @@
 #include "output_folder.h"
 #include "overlays.h"
 #include "physltl/render/preview.h"
-#include "reasoning.h"
+#include "physltl/knowledge/reasoning.h"
 #include "scenario_args.h"
 
 #include <filesystem>
@@ -16,7 +16,7 @@ namespace {
 
 // Replaces only preview.png in <out>/<name>/: the folder may hold a plan's outputs, which a check must not
 // delete.
-std::filesystem::path write_preview(const scenario::World& world, const Reasoning& reasoning,
+std::filesystem::path write_preview(const scenario::World& world, const knowledge::Reasoning& reasoning,
                                     const std::filesystem::path& out_dir) {
   try {
     OutputFolder folder(out_dir / world.name);
@@ -44,7 +44,7 @@ CommandRunner add_check_command(CLI::App& app) {
   app.add_flag("--no-preview", args->no_preview, "Do not render preview.png");
   return [args] {
     const scenario::World world = args->scenario.load();
-    const Reasoning reasoning = reason_about(world);
+    const knowledge::Reasoning reasoning = knowledge::reason_about(world);
     // The picture first: when it cannot be written, the command fails before reporting anything.
     std::optional<std::filesystem::path> preview;
     if (!args->no_preview) preview = write_preview(world, reasoning, args->out_dir);

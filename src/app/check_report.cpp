@@ -45,7 +45,7 @@ json simplification_json(const ltl::Simplification& s) {
 
 }  // namespace
 
-void print_check_report(std::ostream& out, const scenario::World& world, const Reasoning& r) {
+void print_check_report(std::ostream& out, const scenario::World& world, const knowledge::Reasoning& r) {
   print_world_summary(out, world);
   // Read back from the JSON report so both forms name sides and directions the same way.
   const json knowledge = knowledge::knowledge_report(r.knowledge, r.initial_state, r.initial_kappa, r.feasibility);
@@ -82,7 +82,7 @@ void print_check_report(std::ostream& out, const scenario::World& world, const R
   }
 }
 
-json check_report_json(const scenario::World& world, const Reasoning& r) {
+json check_report_json(const scenario::World& world, const knowledge::Reasoning& r) {
   json report = scenario::to_json(world);
   const json knowledge = knowledge::knowledge_report(r.knowledge, r.initial_state, r.initial_kappa, r.feasibility);
   merge_by_name(report["bodies"], knowledge["bodies"]);

@@ -3,7 +3,7 @@
 // are documented in docs/report.md.
 
 #include "physltl/scenario/world.h"
-#include "reasoning.h"
+#include "physltl/knowledge/reasoning.h"
 
 #include <nlohmann/json.hpp>
 
@@ -13,10 +13,10 @@ namespace physltl::app {
 
 // The world summary, then each movable body's class and initial type, the unreachable regions, the task
 // and its simplification (or why it is infeasible) and the automaton's size.
-void print_check_report(std::ostream& out, const scenario::World& world, const Reasoning& reasoning);
+void print_check_report(std::ostream& out, const scenario::World& world, const knowledge::Reasoning& reasoning);
 
 // scenario::to_json(world) with the knowledge report merged into its "bodies" and "regions" entries, and
 // the task's simplification and automaton added.
-nlohmann::ordered_json check_report_json(const scenario::World& world, const Reasoning& reasoning);
+nlohmann::ordered_json check_report_json(const scenario::World& world, const knowledge::Reasoning& reasoning);
 
 }  // namespace physltl::app

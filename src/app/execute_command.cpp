@@ -10,8 +10,9 @@
 #include "physltl/planning/robustness.h"
 #include "plan_pictures.h"
 #include "planner_names.h"
-#include "planning_job.h"
-#include "reasoning.h"
+#include "physltl/execution/replanner.h"
+#include "physltl/planning/planning_problem.h"
+#include "physltl/knowledge/reasoning.h"
 #include "scenario_args.h"
 #include "robustness/uncertainty_args.h"
 
@@ -44,7 +45,7 @@ struct ExecuteArgs {
 
 // --render: one executed world (the first that replanned, else the first) as frames and a video, with the
 // path the first plan meant in grey and a red cross where each replanning began.
-void render_execution(const scenario::World& model, const Reasoning& reasoning, const planning::TaskAutomaton& formula,
+void render_execution(const scenario::World& model, const knowledge::Reasoning& reasoning, const planning::TaskAutomaton& formula,
                       const planning::Replay& nominal, const WorldExecution& shown, const std::filesystem::path& folder,
                       const std::function<void(const std::string&)>& say) {
   const scenario::World truth = planning::perturbed_world(model, model.uncertainty, model.planner.seed, shown.index);
@@ -74,52 +75,25 @@ void render_execution(const scenario::World& model, const Reasoning& reasoning, 
   if (!pictures.video.written) std::cerr << "physltl-studio: no video: " << pictures.video.message << "\n";
 }
 
-// Plans the rest of the task in the model from the observed state, with a budget of propagations so that
-// an execution is the same on any machine. `seed` differs for every world and replanning.
-execution::Replanned replan(const scenario::World& from_here, planning::PlannerKind planner, std::uint64_t seed,
-                            long long budget) {
-  execution::Replanned out;
-  const Reasoning reasoning = reason_about(from_here);
-  if (!reasoning.feasible()) {
-    out.stop_reason = "infeasible: " + reasoning.task.infeasibility();
-    return out;
-  }
-  const PreparedRun prepared(from_here, reasoning);
-  // The budget, not the clock, ends the search: the time limit only guards against a budget too large.
-  const planning::ValidatedPlan solution =
-      solve(prepared, {.planner = planner, .seed = seed, .time_limit = 3600.0, .threads = 1, .max_propagations = budget});
-  out.propagations = solution.result.stats.propagations;
-  out.planning_s = solution.result.stats.planning_time_s;
-  out.stop_reason = solution.result.stop_reason;
-  if (solution.solved()) {
-    out.plan = solution.result.plan;
-    out.nominal = *solution.replay;
-  }
-  return out;
-}
-
 int execute(const ExecuteArgs& args) {
-  const planning::PlannerKind planner = parse_planner(args.planner);
-  if (planner != planning::PlannerKind::kKnowledge && planner != planning::PlannerKind::kBaseline) {
-    throw BadInput("execute replans with a budget of propagations, which OMPL's planners do not take: use knowledge or baseline");
-  }
+  const planning::PlannerEntry& planner = parse_planner(args.planner);
   scenario::World world = args.scenario.load();
   if (args.seed) world.planner.seed = *args.seed;
   if (args.uncertainty) world.uncertainty = override_uncertainty(world.uncertainty, *args.uncertainty);
   const auto say = [&](const std::string& line) {
     if (!args.quiet) std::cout << line << "\n";
   };
-  const Reasoning reasoning = reason_about(world);
-  if (!reasoning.feasible()) {
+  const planning::PlanningProblem problem(world);
+  const knowledge::Reasoning& reasoning = problem.reasoning();
+  if (!problem.feasible()) {
     std::cerr << "physltl-studio: the task is infeasible: " << reasoning.task.infeasibility() << "\n";
     return kExitNoPlan;
   }
+  // It replans with a budget of propagations, so that an execution is the same on any machine.
+  if (const auto why = problem.refusal(planner, {.propagation_budget = true})) throw BadInput(*why);
   OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
-  const PreparedRun prepared(world, reasoning);
-  const planning::ValidatedPlan solution = solve(prepared, {.planner = planner,
-                                                            .seed = world.planner.seed,
-                                                            .time_limit = world.planner.time_limit,
-                                                            .threads = 1});
+  const planning::ValidatedPlan solution = planning::solve(
+      problem, planner, {.seed = world.planner.seed, .time_limit = world.planner.time_limit, .threads = 1});
   if (!solution.solved()) {
     std::cerr << "physltl-studio: " << no_plan_line(solution.result) << "; nothing written\n";
     return kExitNoPlan;
@@ -127,31 +101,25 @@ int execute(const ExecuteArgs& args) {
   const planning::Plan& plan = solution.result.plan;
   const planning::Replay& nominal = *solution.replay;
   say(fmt::format("plan       {} controls, {:.1f} s of motion ({} planner, seed {})", plan.controls.size(),
-                  plan.total_steps() * world.planner.step_size, planning::planner_name(planner), world.planner.seed));
+                  plan.total_steps() * world.planner.step_size, planner.name, world.planner.seed));
 
-  ExecutionReport report{world, planner, args.replans, args.tolerance, args.budget, plan.total_steps() * world.planner.step_size, {}};
-  const execution::Executor executor(world, prepared.as_written(), plan, nominal,
+  ExecutionReport report{world, &planner, args.replans, args.tolerance, args.budget, plan.total_steps() * world.planner.step_size, {}};
+  const execution::Executor executor(world, problem.as_written(), plan, nominal,
                                      {.tolerance_m = args.tolerance, .max_replans = args.replans});
   for (int i = 0; i < args.worlds; ++i) {
     const scenario::World truth = planning::perturbed_world(world, world.uncertainty, world.planner.seed, i);
-    const planning::WorldRun open_loop = planning::judge_in_world(truth, plan, &nominal, prepared.as_written());
+    const planning::WorldRun open_loop = planning::judge_in_world(truth, plan, &nominal, problem.as_written());
     execution::SimulatedWorld reality(truth);
-    int attempt = 0;
-    const execution::Execution run = executor.run(
-        reality, [&](const scenario::World& from_here) {
-          // Every world and replanning its own seed, the same on every run.
-          const std::uint64_t seed = world.planner.seed + 1'000'003ull * static_cast<std::uint64_t>(i + 1) +
-                                     static_cast<std::uint64_t>(attempt++);
-          return replan(from_here, planner, seed, args.budget);
-        });
+    const execution::Execution run =
+        executor.run(reality, execution::budgeted_replanner(planner, world.planner.seed, i, args.budget));
     const planning::WorldRun judged =
-        planning::judge_in_world(truth, planning::Plan{run.controls, {}}, nullptr, prepared.as_written());
+        planning::judge_in_world(truth, planning::Plan{run.controls, {}}, nullptr, problem.as_written());
     report.worlds.push_back({i, open_loop, judged, run});
   }
   say("execution  " + execution_summary(report));
   if (args.render) {
     const auto shown = std::find_if(report.worlds.begin(), report.worlds.end(), [](const WorldExecution& w) { return w.run.replans > 0; });
-    render_execution(world, reasoning, prepared.as_written(), nominal, shown != report.worlds.end() ? *shown : report.worlds.front(),
+    render_execution(world, reasoning, problem.as_written(), nominal, shown != report.worlds.end() ? *shown : report.worlds.front(),
                      out.path(), say);
   }
   std::ofstream file(out.path() / "execution.json");
@@ -182,7 +150,8 @@ CommandRunner add_execute_command(CLI::App& app) {
   app.add_option("--budget", args->budget, "Propagations each replanning may spend")
       ->check(CLI::Range(1000LL, 100'000'000LL))
       ->capture_default_str();
-  app.add_option("--planner", args->planner, "knowledge or baseline (plans and replans)")->capture_default_str();
+  app.add_option("--planner", args->planner, "The planner that plans and replans; it must take a budget of propagations: " +
+                     planning::PlannerRegistry::instance().names(&planning::Capabilities::propagation_budget))->capture_default_str();
   app.add_option("--seed", args->seed, "Seed of the plan and of the perturbed worlds (default: the scenario's)");
   app.add_option("--out", args->out_dir, "Folder for outputs; writes <out>/<scenario>/execution.json")->capture_default_str();
   app.add_flag("--quiet", args->quiet, "Print only errors");

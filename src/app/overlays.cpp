@@ -20,7 +20,7 @@ std::vector<render::MRegionOverlay> mregion_overlays(const knowledge::AbstractKn
   return overlays;
 }
 
-std::vector<render::ObjectGoalOverlay> object_goal_overlays(const scenario::World& world, const Reasoning& reasoning,
+std::vector<render::ObjectGoalOverlay> object_goal_overlays(const scenario::World& world, const knowledge::Reasoning& reasoning,
                                                             const scenario::EnvironmentState& state) {
   const auto index_of = [](const auto& list, const std::string& name) {
     const auto it = std::find_if(list.begin(), list.end(), [&](const auto& n) { return n.name == name; });
@@ -40,7 +40,7 @@ std::string object_goal_line(const scenario::World& world, const render::ObjectG
          world.regions[static_cast<size_t>(goal.region)].name + (goal.holds ? ": holds" : ": not yet");
 }
 
-render::Overlay preview_overlay(const scenario::World& world, const Reasoning& r) {
+render::Overlay preview_overlay(const scenario::World& world, const knowledge::Reasoning& r) {
   render::Overlay overlay;
   overlay.mregions = mregion_overlays(r.knowledge, r.initial_kappa, r.initial_state);
   overlay.avoided_regions = ltl::avoided_propositions(r.task.normal_form);

@@ -5,7 +5,7 @@
 #include "physltl/knowledge/kappa.h"
 #include "physltl/render/scene.h"
 #include "physltl/scenario/state.h"
-#include "reasoning.h"
+#include "physltl/knowledge/reasoning.h"
 
 #include <vector>
 
@@ -18,13 +18,13 @@ std::vector<render::MRegionOverlay> mregion_overlays(const knowledge::AbstractKn
                                                      const scenario::EnvironmentState& state);
 
 // The task's object propositions (BODY@REGION) as pictures show them, each holding or not in `state`.
-std::vector<render::ObjectGoalOverlay> object_goal_overlays(const scenario::World& world, const Reasoning& reasoning,
+std::vector<render::ObjectGoalOverlay> object_goal_overlays(const scenario::World& world, const knowledge::Reasoning& reasoning,
                                                             const scenario::EnvironmentState& state);
 // The legend's line for one: "crate -> dock: holds" or "crate -> dock: not yet".
 std::string object_goal_line(const scenario::World& world, const render::ObjectGoalOverlay& goal);
 
 // preview.png's overlay: kappa_0's mRegions, the object goals, and a legend with the task, its
 // simplification (or why it is infeasible), the invalid propositions and the object goals.
-render::Overlay preview_overlay(const scenario::World& world, const Reasoning& reasoning);
+render::Overlay preview_overlay(const scenario::World& world, const knowledge::Reasoning& reasoning);
 
 }  // namespace physltl::app

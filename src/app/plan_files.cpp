@@ -42,7 +42,7 @@ json report_json(const RunSummary& run) {
   const auto simplified = reasoning.simplified_formula();
   json report = {
       {"scenario", run.world.source_file},
-      {"planner", planning::planner_name(run.planner)},
+      {"planner", run.planner.name},
       {"seed", run.world.planner.seed},
       {"time_limit_s", run.world.planner.time_limit},
       {"formula", run.world.task.formula},

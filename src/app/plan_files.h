@@ -3,12 +3,12 @@
 // docs/outputs.md; the ones named there as stable stay.
 
 #include "physltl/planning/robustness.h"
-#include "physltl/planning/planner.h"
+#include "physltl/planning/registry.h"
 #include "physltl/planning/validated_plan.h"
 #include "physltl/planning/replay.h"
 #include "physltl/planning/task.h"
 #include "physltl/scenario/world.h"
-#include "reasoning.h"
+#include "physltl/knowledge/reasoning.h"
 
 #include <nlohmann/json.hpp>
 
@@ -19,9 +19,9 @@ namespace physltl::app {
 
 struct RunSummary {
   const scenario::World& world;
-  const Reasoning& reasoning;
+  const knowledge::Reasoning& reasoning;
   const planning::TaskAutomaton& as_written;  // the formula every replay checks, and its labelling
-  planning::PlannerKind planner;
+  const planning::PlannerEntry& planner;
   const planning::PlanResult& result;
   const planning::Replay* replay;  // null when nothing was solved
   const planning::Improvement* improvement = nullptr;  // when the plan was improved

@@ -41,7 +41,7 @@ render::Color automaton_state_color(int state, int states) {
   return {0.15f + 0.85f * t, 0.35f + 0.25f * t * (1 - t), 0.95f - 0.85f * t, 1.0f};
 }
 
-PlanFrames write_plan_frames(const scenario::World& world, const Reasoning& reasoning, const planning::Replay& replay,
+PlanFrames write_plan_frames(const scenario::World& world, const knowledge::Reasoning& reasoning, const planning::Replay& replay,
                              int automaton_states, const std::filesystem::path& folder,
                              const std::filesystem::path& video, const Progress& progress,
                              const std::vector<render::SegmentOverlay>& marks, const std::string& mark_legend) {
@@ -102,7 +102,7 @@ PlanFrames write_plan_frames(const scenario::World& world, const Reasoning& reas
   return {written, encoder.finish()};
 }
 
-void write_tree_picture(const scenario::World& world, const Reasoning& reasoning,
+void write_tree_picture(const scenario::World& world, const knowledge::Reasoning& reasoning,
                         const decomposition::Decomposition& decomposition, const planning::PlanResult& result,
                         const planning::Replay* replay, const std::filesystem::path& file) {
   render::Overlay overlay;

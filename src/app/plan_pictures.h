@@ -2,11 +2,11 @@
 // --render: the replayed plan as frames and a video, and the search tree from above.
 
 #include "physltl/decomposition/decomposition.h"
-#include "physltl/planning/planner.h"
+#include "physltl/planning/planner_options.h"
 #include "physltl/planning/replay.h"
 #include "physltl/render/scene.h"
 #include "physltl/render/video.h"
-#include "reasoning.h"
+#include "physltl/knowledge/reasoning.h"
 
 #include <filesystem>
 #include <functional>
@@ -27,14 +27,14 @@ struct PlanFrames {
 // `automaton_states` is the size of the automaton the replay's trace runs on.
 // `marks` are drawn on the floor under the path in every frame (`execute --render`: the path the plan
 // meant and where replanning began), with `mark_legend` as one more line of the legend.
-PlanFrames write_plan_frames(const scenario::World& world, const Reasoning& reasoning, const planning::Replay& replay,
+PlanFrames write_plan_frames(const scenario::World& world, const knowledge::Reasoning& reasoning, const planning::Replay& replay,
                              int automaton_states, const std::filesystem::path& folder,
                              const std::filesystem::path& video, const Progress& progress,
                              const std::vector<render::SegmentOverlay>& marks = {}, const std::string& mark_legend = "");
 
 // tree.png: the decomposition faintly, the tree's edges coloured by automaton state, the path on top;
 // `reasoning` names the regions the task avoids.
-void write_tree_picture(const scenario::World& world, const Reasoning& reasoning,
+void write_tree_picture(const scenario::World& world, const knowledge::Reasoning& reasoning,
                         const decomposition::Decomposition& decomposition, const planning::PlanResult& result,
                         const planning::Replay* replay, const std::filesystem::path& file);
 

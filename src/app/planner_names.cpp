@@ -7,22 +7,18 @@
 
 namespace physltl::app {
 
-std::string planner_names() {
-  std::string names;
-  for (const auto planner : planning::all_planners()) names += (names.empty() ? "" : ", ") + std::string(planning::planner_name(planner));
-  return names;
-}
+std::string planner_names() { return planning::PlannerRegistry::instance().names(); }
 
-planning::PlannerKind parse_planner(const std::string& name) {
-  if (const auto planner = planning::planner_from_name(name)) return *planner;
+const planning::PlannerEntry& parse_planner(const std::string& name) {
+  if (const planning::PlannerEntry* planner = planning::PlannerRegistry::instance().find(name)) return *planner;
   throw BadInput("unknown planner '" + name + "'; the planners are " + planner_names());
 }
 
-std::vector<planning::PlannerKind> parse_planner_list(const std::string& text) {
-  std::vector<planning::PlannerKind> planners;
+std::vector<const planning::PlannerEntry*> parse_planner_list(const std::string& text) {
+  std::vector<const planning::PlannerEntry*> planners;
   std::istringstream in(text);
   for (std::string name; std::getline(in, name, ',');) {
-    const planning::PlannerKind planner = parse_planner(name);
+    const planning::PlannerEntry* planner = &parse_planner(name);
     if (std::find(planners.begin(), planners.end(), planner) != planners.end()) {
       throw BadInput("--planners: '" + name + "' is given twice");
     }

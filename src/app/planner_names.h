@@ -1,7 +1,9 @@
 #pragma once
-// The planners' names on the command line: --planner NAME and bench --planners A,B,...
+// The planners' names on the command line, as the registry knows them: --planner NAME and bench
+// --planners A,B,...
 
-#include "physltl/planning/planner.h"
+#include "physltl/planning/planner_options.h"
+#include "physltl/planning/registry.h"
 
 #include <string>
 #include <vector>
@@ -11,9 +13,9 @@ namespace physltl::app {
 // "knowledge, baseline, ompl-ltl, ..."
 std::string planner_names();
 // The planner `name` names; BadInput naming it and the choices otherwise.
-planning::PlannerKind parse_planner(const std::string& name);
+const planning::PlannerEntry& parse_planner(const std::string& name);
 // A comma-separated list, each once.
-std::vector<planning::PlannerKind> parse_planner_list(const std::string& text);
+std::vector<const planning::PlannerEntry*> parse_planner_list(const std::string& text);
 // --ompl-sampler: "ompl" (OMPL's uniform control sampler, the default) or "ours".
 planning::OmplControlSampler parse_ompl_sampler(const std::string& name);
 

@@ -6,8 +6,8 @@
 #include "failed_search.h"
 #include "plan_files.h"
 #include "plan_pictures.h"
-#include "planning_job.h"
-#include "reasoning.h"
+#include "physltl/planning/planning_problem.h"
+#include "physltl/knowledge/reasoning.h"
 #include "robustness/robustness_report.h"
 #include "scenario_args.h"
 #include "robustness/uncertainty_args.h"
@@ -69,9 +69,10 @@ int run(const RunArgs& args) {
   if (args.baseline && args.planner && *args.planner != "baseline") {
     throw BadInput("--baseline and --planner " + *args.planner + " name two planners");
   }
-  const planning::PlannerKind planner = args.baseline  ? planning::PlannerKind::kBaseline
-                                        : args.planner ? parse_planner(*args.planner)
-                                                       : planning::PlannerKind::kKnowledge;
+  const planning::PlannerRegistry& registry = planning::PlannerRegistry::instance();
+  const planning::PlannerEntry& planner = args.baseline  ? registry.reference_planner()
+                                          : args.planner ? parse_planner(*args.planner)
+                                                         : registry.default_planner();
   scenario::World world = args.scenario.load();
   if (args.seed) world.planner.seed = *args.seed;
   if (args.time_limit) world.planner.time_limit = *args.time_limit;
@@ -80,34 +81,34 @@ int run(const RunArgs& args) {
     if (!args.quiet) std::cout << line << "\n";
   };
 
-  const Reasoning reasoning = reason_about(world);
+  const planning::PlanningProblem problem(world);
+  const knowledge::Reasoning& reasoning = problem.reasoning();
   for (const auto& p : reasoning.feasibility.invalid) say("invalid    " + p.reason);
-  if (!reasoning.feasible()) {
+  if (!problem.feasible()) {
     std::cerr << "physltl-studio: the task is infeasible: " << reasoning.task.infeasibility() << "\n";
     return kExitNoPlan;
   }
+  if (const auto why = problem.refusal(planner)) throw BadInput(*why);
   // Made before planning so that an unwritable --out fails at once, not after minutes of search; it is
   // removed again unless the run succeeds.
   OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
-  const PreparedRun prepared(world, reasoning);
-  const planning::TaskAutomaton& task = prepared.search_task(planner);
-  if (const auto why = planning::refusal(planner, task)) throw BadInput(*why);
+  const planning::TaskAutomaton& task = problem.search_task(planner);
   say(fmt::format("task       {} ({} automaton states, {} planner, seed {})",
-                  planner == planning::PlannerKind::kBaseline ? world.task.formula
-                                                              : ltl::to_string(*reasoning.simplified_formula()),
-                  task.dfa.size(), planning::planner_name(planner), world.planner.seed));
-  say(fmt::format("prepare    {:.2f} s: decomposition, and where the lead goes round the bodies", prepared.preparation_s()));
+                  planner.uses_knowledge ? ltl::to_string(*reasoning.simplified_formula()) : world.task.formula,
+                  task.dfa.size(), planner.name, world.planner.seed));
+  say(fmt::format("prepare    {:.2f} s: reasoning, decomposition, and where the lead goes round the bodies",
+                  problem.preparation_s()));
 
   StopSignal stop;  // Ctrl-C and SIGTERM end the search; nothing is written then
   ProgressLine progress(args.quiet);
   progress.show(fmt::format("planning (up to {:g} s) ...", world.planner.time_limit));
-  const planning::ValidatedPlan solution = solve(prepared, {.planner = planner,
-                                                            .ompl_control_sampler = parse_ompl_sampler(args.ompl_sampler),
-                                                            .seed = world.planner.seed,
-                                                            .time_limit = world.planner.time_limit,
-                                                            .threads = args.threads,
-                                                            .improve = args.improve,
-                                                            .stop = &stop.flag()});
+  const planning::ValidatedPlan solution = planning::solve(problem, planner,
+                                                          {.ompl_control_sampler = parse_ompl_sampler(args.ompl_sampler),
+                                                           .seed = world.planner.seed,
+                                                           .time_limit = world.planner.time_limit,
+                                                           .stop = &stop.flag(),
+                                                           .threads = args.threads,
+                                                           .improve = args.improve});
   progress.done();
   const planning::PlanResult& result = solution.result;
   const auto& stats = result.stats;
@@ -120,8 +121,8 @@ int run(const RunArgs& args) {
   }
   if (!result.solved) {
     if (search_was_cut_short(result)) {
-      const RunSummary summary{world, reasoning, prepared.as_written(), planner, result, nullptr};
-      write_failed_search(summary, prepared.decomposition(), out.final_path() / "failed", args.render);
+      const RunSummary summary{world, reasoning, problem.as_written(), planner, result, nullptr};
+      write_failed_search(summary, problem.decomposition(), out.final_path() / "failed", args.render);
       say("outputs    " + (out.final_path() / "failed").string() + "/");
     }
     std::cerr << "physltl-studio: " << no_plan_line(result) << "\n";
@@ -146,17 +147,17 @@ int run(const RunArgs& args) {
   std::optional<planning::Robustness> robustness;
   if (args.robustness > 0) {
     robustness = planning::measure_robustness(world, world.uncertainty, args.robustness, world.planner.seed,
-                                              result.plan, replay, prepared.as_written());
+                                              result.plan, replay, problem.as_written());
     say("robustness " + robustness_line(*robustness, world.uncertainty));
   }
-  const RunSummary summary{world, reasoning, prepared.as_written(), planner, result, &replay,
+  const RunSummary summary{world, reasoning, problem.as_written(), planner, result, &replay,
                            solution.improvement ? &*solution.improvement : nullptr,
                            robustness ? &*robustness : nullptr, &world.uncertainty};
   write_json(out.path() / "report.json", report_json(summary));
   write_json(out.path() / "plan.json", plan_json(summary));
   if (args.render) {
-    write_tree_picture(world, reasoning, prepared.decomposition(), result, &replay, out.path() / "tree.png");
-    const int automaton_states = static_cast<int>(prepared.as_written().dfa.size());
+    write_tree_picture(world, reasoning, problem.decomposition(), result, &replay, out.path() / "tree.png");
+    const int automaton_states = static_cast<int>(problem.as_written().dfa.size());
     const auto frames_started = std::chrono::steady_clock::now();
     const PlanFrames pictures = write_plan_frames(
         world, reasoning, replay, automaton_states, out.path() / "frames", out.path() / "plan.mp4", [&](int done, int total) {
@@ -189,7 +190,7 @@ CommandRunner add_run_command(CLI::App& app) {
   app.add_option("--time-limit", args->time_limit, "Planning time limit in seconds (default: the scenario's)")
       ->check(CLI::PositiveNumber);
   app.add_option("--out", args->out_dir, "Folder for outputs; each scenario writes <out>/<name>/")->capture_default_str();
-  app.add_option("--planner", args->planner, "Planner: " + planner_names() + " (default: knowledge)");
+  app.add_option("--planner", args->planner, "Planner: " + planner_names() + " (default: " + planning::PlannerRegistry::instance().default_planner().name + ")");
   app.add_option("--ompl-sampler", args->ompl_sampler,
                  "Control sampler of OMPL's planners: ompl (OMPL's uniform one) or ours (the knowledge planner's)")
       ->capture_default_str();

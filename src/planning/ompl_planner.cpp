@@ -477,28 +477,27 @@ class SeededSst : public Seeded<oc::SST> {
 // LTLPlanner explores each lead for this long, in wall-clock time: OMPL's default.
 constexpr double kLtlExploreTime = 0.5;  // s
 
-ob::PlannerPtr make_planner(PlannerKind kind, const oc::LTLSpaceInformationPtr& si, const oc::ProductGraphPtr& product,
+ob::PlannerPtr make_planner(OmplAlgorithm kind, const oc::LTLSpaceInformationPtr& si, const oc::ProductGraphPtr& product,
                             const scenario::World& world, int automaton_states, std::uint_fast32_t seed) {
   switch (kind) {
-    case PlannerKind::kOmplLtl:
+    case OmplAlgorithm::kLtl:
       return std::make_shared<Seeded<oc::LTLPlanner>>(seed, si, product, kLtlExploreTime);
-    case PlannerKind::kOmplRrt:
+    case OmplAlgorithm::kRrt:
       return std::make_shared<Seeded<oc::RRT>>(seed, si);
-    case PlannerKind::kOmplKpiece: {
+    case OmplAlgorithm::kKpiece: {
       auto planner = std::make_shared<Seeded<oc::KPIECE1>>(seed, si);
       planner->setProjectionEvaluator(std::make_shared<RobotPosition>(si->getStateSpace().get(), world, automaton_states));
       return planner;
     }
-    case PlannerKind::kOmplSst:
+    case OmplAlgorithm::kSst:
       return std::make_shared<SeededSst>(seed, si);
-    case PlannerKind::kOmplPdst: {
+    case OmplAlgorithm::kPdst: {
       auto planner = std::make_shared<Seeded<oc::PDST>>(seed, si);
       planner->setProjectionEvaluator(std::make_shared<RobotPosition>(si->getStateSpace().get(), world, automaton_states));
       return planner;
     }
-    default:
-      throw std::invalid_argument("not an OMPL planner");
   }
+  throw std::invalid_argument("not an OMPL planner");
 }
 
 }  // namespace
@@ -531,10 +530,14 @@ std::vector<std::vector<int>> step_neighbours(const decomposition::Decomposition
   return neighbours;
 }
 
-PlanResult plan_with_ompl(const scenario::World& world, const TaskAutomaton& task,
-                          const knowledge::AbstractKnowledge& knowledge,
-                          const decomposition::Decomposition& decomposition, const PlannerOptions& options) {
-  if (const auto why = refusal(options.planner, task)) throw std::invalid_argument(*why);
+PlanResult plan_with_ompl(const Problem& problem, const PlannerOptions& options, OmplAlgorithm algorithm) {
+  const scenario::World& world = problem.world;
+  const TaskAutomaton& task = problem.task;
+  const knowledge::AbstractKnowledge& knowledge = problem.knowledge;
+  const decomposition::Decomposition& decomposition = problem.decomposition;
+  if (task.names_bodies() || task.ends_at_rest()) {
+    throw std::invalid_argument("OMPL's product takes co-safe tasks about the robot's regions only (registry.h)");
+  }
   const auto started = std::chrono::steady_clock::now();
   // Every generator OMPL makes without a seed of its own takes the next from its process-wide sequence
   // (OMPL complains once it has started); ours are seeded below.
@@ -590,8 +593,8 @@ PlanResult plan_with_ompl(const scenario::World& world, const TaskAutomaton& tas
   }
   si->setup();
 
-  auto problem = std::make_shared<oc::LTLProblemDefinition>(si);
-  problem->setGoal(std::make_shared<TaskGoal>(si, automaton));
+  auto definition = std::make_shared<oc::LTLProblemDefinition>(si);
+  definition->setGoal(std::make_shared<TaskGoal>(si, automaton));
   // The start with its own label read (OMPL's addLowerStartState leaves it unread).
   ob::State* full = si->allocState();
   ob::State* low_start = low->allocState();
@@ -602,18 +605,18 @@ PlanResult plan_with_ompl(const scenario::World& world, const TaskAutomaton& tas
   const int start_triangle = decomposition.locate(world.robot.start);
   const int start_q = automaton->step(automaton->getStartState(), labels->worldAtRegion(start_triangle));
   full->as<ob::CompoundState>()->as<ob::DiscreteStateSpace::StateType>(2)->value = start_q;
-  problem->addStartState(full);
+  definition->addStartState(full);
   si->freeState(full);
   low->freeState(low_start);
-  if (options.planner == PlannerKind::kOmplSst) {
+  if (algorithm == OmplAlgorithm::kSst) {
     // SST keeps improving its solution until the cost threshold: stop at the first.
     auto objective = std::make_shared<ob::PathLengthOptimizationObjective>(si);
     objective->setCostThreshold(objective->infiniteCost());
-    problem->setOptimizationObjective(objective);
+    definition->setOptimizationObjective(objective);
   }
 
-  const ob::PlannerPtr planner = make_planner(options.planner, si, product, world, static_cast<int>(task.dfa.size()), seeds.next());
-  planner->setProblemDefinition(problem);
+  const ob::PlannerPtr planner = make_planner(algorithm, si, product, world, static_cast<int>(task.dfa.size()), seeds.next());
+  planner->setProblemDefinition(definition);
   planner->setup();
 
   const ob::PlannerTerminationCondition ptc = ob::plannerOrTerminationCondition(
@@ -622,14 +625,14 @@ PlanResult plan_with_ompl(const scenario::World& world, const TaskAutomaton& tas
   const ob::PlannerStatus status = planner->solve(ptc);
 
   PlanResult result;
-  result.solved = problem->hasExactSolution();
+  result.solved = definition->hasExactSolution();
   result.stop_reason = result.solved                                                   ? "solved"
                        : options.stop != nullptr && options.stop->load()               ? "interrupted"
                        : status == ob::PlannerStatus::TIMEOUT || status == ob::PlannerStatus::APPROXIMATE_SOLUTION
                            ? "time limit"
                            : "no solution";
   if (result.solved) {
-    const auto path = std::static_pointer_cast<oc::PathControl>(problem->getLowerSolutionPath());
+    const auto path = std::static_pointer_cast<oc::PathControl>(definition->getLowerSolutionPath());
     for (std::size_t i = 0; i < path->getControlCount(); ++i) {
       const int steps = static_cast<int>(std::lround(path->getControlDuration(i) / world.planner.step_size));
       result.plan.controls.push_back({setpoint_of(path->getControl(i), differential), steps});
@@ -654,7 +657,7 @@ PlanResult plan_with_ompl(const scenario::World& world, const TaskAutomaton& tas
     }
   }
   result.stats.tree_nodes = data.numVertices();
-  if (options.planner == PlannerKind::kOmplLtl) {
+  if (algorithm == OmplAlgorithm::kLtl) {
     std::vector<ob::State*> states;
     std::static_pointer_cast<oc::LTLPlanner>(planner)->getTree(states);
     result.stats.tree_nodes = static_cast<long long>(states.size());
@@ -679,11 +682,11 @@ PlanResult plan_with_ompl(const scenario::World& world, const TaskAutomaton& tas
                      {"distance", differential ? "robot position + 0.25 m/rad heading" : "robot position"},
                      {"automaton_state_weight", fmt::format("{}", kAutomatonStateWeight)},
                      {"validity", "knowledge (kappa re-inferred every step), cell skips refused"}};
-  if (options.planner == PlannerKind::kOmplKpiece || options.planner == PlannerKind::kOmplPdst) {
+  if (algorithm == OmplAlgorithm::kKpiece || algorithm == OmplAlgorithm::kPdst) {
     result.settings.push_back({"projection", "robot position (cells of 1/20 of the workspace) and automaton state"});
   }
-  if (options.planner == PlannerKind::kOmplLtl) result.settings.push_back({"explore_time", fmt::format("{}", kLtlExploreTime)});
-  if (options.planner == PlannerKind::kOmplSst) result.settings.push_back({"cost_threshold", "infinite (stop at the first solution)"});
+  if (algorithm == OmplAlgorithm::kLtl) result.settings.push_back({"explore_time", fmt::format("{}", kLtlExploreTime)});
+  if (algorithm == OmplAlgorithm::kSst) result.settings.push_back({"cost_threshold", "infinite (stop at the first solution)"});
   for (const auto& [name, value] : params) result.settings.push_back({name, value});
   return result;
 }

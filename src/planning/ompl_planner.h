@@ -8,6 +8,7 @@
 // OMPL types stay in this module's .cpp files.
 
 #include "physltl/planning/planner_options.h"
+#include "physltl/planning/problem.h"
 
 #include <vector>
 
@@ -23,8 +24,14 @@ namespace physltl::planning {
 // step ends in, as our planner's does.
 std::vector<std::vector<int>> step_neighbours(const decomposition::Decomposition& decomposition, double reach);
 
-PlanResult plan_with_ompl(const scenario::World& world, const TaskAutomaton& task,
-                          const knowledge::AbstractKnowledge& knowledge,
-                          const decomposition::Decomposition& decomposition, const PlannerOptions& options);
+enum class OmplAlgorithm {
+  kLtl,     // LTLPlanner (Bhatia et al.)
+  kRrt,     // the control planners, searching OMPL's product of the decomposition and the automaton
+  kKpiece,  // KPIECE1
+  kSst,
+  kPdst,
+};
+
+PlanResult plan_with_ompl(const Problem& problem, const PlannerOptions& options, OmplAlgorithm algorithm);
 
 }  // namespace physltl::planning

@@ -4,6 +4,7 @@
 #include "object_lead.h"
 #include "product_graph.h"
 #include "physltl/planning/random.h"
+#include "physltl/planning/route_choice.h"
 #include "stage_graph.h"
 #include "tree_grower.h"
 #include "worker_pool.h"
@@ -75,21 +76,21 @@ struct Expansion {
 
 class Search {
  public:
-  Search(const scenario::World& world, const TaskAutomaton& task, const knowledge::AbstractKnowledge& knowledge,
-         const decomposition::Decomposition& decomposition, const PlannerOptions& options)
-      : world_(world),
-        task_(task),
-        knowledge_(knowledge),
-        decomposition_(decomposition),
+  Search(const Problem& problem, const PlannerOptions& options, TreeSearchMode mode)
+      : world_(problem.world),
+        task_(problem.task),
+        knowledge_(problem.knowledge),
+        decomposition_(problem.decomposition),
         options_(options),
-        stages_(task),
+        knowledge_mode_(mode == TreeSearchMode::kKnowledge),
+        stages_(task_),
         // The knowledge planner's lead goes round the bodies where the task needs no pushing (route_choice.h).
-        routes_(options.planner != PlannerKind::kKnowledge ? RouteChoice{}
-                : options.routes != nullptr                  ? *options.routes
-                                                             : choose_routes(world, task, decomposition)),
-        graph_(decomposition, stages_, routes_.lead_factor),
+        routes_(!knowledge_mode_            ? RouteChoice{}
+                : problem.routes != nullptr ? *problem.routes
+                                            : choose_routes(world_, task_, decomposition_)),
+        graph_(decomposition_, stages_, routes_.lead_factor),
         lead_search_(graph_),
-        object_lead_(world, knowledge, decomposition),
+        object_lead_(world_, knowledge_, decomposition_),
         random_(options.seed),
         pool_(options.threads),
         growers_(static_cast<size_t>(pool_.threads())),
@@ -263,7 +264,7 @@ class Search {
   // Past a stall, some expansions grow as the baseline's would, some of those from anywhere in the tree.
   void widen_if_stalled(Expansion& e) {
     ++expansions_since_progress_;
-    if (options_.planner != PlannerKind::kKnowledge || expansions_since_progress_ < kStallExpansions) return;
+    if (!knowledge_mode_ || expansions_since_progress_ < kStallExpansions) return;
     widened_ = true;
     if (!random_.chance(kWidenedShare)) return;
     e.guidance = Guidance::kWidened;
@@ -317,7 +318,7 @@ class Search {
       auto& grower = growers_[static_cast<size_t>(worker)];
       if (!grower) {
         grower.emplace(world_, task_, stages_, knowledge_, decomposition_, graph_, object_lead_,
-                       options_.planner == PlannerKind::kKnowledge);
+                       knowledge_mode_);
       }
       const Expansion& e = expansions_[static_cast<size_t>(task - extra)];
       grower->grow(motions_[static_cast<size_t>(e.from)], e.target, e.goal ? &*e.goal : nullptr, e.guidance, e.seed,
@@ -454,6 +455,7 @@ class Search {
   const knowledge::AbstractKnowledge& knowledge_;
   const decomposition::Decomposition& decomposition_;
   const PlannerOptions& options_;
+  const bool knowledge_mode_;  // the knowledge planner; otherwise the baseline
   const StageGraph stages_;
   const RouteChoice routes_;
   ProductGraph graph_;
@@ -486,11 +488,9 @@ class Search {
 
 }  // namespace
 
-PlanResult plan_with_tree_search(const scenario::World& world, const TaskAutomaton& task,
-                                 const knowledge::AbstractKnowledge& knowledge,
-                                 const decomposition::Decomposition& decomposition, const PlannerOptions& options) {
+PlanResult plan_with_tree_search(const Problem& problem, const PlannerOptions& options, TreeSearchMode mode) {
   const auto started = std::chrono::steady_clock::now();
-  return Search(world, task, knowledge, decomposition, options).run(started);
+  return Search(problem, options, mode).run(started);
 }
 
 }  // namespace physltl::planning

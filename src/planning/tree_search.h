@@ -1,13 +1,23 @@
 #pragma once
-// Our planners, knowledge and baseline: the product-graph tree search of planner.h's comment
-// (docs/planner.md). plan() chooses it for PlannerKind::kKnowledge and kBaseline.
+// Our planners, knowledge and baseline: the product-graph tree search of docs/planner.md.
+//
+// Why our own loop and not OMPL's LTLPlanner (which runs beside it as a peer): LTLPlanner explores each
+// lead for a wall-clock time, so a seed does not give one plan, and it needs guards for its unlabelled
+// start and for steps that cross a thin triangle. Our loop keeps the same structure (lead, available
+// regions, weights), tracks the automaton at every physics step, grows mostly from the lead's frontier,
+// and lets several threads grow one tree without changing the plan (docs/planner.md); measured beside
+// OMPL's planners in docs/benchmarks.md.
 
 #include "physltl/planning/planner_options.h"
+#include "physltl/planning/problem.h"
 
 namespace physltl::planning {
 
-PlanResult plan_with_tree_search(const scenario::World& world, const TaskAutomaton& task,
-                                 const knowledge::AbstractKnowledge& knowledge,
-                                 const decomposition::Decomposition& decomposition, const PlannerOptions& options);
+enum class TreeSearchMode {
+  kKnowledge,  // kappa-aware validity, the route choice and its escape (the paper's planner)
+  kBaseline,   // fixed-body contacts only, uniform controls (the paper's simple planner)
+};
+
+PlanResult plan_with_tree_search(const Problem& problem, const PlannerOptions& options, TreeSearchMode mode);
 
 }  // namespace physltl::planning

@@ -20,7 +20,7 @@ const scenario::World& rooms() {
 }
 
 TEST(MRegionOverlays, OnePerPushableSideActiveAsKappaSays) {
-  const Reasoning r = reason_about(rooms());
+  const knowledge::Reasoning r = knowledge::reason_about(rooms());
   const auto overlays = mregion_overlays(r.knowledge, r.initial_kappa, r.initial_state);
   ASSERT_EQ(overlays.size(), 12u);  // three boxes, four sides each
   // Each doorway box can be pushed from -y and +y only; the overlays follow the body order, then the sides.
@@ -33,7 +33,7 @@ TEST(MRegionOverlays, OnePerPushableSideActiveAsKappaSays) {
 }
 
 TEST(MRegionOverlays, SitAgainstTheirSideInTheWorldFrame) {
-  const Reasoning r = reason_about(rooms());
+  const knowledge::Reasoning r = knowledge::reason_about(rooms());
   const auto overlays = mregion_overlays(r.knowledge, r.initial_kappa, r.initial_state);
   // B1 (0.5 x 1 m at (-3, 1.7)): its +y strip starts at the box's top edge, y = 2.2.
   const auto& b1 = r.knowledge.movable_bodies[0];
@@ -47,7 +47,7 @@ TEST(MRegionOverlays, SitAgainstTheirSideInTheWorldFrame) {
 }
 
 TEST(PreviewOverlay, LegendShowsTaskUnreachableRegionsAndThePlannedTask) {
-  const render::Overlay overlay = preview_overlay(rooms(), reason_about(rooms()));
+  const render::Overlay overlay = preview_overlay(rooms(), knowledge::reason_about(rooms()));
   EXPECT_EQ(overlay.mregions.size(), 12u);
   ASSERT_GE(overlay.legend.size(), 3u);
   EXPECT_EQ(overlay.legend[0], "task: F(p1 & F(p2 & F(p3 | p4)))");
@@ -60,7 +60,7 @@ TEST(PreviewOverlay, LegendShowsTaskUnreachableRegionsAndThePlannedTask) {
 // them blocked by the doorway's jambs).
 TEST(PreviewOverlay, OfficeWithBodiesOfEveryShapeAndTheirMRegions) {
   const scenario::World world = scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/scenarios/office.lua");
-  const Reasoning r = reason_about(world);
+  const knowledge::Reasoning r = knowledge::reason_about(world);
   const auto overlays = mregion_overlays(r.knowledge, r.initial_kappa, r.initial_state);
   EXPECT_EQ(overlays.size(), 12u + 5u);  // the bin's sectors, the chair's faces
   EXPECT_EQ(std::count_if(overlays.begin(), overlays.end(), [](const auto& m) { return !m.active; }), 2);

@@ -3,12 +3,13 @@
 #include "plan_pictures.h"
 
 #include "golden_image.h"
+#include "physltl/planning/registry.h"
 #include "physltl/ltl/parser.h"
 #include "physltl/ltl/translate.h"
 #include "physltl/render/frame_writer.h"
 #include "physltl/render/png.h"
 #include "physltl/scenario/load.h"
-#include "reasoning.h"
+#include "physltl/knowledge/reasoning.h"
 
 #include <gtest/gtest.h>
 
@@ -28,14 +29,15 @@ class FixedPlan : public testing::Test {
     world_->render.width = 320;
     world_->render.height = 240;
     world_->render.fps = 10;
-    reasoning_ = new Reasoning(reason_about(*world_));
+    reasoning_ = new knowledge::Reasoning(knowledge::reason_about(*world_));
     decomposition_ = new decomposition::Decomposition(decomposition::Decomposition::build(*world_));
     const auto task = planning::TaskAutomaton::make(*reasoning_->simplified_formula(), *reasoning_->task.dfa, *world_);
     as_written_ = new planning::TaskAutomaton(
         planning::TaskAutomaton::make(ltl::parse(world_->task.formula), *world_));
     planning::PlannerOptions options;
     options.seed = 3;
-    result_ = new planning::PlanResult(planning::plan(*world_, task, reasoning_->knowledge, *decomposition_, options));
+    result_ = new planning::PlanResult(planning::PlannerRegistry::instance().default_planner().plan(
+        planning::Problem{*world_, task, *as_written_, reasoning_->knowledge, *decomposition_}, options));
     replay_ = new planning::Replay(planning::replay(*world_, result_->plan, *as_written_, reasoning_->knowledge,
                                                     knowledge::ValidityMode::kKnowledge));
   }
@@ -57,7 +59,7 @@ class FixedPlan : public testing::Test {
   }
 
   static scenario::World* world_;
-  static Reasoning* reasoning_;
+  static knowledge::Reasoning* reasoning_;
   static decomposition::Decomposition* decomposition_;
   static planning::TaskAutomaton* as_written_;
   static planning::PlanResult* result_;
@@ -65,7 +67,7 @@ class FixedPlan : public testing::Test {
 };
 
 scenario::World* FixedPlan::world_;
-Reasoning* FixedPlan::reasoning_;
+knowledge::Reasoning* FixedPlan::reasoning_;
 decomposition::Decomposition* FixedPlan::decomposition_;
 planning::TaskAutomaton* FixedPlan::as_written_;
 planning::PlanResult* FixedPlan::result_;

@@ -137,7 +137,7 @@ TEST(Execute, RefusesOmplsPlannersAndBadValuesWithoutWritingAnything) {
   const fs::path out = fresh_out_dir();
   const std::string execute = "execute " + small_ordered(test_dir()).string() + " --worlds 2 --out " + out.string();
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {" --planner ompl-rrt", "OMPL's planners do not take"},
+      {" --planner ompl-rrt", "ompl-rrt cannot take a budget of propagations"},
       {" --uncertainty mass=5", "'mass' is too large"},
       {" --worlds 0", "--worlds"},
       {" --tolerance 0", "--tolerance"},

@@ -11,19 +11,21 @@
 namespace campaign_dealing {
 
 using namespace physltl::app;
-using physltl::planning::PlannerKind;
+using physltl::planning::PlannerEntry;
+
+const PlannerEntry* planner(const char* name) { return physltl::planning::PlannerRegistry::instance().find(name); }
 
 // 3 scenarios (one swept over two values) x 7 planners x `runs` seeds.
 std::vector<CaseUnits> seven_planners() {
   const std::vector<PlannerConfig> planners = {
-      {PlannerKind::kKnowledge, 1}, {PlannerKind::kBaseline, 1}, {PlannerKind::kOmplLtl, 1}, {PlannerKind::kOmplRrt, 1},
-      {PlannerKind::kOmplKpiece, 1}, {PlannerKind::kOmplSst, 1}, {PlannerKind::kOmplPdst, 1}};
+      {planner("knowledge"), 1}, {planner("baseline"), 1}, {planner("ompl-ltl"), 1}, {planner("ompl-rrt"), 1},
+      {planner("ompl-kpiece"), 1}, {planner("ompl-sst"), 1}, {planner("ompl-pdst"), 1}};
   return {{"rooms", 1, planners}, {"ordered", 5, planners}, {"rooms_n-rooms-4", 3, planners}, {"rooms_n-rooms-8", 3, planners}};
 }
 
 TEST(CampaignUnits, ComeSeedBySeedThenCaseThenPlannerWithKeysNamingEach) {
-  const std::vector<CaseUnits> cases = {{"rooms", 1, {{PlannerKind::kKnowledge, 1}, {PlannerKind::kKnowledge, 2}}},
-                                        {"ordered", 7, {{PlannerKind::kBaseline, 1}}}};
+  const std::vector<CaseUnits> cases = {{"rooms", 1, {{planner("knowledge"), 1}, {planner("knowledge"), 2}}},
+                                        {"ordered", 7, {{planner("baseline"), 1}}}};
   const std::vector<Unit> units = campaign_units(cases, 2);
   ASSERT_EQ(units.size(), 6u);
   const std::vector<std::string> keys = {"rooms knowledge x1 seed 1", "rooms knowledge x2 seed 1", "ordered baseline x1 seed 7",
@@ -42,7 +44,7 @@ TEST(ShardDealing, PutsEveryUnitInExactlyOneShardAndSpreadsEveryPlannerAndCase) 
       const std::vector<size_t> mine = shard_units(units, cases, "campaign", {k, count});
       EXPECT_TRUE(std::is_sorted(mine.begin(), mine.end()));
       EXPECT_LE(mine.size(), (units.size() + count - 1) / count + 1) << k << "/" << count;
-      std::map<PlannerKind, size_t> per_planner;
+      std::map<const PlannerEntry*, size_t> per_planner;
       std::map<size_t, size_t> per_case;
       for (const size_t i : mine) {
         ++owners[i];
@@ -51,7 +53,7 @@ TEST(ShardDealing, PutsEveryUnitInExactlyOneShardAndSpreadsEveryPlannerAndCase) 
       }
       const size_t planner_units = units.size() / 7, case_units = units.size() / cases.size();
       for (const auto& [planner, n] : per_planner) {
-        EXPECT_LE(n, (planner_units + count - 1) / count) << k << "/" << count << " planner " << static_cast<int>(planner);
+        EXPECT_LE(n, (planner_units + count - 1) / count) << k << "/" << count << " planner " << planner->name;
       }
       for (const auto& [c, n] : per_case) EXPECT_LE(n, (case_units + count - 1) / count + 7) << k << "/" << count;
     }
@@ -64,7 +66,7 @@ TEST(ShardDealing, WithAsManyShardsAsPlannersEachShardRunsEveryPlanner) {
   const std::vector<CaseUnits> cases = seven_planners();
   const std::vector<Unit> units = campaign_units(cases, 20);
   for (int k = 1; k <= 7; ++k) {
-    std::set<PlannerKind> planners;
+    std::set<const PlannerEntry*> planners;
     std::set<std::uint64_t> seeds;
     for (const size_t i : shard_units(units, cases, "campaign", {k, 7})) {
       planners.insert(cases[units[i].case_index].planners[units[i].planner_index].planner);

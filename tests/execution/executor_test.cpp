@@ -1,6 +1,7 @@
 // Execution with monitoring and replanning, in perturbed simulations standing in for reality.
 
 #include "physltl/execution/executor.h"
+#include "physltl/execution/replanner.h"
 #include "physltl/planning/perturbation.h"
 #include "physltl/planning/robustness.h"
 #include "test_problem.h"
@@ -12,24 +13,9 @@ namespace executor_test {
 using namespace physltl;
 using namespace physltl::planning;
 
-// What the app's replanner does, without the app: the remaining task planned in the model from here.
+// The remaining task planned in the model from here, as execute replans.
 execution::Replanned replan(const scenario::World& from_here) {
-  const knowledge::AbstractKnowledge knowledge = knowledge::formulate(from_here);
-  const TaskAutomaton task = TaskAutomaton::make(ltl::parse(from_here.task.formula), from_here);
-  const auto decomposition = decomposition::Decomposition::build(from_here);
-  PlannerOptions options;
-  options.seed = 5;
-  options.time_limit = 600;
-  options.max_propagations = 200'000;
-  const ValidatedPlan solution = plan_and_validate({from_here, task, task, knowledge, decomposition}, options);
-  execution::Replanned out;
-  out.propagations = solution.result.stats.propagations;
-  out.stop_reason = solution.result.stop_reason;
-  if (solution.solved()) {
-    out.plan = solution.result.plan;
-    out.nominal = *solution.replay;
-  }
-  return out;
+  return execution::replan(from_here, PlannerRegistry::instance().default_planner(), 5, 200'000);
 }
 
 class Executing : public OrderedPlanPushingBoxes {

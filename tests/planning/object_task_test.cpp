@@ -1,6 +1,6 @@
 // Tasks about where bodies must be (BODY@REGION): the stages, the planner and the replay.
 
-#include "physltl/planning/planner.h"
+#include "physltl/planning/registry.h"
 #include "physltl/planning/replay.h"
 #include "stage_graph.h"
 
@@ -164,11 +164,11 @@ TEST(Replay, AStayTaskWhoseCrateEndsOutsideTheDockIsRejected) {
 
 TEST(Planner, OmplsPlannersRefuseTasksAboutBodiesAndSayWhy) {
   const TestProblem p("delivery.lua");
-  const auto why = refusal(PlannerKind::kOmplRrt, p.task);
+  const auto why = PlannerRegistry::instance().refusal(planner_named("ompl-rrt"), p.task);
   ASSERT_TRUE(why);
   EXPECT_NE(why->find("BODY@REGION"), std::string::npos) << *why;
-  EXPECT_FALSE(refusal(PlannerKind::kKnowledge, p.task));
-  EXPECT_FALSE(refusal(PlannerKind::kBaseline, p.task));
+  EXPECT_FALSE(PlannerRegistry::instance().refusal(planner_named("knowledge"), p.task));
+  EXPECT_FALSE(PlannerRegistry::instance().refusal(planner_named("baseline"), p.task));
 }
 
 }  // namespace

@@ -14,9 +14,8 @@
 namespace physltl::planning {
 namespace {
 
-PlannerOptions ompl_options(PlannerKind planner, std::uint64_t seed, double time_limit = 20) {
+PlannerOptions ompl_options(std::uint64_t seed, double time_limit = 20) {
   PlannerOptions options;
-  options.planner = planner;
   options.seed = seed;
   options.time_limit = time_limit;
   return options;
@@ -38,12 +37,11 @@ void expect_every_step_in_the_graph(const TestProblem& p, const Replay& replay) 
 
 TEST(OmplPlanners, EachSolvesOrderedWithAPlanOurReplayValidates) {
   const TestProblem p("ordered.lua");
-  for (const PlannerKind planner : {PlannerKind::kOmplLtl, PlannerKind::kOmplRrt, PlannerKind::kOmplKpiece,
-                                    PlannerKind::kOmplSst, PlannerKind::kOmplPdst}) {
-    const PlanResult result = plan(p.world, p.task, p.knowledge, p.decomposition, ompl_options(planner, 1));
-    ASSERT_TRUE(result.solved) << planner_name(planner) << ": " << result.stop_reason;
+  for (const std::string planner : {"ompl-ltl", "ompl-rrt", "ompl-kpiece", "ompl-sst", "ompl-pdst"}) {
+    const PlanResult result = p.plan_task(p.task, ompl_options(1), planner);
+    ASSERT_TRUE(result.solved) << planner << ": " << result.stop_reason;
     const Replay replay = p.check(result.plan);
-    EXPECT_TRUE(replay.validated()) << planner_name(planner) << ": " << replay.failure;
+    EXPECT_TRUE(replay.validated()) << planner << ": " << replay.failure;
     expect_every_step_in_the_graph(p, replay);
     EXPECT_FALSE(result.settings.empty());
   }
@@ -53,38 +51,37 @@ TEST(OmplPlanners, EachSolvesOrderedWithAPlanOurReplayValidates) {
 // the baseline: the same physics, validity and decomposition, whatever the shapes.
 TEST(OmplPlanners, TheySolveAWorldOfBodiesOfEveryShapeAsTheBaselineDoes) {
   const TestProblem p("office.lua");
-  for (const PlannerKind planner : {PlannerKind::kOmplRrt, PlannerKind::kOmplKpiece, PlannerKind::kBaseline}) {
-    PlannerOptions options = ompl_options(planner, 2);
-    const PlanResult result = plan(p.world, p.task, p.knowledge, p.decomposition, options);
-    ASSERT_TRUE(result.solved) << planner_name(planner) << ": " << result.stop_reason;
-    const Replay replayed = planning::replay(p.world, result.plan, p.original, p.knowledge, validity_mode(planner));
-    EXPECT_TRUE(replayed.validated()) << planner_name(planner) << ": " << replayed.failure;
+  for (const std::string planner : {"ompl-rrt", "ompl-kpiece", "baseline"}) {
+    PlannerOptions options = ompl_options(2);
+    const PlanResult result = p.plan_task(p.task, options, planner);
+    ASSERT_TRUE(result.solved) << planner << ": " << result.stop_reason;
+    const Replay replayed = planning::replay(p.world, result.plan, p.original, p.knowledge, (planner_named(planner).uses_knowledge ? knowledge::ValidityMode::kKnowledge : knowledge::ValidityMode::kBaseline));
+    EXPECT_TRUE(replayed.validated()) << planner << ": " << replayed.failure;
   }
 }
 
 TEST(OmplPlanners, RrtKpieceSstAndPdstGiveTheSamePlanForTheSameSeed) {
   const TestProblem p("ordered.lua");
-  for (const PlannerKind planner : {PlannerKind::kOmplRrt, PlannerKind::kOmplKpiece, PlannerKind::kOmplSst,
-                                    PlannerKind::kOmplPdst}) {
-    const PlanResult a = plan(p.world, p.task, p.knowledge, p.decomposition, ompl_options(planner, 4));
-    const PlanResult b = plan(p.world, p.task, p.knowledge, p.decomposition, ompl_options(planner, 4));
-    ASSERT_TRUE(a.solved && b.solved) << planner_name(planner);
-    ASSERT_EQ(a.plan.controls.size(), b.plan.controls.size()) << planner_name(planner);
-    EXPECT_EQ(a.plan.states, b.plan.states) << planner_name(planner);
-    EXPECT_EQ(a.stats.physics_steps, b.stats.physics_steps) << planner_name(planner);
-    const PlanResult other = plan(p.world, p.task, p.knowledge, p.decomposition, ompl_options(planner, 5));
-    EXPECT_NE(other.stats.physics_steps, a.stats.physics_steps) << planner_name(planner);  // the seed matters
+  for (const std::string planner : {"ompl-rrt", "ompl-kpiece", "ompl-sst", "ompl-pdst"}) {
+    const PlanResult a = p.plan_task(p.task, ompl_options(4), planner);
+    const PlanResult b = p.plan_task(p.task, ompl_options(4), planner);
+    ASSERT_TRUE(a.solved && b.solved) << planner;
+    ASSERT_EQ(a.plan.controls.size(), b.plan.controls.size()) << planner;
+    EXPECT_EQ(a.plan.states, b.plan.states) << planner;
+    EXPECT_EQ(a.stats.physics_steps, b.stats.physics_steps) << planner;
+    const PlanResult other = p.plan_task(p.task, ompl_options(5), planner);
+    EXPECT_NE(other.stats.physics_steps, a.stats.physics_steps) << planner;  // the seed matters
   }
 }
 
 TEST(OmplPlanners, WithOurControlSamplerTheyStillSolveOrderedAndSaySo) {
   const TestProblem p("ordered.lua");
-  for (const PlannerKind planner : {PlannerKind::kOmplRrt, PlannerKind::kOmplKpiece}) {
-    PlannerOptions options = ompl_options(planner, 2);
+  for (const std::string planner : {"ompl-rrt", "ompl-kpiece"}) {
+    PlannerOptions options = ompl_options(2);
     options.ompl_control_sampler = OmplControlSampler::kOurs;
-    const PlanResult result = plan(p.world, p.task, p.knowledge, p.decomposition, options);
-    ASSERT_TRUE(result.solved) << planner_name(planner) << ": " << result.stop_reason;
-    EXPECT_TRUE(p.check(result.plan).validated()) << planner_name(planner);
+    const PlanResult result = p.plan_task(p.task, options, planner);
+    ASSERT_TRUE(result.solved) << planner << ": " << result.stop_reason;
+    EXPECT_TRUE(p.check(result.plan).validated()) << planner;
     const auto sampler = std::find_if(result.settings.begin(), result.settings.end(),
                                       [](const auto& s) { return s.first == "control_sampler"; });
     ASSERT_NE(sampler, result.settings.end());
@@ -123,7 +120,7 @@ TEST(OmplPlanners, StepNeighboursAreTheTrianglesOneStepCanReach) {
 TEST(OmplPlanners, PlansCrossTrianglesThinnerThanAStepWithinTheGraph) {
   TestProblem p("ordered.lua");
   p.decomposition = decomposition::Decomposition::build(p.world, {.max_edge = 0.06});
-  const PlanResult result = plan(p.world, p.task, p.knowledge, p.decomposition, ompl_options(PlannerKind::kOmplKpiece, 1, 30));
+  const PlanResult result = p.plan_task(p.task, ompl_options(1, 30), "ompl-kpiece");
   ASSERT_TRUE(result.solved) << result.stop_reason;
   EXPECT_EQ(result.stats.cell_skips_refused, 0);
   const Replay replay = p.check(result.plan);
@@ -135,17 +132,20 @@ TEST(OmplPlanners, PlansCrossTrianglesThinnerThanAStepWithinTheGraph) {
 TEST(OmplPlanners, ATaskThatMustEndAtRestIsRefused) {
   const TestProblem p("avoid.lua");
   ASSERT_TRUE(p.task.ends_at_rest());
-  EXPECT_FALSE(refusal(PlannerKind::kKnowledge, p.task).has_value());
-  const auto why = refusal(PlannerKind::kOmplRrt, p.task);
+  EXPECT_FALSE(PlannerRegistry::instance().refusal(planner_named("knowledge"), p.task).has_value());
+  const auto why = PlannerRegistry::instance().refusal(planner_named("ompl-rrt"), p.task);
   ASSERT_TRUE(why.has_value());
   EXPECT_NE(why->find("ompl-rrt"), std::string::npos);
-  EXPECT_THROW(plan(p.world, p.task, p.knowledge, p.decomposition, ompl_options(PlannerKind::kOmplRrt, 1)),
+  EXPECT_THROW(p.plan_task(p.task, ompl_options(1), "ompl-rrt"),
                std::invalid_argument);
 }
 
-TEST(OmplPlanners, NamesRoundTrip) {
-  for (const PlannerKind planner : all_planners()) EXPECT_EQ(planner_from_name(planner_name(planner)), planner);
-  EXPECT_FALSE(planner_from_name("ompl-est").has_value());
+TEST(OmplPlanners, TheRegistryHasEachOfThemByNameAndNoOtherName) {
+  for (const std::string name : {"ompl-ltl", "ompl-rrt", "ompl-kpiece", "ompl-sst", "ompl-pdst"}) {
+    ASSERT_NE(PlannerRegistry::instance().find(name), nullptr) << name;
+    EXPECT_EQ(PlannerRegistry::instance().find(name)->name, name);
+  }
+  EXPECT_EQ(PlannerRegistry::instance().find("ompl-est"), nullptr);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 #include "physltl/planning/improve.h"
-#include "physltl/planning/planner.h"
+#include "physltl/planning/registry.h"
 #include "physltl/planning/replay.h"
 
 #include "test_problem.h"
@@ -37,7 +37,7 @@ TEST(Planner, SameSeedGivesTheSamePlanBitForBit) {
 
 TEST(Planner, BaselineAlsoSolvesOrderedWithoutKnowledge) {
   const TestProblem p("ordered.lua");
-  const PlanResult result = p.solve(5, PlannerKind::kBaseline);
+  const PlanResult result = p.solve(5, "baseline");
   ASSERT_TRUE(result.solved) << result.stop_reason;
   EXPECT_TRUE(replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kBaseline).validated());
 }
@@ -184,7 +184,7 @@ TEST(Replay, AStopAndStayPlanCutBeforeItsBrakingIsRejected) {
 TEST(Replay, AStopAndStayTraceThatEntersTheHazardIsRejected) {
   const TestProblem p("avoid.lua");
   const TaskAutomaton reach_only = TaskAutomaton::make(ltl::parse("F goal"), p.world);
-  const PlanResult result = plan(p.world, reach_only, p.knowledge, p.decomposition, [] {
+  const PlanResult result = p.plan_task(reach_only, [] {
     PlannerOptions o;
     o.seed = 4;
     o.time_limit = 20;
@@ -245,7 +245,7 @@ ValidatedPlan solve_and_improve(const TestProblem& p, std::uint64_t seed, int im
   options.seed = seed;
   options.time_limit = 20;
   options.improve = improve;
-  return plan_and_validate(p.problem(), options);
+  return plan_and_validate(p.problem(), planner_named("knowledge"), options);
 }
 
 void expect_same_plan(const Plan& a, const Plan& b) {
@@ -306,7 +306,7 @@ TEST(Planner, GivesUpAtItsTimeLimitOnAnImpossibleTask) {
   const TaskAutomaton task = TaskAutomaton::make(ltl::parse("F p4"), p.world);
   PlannerOptions options;
   options.time_limit = 0.3;
-  const PlanResult result = plan(p.world, task, p.knowledge, p.decomposition, options);
+  const PlanResult result = p.plan_task(task, options);
   EXPECT_FALSE(result.solved);
   EXPECT_EQ(result.stop_reason, "time limit");
   EXPECT_LT(result.stats.planning_time_s, 0.6);
@@ -322,7 +322,7 @@ TEST(Planner, ATaskAlreadyLostAtTheStartHasNoLead) {
   const TaskAutomaton task = TaskAutomaton::make(ltl::parse("!p2 U p1"), p.world);
   PlannerOptions options;
   options.time_limit = 5;
-  const PlanResult result = plan(p.world, task, p.knowledge, p.decomposition, options);
+  const PlanResult result = p.plan_task(task, options);
   EXPECT_FALSE(result.solved);
   EXPECT_EQ(result.stop_reason, "no lead");
   EXPECT_EQ(result.stats.propagations, 0);
@@ -333,7 +333,7 @@ TEST(Planner, StopsWhenAskedTo) {
   std::atomic<bool> stop{true};
   PlannerOptions options;
   options.stop = &stop;
-  const PlanResult result = plan(p.world, p.task, p.knowledge, p.decomposition, options);
+  const PlanResult result = p.plan_task(p.task, options);
   EXPECT_FALSE(result.solved);
   EXPECT_EQ(result.stop_reason, "interrupted");
 }

@@ -34,7 +34,7 @@ TEST_P(RegressionFamily, TheKnowledgePlannerSolvesItAndTheReplayAgrees) {
     PlannerOptions options;
     options.seed = seed;
     options.time_limit = 20;
-    const PlanResult result = plan(p.world, p.task, p.knowledge, p.decomposition, options);
+    const PlanResult result = p.plan_task(p.task, options);
     ASSERT_TRUE(result.solved) << w.file << " seed " << seed << ": " << result.stop_reason;
     const Replay replay = p.check(result.plan);
     EXPECT_TRUE(replay.validated()) << w.file << " seed " << seed << ": " << replay.failure;

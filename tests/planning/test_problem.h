@@ -5,7 +5,7 @@
 #include "physltl/ltl/parser.h"
 #include "physltl/ltl/simplify.h"
 #include "physltl/ltl/translate.h"
-#include "physltl/planning/planner.h"
+#include "physltl/planning/registry.h"
 #include "physltl/planning/replay.h"
 #include "physltl/planning/validated_plan.h"
 #include "physltl/scenario/load.h"
@@ -13,9 +13,17 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <stdexcept>
 #include <string>
 
 namespace physltl::planning {
+
+// A planner of the registry, by name; the test fails at once for a name it does not have.
+inline const PlannerEntry& planner_named(const std::string& name) {
+  const PlannerEntry* planner = PlannerRegistry::instance().find(name);
+  if (planner == nullptr) throw std::invalid_argument("no planner named " + name);
+  return *planner;
+}
 
 struct TestProblem {
   scenario::World world;
@@ -45,12 +53,17 @@ struct TestProblem {
     return replay(world, plan, original, knowledge, knowledge::ValidityMode::kKnowledge);
   }
 
-  PlanResult solve(std::uint64_t seed, PlannerKind planner = PlannerKind::kKnowledge) const {
+  // `planner` searching `search_task` (the simplified task, or another), replay checking the formula as written.
+  PlanResult plan_task(const TaskAutomaton& search_task, const PlannerOptions& options,
+                       const std::string& planner = "knowledge") const {
+    return planner_named(planner).plan(Problem{world, search_task, original, knowledge, decomposition}, options);
+  }
+
+  PlanResult solve(std::uint64_t seed, const std::string& planner = "knowledge") const {
     PlannerOptions options;
     options.seed = seed;
     options.time_limit = 20;
-    options.planner = planner;
-    return plan(world, task, knowledge, decomposition, options);
+    return planner_named(planner).plan(problem(), options);
   }
 };
 

@@ -1,12 +1,10 @@
 #pragma once
-// What every planner takes and gives (planner.h): the options of one search and its result.
+// What every planner takes and gives (registry.h): the options of one search and its result.
 
 #include "physltl/decomposition/decomposition.h"
 #include "physltl/knowledge/abstract_knowledge.h"
 #include "physltl/planning/plan.h"
-#include "physltl/planning/planner_kind.h"
 #include "physltl/planning/refusal.h"
-#include "physltl/planning/route_choice.h"
 #include "physltl/planning/task.h"
 
 #include <atomic>
@@ -23,7 +21,6 @@ namespace physltl::planning {
 enum class OmplControlSampler { kOmpl, kOurs };
 
 struct PlannerOptions {
-  PlannerKind planner = PlannerKind::kKnowledge;
   OmplControlSampler ompl_control_sampler = OmplControlSampler::kOmpl;
   std::uint64_t seed = 1;
   double time_limit = 60.0;                     // s of wall-clock planning
@@ -38,9 +35,6 @@ struct PlannerOptions {
   int threads = 1;
   // Candidates plan_and_validate spends shortening the first validated plan (improve.h); 0: none.
   int improve = 0;
-  // The knowledge planner's choice of going round or pushing through (route_choice.h), prepared for the
-  // task once; chosen by the search itself when not given.
-  const RouteChoice* routes = nullptr;
 };
 
 struct PlannerStats {

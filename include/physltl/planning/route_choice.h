@@ -39,7 +39,7 @@ struct RouteChoice {
 };
 
 // For the stages of `task` (stage_graph.h). Depends on the World and the task only, like the
-// decomposition: a run prepares it once for every search (PlannerOptions::routes).
+// decomposition: a run prepares it once for every search (Problem::routes).
 RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& task,
                           const decomposition::Decomposition& decomposition);
 

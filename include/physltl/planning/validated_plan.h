@@ -2,7 +2,8 @@
 // A search and the check of its result: the plan is replayed in a fresh world and its region trace read
 // by the formula as written. Only a plan that replay validated counts as solved.
 
-#include "physltl/planning/planner.h"
+#include "physltl/planning/problem.h"
+#include "physltl/planning/registry.h"
 #include "physltl/planning/replay.h"
 
 #include <cstdint>
@@ -10,15 +11,6 @@
 #include <optional>
 
 namespace physltl::planning {
-
-// What a validated plan needs: the search's inputs and the formula replay checks against.
-struct Problem {
-  const scenario::World& world;
-  const TaskAutomaton& task;     // what the search aims at (the simplified formula for the knowledge planner)
-  const TaskAutomaton& formula;  // the task as written, which a plan's replay must satisfy
-  const knowledge::AbstractKnowledge& knowledge;
-  const decomposition::Decomposition& decomposition;
-};
 
 // What improving a plan did (improve.h).
 struct PlanMeasures {
@@ -45,6 +37,7 @@ struct ValidatedPlan {
   bool solved() const { return replay.has_value() && replay->validated(); }
 };
 
-ValidatedPlan plan_and_validate(const Problem& problem, const PlannerOptions& options);
+// Plans with `planner` and replays its plan: with kappa's validity rules for a planner that uses knowledge.
+ValidatedPlan plan_and_validate(const Problem& problem, const PlannerEntry& planner, const PlannerOptions& options);
 
 }  // namespace physltl::planning

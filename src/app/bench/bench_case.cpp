@@ -35,12 +35,11 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   c->world = load_with_settings(entry.path, settings_of_case);
   if (settings.time_limit) c->world.planner.time_limit = *settings.time_limit;
   if (settings.uncertainty) c->world.uncertainty = override_uncertainty(c->world.uncertainty, *settings.uncertainty);
-  c->reasoning.emplace(reason_about(c->world));
-  if (!c->reasoning->feasible()) {
+  c->problem = std::make_unique<planning::PlanningProblem>(c->world);
+  if (!c->problem->feasible()) {
     throw InfeasibleCase(fmt::format("{}{}: {}", entry.path, entry.sweep ? " with " + entry.sweep->key + "=" + value : "",
-                                     c->reasoning->task.infeasibility()));
+                                     c->problem->reasoning().task.infeasibility()));
   }
-  c->prepared = std::make_unique<PreparedRun>(c->world, *c->reasoning);
   BenchResults& results = c->results;
   results.scenario = c->world.name;
   results.scenario_file = c->world.source_file;
@@ -53,14 +52,14 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   results.robustness = settings.robustness;
   results.ompl_with_our_sampler = settings.ompl_sampler == planning::OmplControlSampler::kOurs;
   results.started_at = local_time_now();
-  results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->prepared->as_written());
-  results.shortest_push_free_path_m = planning::shortest_push_free_path_length(c->world, c->prepared->as_written());
-  results.preparation_s = c->prepared->preparation_s();
+  results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->problem->as_written());
+  results.shortest_push_free_path_m = planning::shortest_push_free_path_length(c->world, c->problem->as_written());
+  results.preparation_s = c->problem->preparation_s();
   for (const auto planner : settings.planners) {
-    if (const auto why = planning::refusal(planner, c->prepared->search_task(planner))) throw BadInput(*why);
-    // OMPL's planners grow their trees on one thread.
+    if (const auto why = c->problem->refusal(*planner)) throw BadInput(*why);
+    // A planner that grows its search on one thread runs once, with the first thread count.
     for (const int threads : settings.threads) {
-      if (!planning::is_ompl(planner) || threads == settings.threads.front()) results.planners.push_back({planner, threads, {}});
+      if (planner->can.threads || threads == settings.threads.front()) results.planners.push_back({planner, threads, {}});
     }
   }
   return c;
@@ -116,9 +115,10 @@ CampaignResults collect_results(const std::vector<ScenarioEntry>& entries,
   return campaign;
 }
 
-BenchRun measure(const PreparedRun& prepared, const SolveOptions& options, int robustness_worlds) {
+BenchRun measure(const planning::PlanningProblem& problem, const planning::PlannerEntry& planner,
+                 const planning::PlannerOptions& options, int robustness_worlds) {
   const auto started = std::chrono::steady_clock::now();
-  const planning::ValidatedPlan solution = solve(prepared, options);
+  const planning::ValidatedPlan solution = planning::solve(problem, planner, options);
   BenchRun run;
   run.improve_s = solution.improvement ? solution.improvement->time_s : 0.0;
   run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() - run.improve_s;
@@ -134,14 +134,14 @@ BenchRun measure(const PreparedRun& prepared, const SolveOptions& options, int r
     run.controls = static_cast<int>(result.plan.controls.size());
     run.pushes = solution.replay->pushes;
     run.bodies_moved = static_cast<int>(solution.replay->moved_bodies.size());
-    run.solution_duration_s = result.plan.total_steps() * prepared.world().planner.step_size;
-    run.path_length_m = planning::measure(prepared.world(), result.plan, *solution.replay).path_length_m;
+    run.solution_duration_s = result.plan.total_steps() * problem.world().planner.step_size;
+    run.path_length_m = planning::measure(problem.world(), result.plan, *solution.replay).path_length_m;
     run.first_pushes = solution.improvement ? solution.improvement->first.pushes : run.pushes;
     run.first_duration_s = solution.improvement ? solution.improvement->first.duration_s : run.solution_duration_s;
     if (robustness_worlds > 0) {
-      const scenario::World& world = prepared.world();
+      const scenario::World& world = problem.world();
       const planning::Robustness robustness = planning::measure_robustness(
-          world, world.uncertainty, robustness_worlds, options.seed, result.plan, *solution.replay, prepared.as_written());
+          world, world.uncertainty, robustness_worlds, options.seed, result.plan, *solution.replay, problem.as_written());
       run.robust_worlds = robustness.worlds;
       run.robust_succeeded = robustness.succeeded;
       run.robust_failures = robustness.failures;

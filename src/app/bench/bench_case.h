@@ -8,8 +8,7 @@
 #include "unit_record.h"
 
 #include "physltl/scenario/world.h"
-#include "planning_job.h"
-#include "reasoning.h"
+#include "physltl/planning/planning_problem.h"
 
 #include <map>
 #include <memory>
@@ -22,7 +21,7 @@ namespace physltl::app {
 
 // What every case shares: the command line's settings but the scenarios.
 struct CampaignSettings {
-  std::vector<planning::PlannerKind> planners;
+  std::vector<const planning::PlannerEntry*> planners;
   std::vector<int> threads{1};
   int runs = 10;
   std::optional<std::uint64_t> seed;
@@ -37,8 +36,7 @@ struct BenchCase {
   size_t entry = 0;         // the scenario entry it comes from
   std::string swept_value;  // empty unless the entry sweeps
   scenario::World world;
-  std::optional<Reasoning> reasoning;
-  std::unique_ptr<PreparedRun> prepared;
+  std::unique_ptr<planning::PlanningProblem> problem;  // of `world`
   BenchResults results;  // the case's facts, and its planners without runs yet
 };
 
@@ -64,6 +62,7 @@ CampaignResults collect_results(const std::vector<ScenarioEntry>& entries,
 
 // One unit: plans and validates, timing the search apart from --improve; with robustness_worlds > 0, a
 // solved plan is replayed in as many worlds drawn from the world's uncertainty (seeded by the run's seed).
-BenchRun measure(const PreparedRun& prepared, const SolveOptions& options, int robustness_worlds = 0);
+BenchRun measure(const planning::PlanningProblem& problem, const planning::PlannerEntry& planner,
+                 const planning::PlannerOptions& options, int robustness_worlds = 0);
 
 }  // namespace physltl::app

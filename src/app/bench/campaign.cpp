@@ -94,7 +94,7 @@ std::vector<Unit> campaign_units(const std::vector<CaseUnits>& cases, int runs) 
       for (size_t p = 0; p < cases[c].planners.size(); ++p) {
         const PlannerConfig& planner = cases[c].planners[p];
         units.push_back({c, p, seed,
-                         fmt::format("{} {} x{} seed {}", cases[c].folder, planning::planner_name(planner.planner),
+                         fmt::format("{} {} x{} seed {}", cases[c].folder, planner.planner->name,
                                      planner.threads, seed)});
       }
     }
@@ -119,7 +119,7 @@ std::vector<size_t> shard_units(const std::vector<Unit>& units, const std::vecto
   std::map<std::tuple<std::string, int, size_t>, std::vector<size_t>> groups;
   for (size_t i = 0; i < units.size(); ++i) {
     const PlannerConfig& planner = cases[units[i].case_index].planners[units[i].planner_index];
-    groups[{planning::planner_name(planner.planner), planner.threads, units[i].case_index}].push_back(i);
+    groups[{planner.planner->name, planner.threads, units[i].case_index}].push_back(i);
   }
   // The planner's generator: fixed by its definition, unlike std::shuffle's distributions, so shards are
   // dealt alike by every standard library.

@@ -5,7 +5,7 @@
 
 #include "sweep.h"
 
-#include "physltl/planning/planner.h"
+#include "physltl/planning/registry.h"
 
 #include <cstdint>
 #include <optional>
@@ -30,7 +30,7 @@ ScenarioEntry parse_scenario_entry(const std::string& text, const std::vector<st
 
 // What a unit runs: a planner with a thread count, on a seed.
 struct PlannerConfig {
-  planning::PlannerKind planner;
+  const planning::PlannerEntry* planner = nullptr;
   int threads = 1;
 };
 

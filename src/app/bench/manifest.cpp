@@ -49,7 +49,7 @@ json campaign_manifest(const std::string& name, int shard_count, const std::vect
                        const CampaignSettings& settings, const std::vector<std::unique_ptr<BenchCase>>& cases,
                        const std::vector<Unit>& units) {
   json planners = json::array();
-  for (const auto planner : settings.planners) planners.push_back(planning::planner_name(planner));
+  for (const auto planner : settings.planners) planners.push_back(planner->name);
   json scenarios = json::array();
   for (size_t e = 0; e < entries.size(); ++e) {
     const ScenarioEntry& entry = entries[e];
@@ -64,7 +64,7 @@ json campaign_manifest(const std::string& name, int shard_count, const std::vect
   for (const auto& c : cases) {
     const BenchResults& r = c->results;
     json case_planners = json::array();
-    for (const auto& p : r.planners) case_planners.push_back({{"name", planning::planner_name(p.planner)}, {"threads", p.threads}});
+    for (const auto& p : r.planners) case_planners.push_back({{"name", p.planner->name}, {"threads", p.threads}});
     case_list.push_back({{"folder", folder_name(r.scenario, r.settings)},
                          {"entry", c->entry},
                          {"swept_value", c->swept_value},

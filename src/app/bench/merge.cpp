@@ -81,7 +81,7 @@ CampaignResults skeleton(const nlohmann::json& campaign, const nlohmann::json& f
     r.shortest_free_path_m = number_or_infinity(facts.at(c).at("shortest_free_path_m"));
     r.shortest_push_free_path_m = number_or_infinity(facts.at(c).at("shortest_push_free_path_m"));
     for (const auto& p : description.at("planners")) {
-      r.planners.push_back({parse_planner(p.at("name").get<std::string>()), p.at("threads").get<int>(), {}});
+      r.planners.push_back({&parse_planner(p.at("name").get<std::string>()), p.at("threads").get<int>(), {}});
     }
     results.cases.push_back(std::move(result));
   }

@@ -15,7 +15,7 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-const PlannerRuns* find_planner(const BenchResults& results, planning::PlannerKind planner, int threads) {
+const PlannerRuns* find_planner(const BenchResults& results, const planning::PlannerEntry* planner, int threads) {
   for (const auto& p : results.planners) {
     if (p.planner == planner && p.threads == threads) return &p;
   }
@@ -102,8 +102,8 @@ PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
 
 std::optional<double> ratio_of_medians(const BenchResults& results) {
   if (results.threads.empty()) return std::nullopt;
-  const PlannerRuns* knowledge = find_planner(results, planning::PlannerKind::kKnowledge, results.threads[0]);
-  const PlannerRuns* baseline = find_planner(results, planning::PlannerKind::kBaseline, results.threads[0]);
+  const PlannerRuns* knowledge = find_planner(results, &planning::PlannerRegistry::instance().default_planner(), results.threads[0]);
+  const PlannerRuns* baseline = find_planner(results, &planning::PlannerRegistry::instance().reference_planner(), results.threads[0]);
   if (knowledge == nullptr || baseline == nullptr) return std::nullopt;
   const double k = median_of(results, *knowledge);
   if (k <= 0.0) return std::nullopt;
@@ -113,10 +113,10 @@ std::optional<double> ratio_of_medians(const BenchResults& results) {
 std::vector<ThreadsRatio> threads_ratios(const BenchResults& results) {
   std::vector<ThreadsRatio> ratios;
   if (results.threads.empty()) return ratios;
-  const PlannerRuns* first = find_planner(results, planning::PlannerKind::kKnowledge, results.threads[0]);
+  const PlannerRuns* first = find_planner(results, &planning::PlannerRegistry::instance().default_planner(), results.threads[0]);
   if (first == nullptr || median_of(results, *first) <= 0.0) return ratios;
   for (size_t i = 1; i < results.threads.size(); ++i) {
-    if (const PlannerRuns* p = find_planner(results, planning::PlannerKind::kKnowledge, results.threads[i])) {
+    if (const PlannerRuns* p = find_planner(results, &planning::PlannerRegistry::instance().default_planner(), results.threads[i])) {
       ratios.push_back({results.threads[i], median_of(results, *p) / median_of(results, *first)});
     }
   }
@@ -124,7 +124,7 @@ std::vector<ThreadsRatio> threads_ratios(const BenchResults& results) {
 }
 
 std::string planner_label(const BenchResults& results, const PlannerRuns& planner) {
-  const std::string name = planning::planner_name(planner.planner);
+  const std::string name = planner.planner->name;
   return results.threads.size() > 1 ? fmt::format("{} x{}", name, planner.threads) : name;
 }
 
@@ -222,7 +222,7 @@ json bench_json(const BenchResults& r) {
       }
       runs.push_back(std::move(entry));
     }
-    planners.push_back({{"name", planning::planner_name(p.planner)},
+    planners.push_back({{"name", p.planner->name},
                         {"threads", p.threads},
                         {"solved", s.solved},
                         {"median_s", s.median_s},
@@ -282,10 +282,10 @@ OmplExperiment ompl_experiment(const BenchResults& r, const std::string& host, c
   for (const auto& p : r.planners) {
     OmplPlannerResults planner;
     // physltl_knowledge, physltl_ompl_rrt, ...: the OMPL planners as run on our problem.
-    planner.name = "physltl_" + std::string(planning::planner_name(p.planner));
+    planner.name = "physltl_" + std::string(p.planner->name);
     std::replace(planner.name.begin(), planner.name.end(), '-', '_');
     if (r.threads.size() > 1) planner.name += fmt::format("_{}threads", p.threads);
-    planner.common = {{"planner", planning::planner_name(p.planner)}, {"threads", std::to_string(p.threads)}};
+    planner.common = {{"planner", p.planner->name}, {"threads", std::to_string(p.threads)}};
     planner.common.merge(planner_settings(p));
     const PlannerSummary s = summarize(p, r.time_limit_s);
     for (size_t i = 0; i < p.runs.size(); ++i) planner.runs.push_back(ompl_run(p.runs[i], s.times_s[i]));

@@ -3,7 +3,7 @@
 // (the table on stdout, bench.json, the OMPL benchmark log). Keys documented in docs/benchmarks.md.
 
 #include "ompl_log.h"
-#include "physltl/planning/planner.h"
+#include "physltl/planning/registry.h"
 #include "physltl/render/image.h"
 
 #include <nlohmann/json.hpp>
@@ -43,7 +43,7 @@ struct BenchRun {
 
 // One planner with one thread count.
 struct PlannerRuns {
-  planning::PlannerKind planner;
+  const planning::PlannerEntry* planner = nullptr;
   int threads = 1;
   std::vector<BenchRun> runs;  // one per seed, in seed order
 };

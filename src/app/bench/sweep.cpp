@@ -157,7 +157,7 @@ json sweep_json(const Sweep& sweep) {
     if (const auto& line = planner.line) {
       fit = {{"intercept_s", line->intercept}, {"slope_s", line->slope}, {"largest_deviation_s", line->largest_deviation}};
     }
-    planners.push_back({{"name", planning::planner_name(first.planners[p].planner)},
+    planners.push_back({{"name", first.planners[p].planner->name},
                         {"threads", first.planners[p].threads},
                         {"points", std::move(rows)},
                         {"line", std::move(fit)}});

@@ -34,13 +34,13 @@ bool run_units(const std::vector<std::unique_ptr<BenchCase>>& cases, const std::
                                                  progress.total, unit.key, left).substr(0, 79));
     }
     const auto unit_started = clock::now();
-    BenchRun run = measure(*c.prepared, {.planner = planner.planner,
-                                         .ompl_control_sampler = settings.ompl_sampler,
-                                         .seed = unit.seed,
-                                         .time_limit = c.world.planner.time_limit,
-                                         .threads = planner.threads,
-                                         .improve = settings.improve,
-                                         .stop = &stop},
+    BenchRun run = measure(*c.problem, *planner.planner,
+                           {.ompl_control_sampler = settings.ompl_sampler,
+                            .seed = unit.seed,
+                            .time_limit = c.world.planner.time_limit,
+                            .stop = &stop,
+                            .threads = planner.threads,
+                            .improve = settings.improve},
                            settings.robustness);
     if (stop) {
       if (progress.show) fmt::print(stderr, "\n");

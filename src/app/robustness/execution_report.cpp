@@ -59,7 +59,7 @@ json execution_json(const ExecutionReport& report) {
   }
   const Medians m = medians(report);
   return {{"scenario", report.model.source_file},
-          {"planner", planning::planner_name(report.planner)},
+          {"planner", report.planner->name},
           {"seed", report.model.planner.seed},
           {"uncertainty", uncertainty_json(report.model.uncertainty)},
           {"tolerance_m", report.tolerance_m},

@@ -2,7 +2,7 @@
 // What `execute` found, as out/<scenario>/execution.json and one summary line (docs/robustness.md).
 
 #include "physltl/execution/executor.h"
-#include "physltl/planning/planner_kind.h"
+#include "physltl/planning/registry.h"
 #include "physltl/planning/robustness.h"
 
 #include <nlohmann/json.hpp>
@@ -21,7 +21,7 @@ struct WorldExecution {
 
 struct ExecutionReport {
   const scenario::World& model;
-  planning::PlannerKind planner;
+  const planning::PlannerEntry* planner = nullptr;
   int max_replans = 0;
   double tolerance_m = 0.0;
   long long budget = 0;

@@ -12,13 +12,13 @@
 
 #include <optional>
 
-namespace physltl::app {
+namespace physltl::knowledge {
 
 struct Reasoning {
-  knowledge::AbstractKnowledge knowledge;    // K
+  AbstractKnowledge knowledge;    // K
   scenario::EnvironmentState initial_state;  // E_0: everything where the scenario put it
-  knowledge::Kappa initial_kappa;            // kappa_0 = INFERENCE(K, E_0)
-  knowledge::Feasibility feasibility;        // M_p: the invalid propositions, with reasons
+  Kappa initial_kappa;            // kappa_0 = INFERENCE(K, E_0)
+  Feasibility feasibility;        // M_p: the invalid propositions, with reasons
   // The task: as written, in positive normal form, simplified by M_p (the paper's list rule for
   // information, the semantic rule the planner uses) and the DFA of the simplified task (empty when
   // infeasible).
@@ -34,4 +34,4 @@ struct Reasoning {
 // only its regions); otherwise throws ltl::ParseError.
 Reasoning reason_about(const scenario::World& world);
 
-}  // namespace physltl::app
+}  // namespace physltl::knowledge

@@ -1,4 +1,4 @@
-#include "reasoning.h"
+#include "physltl/knowledge/reasoning.h"
 
 #include "physltl/ltl/object_atom.h"
 #include "physltl/ltl/parser.h"
@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-namespace physltl::app {
+namespace physltl::knowledge {
 namespace {
 
 template <class Named>
@@ -18,9 +18,9 @@ int index_of(const std::vector<Named>& list, const std::string& name) {
 }
 
 // The task's BODY@REGION propositions, with their body and region; validation made sure both exist.
-std::vector<knowledge::ObjectProposition> object_propositions(const knowledge::AbstractKnowledge& k,
+std::vector<ObjectProposition> object_propositions(const AbstractKnowledge& k,
                                                               const std::string& formula) {
-  std::vector<knowledge::ObjectProposition> objects;
+  std::vector<ObjectProposition> objects;
   for (const std::string& p : ltl::propositions(ltl::parse(formula))) {
     if (const auto object = ltl::object_atom(p)) {
       objects.push_back({p, index_of(k.movable_bodies, object->body), index_of(k.propositions, object->region)});
@@ -31,7 +31,7 @@ std::vector<knowledge::ObjectProposition> object_propositions(const knowledge::A
 
 // The automaton's propositions that hold where the scenario puts the robot and the bodies, as indices; and
 // the same in words ("the robot is in hazard, C is in aisle").
-std::pair<std::vector<int>, std::string> initial_letter(const knowledge::AbstractKnowledge& k,
+std::pair<std::vector<int>, std::string> initial_letter(const AbstractKnowledge& k,
                                                         const std::vector<std::string>& propositions) {
   std::vector<int> holding;
   std::string words;
@@ -56,10 +56,10 @@ std::optional<ltl::Formula> Reasoning::simplified_formula() const {
 }
 
 Reasoning reason_about(const scenario::World& world) {
-  knowledge::AbstractKnowledge k = knowledge::formulate(world);
+  AbstractKnowledge k = formulate(world);
   scenario::EnvironmentState state = scenario::EnvironmentState::initial(world);
-  knowledge::Kappa kappa = knowledge::infer(k, state);
-  knowledge::Feasibility feasibility = knowledge::evaluate_feasibility(k, object_propositions(k, world.task.formula));
+  Kappa kappa = infer(k, state);
+  Feasibility feasibility = evaluate_feasibility(k, object_propositions(k, world.task.formula));
   ltl::Analysis task = ltl::analyse(world.task.formula, feasibility.invalid_names(), feasibility.always_true_names());
   if (task.dfa) {
     // The first letter is known before any planning: a task that it already loses ("G !hazard" with the
@@ -73,4 +73,4 @@ Reasoning reason_about(const scenario::World& world) {
   return {std::move(k), std::move(state), std::move(kappa), std::move(feasibility), std::move(task)};
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::knowledge

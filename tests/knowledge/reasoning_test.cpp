@@ -1,6 +1,6 @@
 // reason_about on the paper's worlds and on one whose only goal is walled off.
 
-#include "reasoning.h"
+#include "physltl/knowledge/reasoning.h"
 
 #include "physltl/scenario/load.h"
 
@@ -9,15 +9,15 @@
 #include <map>
 #include <string>
 
-namespace physltl::app {
+namespace physltl::knowledge {
 namespace {
 
-Reasoning reason_about_file(const std::string& relative_path, const std::map<std::string, std::string>& params = {}) {
-  return reason_about(scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/" + relative_path, {.params = params}));
+knowledge::Reasoning reason_about_file(const std::string& relative_path, const std::map<std::string, std::string>& params = {}) {
+  return knowledge::reason_about(scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/" + relative_path, {.params = params}));
 }
 
 TEST(ReasonAbout, RoomsDropsTheEnclosedP3AndPlansTheRest) {
-  const Reasoning r = reason_about_file("scenarios/rooms.lua");
+  const knowledge::Reasoning r = reason_about_file("scenarios/rooms.lua");
   EXPECT_EQ(r.feasibility.invalid_names(), std::vector<std::string>{"p3"});
   ASSERT_TRUE(r.feasible());
   ASSERT_TRUE(r.simplified_formula());
@@ -30,7 +30,7 @@ TEST(ReasonAbout, RoomsDropsTheEnclosedP3AndPlansTheRest) {
 }
 
 TEST(ReasonAbout, RoomsKappaZeroTypesTheDoorwayBoxesConstraintOriented) {
-  const Reasoning r = reason_about_file("scenarios/rooms.lua");
+  const knowledge::Reasoning r = reason_about_file("scenarios/rooms.lua");
   ASSERT_EQ(r.initial_kappa.bodies.size(), 3u);
   for (const knowledge::BodyKappa& body : r.initial_kappa.bodies) {
     EXPECT_EQ(body.type, knowledge::BodyType::kConstraintOriented);
@@ -41,7 +41,7 @@ TEST(ReasonAbout, RoomsKappaZeroTypesTheDoorwayBoxesConstraintOriented) {
 }
 
 TEST(ReasonAbout, WithNothingInvalidTheTaskIsItsNormalForm) {
-  const Reasoning r = reason_about_file("scenarios/ordered.lua");
+  const knowledge::Reasoning r = reason_about_file("scenarios/ordered.lua");
   EXPECT_TRUE(r.feasibility.invalid.empty());
   EXPECT_FALSE(r.task.semantic);
   ASSERT_TRUE(r.simplified_formula());
@@ -50,7 +50,7 @@ TEST(ReasonAbout, WithNothingInvalidTheTaskIsItsNormalForm) {
 }
 
 TEST(ReasonAbout, AnEnclosedOnlyGoalMakesTheTaskInfeasible) {
-  const Reasoning r = reason_about_file("tests/app/enclosed_goal.lua");
+  const knowledge::Reasoning r = reason_about_file("tests/app/enclosed_goal.lua");
   EXPECT_FALSE(r.feasible());
   EXPECT_FALSE(r.simplified_formula());
   EXPECT_FALSE(r.task.dfa);
@@ -59,11 +59,11 @@ TEST(ReasonAbout, AnEnclosedOnlyGoalMakesTheTaskInfeasible) {
 }
 
 TEST(ReasonAbout, ATaskTheStartAlreadyLosesIsInfeasibleAndSaysWhereWhatStands) {
-  const Reasoning robot = reason_about_file("tests/app/starts_in_hazard.lua");
+  const knowledge::Reasoning robot = reason_about_file("tests/app/starts_in_hazard.lua");
   EXPECT_FALSE(robot.feasible());
   EXPECT_FALSE(robot.task.dfa);
   EXPECT_EQ(robot.task.infeasibility(), "the start already rules it out: at the start the robot is in hazard");
-  const Reasoning box = reason_about_file("tests/app/starts_in_hazard.lua", {{"task", "box"}});
+  const knowledge::Reasoning box = reason_about_file("tests/app/starts_in_hazard.lua", {{"task", "box"}});
   EXPECT_FALSE(box.feasible());
   EXPECT_EQ(box.task.infeasibility(), "the start already rules it out: at the start crate is in aisle");
 }
@@ -77,7 +77,7 @@ TEST(ReasonAbout, AStartThatKeepsTheTaskOpenLeavesItFeasible) {
 TEST(ReasonAbout, AnLShapedDeskMeshKeepsItsInnerCornerReachable) {
   // The corner region lies inside the rectangle round the desk, so a desk that collided as its bounds
   // would wall it off; the mesh collides as its L.
-  const Reasoning r = reason_about_file("tests/app/l_desk_corner.lua");
+  const knowledge::Reasoning r = reason_about_file("tests/app/l_desk_corner.lua");
   EXPECT_TRUE(r.feasibility.invalid.empty()) << r.feasibility.invalid.front().reason;
   EXPECT_TRUE(r.feasible());
   const geometry::Footprint& desk = r.knowledge.fixed_bodies.at(0).footprint;
@@ -87,4 +87,4 @@ TEST(ReasonAbout, AnLShapedDeskMeshKeepsItsInnerCornerReachable) {
 }
 
 }  // namespace
-}  // namespace physltl::app
+}  // namespace physltl::knowledge
