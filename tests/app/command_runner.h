@@ -69,12 +69,14 @@ inline fs::path rooms_laps(const fs::path& dir) {
   return dir / "laps.lua";
 }
 
-inline Result run(const std::string& args) {
+// `binary` (physltl-studio, or a program of the tests' around its command line) with `args`.
+inline Result run_program(const std::string& binary, const std::string& args) {
   const fs::path dir = test_dir();
-  const std::string command =
-      std::string(PHYSLTL_BINARY) + " " + args + " >" + (dir / "stdout").string() + " 2>" + (dir / "stderr").string();
+  const std::string command = binary + " " + args + " >" + (dir / "stdout").string() + " 2>" + (dir / "stderr").string();
   const int status = std::system(command.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stdout"), slurp(dir / "stderr")};
 }
+
+inline Result run(const std::string& args) { return run_program(PHYSLTL_BINARY, args); }
 
 }  // namespace physltl::testing_support

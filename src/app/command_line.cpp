@@ -1,0 +1,98 @@
+#include "command_line.h"
+
+#include "build_version.h"
+#include "command.h"
+#include "physltl/planning/perturbation.h"
+#include "physltl/scenario/diagnostic.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <memory>
+
+namespace {
+
+using namespace physltl::app;
+
+struct Command {
+  std::unique_ptr<CLI::App> app;
+  CommandRunner run;
+};
+
+Command make_command(const std::string& name, const std::string& description,
+                     CommandRunner (*add)(CLI::App&)) {
+  auto app = std::make_unique<CLI::App>(description, name);
+  CommandRunner run = add(*app);
+  return {std::move(app), std::move(run)};
+}
+
+int parse_and_run(Command& command, int argc, char** argv) {
+  try {
+    command.app->parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return command.app->exit(e) == 0 ? kExitOk : kExitBadInput;
+  }
+  try {
+    return command.run();
+  } catch (const physltl::scenario::ScenarioError& e) {
+    for (const auto& d : e.diagnostics()) std::cerr << d.str() << "\n";
+  } catch (const BadInput& e) {
+    std::cerr << "physltl-studio: " << e.what() << "\n";
+  } catch (const physltl::planning::PerturbationError& e) {
+    // An uncertainty too wide for the world (--robustness, execute): the user's to narrow.
+    std::cerr << "physltl-studio: " << e.what() << "\n";
+  } catch (const std::filesystem::filesystem_error& e) {
+    // An --out folder that cannot be made or written (a file in the way, no permission, a full disk).
+    std::cerr << "physltl-studio: cannot write the outputs: " << e.what() << "\n";
+  }
+  return kExitBadInput;
+}
+
+}  // namespace
+
+namespace physltl::app {
+
+// The main job takes a scenario as its first argument, so subcommands are told apart by that first word
+// (CLI11 2.1 mixes up a top-level positional and subcommand positionals).
+int run_command_line(int argc, char** argv) {
+  std::map<std::string, Command> subcommands;
+  subcommands.emplace("check", make_command("physltl-studio check",
+                                            "Validate a scenario, report it with the planner's reasoning, write preview.png.",
+                                            add_check_command));
+  subcommands.emplace("execute",
+                      make_command("physltl-studio execute",
+                                   "Run the plan in perturbed worlds, replanning where it leaves its tolerance: execution.json.",
+                                   add_execute_command));
+  subcommands.emplace("ltl", make_command("physltl-studio ltl",
+                                          "Parse a co-safe LTL formula, simplify it, translate it to a minimal DFA.",
+                                          add_ltl_command));
+  subcommands.emplace("bench", make_command("physltl-studio bench",
+                                            "Benchmark the planners on a range of seeds: table, bench.json, OMPL log; campaigns in shards, `bench merge`.",
+                                            add_bench_command));
+  // `bench merge` is a command of its own: bench's first word is a scenario file.
+  if (argc > 2 && std::string(argv[1]) == "bench" && std::string(argv[2]) == "merge") {
+    Command merge = make_command("physltl-studio bench merge",
+                                 "Merge the shards of a benchmark campaign into what one unsharded run writes.",
+                                 add_bench_merge_command);
+    return parse_and_run(merge, argc - 2, argv + 2);
+  }
+  if (argc > 1) {
+    auto it = subcommands.find(argv[1]);
+    if (it != subcommands.end()) return parse_and_run(it->second, argc - 1, argv + 1);
+  }
+  Command main_job = make_command(
+      "physltl-studio",
+      "physltl-studio: physics-based motion planning with co-safe LTL tasks.\n"
+      "Plans (and with --render draws) the task of a scenario file; outputs go to <out>/<scenario>/.",
+      add_run_command);
+  std::string footer = "\nCommands (each has --help):\n";
+  for (const auto& [name, command] : subcommands) footer += fmt::format("  {:<9}{}\n", name, command.app->get_description());
+  footer += "\nExit codes: 0 ok, 1 no plan found (or task infeasible), 2 bad input or usage.";
+  main_job.app->footer(footer);
+  main_job.app->set_version_flag("--version", build_version());
+  return parse_and_run(main_job, argc, argv);
+}
+
+}  // namespace physltl::app
