@@ -2,7 +2,7 @@
 
 #include "build_version.h"
 #include "command.h"
-#include "physltl/planning/perturbation.h"
+#include "physltl/execution/perturbation.h"
 #include "physltl/scenario/diagnostic.h"
 
 #include <fmt/format.h>
@@ -40,7 +40,7 @@ int parse_and_run(Command& command, int argc, char** argv) {
     for (const auto& d : e.diagnostics()) std::cerr << d.str() << "\n";
   } catch (const BadInput& e) {
     std::cerr << "physltl-studio: " << e.what() << "\n";
-  } catch (const physltl::planning::PerturbationError& e) {
+  } catch (const physltl::execution::PerturbationError& e) {
     // An uncertainty too wide for the world (--robustness, execute): the user's to narrow.
     std::cerr << "physltl-studio: " << e.what() << "\n";
   } catch (const std::filesystem::filesystem_error& e) {

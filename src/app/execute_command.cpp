@@ -6,8 +6,8 @@
 #include "failed_search.h"
 #include "output_folder.h"
 #include "physltl/execution/executor.h"
-#include "physltl/planning/perturbation.h"
-#include "physltl/planning/robustness.h"
+#include "physltl/execution/perturbation.h"
+#include "physltl/execution/robustness.h"
 #include "plan_pictures.h"
 #include "planner_names.h"
 #include "physltl/execution/replanner.h"
@@ -48,7 +48,7 @@ struct ExecuteArgs {
 void render_execution(const scenario::World& model, const knowledge::Reasoning& reasoning, const planning::TaskAutomaton& formula,
                       const planning::Replay& nominal, const WorldExecution& shown, const std::filesystem::path& folder,
                       const std::function<void(const std::string&)>& say) {
-  const scenario::World truth = planning::perturbed_world(model, model.uncertainty, model.planner.seed, shown.index);
+  const scenario::World truth = execution::perturbed_world(model, model.uncertainty, model.planner.seed, shown.index);
   const planning::Replay executed = planning::replay(truth, planning::Plan{shown.run.controls, {}}, formula,
                                                      knowledge::formulate(truth), knowledge::ValidityMode::kKnowledge);
   std::vector<render::SegmentOverlay> marks;
@@ -107,13 +107,13 @@ int execute(const ExecuteArgs& args) {
   const execution::Executor executor(world, problem.as_written(), plan, nominal,
                                      {.tolerance_m = args.tolerance, .max_replans = args.replans});
   for (int i = 0; i < args.worlds; ++i) {
-    const scenario::World truth = planning::perturbed_world(world, world.uncertainty, world.planner.seed, i);
-    const planning::WorldRun open_loop = planning::judge_in_world(truth, plan, &nominal, problem.as_written());
+    const scenario::World truth = execution::perturbed_world(world, world.uncertainty, world.planner.seed, i);
+    const execution::WorldRun open_loop = execution::judge_in_world(truth, plan, &nominal, problem.as_written());
     execution::SimulatedWorld reality(truth);
     const execution::Execution run =
         executor.run(reality, execution::budgeted_replanner(planner, world.planner.seed, i, args.budget));
-    const planning::WorldRun judged =
-        planning::judge_in_world(truth, planning::Plan{run.controls, {}}, nullptr, problem.as_written());
+    const execution::WorldRun judged =
+        execution::judge_in_world(truth, planning::Plan{run.controls, {}}, nullptr, problem.as_written());
     report.worlds.push_back({i, open_loop, judged, run});
   }
   say("execution  " + execution_summary(report));

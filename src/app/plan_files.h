@@ -2,10 +2,10 @@
 // plan.json and report.json: what a run found, for people and for scripts. Keys documented in
 // docs/outputs.md; the ones named there as stable stay.
 
-#include "physltl/planning/robustness.h"
+#include "physltl/execution/robustness.h"
 #include "physltl/planning/registry.h"
-#include "physltl/planning/validated_plan.h"
-#include "physltl/planning/replay.h"
+#include "physltl/planning/validation/validated_plan.h"
+#include "physltl/planning/validation/replay.h"
 #include "physltl/planning/task.h"
 #include "physltl/scenario/world.h"
 #include "physltl/knowledge/reasoning.h"
@@ -25,7 +25,7 @@ struct RunSummary {
   const planning::PlanResult& result;
   const planning::Replay* replay;  // null when nothing was solved
   const planning::Improvement* improvement = nullptr;  // when the plan was improved
-  const planning::Robustness* robustness = nullptr;    // with --robustness N
+  const execution::Robustness* robustness = nullptr;    // with --robustness N
   const scenario::Uncertainty* uncertainty = nullptr;  // what the robustness was measured under
 };
 

@@ -3,7 +3,7 @@
 
 #include "physltl/decomposition/decomposition.h"
 #include "physltl/planning/planner_options.h"
-#include "physltl/planning/replay.h"
+#include "physltl/planning/validation/replay.h"
 #include "physltl/render/scene.h"
 #include "physltl/render/video.h"
 #include "physltl/knowledge/reasoning.h"

@@ -144,9 +144,9 @@ int run(const RunArgs& args) {
   say(fmt::format("plan       {} controls, {:.1f} s of motion, {} pushes, validated by replay",
                   result.plan.controls.size(), result.plan.total_steps() * world.planner.step_size, replay.pushes));
 
-  std::optional<planning::Robustness> robustness;
+  std::optional<execution::Robustness> robustness;
   if (args.robustness > 0) {
-    robustness = planning::measure_robustness(world, world.uncertainty, args.robustness, world.planner.seed,
+    robustness = execution::measure_robustness(world, world.uncertainty, args.robustness, world.planner.seed,
                                               result.plan, replay, problem.as_written());
     say("robustness " + robustness_line(*robustness, world.uncertainty));
   }

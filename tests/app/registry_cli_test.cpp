@@ -41,7 +41,7 @@ TEST(Registry, ATaskAPlannerCannotTakeIsRefusedWithItsReasonInRunBenchAndExecute
   const std::string delivery = kSource + "/scenarios/delivery.lua";
   const std::string reason =
       "test-robot-only cannot take tasks about where bodies are (BODY@REGION): this test's planner reads the robot's "
-      "region only: use knowledge, baseline or test-planner";
+      "region only: use knowledge, baseline, ompl-rrt, ompl-kpiece, ompl-sst, ompl-pdst or test-planner";
   for (const std::string& command : {delivery + " --planner test-robot-only",
                                      "bench " + delivery + " --planners test-robot-only --runs 1",
                                      "execute " + delivery + " --planner test-robot-only --worlds 1"}) {

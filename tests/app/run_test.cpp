@@ -140,11 +140,25 @@ TEST(Run, ABadPlannerChoiceIsExitTwoAndWritesNothing) {
   EXPECT_NE(r.err.find("ompl-kpiece"), std::string::npos) << r.err;  // the choices
   r = run(kSource + "/scenarios/ordered.lua --baseline --planner ompl-rrt --out " + out.string());
   EXPECT_EQ(r.exit_code, 2);
-  // OMPL's product takes no task that must end at rest.
-  r = run(kSource + "/scenarios/avoid.lua --planner ompl-rrt --out " + out.string());
+  // LTLPlanner searches OMPL's product, which takes no task that must end at rest.
+  r = run(kSource + "/scenarios/avoid.lua --planner ompl-ltl --out " + out.string());
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("end"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("ompl-ltl cannot take a task that only a plan ending at rest satisfies"), std::string::npos) << r.err;
   EXPECT_TRUE(!fs::exists(out) || fs::is_empty(out));
+}
+
+TEST(Run, AnOmplPlannerCutShortWritesItsRefusalsAndTreeWithoutStages) {
+  const fs::path out = fresh_out_dir();
+  const std::string delivery = kSource + "/scenarios/delivery.lua";
+  const Result r = run(delivery + " --planner ompl-rrt --time-limit 0.3 --render --quiet --out " + out.string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("no plan found (time limit); most refused: "), std::string::npos) << r.err;
+  const auto failed = nlohmann::json::parse(slurp(out / "delivery" / "failed" / "report.json"));
+  long long refused = 0;
+  for (const auto& [rule, n] : failed.at("refused").items()) refused += n.get<long long>();
+  EXPECT_GT(refused, 0);
+  EXPECT_TRUE(failed.at("search_end").is_null());  // OMPL's planners have no stages to report
+  EXPECT_TRUE(fs::is_regular_file(out / "delivery" / "failed" / "tree.png"));
 }
 
 TEST(Run, AnInfeasibleTaskExitsOneAndLeavesThePreviousOutputsAlone) {

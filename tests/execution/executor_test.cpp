@@ -2,8 +2,8 @@
 
 #include "physltl/execution/executor.h"
 #include "physltl/execution/replanner.h"
-#include "physltl/planning/perturbation.h"
-#include "physltl/planning/robustness.h"
+#include "physltl/execution/perturbation.h"
+#include "physltl/execution/robustness.h"
 #include "test_problem.h"
 
 #include <gtest/gtest.h>
@@ -12,6 +12,7 @@ namespace executor_test {
 
 using namespace physltl;
 using namespace physltl::planning;
+using namespace physltl::execution;
 
 // The remaining task planned in the model from here, as execute replans.
 execution::Replanned replan(const scenario::World& from_here) {

@@ -1,4 +1,4 @@
-#include "lead_search.h"
+#include "tree/lead_search.h"
 
 #include "product_path.h"
 #include "test_problem.h"

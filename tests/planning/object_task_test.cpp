@@ -1,8 +1,8 @@
 // Tasks about where bodies must be (BODY@REGION): the stages, the planner and the replay.
 
 #include "physltl/planning/registry.h"
-#include "physltl/planning/replay.h"
-#include "stage_graph.h"
+#include "physltl/planning/validation/replay.h"
+#include "tree/stage_graph.h"
 
 #include "test_problem.h"
 
@@ -162,11 +162,12 @@ TEST(Replay, AStayTaskWhoseCrateEndsOutsideTheDockIsRejected) {
   EXPECT_TRUE(through.accepted);  // while "at some time" holds
 }
 
-TEST(Planner, OmplsPlannersRefuseTasksAboutBodiesAndSayWhy) {
+TEST(Planner, LtlPlannerRefusesTasksAboutBodiesAndSaysWhyWhileOmplsControlPlannersTakeThem) {
   const TestProblem p("delivery.lua");
-  const auto why = PlannerRegistry::instance().refusal(planner_named("ompl-rrt"), p.task);
+  const auto why = PlannerRegistry::instance().refusal(planner_named("ompl-ltl"), p.task);
   ASSERT_TRUE(why);
   EXPECT_NE(why->find("BODY@REGION"), std::string::npos) << *why;
+  EXPECT_FALSE(PlannerRegistry::instance().refusal(planner_named("ompl-rrt"), p.task));
   EXPECT_FALSE(PlannerRegistry::instance().refusal(planner_named("knowledge"), p.task));
   EXPECT_FALSE(PlannerRegistry::instance().refusal(planner_named("baseline"), p.task));
 }

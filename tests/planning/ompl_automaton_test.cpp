@@ -1,4 +1,4 @@
-#include "physltl/planning/ompl_automaton.h"
+#include "physltl/planning/ompl/ompl_automaton.h"
 
 #include "physltl/ltl/parser.h"
 #include "physltl/ltl/translate.h"

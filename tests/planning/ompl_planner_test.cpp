@@ -2,7 +2,7 @@
 // plans our replay validates, a seed gives the same plan where OMPL allows it, and the guards against OMPL's
 // LTL traps hold.
 
-#include "ompl_planner.h"
+#include "ompl/decomposition.h"
 #include "physltl/geometry/free_space.h"
 #include "test_problem.h"
 
@@ -128,16 +128,38 @@ TEST(OmplPlanners, PlansCrossTrianglesThinnerThanAStepWithinTheGraph) {
   expect_every_step_in_the_graph(p, replay);
 }
 
-// OMPL's product takes tasks a finite run satisfies; "F goal & G !hazard" must end at rest.
-TEST(OmplPlanners, ATaskThatMustEndAtRestIsRefused) {
+// OMPL's product takes tasks a finite run satisfies; "F goal & G !hazard" must end at rest. LTLPlanner,
+// which needs OMPL's product, refuses it; the control planners plan it on ours, braking to rest at the end.
+TEST(OmplPlanners, ATaskThatMustEndAtRestIsPlannedOnOurProductAndRefusedByLtlPlanner) {
   const TestProblem p("avoid.lua");
   ASSERT_TRUE(p.task.ends_at_rest());
-  EXPECT_FALSE(PlannerRegistry::instance().refusal(planner_named("knowledge"), p.task).has_value());
-  const auto why = PlannerRegistry::instance().refusal(planner_named("ompl-rrt"), p.task);
+  const auto why = PlannerRegistry::instance().refusal(planner_named("ompl-ltl"), p.task);
   ASSERT_TRUE(why.has_value());
-  EXPECT_NE(why->find("ompl-rrt"), std::string::npos);
-  EXPECT_THROW(p.plan_task(p.task, ompl_options(1), "ompl-rrt"),
-               std::invalid_argument);
+  EXPECT_NE(why->find("ompl-ltl cannot take a task that only a plan ending at rest satisfies"), std::string::npos) << *why;
+  EXPECT_THROW(p.plan_task(p.task, ompl_options(1), "ompl-ltl"), std::invalid_argument);
+  for (const std::string planner : {"ompl-rrt", "ompl-kpiece"}) {
+    EXPECT_FALSE(PlannerRegistry::instance().refusal(planner_named(planner), p.task).has_value()) << planner;
+    const PlanResult result = p.plan_task(p.task, ompl_options(1), planner);
+    ASSERT_TRUE(result.solved) << planner << ": " << result.stop_reason;
+    const Replay replay = p.check(result.plan);
+    EXPECT_TRUE(replay.validated()) << planner << ": " << replay.failure;
+    EXPECT_TRUE(replay.states.back().at_rest()) << planner;
+  }
+}
+
+// Tasks about where bodies are, on our product: the automaton reads the crate's place at every step.
+TEST(OmplPlanners, EachControlPlannerSolvesATaskAboutAnObjectAndItsPlanReplays) {
+  const TestProblem p("../tests/planning/data/push_to_dock.lua");
+  ASSERT_TRUE(p.task.names_bodies());
+  for (const std::string planner : {"ompl-rrt", "ompl-kpiece", "ompl-sst", "ompl-pdst"}) {
+    const PlanResult result = p.plan_task(p.task, ompl_options(2), planner);
+    ASSERT_TRUE(result.solved) << planner << ": " << result.stop_reason;
+    const Replay replay = p.check(result.plan);
+    EXPECT_TRUE(replay.validated()) << planner << ": " << replay.failure;
+    EXPECT_FALSE(replay.moved_bodies.empty()) << planner;
+    // The same seed, the same plan.
+    EXPECT_EQ(p.plan_task(p.task, ompl_options(2), planner).plan.total_steps(), result.plan.total_steps()) << planner;
+  }
 }
 
 TEST(OmplPlanners, TheRegistryHasEachOfThemByNameAndNoOtherName) {

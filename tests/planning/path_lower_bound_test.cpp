@@ -1,6 +1,6 @@
-#include "physltl/planning/path_lower_bound.h"
+#include "physltl/planning/tree/path_lower_bound.h"
 
-#include "physltl/planning/improve.h"
+#include "physltl/planning/validation/improve.h"
 #include "test_problem.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
-#include "physltl/planning/improve.h"
+#include "physltl/planning/validation/improve.h"
 #include "physltl/planning/registry.h"
-#include "physltl/planning/replay.h"
+#include "physltl/planning/validation/replay.h"
 
 #include "test_problem.h"
 

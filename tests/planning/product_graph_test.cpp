@@ -1,4 +1,4 @@
-#include "product_graph.h"
+#include "tree/product_graph.h"
 
 #include "product_path.h"
 #include "test_problem.h"

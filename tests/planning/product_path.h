@@ -1,7 +1,7 @@
 #pragma once
 // What every lead must be: a path of the product graph that ends within its horizon.
 
-#include "product_graph.h"
+#include "tree/product_graph.h"
 #include "test_problem.h"
 
 #include <gtest/gtest.h>

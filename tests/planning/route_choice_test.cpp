@@ -1,8 +1,8 @@
 // Going round the movable bodies or pushing through them: the rule, stage by stage.
 
-#include "physltl/planning/route_choice.h"
+#include "physltl/planning/tree/route_choice.h"
 
-#include "stage_graph.h"
+#include "tree/stage_graph.h"
 #include "test_problem.h"
 
 #include <gtest/gtest.h>

@@ -6,8 +6,8 @@
 #include "physltl/ltl/simplify.h"
 #include "physltl/ltl/translate.h"
 #include "physltl/planning/registry.h"
-#include "physltl/planning/replay.h"
-#include "physltl/planning/validated_plan.h"
+#include "physltl/planning/validation/replay.h"
+#include "physltl/planning/validation/validated_plan.h"
 #include "physltl/scenario/load.h"
 
 #include <gtest/gtest.h>

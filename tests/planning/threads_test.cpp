@@ -1,6 +1,6 @@
 // Several threads growing one tree: the same plan as one thread, validated, and all of them stopping
 // together.
-#include "physltl/planning/validated_plan.h"
+#include "physltl/planning/validation/validated_plan.h"
 
 #include "test_problem.h"
 

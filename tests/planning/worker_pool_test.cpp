@@ -1,4 +1,4 @@
-#include "worker_pool.h"  // internal to the planning module
+#include "tree/worker_pool.h"  // internal to the planning module
 
 #include <gtest/gtest.h>
 

@@ -7,7 +7,7 @@
 
 #include "physltl/execution/execution_world.h"
 #include "physltl/planning/plan.h"
-#include "physltl/planning/replay.h"
+#include "physltl/planning/validation/replay.h"
 #include "physltl/planning/task.h"
 
 #include <functional>

@@ -46,7 +46,7 @@ struct PlannerStats {
   // OMPL's planners: steps refused because the robot crossed into a triangle that is not a neighbour of
   // the one it left, which OMPL's product graph cannot follow (docs/benchmarks.md).
   long long cell_skips_refused = 0;
-  // Our tree search: refused steps and dropped nodes by rule (refusal.h).
+  // Refused steps by rule, and our tree search's dropped nodes (refusal.h).
   Refusals refused;
 };
 

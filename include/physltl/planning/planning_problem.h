@@ -7,9 +7,9 @@
 #include "physltl/decomposition/decomposition.h"
 #include "physltl/knowledge/reasoning.h"
 #include "physltl/planning/registry.h"
-#include "physltl/planning/route_choice.h"
+#include "physltl/planning/tree/route_choice.h"
 #include "physltl/planning/task.h"
-#include "physltl/planning/validated_plan.h"
+#include "physltl/planning/validation/validated_plan.h"
 
 #include <chrono>
 #include <optional>

@@ -1,9 +1,9 @@
 #include "bench_case.h"
 
 #include "bad_input.h"
-#include "physltl/planning/improve.h"
-#include "physltl/planning/path_lower_bound.h"
-#include "physltl/planning/robustness.h"
+#include "physltl/planning/validation/improve.h"
+#include "physltl/planning/tree/path_lower_bound.h"
+#include "physltl/execution/robustness.h"
 #include "robustness/uncertainty_args.h"
 #include "scenario_settings.h"
 
@@ -140,7 +140,7 @@ BenchRun measure(const planning::PlanningProblem& problem, const planning::Plann
     run.first_duration_s = solution.improvement ? solution.improvement->first.duration_s : run.solution_duration_s;
     if (robustness_worlds > 0) {
       const scenario::World& world = problem.world();
-      const planning::Robustness robustness = planning::measure_robustness(
+      const execution::Robustness robustness = execution::measure_robustness(
           world, world.uncertainty, robustness_worlds, options.seed, result.plan, *solution.replay, problem.as_written());
       run.robust_worlds = robustness.worlds;
       run.robust_succeeded = robustness.succeeded;

@@ -3,7 +3,7 @@
 
 #include "physltl/execution/executor.h"
 #include "physltl/planning/registry.h"
-#include "physltl/planning/robustness.h"
+#include "physltl/execution/robustness.h"
 
 #include <nlohmann/json.hpp>
 
@@ -14,8 +14,8 @@ namespace physltl::app {
 
 struct WorldExecution {
   int index = 0;                 // of the perturbed world (planning/perturbation.h)
-  planning::WorldRun open_loop;  // the plan without monitoring, for comparison
-  planning::WorldRun executed;   // the executed controls, judged as robustness judges a plan
+  execution::WorldRun open_loop;  // the plan without monitoring, for comparison
+  execution::WorldRun executed;   // the executed controls, judged as robustness judges a plan
   execution::Execution run;
 };
 

@@ -10,9 +10,9 @@ nlohmann::ordered_json uncertainty_json(const scenario::Uncertainty& u) {
           {"body_yaw_deg", u.body_yaw_deg}};
 }
 
-nlohmann::ordered_json robustness_json(const planning::Robustness& robustness, const scenario::Uncertainty& uncertainty) {
+nlohmann::ordered_json robustness_json(const execution::Robustness& robustness, const scenario::Uncertainty& uncertainty) {
   nlohmann::ordered_json failures = nlohmann::ordered_json::object();
-  for (const char* kind : planning::kFailureKinds) {
+  for (const char* kind : execution::kFailureKinds) {
     const auto it = robustness.failures.find(kind);
     failures[kind] = it == robustness.failures.end() ? 0 : it->second;
   }
@@ -23,7 +23,7 @@ nlohmann::ordered_json robustness_json(const planning::Robustness& robustness, c
           {"failures", std::move(failures)}};
 }
 
-std::string robustness_line(const planning::Robustness& robustness, const scenario::Uncertainty& u) {
+std::string robustness_line(const execution::Robustness& robustness, const scenario::Uncertainty& u) {
   std::vector<std::string> declared;
   if (u.mass > 0) declared.push_back(fmt::format("mass {:g}", u.mass));
   if (u.friction > 0) declared.push_back(fmt::format("friction {:g}", u.friction));
@@ -31,7 +31,7 @@ std::string robustness_line(const planning::Robustness& robustness, const scenar
   if (u.body_pose > 0) declared.push_back(fmt::format("body pose {:g} m", u.body_pose));
   if (u.body_yaw_deg > 0) declared.push_back(fmt::format("body yaw {:g} deg", u.body_yaw_deg));
   std::vector<std::string> failures;
-  for (const char* kind : planning::kFailureKinds) {
+  for (const char* kind : execution::kFailureKinds) {
     const auto it = robustness.failures.find(kind);
     if (it != robustness.failures.end()) failures.push_back(fmt::format("{} {}", kind, it->second));
   }

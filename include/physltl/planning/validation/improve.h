@@ -1,0 +1,23 @@
+#pragma once
+// After the first validated plan: spend a budget of candidates, not seconds, shortening it. A candidate
+// replaces the controls between two states of the plan by direct ones (drive straight from the robot's
+// place at the first towards its place at the second, turning first where the robot must face its way),
+// keeps the rest of the controls, and runs the whole in a fresh physics world; it is kept only if its
+// replay validates (every rule, the robot's limits, the formula as written) and it is shorter, or as long
+// with fewer pushes. The candidates follow from the seed: the same seed gives the same improved plan.
+
+#include "physltl/planning/validation/validated_plan.h"
+
+#include <cstdint>
+
+namespace physltl::planning {
+
+// What a plan costs, as the report and bench give it.
+PlanMeasures measure(const scenario::World& world, const Plan& plan, const Replay& replay);
+
+// Improves `plan` (validated, with `replay` its replay) in place, trying `budget` candidates drawn from
+// `seed`. Budget 0 leaves both untouched.
+Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::uint64_t seed, int budget, Plan& plan,
+                    Replay& replay);
+
+}  // namespace physltl::planning

@@ -1,0 +1,43 @@
+#pragma once
+// A search and the check of its result: the plan is replayed in a fresh world and its region trace read
+// by the formula as written. Only a plan that replay validated counts as solved.
+
+#include "physltl/planning/problem.h"
+#include "physltl/planning/registry.h"
+#include "physltl/planning/validation/replay.h"
+
+#include <cstdint>
+
+#include <optional>
+
+namespace physltl::planning {
+
+// What improving a plan did (improve.h).
+struct PlanMeasures {
+  double duration_s = 0.0;
+  int pushes = 0;
+  int bodies_moved = 0;
+  double path_length_m = 0.0;  // the robot's centre, step by step
+};
+
+struct Improvement {
+  int candidates = 0;  // tried
+  int accepted = 0;    // each better than the plan before
+  PlanMeasures first;
+  PlanMeasures improved;
+  double time_s = 0.0;
+};
+
+struct ValidatedPlan {
+  PlanResult result;             // result.plan is the improved plan when improvement ran
+  std::optional<Replay> replay;  // of result.plan, when the search solved
+  std::optional<Improvement> improvement;  // when options.improve > 0 and the first plan validated
+
+  // A search that solved but whose plan failed replay is a bug, kept so it can be reported.
+  bool solved() const { return replay.has_value() && replay->validated(); }
+};
+
+// Plans with `planner` and replays its plan: with kappa's validity rules for a planner that uses knowledge.
+ValidatedPlan plan_and_validate(const Problem& problem, const PlannerEntry& planner, const PlannerOptions& options);
+
+}  // namespace physltl::planning

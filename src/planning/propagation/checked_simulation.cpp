@@ -1,0 +1,34 @@
+#include "propagation/checked_simulation.h"
+
+namespace physltl::planning {
+
+CheckedSimulation::CheckedSimulation(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
+                                     knowledge::ValidityMode mode)
+    : knowledge_(knowledge), mode_(mode), simulation_(world) {}
+
+void CheckedSimulation::restore(const physics::PhysicsState& state) {
+  simulation_.restore(state);
+  simulation_.read_environment(environment_);
+  if (kappa_valid_) {
+    knowledge::reinfer(knowledge_, environment_, kappa_poses_, kappa_);
+  } else {
+    knowledge::infer(knowledge_, environment_, kappa_);
+    kappa_poses_ = knowledge::BodyLocator(knowledge_, environment_.movable_poses);
+    kappa_valid_ = true;
+  }
+}
+
+knowledge::Violation CheckedSimulation::step(const scenario::Vec2& setpoint) {
+  simulation_.step(setpoint, contacts_);
+  // Only the robot and the bodies the step integrated changed: read, test and infer for those.
+  simulation_.update_environment(environment_);
+  const std::span<const int> movers = simulation_.last_step_movers();
+  // VALIDITYCHECKER(E_new, kappa_j), then kappa_{j+1} = INFERENCE(E_new, kappa_j).
+  const knowledge::Violation violation =
+      knowledge::check_validity_after_step(knowledge_, kappa_, environment_, contacts_, mode_, movers).violation;
+  if (violation != knowledge::Violation::kNone) return violation;
+  if (mode_ == knowledge::ValidityMode::kKnowledge) knowledge::reinfer(knowledge_, environment_, kappa_poses_, kappa_, movers);
+  return violation;
+}
+
+}  // namespace physltl::planning

@@ -1,0 +1,120 @@
+#include "physltl/planning/validation/improve.h"
+
+#include "physltl/planning/random.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+namespace physltl::planning {
+namespace {
+
+// The controls that drive the robot from `from` to `to` at full speed, each at most max_steps long. A
+// differential robot turns in place to face `to`, drives, and turns to `to`'s heading.
+std::vector<Control> direct_controls(const scenario::World& world, const scenario::EnvironmentState& from,
+                                     const scenario::EnvironmentState& to) {
+  const auto& robot = world.robot;
+  const double dt = world.planner.step_size;
+  const int max_steps = world.planner.max_steps;
+  std::vector<Control> controls;
+  const auto add = [&](const Vec2& setpoint, int steps) {
+    for (; steps > 0; steps -= max_steps) controls.push_back({setpoint, std::min(steps, max_steps)});
+  };
+  const Vec2 way = to.robot_position - from.robot_position;
+  const double length = way.norm();
+  const int drive_steps = static_cast<int>(std::ceil(length / (robot.max_speed * dt)));
+  if (robot.drive == scenario::Drive::kHolonomic) {
+    if (length > 0.0) add(robot.max_speed * way / length, drive_steps);
+    return controls;
+  }
+  const auto turn = [&](double angle) {
+    const double error = std::remainder(angle, 2.0 * std::numbers::pi);
+    const int steps = static_cast<int>(std::ceil(std::abs(error) / (robot.max_turn_rate * dt)));
+    if (steps > 0) add({0.0, error / (steps * dt)}, steps);
+  };
+  const double heading = length > 0.0 ? std::atan2(way.y(), way.x()) : from.robot_yaw;
+  turn(heading - from.robot_yaw);
+  if (length > 0.0) add({robot.max_speed, 0.0}, drive_steps);
+  turn(to.robot_yaw - heading);
+  return controls;
+}
+
+// `plan`'s first `kept` controls followed by `rest`, the latter run in `simulation` from where the kept
+// ones end (restoring is exact, so this is the plan run from the start), with the state after each control.
+Plan splice(physics::Simulation& simulation, const Plan& plan, std::size_t kept, const std::vector<Control>& rest) {
+  Plan spliced;
+  spliced.controls.assign(plan.controls.begin(), plan.controls.begin() + static_cast<std::ptrdiff_t>(kept));
+  spliced.states.assign(plan.states.begin(), plan.states.begin() + static_cast<std::ptrdiff_t>(kept));
+  std::vector<scenario::RobotContact> contacts;
+  for (const Control& c : rest) {
+    for (int s = 0; s < c.steps; ++s) simulation.step(c.setpoint, contacts);
+    spliced.controls.push_back(c);
+    spliced.states.push_back(simulation.save());
+  }
+  return spliced;
+}
+
+// The index of the replay state at the end of control `c` (0: the start, before any control).
+std::size_t state_after(const Plan& plan, std::size_t controls) {
+  std::size_t steps = 0;
+  for (std::size_t c = 0; c < controls; ++c) steps += static_cast<std::size_t>(plan.controls[c].steps);
+  return steps;
+}
+
+bool better(const PlanMeasures& a, const PlanMeasures& b) {
+  return a.duration_s < b.duration_s || (a.duration_s == b.duration_s && a.pushes < b.pushes);
+}
+
+}  // namespace
+
+PlanMeasures measure(const scenario::World& world, const Plan& plan, const Replay& replay) {
+  PlanMeasures m;
+  m.duration_s = plan.total_steps() * world.planner.step_size;
+  m.pushes = replay.pushes;
+  m.bodies_moved = static_cast<int>(replay.moved_bodies.size());
+  for (std::size_t i = 1; i < replay.states.size(); ++i) {
+    m.path_length_m += (replay.states[i].robot_position - replay.states[i - 1].robot_position).norm();
+  }
+  return m;
+}
+
+Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::uint64_t seed, int budget, Plan& plan,
+                    Replay& replay) {
+  const auto started = std::chrono::steady_clock::now();
+  Improvement result;
+  result.first = result.improved = measure(problem.world, plan, replay);
+  // A generator of its own, from the run's seed: improving never changes what the search drew.
+  Random random(seed ^ 0x1A2B3C4D5E6F7081ull);
+  physics::Simulation simulation(problem.world);
+  const physics::PhysicsState start = simulation.save();
+  for (; result.candidates < budget; ++result.candidates) {
+    const int n = static_cast<int>(plan.controls.size());
+    if (n < 2) break;
+    // Replace controls [first, last) by a direct way from the state before `first` to the one after `last - 1`.
+    const int first = random.uniform_int(0, n - 2);
+    const int last = random.uniform_int(first + 2, n);
+    const auto& from = replay.states[state_after(plan, static_cast<std::size_t>(first))];
+    const auto& to = replay.states[state_after(plan, static_cast<std::size_t>(last))];
+    std::vector<Control> rest = direct_controls(problem.world, from, to);
+    rest.insert(rest.end(), plan.controls.begin() + last, plan.controls.end());
+    simulation.restore(first > 0 ? plan.states[static_cast<std::size_t>(first) - 1] : start);
+    Plan candidate = splice(simulation, plan, static_cast<std::size_t>(first), rest);
+    if (candidate.total_steps() > plan.total_steps()) continue;  // longer: not worth a replay
+    // Most candidates fail a check early (a shortcut through a wall or past a needed push): stop there.
+    // The kept controls were checked in the current plan's replay: start after them.
+    const ReplayedPrefix kept{replay, static_cast<std::size_t>(first)};
+    Replay checked = planning::replay(problem.world, candidate, problem.formula, problem.knowledge, mode, true, &kept);
+    if (!checked.validated()) continue;
+    const PlanMeasures measures = measure(problem.world, candidate, checked);
+    if (!better(measures, result.improved)) continue;
+    plan = std::move(candidate);
+    replay = std::move(checked);
+    result.improved = measures;
+    ++result.accepted;
+  }
+  result.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return result;
+}
+
+}  // namespace physltl::planning
