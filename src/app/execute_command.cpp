@@ -36,7 +36,7 @@ struct ExecuteArgs {
   int replans = 5;
   double tolerance = execution::ExecutionOptions{}.tolerance_m;
   long long budget = 200'000;
-  std::string planner = "knowledge";
+  std::optional<std::string> planner;  // the registry's default planner when not given
   std::optional<std::uint64_t> seed;
   std::string out_dir = "out";
   bool quiet = false;
@@ -76,7 +76,8 @@ void render_execution(const scenario::World& model, const knowledge::Reasoning& 
 }
 
 int execute(const ExecuteArgs& args) {
-  const planning::PlannerEntry& planner = parse_planner(args.planner);
+  const planning::PlannerEntry& planner =
+      args.planner ? parse_planner(*args.planner) : planning::PlannerRegistry::instance().default_planner();
   scenario::World world = args.scenario.load();
   if (args.seed) world.planner.seed = *args.seed;
   if (args.uncertainty) world.uncertainty = override_uncertainty(world.uncertainty, *args.uncertainty);
@@ -150,8 +151,11 @@ CommandRunner add_execute_command(CLI::App& app) {
   app.add_option("--budget", args->budget, "Propagations each replanning may spend")
       ->check(CLI::Range(1000LL, 100'000'000LL))
       ->capture_default_str();
-  app.add_option("--planner", args->planner, "The planner that plans and replans; it must take a budget of propagations: " +
-                     planning::PlannerRegistry::instance().names(&planning::Capabilities::propagation_budget))->capture_default_str();
+  const planning::PlannerRegistry& registry = planning::PlannerRegistry::instance();
+  app.add_option("--planner", args->planner,
+                 "The planner that plans and replans, one that takes a budget of propagations: " +
+                     registry.names(&planning::Capabilities::propagation_budget) + " (default: " +
+                     registry.default_planner().name + ")");
   app.add_option("--seed", args->seed, "Seed of the plan and of the perturbed worlds (default: the scenario's)");
   app.add_option("--out", args->out_dir, "Folder for outputs; writes <out>/<scenario>/execution.json")->capture_default_str();
   app.add_flag("--quiet", args->quiet, "Print only errors");

@@ -66,10 +66,10 @@ class ProgressLine {
 };
 
 int run(const RunArgs& args) {
-  if (args.baseline && args.planner && *args.planner != "baseline") {
+  const planning::PlannerRegistry& registry = planning::PlannerRegistry::instance();
+  if (args.baseline && args.planner && *args.planner != registry.reference_planner().name) {
     throw BadInput("--baseline and --planner " + *args.planner + " name two planners");
   }
-  const planning::PlannerRegistry& registry = planning::PlannerRegistry::instance();
   const planning::PlannerEntry& planner = args.baseline  ? registry.reference_planner()
                                           : args.planner ? parse_planner(*args.planner)
                                                          : registry.default_planner();
