@@ -114,7 +114,7 @@ int run(const RunArgs& args) {
   const auto& stats = result.stats;
   say(fmt::format("search     {}: {:.2f} s, {} nodes, {} propagations, {} physics steps{}", result.stop_reason,
                   stats.planning_time_s, stats.tree_nodes, stats.propagations, stats.physics_steps,
-                  args.threads > 1 ? fmt::format(" ({} threads)", args.threads) : ""));
+                  args.threads > 1 && planner.can.threads ? fmt::format(" ({} threads)", args.threads) : ""));
   if (stop.received()) {
     std::cerr << "physltl-studio: interrupted; nothing written\n";
     return kExitInterrupted;
