@@ -53,10 +53,11 @@ CampaignSettings campaign_settings(const BenchArgs& args) {
     }
   }
   CampaignSettings settings;
-  settings.planners = args.planners ? parse_planner_list(*args.planners) : std::vector{&planning::PlannerRegistry::instance().default_planner()};
-  if (args.compare && std::find(settings.planners.begin(), settings.planners.end(), &planning::PlannerRegistry::instance().reference_planner()) ==
-                          settings.planners.end()) {
-    settings.planners.push_back(&planning::PlannerRegistry::instance().reference_planner());
+  const planning::PlannerRegistry& registry = planning::PlannerRegistry::instance();
+  settings.planners = args.planners ? parse_planner_list(*args.planners) : std::vector{&registry.default_planner()};
+  const planning::PlannerEntry* reference = &registry.reference_planner();
+  if (args.compare && std::find(settings.planners.begin(), settings.planners.end(), reference) == settings.planners.end()) {
+    settings.planners.push_back(reference);
   }
   settings.threads = args.threads;
   settings.runs = args.runs;

@@ -2,7 +2,7 @@
 
 #include "physltl/planning/registry.h"
 #include "physltl/planning/validation/replay.h"
-#include "tree/stage_graph.h"
+#include "stage_graph.h"
 
 #include "test_problem.h"
 

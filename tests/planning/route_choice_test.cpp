@@ -2,7 +2,7 @@
 
 #include "physltl/planning/tree/route_choice.h"
 
-#include "tree/stage_graph.h"
+#include "stage_graph.h"
 #include "test_problem.h"
 
 #include <gtest/gtest.h>

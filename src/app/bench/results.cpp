@@ -102,8 +102,9 @@ PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
 
 std::optional<double> ratio_of_medians(const BenchResults& results) {
   if (results.threads.empty()) return std::nullopt;
-  const PlannerRuns* knowledge = find_planner(results, &planning::PlannerRegistry::instance().default_planner(), results.threads[0]);
-  const PlannerRuns* baseline = find_planner(results, &planning::PlannerRegistry::instance().reference_planner(), results.threads[0]);
+  const planning::PlannerRegistry& registry = planning::PlannerRegistry::instance();
+  const PlannerRuns* knowledge = find_planner(results, &registry.default_planner(), results.threads[0]);
+  const PlannerRuns* baseline = find_planner(results, &registry.reference_planner(), results.threads[0]);
   if (knowledge == nullptr || baseline == nullptr) return std::nullopt;
   const double k = median_of(results, *knowledge);
   if (k <= 0.0) return std::nullopt;
@@ -113,10 +114,11 @@ std::optional<double> ratio_of_medians(const BenchResults& results) {
 std::vector<ThreadsRatio> threads_ratios(const BenchResults& results) {
   std::vector<ThreadsRatio> ratios;
   if (results.threads.empty()) return ratios;
-  const PlannerRuns* first = find_planner(results, &planning::PlannerRegistry::instance().default_planner(), results.threads[0]);
+  const planning::PlannerEntry* knowledge = &planning::PlannerRegistry::instance().default_planner();
+  const PlannerRuns* first = find_planner(results, knowledge, results.threads[0]);
   if (first == nullptr || median_of(results, *first) <= 0.0) return ratios;
   for (size_t i = 1; i < results.threads.size(); ++i) {
-    if (const PlannerRuns* p = find_planner(results, &planning::PlannerRegistry::instance().default_planner(), results.threads[i])) {
+    if (const PlannerRuns* p = find_planner(results, knowledge, results.threads[i])) {
       ratios.push_back({results.threads[i], median_of(results, *p) / median_of(results, *first)});
     }
   }

@@ -4,13 +4,6 @@
 #include <limits>
 
 namespace physltl::planning::ompl_adapter {
-namespace {
-
-// As long as our tree search brakes (tree_grower.cpp).
-constexpr double kMaxBrakingTime = 3.0;  // s
-
-}  // namespace
-
 bool TaskGoal::isSatisfied(const ob::State* state, double* distance) const {
   const int q = ltl_->getProdGraphState(state)->getCosafeState();
   const bool satisfied = q >= 0 && automaton_->isAccepting(static_cast<unsigned>(q));
@@ -28,10 +21,8 @@ bool ProductGoal::isSatisfied(const ob::State* state, double* distance) const {
   const double* v = state->as<PhysicsSpace::StateType>()->values;
   const int q = static_cast<int>(v[space_.values() + kAutomatonState]);
   const TaskProduct& product = *space_.product();
-  if (distance != nullptr) {
-    const int d = product.distance[static_cast<size_t>(q)];
-    *distance = d < 0 ? std::numeric_limits<double>::max() : d;
-  }
+  // The distance only ranks approximate solutions, which no run uses: 0 at acceptance, 1 elsewhere.
+  if (distance != nullptr) *distance = product.task.dfa.accepting[static_cast<size_t>(q)] ? 0.0 : 1.0;
   if (!product.task.dfa.accepting[static_cast<size_t>(q)] || v[space_.values() + kValid] != 1.0) return false;
   return !product.task.ends_at_rest() || braking(state).has_value();
 }
@@ -49,7 +40,7 @@ std::optional<Plan> ProductGoal::braking(const ob::State* state) const {
   for (int step = 1; step <= max_steps; ++step) {
     if (simulation_.step(Vec2::Zero()) != knowledge::Violation::kNone) return std::nullopt;
     q = product.task.step(q, product.task.labelling.letter(simulation_.environment()));
-    if (product.distance[static_cast<size_t>(q)] < 0) return std::nullopt;
+    if (product.stages.dead(q)) return std::nullopt;
     ++steps;
     const bool at_rest = simulation_.environment().at_rest();
     if (at_rest && !product.task.dfa.accepting[static_cast<size_t>(q)]) return std::nullopt;

@@ -33,7 +33,7 @@ class TaskGoal : public ob::Goal {
 
 // On our product: an accepting automaton state; for a task that must end at rest, one from which braking
 // (zero set-points) brings the robot and the boxes to rest with every step valid and the automaton
-// accepting there, as our tree search judges it. The distance is the automaton's, in letters.
+// accepting there, as our tree search judges it.
 class ProductGoal : public ob::Goal {
  public:
   ProductGoal(const ob::SpaceInformationPtr& si, const PhysicsSpace& space, const knowledge::AbstractKnowledge& knowledge);

@@ -1,32 +1,13 @@
 #include "physltl/planning/ompl/ompl_automaton.h"
 
+#include "stage_graph.h"
+
 #include <ompl/control/planners/ltl/Automaton.h>
 
 #include <stdexcept>
 #include <vector>
 
 namespace physltl::planning {
-namespace {
-
-// The states from which no accepting state can be reached.
-std::vector<bool> dead_states(const TaskAutomaton& task, int regions) {
-  const int states = static_cast<int>(task.dfa.size());
-  std::vector<bool> alive(task.dfa.accepting.begin(), task.dfa.accepting.end());
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (int q = 0; q < states; ++q) {
-      for (int r = -1; r < regions && !alive[static_cast<std::size_t>(q)]; ++r) {
-        if (alive[static_cast<std::size_t>(task.step(q, task.labelling.letter(0, r)))]) alive[static_cast<std::size_t>(q)] = changed = true;
-      }
-    }
-  }
-  std::vector<bool> dead;
-  for (bool a : alive) dead.push_back(!a);
-  return dead;
-}
-
-}  // namespace
-
 ompl::control::World region_letter(int regions, int region) {
   ompl::control::World letter(static_cast<unsigned>(regions));
   for (int p = 0; p < regions; ++p) letter[static_cast<unsigned>(p)] = p == region;
@@ -40,7 +21,7 @@ std::shared_ptr<ompl::control::Automaton> to_ompl_automaton(const TaskAutomaton&
   }
   const auto regions = static_cast<unsigned>(task.labelling.regions());
   const auto states = static_cast<unsigned>(task.dfa.size());
-  const std::vector<bool> dead = dead_states(task, static_cast<int>(regions));
+  const StageGraph stages(task);  // its dead states: no letter leads to acceptance from them
   auto automaton = std::make_shared<ompl::control::Automaton>(regions, states);
   automaton->setStartState(static_cast<unsigned>(task.dfa.start));
   for (unsigned q = 0; q < states; ++q) {
@@ -51,7 +32,7 @@ std::shared_ptr<ompl::control::Automaton> to_ompl_automaton(const TaskAutomaton&
         throw std::invalid_argument("the task automaton changes state on reading the same region twice; "
                                     "OMPL's product graph cannot follow it");
       }
-      if (dead[static_cast<std::size_t>(next)]) continue;
+      if (stages.dead(next)) continue;
       automaton->addTransition(q, region_letter(static_cast<int>(regions), r), static_cast<unsigned>(next));
     }
   }

@@ -6,35 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <numbers>
 
 namespace physltl::planning::ompl_adapter {
 namespace {
 
 constexpr std::size_t kValuesPerBody = physics::PhysicsState::kValuesPerBody;
-
-// Letters to acceptance from each automaton state (breadth first over the reversed transitions).
-std::vector<int> distances_to_acceptance(const TaskAutomaton& task) {
-  const int states = static_cast<int>(task.dfa.size()), letters = task.labelling.letters();
-  std::vector<std::vector<int>> into(static_cast<size_t>(states));
-  for (int q = 0; q < states; ++q) {
-    for (int letter = 0; letter < letters; ++letter) into[static_cast<size_t>(task.step(q, letter))].push_back(q);
-  }
-  std::vector<int> distance(static_cast<size_t>(states), -1);
-  std::deque<int> todo;
-  for (int q = 0; q < states; ++q) {
-    if (task.dfa.accepting[static_cast<size_t>(q)]) distance[static_cast<size_t>(q)] = 0, todo.push_back(q);
-  }
-  while (!todo.empty()) {
-    const int q = todo.front();
-    todo.pop_front();
-    for (int p : into[static_cast<size_t>(q)]) {
-      if (distance[static_cast<size_t>(p)] < 0) distance[static_cast<size_t>(p)] = distance[static_cast<size_t>(q)] + 1, todo.push_back(p);
-    }
-  }
-  return distance;
-}
 
 // Samples (what RRT, SST and PDST grow towards) a pose of the robot anywhere in the workspace, the rest as
 // at the start, and on our product a live automaton state; its generator is seeded from the run's seed.
@@ -102,9 +79,9 @@ void set_workspace_bounds(ob::RealVectorBounds& bounds, const scenario::World& w
 
 }  // namespace
 
-TaskProduct::TaskProduct(const TaskAutomaton& automaton) : task(automaton), distance(distances_to_acceptance(automaton)) {
-  for (size_t q = 0; q < distance.size(); ++q) {
-    if (distance[q] >= 0) live.push_back(static_cast<int>(q));
+TaskProduct::TaskProduct(const TaskAutomaton& automaton) : task(automaton), stages(automaton) {
+  for (int q = 0; q < static_cast<int>(automaton.dfa.size()); ++q) {
+    if (!stages.dead(q)) live.push_back(q);
   }
   // The robot is the physics state's first body, the movable bodies follow in World order.
   for (const auto& named : task.labelling.named_bodies()) {

@@ -5,6 +5,8 @@
 
 #include "seeds.h"
 
+#include "stage_graph.h"
+
 #include "physltl/physics/simulation.h"
 #include "physltl/planning/task.h"
 #include "physltl/scenario/world.h"
@@ -30,14 +32,14 @@ enum Flag : std::size_t { kValid = 0, kBeyondGraph = 1, kAutomatonState = 2 };
 // state never stand in for one in this one (SST's pruning, the nearest neighbours of RRT).
 inline constexpr double kAutomatonStateWeight = 100.0;
 
-// Our product's automaton: the task's, with each state's distance to acceptance in letters. The bodies the
-// task names are part of the product too: where they stand counts in distances, samples and KPIECE1's and
-// PDST's grid as the robot's position does, or nothing would lead a search to move them.
+// Our product's automaton: the task's, with its stages (whose dead automaton states no step may enter).
+// The bodies the task names are part of the product too: where they stand counts in distances, samples
+// and KPIECE1's and PDST's grid as the robot's position does, or nothing would lead a search to move them.
 struct TaskProduct {
   explicit TaskProduct(const TaskAutomaton& task);
   const TaskAutomaton& task;
-  std::vector<int> distance;  // per automaton state; -1: no letters lead to acceptance any more
-  std::vector<int> live;      // the states with a distance, which the state sampler draws from
+  StageGraph stages;
+  std::vector<int> live;  // the automaton states that are not dead, which the state sampler draws from
   std::vector<std::size_t> named_values;  // where each named body's x, y are in the physics values
 };
 

@@ -40,7 +40,7 @@ void PhysicsPropagator::propagate(const ob::State* from, const oc::Control* cont
     if (product != nullptr) {
       if (!valid) break;
       automaton_state = product->task.step(automaton_state, product->task.labelling.letter(simulation_.environment()));
-      valid = product->distance[static_cast<size_t>(automaton_state)] >= 0;
+      valid = !product->stages.dead(automaton_state);
       if (!valid) counts_.refused.add(Refusal::kTaskLetter);
       continue;
     }

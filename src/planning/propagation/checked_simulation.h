@@ -13,6 +13,11 @@
 
 namespace physltl::planning {
 
+// How long a plan that must end at rest may brake for, in every planner: longer than any robot and box
+// need to stop (the drive stops the robot within a step or two, floor friction a sliding box within a
+// fraction of a second).
+inline constexpr double kMaxBrakingTime = 3.0;  // s
+
 class CheckedSimulation {
  public:
   CheckedSimulation(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,

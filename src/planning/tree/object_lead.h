@@ -14,7 +14,7 @@
 #include "physltl/planning/labelling.h"
 #include "physltl/planning/plan.h"
 #include "physltl/planning/random.h"
-#include "tree/stage_graph.h"
+#include "stage_graph.h"
 
 #include <map>
 #include <memory>

@@ -5,7 +5,7 @@
 // (stage_graph.h); for a task about the robot alone, the automaton state.
 
 #include "physltl/decomposition/decomposition.h"
-#include "tree/stage_graph.h"
+#include "stage_graph.h"
 
 #include <utility>
 #include <vector>

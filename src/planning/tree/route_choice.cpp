@@ -1,6 +1,6 @@
 #include "physltl/planning/tree/route_choice.h"
 
-#include "tree/stage_graph.h"
+#include "stage_graph.h"
 
 #include "physltl/geometry/convex_partition.h"
 #include "physltl/planning/tree/path_lower_bound.h"

@@ -6,14 +6,6 @@
 #include <cmath>
 
 namespace physltl::planning {
-namespace {
-
-// Longer than any robot and box need to stop: the drive stops the robot within a step or two, and floor
-// friction a sliding box within a fraction of a second.
-constexpr double kMaxBrakingTime = 3.0;  // s
-
-}  // namespace
-
 TreeGrower::TreeGrower(const scenario::World& world, const TaskAutomaton& task, const StageGraph& stages,
                        const knowledge::AbstractKnowledge& knowledge, const decomposition::Decomposition& decomposition,
                        const ProductGraph& graph, const ObjectLead& object_lead, bool use_knowledge)

@@ -15,7 +15,7 @@
 #include "physltl/planning/refusal.h"
 #include "physltl/planning/task.h"
 #include "tree/product_graph.h"
-#include "tree/stage_graph.h"
+#include "stage_graph.h"
 
 #include <cstdint>
 #include <optional>

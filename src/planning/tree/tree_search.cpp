@@ -5,7 +5,7 @@
 #include "tree/product_graph.h"
 #include "physltl/planning/random.h"
 #include "physltl/planning/tree/route_choice.h"
-#include "tree/stage_graph.h"
+#include "stage_graph.h"
 #include "tree/tree_grower.h"
 #include "tree/worker_pool.h"
 

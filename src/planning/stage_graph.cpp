@@ -1,4 +1,4 @@
-#include "tree/stage_graph.h"
+#include "stage_graph.h"
 
 #include <deque>
 
