@@ -5,10 +5,14 @@
 
 namespace physltl::render {
 
+Image draw_preview(const scenario::World& world, const scenario::EnvironmentState& state, const Overlay& overlay) {
+  Renderer renderer(world, world.render.width, world.render.height);
+  return renderer.draw(state, overlay, View::kPerspective);
+}
+
 void render_preview(const scenario::World& world, const scenario::EnvironmentState& state, const Overlay& overlay,
                     const std::filesystem::path& path) {
-  Renderer renderer(world, world.render.width, world.render.height);
-  write_png(renderer.draw(state, overlay, View::kPerspective), path);
+  write_png(draw_preview(world, state, overlay), path);
 }
 
 }  // namespace physltl::render

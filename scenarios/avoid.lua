@@ -24,3 +24,5 @@ P.box { name = "B1", at = { 5.0, 0.7 }, size = 0.5, mass = 0.5 }
 
 task { formula = params.task or "F goal & G !hazard" }
 planner { time_limit = 60, step_size = 0.05, min_steps = 2, max_steps = 30, seed = 1 }
+-- What `physltl-studio test scenarios/` holds this scenario to (docs/testing.md); the goldens are in goldens/avoid/.
+expect { max_pushes = 0, max_motion_s = 12, tree = true, frames = { "last" } }

@@ -26,3 +26,5 @@ P.area("p3", { 0.2, 2.2 }, { 4.0, 3.6 })
 
 task { formula = "(F p1 | F p2) & G !p3" }
 planner { time_limit = 60, step_size = 0.05, min_steps = 2, max_steps = 30, seed = 1 }
+-- What `physltl-studio test scenarios/` holds this scenario to (docs/testing.md); the goldens are in goldens/visit_avoid/.
+expect { max_pushes = 0, max_motion_s = 11, tree = true, frames = { "last" } }

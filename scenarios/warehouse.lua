@@ -59,3 +59,5 @@ P.area("c", { 0.4, height - 1.4 }, { 1.4, height - 0.4 })
 task { formula = "F(a & F(b & F c))" }
 planner { time_limit = 60, step_size = 0.05, min_steps = 2, max_steps = 30, seed = 1 }
 render { width = 640, height = 640, fps = 30 }
+-- What `physltl-studio test scenarios/` holds this scenario to (docs/testing.md); the goldens are in goldens/warehouse/.
+expect { max_pushes = 0, max_motion_s = 29, tree = true, frames = { "last" } }

@@ -10,3 +10,5 @@ params.gap = params.gap or 0.4
 params.margin_x = params.margin_x or 1.2
 params.margin_y = params.margin_y or 1.2
 require "warehouse"
+-- What `physltl-studio test scenarios/` holds this scenario to (docs/testing.md); the goldens are in goldens/warehouse_rows/.
+expect { max_pushes = 0, max_motion_s = 68, tree = true, frames = { "last" } }

@@ -18,5 +18,6 @@ CommandRunner add_ltl_command(CLI::App& app);
 CommandRunner add_bench_command(CLI::App& app);
 CommandRunner add_bench_merge_command(CLI::App& app);  // `bench merge`
 CommandRunner add_execute_command(CLI::App& app);
+CommandRunner add_test_command(CLI::App& app);  // golden tests of scenarios
 
 }  // namespace physltl::app

@@ -68,6 +68,9 @@ int run_command_line(int argc, char** argv) {
   subcommands.emplace("ltl", make_command("physltl-studio ltl",
                                           "Parse a co-safe LTL formula, simplify it, translate it to a minimal DFA.",
                                           add_ltl_command));
+  subcommands.emplace("test", make_command("physltl-studio test",
+                                           "Test scenarios against their expectations and goldens: plan, pictures; JUnit XML.",
+                                           add_test_command));
   subcommands.emplace("bench", make_command("physltl-studio bench",
                                             "Benchmark the planners on a range of seeds: table, bench.json, OMPL log; campaigns in shards, `bench merge`.",
                                             add_bench_command));

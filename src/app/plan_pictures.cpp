@@ -41,59 +41,80 @@ render::Color automaton_state_color(int state, int states) {
   return {0.15f + 0.85f * t, 0.35f + 0.25f * t * (1 - t), 0.95f - 0.85f * t, 1.0f};
 }
 
+PlanAnimation::PlanAnimation(const scenario::World& world, const knowledge::Reasoning& reasoning,
+                             const planning::Replay& replay, int automaton_states,
+                             const std::vector<render::SegmentOverlay>& marks, const std::string& mark_legend)
+    : world_(world),
+      reasoning_(reasoning),
+      replay_(replay),
+      automaton_states_(automaton_states),
+      mark_legend_(mark_legend),
+      task_line_("task: " + world.task.formula),
+      duration_s_(world.planner.step_size * static_cast<double>(replay.states.size() - 1)),
+      renderer_(std::make_unique<render::Renderer>(world, world.render.width, world.render.height)) {
+  overlay_.segments = marks;
+  overlay_.avoided_regions = ltl::avoided_propositions(reasoning.task.normal_form);
+  overlay_.legend_room = {{task_line_}, {time_line(duration_s_, "p0")}, {automaton_line(automaton_states, true)}};
+  if (!mark_legend.empty()) overlay_.legend_room.push_back({mark_legend});
+  for (const scenario::Region& r : world.regions) overlay_.legend_room[1].push_back(time_line(duration_s_, r.name));
+  for (render::ObjectGoalOverlay goal : object_goal_overlays(world, reasoning, replay.states.front())) {
+    goal.holds = false;
+    const std::string not_yet = object_goal_line(world, goal);
+    goal.holds = true;
+    overlay_.legend_room.push_back({not_yet, object_goal_line(world, goal)});
+  }
+}
+
+PlanAnimation::~PlanAnimation() = default;
+
+int PlanAnimation::frame_count() const {
+  return static_cast<int>(std::ceil(duration_s_ * world_.render.fps - 1e-9)) + 1;
+}
+
+std::string PlanAnimation::time_line(double time, const std::string& region) {
+  return fmt::format("t = {:.2f} s   region: {}", time, region);
+}
+
+std::string PlanAnimation::automaton_line(int state, bool accepting) const {
+  return fmt::format("automaton state {} of {}{}", state, automaton_states_, accepting ? " (accepting)" : "");
+}
+
+render::Image PlanAnimation::draw(double time_s) {
+  const double dt = world_.planner.step_size;
+  const double time = std::clamp(time_s, 0.0, duration_s_);
+  const double index = std::min(time / dt, static_cast<double>(replay_.states.size() - 1));
+  const size_t i = static_cast<size_t>(index);
+  const size_t j = std::min(i + 1, replay_.states.size() - 1);
+  const auto state = interpolate(replay_.states[i], replay_.states[j], index - static_cast<double>(i));
+  knowledge::infer(reasoning_.knowledge, state, kappa_);
+
+  overlay_.mregions = mregion_overlays(reasoning_.knowledge, kappa_, state);
+  const int region = replay_.region_trace[i];
+  const int q = replay_.automaton_trace[i];
+  overlay_.legend = {task_line_, time_line(time, region < 0 ? "p0" : world_.regions[region].name),
+                     automaton_line(q, q == replay_.automaton_trace.back() && replay_.accepted)};
+  if (!mark_legend_.empty()) overlay_.legend.push_back(mark_legend_);
+  overlay_.object_goals = object_goal_overlays(world_, reasoning_, state);
+  for (const render::ObjectGoalOverlay& goal : overlay_.object_goals) overlay_.legend.push_back(object_goal_line(world_, goal));
+  // The travelled path up to now: extended while frames go forward, as the video draws them.
+  if (overlay_.path.size() > i + 1) overlay_.path.resize(i + 1);
+  while (overlay_.path.size() <= i) overlay_.path.push_back(replay_.states[overlay_.path.size()].robot_position);
+  return renderer_->draw(state, overlay_, render::View::kPerspective);
+}
+
 PlanFrames write_plan_frames(const scenario::World& world, const knowledge::Reasoning& reasoning, const planning::Replay& replay,
                              int automaton_states, const std::filesystem::path& folder,
                              const std::filesystem::path& video, const Progress& progress,
                              const std::vector<render::SegmentOverlay>& marks, const std::string& mark_legend) {
   std::filesystem::create_directories(folder);
-  const double dt = world.planner.step_size;
-  const double duration = dt * static_cast<double>(replay.states.size() - 1);
+  PlanAnimation animation(world, reasoning, replay, automaton_states, marks, mark_legend);
   // One frame per 1/fps from the start, and the last one at the final state: the plan's end (a region
   // entered on its very last step) is always seen.
-  const int frames = static_cast<int>(std::ceil(duration * world.render.fps - 1e-9)) + 1;
-  const std::string task = "task: " + world.task.formula;
-
-  render::Renderer renderer(world, world.render.width, world.render.height);
+  const int frames = animation.frame_count();
   render::FrameWriter writer(folder);
   render::VideoEncoder encoder(video, world.render.width, world.render.height, world.render.fps);
-  knowledge::Kappa kappa;
-  // One overlay for all frames: the travelled path only grows, so it is extended, not rebuilt per frame.
-  render::Overlay overlay;
-  overlay.segments = marks;
-  overlay.avoided_regions = ltl::avoided_propositions(reasoning.task.normal_form);
-  const auto time_line = [](double time, const std::string& region) {
-    return fmt::format("t = {:.2f} s   region: {}", time, region);
-  };
-  const auto automaton_line = [automaton_states](int state, bool accepting) {
-    return fmt::format("automaton state {} of {}{}", state, automaton_states, accepting ? " (accepting)" : "");
-  };
-  overlay.legend_room = {{task}, {time_line(duration, "p0")}, {automaton_line(automaton_states, true)}};
-  if (!mark_legend.empty()) overlay.legend_room.push_back({mark_legend});
-  for (const scenario::Region& r : world.regions) overlay.legend_room[1].push_back(time_line(duration, r.name));
-  for (render::ObjectGoalOverlay goal : object_goal_overlays(world, reasoning, replay.states.front())) {
-    goal.holds = false;
-    const std::string not_yet = object_goal_line(world, goal);
-    goal.holds = true;
-    overlay.legend_room.push_back({not_yet, object_goal_line(world, goal)});
-  }
   for (int f = 0; f < frames; ++f) {
-    const double time = std::min(static_cast<double>(f) / world.render.fps, duration);
-    const double index = std::min(time / dt, static_cast<double>(replay.states.size() - 1));
-    const size_t i = static_cast<size_t>(index);
-    const size_t j = std::min(i + 1, replay.states.size() - 1);
-    const auto state = interpolate(replay.states[i], replay.states[j], index - static_cast<double>(i));
-    knowledge::infer(reasoning.knowledge, state, kappa);
-
-    overlay.mregions = mregion_overlays(reasoning.knowledge, kappa, state);
-    const int region = replay.region_trace[i];
-    const int q = replay.automaton_trace[i];
-    overlay.legend = {task, time_line(time, region < 0 ? "p0" : world.regions[region].name),
-                      automaton_line(q, q == replay.automaton_trace.back() && replay.accepted)};
-    if (!mark_legend.empty()) overlay.legend.push_back(mark_legend);
-    overlay.object_goals = object_goal_overlays(world, reasoning, state);
-    for (const render::ObjectGoalOverlay& goal : overlay.object_goals) overlay.legend.push_back(object_goal_line(world, goal));
-    while (overlay.path.size() <= i) overlay.path.push_back(replay.states[overlay.path.size()].robot_position);
-    const auto frame = std::make_shared<const render::Image>(renderer.draw(state, overlay, render::View::kPerspective));
+    const auto frame = std::make_shared<const render::Image>(animation.draw(static_cast<double>(f) / world.render.fps));
     encoder.add(frame);
     writer.add(frame);
     if (progress) progress(f + 1, frames);
@@ -102,9 +123,9 @@ PlanFrames write_plan_frames(const scenario::World& world, const knowledge::Reas
   return {written, encoder.finish()};
 }
 
-void write_tree_picture(const scenario::World& world, const knowledge::Reasoning& reasoning,
-                        const decomposition::Decomposition& decomposition, const planning::PlanResult& result,
-                        const planning::Replay* replay, const std::filesystem::path& file) {
+render::Image draw_tree_picture(const scenario::World& world, const knowledge::Reasoning& reasoning,
+                                const decomposition::Decomposition& decomposition, const planning::PlanResult& result,
+                                const planning::Replay* replay) {
   render::Overlay overlay;
   overlay.avoided_regions = ltl::avoided_propositions(reasoning.task.normal_form);
   for (const auto& t : decomposition.triangles()) overlay.decomposition.push_back(t.corners);
@@ -120,7 +141,13 @@ void write_tree_picture(const scenario::World& world, const knowledge::Reasoning
   render::Renderer renderer(world, world.render.width, world.render.height);
   const auto initial = replay != nullptr ? replay->states.front() : scenario::EnvironmentState::initial(world);
   overlay.object_goals = object_goal_overlays(world, reasoning, initial);
-  render::write_png(renderer.draw(initial, overlay, render::View::kTop), file);
+  return renderer.draw(initial, overlay, render::View::kTop);
+}
+
+void write_tree_picture(const scenario::World& world, const knowledge::Reasoning& reasoning,
+                        const decomposition::Decomposition& decomposition, const planning::PlanResult& result,
+                        const planning::Replay* replay, const std::filesystem::path& file) {
+  render::write_png(draw_tree_picture(world, reasoning, decomposition, result, replay), file);
 }
 
 }  // namespace physltl::app

@@ -4,12 +4,15 @@
 #include "physltl/decomposition/decomposition.h"
 #include "physltl/planning/planner_options.h"
 #include "physltl/planning/validation/replay.h"
+#include "physltl/render/image.h"
+#include "physltl/render/renderer.h"
 #include "physltl/render/scene.h"
 #include "physltl/render/video.h"
 #include "physltl/knowledge/reasoning.h"
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 
 namespace physltl::app {
@@ -20,6 +23,38 @@ using Progress = std::function<void(int, int)>;
 struct PlanFrames {
   int frames = 0;
   render::VideoResult video;
+};
+
+// The replayed plan drawn at any moment, with the legend the video shows (time, region, automaton state,
+// object goals) and the path travelled so far.
+class PlanAnimation {
+ public:
+  PlanAnimation(const scenario::World& world, const knowledge::Reasoning& reasoning, const planning::Replay& replay,
+                int automaton_states, const std::vector<render::SegmentOverlay>& marks = {},
+                const std::string& mark_legend = "");
+  ~PlanAnimation();
+  PlanAnimation(const PlanAnimation&) = delete;
+  PlanAnimation& operator=(const PlanAnimation&) = delete;
+
+  double duration_s() const { return duration_s_; }
+  int frame_count() const;  // at the World's fps, the last one at the final state
+  // Linearly interpolated between physics steps, so boxes glide as they were pushed; clamped to the plan.
+  render::Image draw(double time_s);
+
+ private:
+  static std::string time_line(double time, const std::string& region);
+  std::string automaton_line(int state, bool accepting) const;
+
+  const scenario::World& world_;
+  const knowledge::Reasoning& reasoning_;
+  const planning::Replay& replay_;
+  int automaton_states_;
+  std::string mark_legend_;
+  std::string task_line_;
+  double duration_s_;
+  std::unique_ptr<render::Renderer> renderer_;
+  knowledge::Kappa kappa_;
+  render::Overlay overlay_;  // kept from frame to frame: the travelled path only grows while time goes on
 };
 
 // frames/frame_00000.png ... at the World's fps, linearly interpolated between physics steps so boxes
@@ -37,6 +72,10 @@ PlanFrames write_plan_frames(const scenario::World& world, const knowledge::Reas
 void write_tree_picture(const scenario::World& world, const knowledge::Reasoning& reasoning,
                         const decomposition::Decomposition& decomposition, const planning::PlanResult& result,
                         const planning::Replay* replay, const std::filesystem::path& file);
+
+render::Image draw_tree_picture(const scenario::World& world, const knowledge::Reasoning& reasoning,
+                                const decomposition::Decomposition& decomposition, const planning::PlanResult& result,
+                                const planning::Replay* replay);
 
 // A colour per automaton state, from start (cool) to accepting (warm).
 render::Color automaton_state_color(int state, int states);

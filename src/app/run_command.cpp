@@ -1,4 +1,5 @@
 #include "command.h"
+#include "main_job.h"
 #include "planner_names.h"
 #include "output_folder.h"
 #include "physltl/ltl/formula.h"
@@ -29,8 +30,6 @@
 namespace physltl::app {
 namespace {
 
-constexpr int kDefaultImprove = 100;
-
 struct RunArgs {
   ScenarioArgs scenario;
   bool render = false;
@@ -42,7 +41,7 @@ struct RunArgs {
   bool baseline = false;  // --planner baseline
   bool quiet = false;
   // Shortening the first validated plan (docs/planner.md).
-  int improve = kDefaultImprove;
+  int improve = kMainJobImprove;
   // One per core: threads change how soon the plan is found, never which plan (bench defaults to one
   // thread, the fair figure).
   int threads = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));

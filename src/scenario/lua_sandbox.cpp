@@ -358,7 +358,7 @@ Diagnostic diagnostic_from_lua_message(const Sandbox& box, const std::string& me
 
 const std::vector<std::string>& element_kinds() {
   static const std::vector<std::string> kinds = {"workspace", "robot",   "fixed",  "movable",    "region",
-                                                 "task",      "planner", "render", "uncertainty"};
+                                                 "task",      "planner", "render", "uncertainty", "expect"};
   return kinds;
 }
 

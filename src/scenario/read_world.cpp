@@ -1,5 +1,6 @@
 #include "read_world.h"
 
+#include "read_expectations.h"
 #include "table_reader.h"
 
 #include "physltl/geometry/convex_partition.h"
@@ -29,6 +30,11 @@ std::optional<Side> parse_side(const std::string& text) {
 }
 
 bool is_singleton(const std::string& kind) { return kind != "fixed" && kind != "movable" && kind != "region"; }
+
+bool written_in(const Element& e, const std::string& path) {
+  std::error_code ec;
+  return std::filesystem::equivalent(e.where.file, path, ec);
+}
 
 std::string element_label(const Element& e, int index_of_kind) {
   if (is_singleton(e.kind)) return e.kind;
@@ -293,11 +299,18 @@ World read_world(const std::vector<Element>& elements, const std::string& path, 
   world.name = std::filesystem::path(path).stem().string();
   const std::string script_dir = std::filesystem::path(path).parent_path().string();
 
-  // Singletons: exactly once (workspace, robot, task) or at most once (planner, render, uncertainty).
+  // Singletons: exactly once (workspace, robot, task) or at most once (planner, render, uncertainty, expect).
   std::map<std::string, const Element*> first_of;
   std::map<std::string, int> count_of;
   std::size_t region_corners = 0;
   for (const Element& e : elements) {
+    if (e.kind == "expect" && !written_in(e, path)) {
+      // A scenario required as a module keeps its own expectations for its own test; checked all the same.
+      TableReader r(e.table, "expect (of " + e.where.file + ")", e.where, diagnostics);
+      read_expectations(r);
+      r.finish();
+      continue;
+    }
     const int index = ++count_of[e.kind];
     if (is_singleton(e.kind) && index > 1) {
       diagnostics.push_back({e.where, e.kind + " is given twice (first at " + first_of[e.kind]->where.str() + ")"});
@@ -343,10 +356,14 @@ World read_world(const std::vector<Element>& elements, const std::string& path, 
     } else if (e.kind == "uncertainty") {
       read_uncertainty(r, world.uncertainty);
       world.uncertainty.where = e.where;
+    } else if (e.kind == "expect") {
+      world.expect = read_expectations(r);
+      world.expect->where = e.where;
     }
     r.finish();
   }
   place_meshes(world, diagnostics);
+  check_expectations(world, diagnostics);
   for (const char* required : {"workspace", "robot", "task"}) {
     if (!count_of.count(required)) {
       diagnostics.push_back({{path, 1}, std::string("the scenario has no ") + required + " { ... }"});

@@ -105,6 +105,11 @@ int TableReader::integer(const std::string& key, int fallback) {
   return static_cast<int>(v->number);
 }
 
+bool TableReader::boolean(const std::string& key, bool fallback) {
+  const LuaValue* v = take(key, LuaValue::Kind::kBoolean, "true or false");
+  return v ? v->boolean : fallback;
+}
+
 std::string TableReader::string(const std::string& key) {
   if (!has(key)) {
     error("'" + key + "' is required");
@@ -190,6 +195,15 @@ std::vector<int> TableReader::integers(const std::string& key) {
   }
   if (!v->fields.empty()) error("'" + key + "' must be a list of whole numbers");
   return result;
+}
+
+const LuaValue* TableReader::list(const std::string& key) {
+  const LuaValue* v = take(key, LuaValue::Kind::kTable, "a list { ... }");
+  if (v != nullptr && !v->fields.empty()) {
+    error("'" + key + "' must be a list { ... }, not a table with keys");
+    return nullptr;
+  }
+  return v;
 }
 
 std::optional<TableReader> TableReader::nested(const std::string& key) {

@@ -25,6 +25,7 @@ class TableReader {
   double number(const std::string& key, double fallback);
   std::optional<double> optional_number(const std::string& key);
   int integer(const std::string& key, int fallback);
+  bool boolean(const std::string& key, bool fallback);
   std::string string(const std::string& key);
   std::string string(const std::string& key, const std::string& fallback);
   geometry::Vec2 point(const std::string& key);
@@ -32,6 +33,8 @@ class TableReader {
   std::vector<geometry::Vec2> points(const std::string& key);  // a list of {x, y}
   std::vector<std::string> strings(const std::string& key);    // a list of strings; empty when absent
   std::vector<int> integers(const std::string& key);           // a list of whole numbers; empty when absent
+  // The raw list under `key` (values of mixed types, read by the caller); null when absent or not a table.
+  const LuaValue* list(const std::string& key);
   // A reader for a nested table such as `camera = { ... }`; nullopt when absent or not a table.
   std::optional<TableReader> nested(const std::string& key);
 

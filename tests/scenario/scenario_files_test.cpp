@@ -42,6 +42,20 @@ TEST(ScenarioFiles, EveryShippedScenarioLoadsAndValidates) {
   EXPECT_GE(count, 2);
 }
 
+// rooms_deliver.lua requires rooms.lua, whose own expect { } is for rooms.lua's test: the tested file's
+// block is the one that counts, and the module's is no second one.
+TEST(ScenarioFiles, ExpectationsComeFromTheTestedFileNotFromTheScenarioItRequires) {
+  const World deliver = load_scenario(kScenarios + "/rooms_deliver.lua");
+  ASSERT_TRUE(deliver.expect);
+  EXPECT_TRUE(std::filesystem::equivalent(deliver.expect->where.file, kScenarios + "/rooms_deliver.lua"));
+  EXPECT_EQ(deliver.expect->max_bodies_moved, 2);
+  const World rooms = load_scenario(kScenarios + "/rooms.lua");
+  ASSERT_TRUE(rooms.expect);
+  EXPECT_EQ(rooms.expect->max_bodies_moved, 3);
+  EXPECT_EQ(rooms.expect->frames.size(), 3u);
+  EXPECT_TRUE(rooms.expect->frames.back().last);
+}
+
 TEST(ScenarioFiles, RoomsNLoadsForEveryRoomCountWithABoxPerDoorwayAndASequencingTask) {
   for (const int n : {2, 4, 8, 16, 30, 64}) {
     LoadOptions options;

@@ -5,6 +5,7 @@
 #include "physltl/geometry/shape.h"
 #include "physltl/geometry/shapes.h"
 #include "physltl/scenario/diagnostic.h"
+#include "physltl/scenario/expectations.h"
 
 #include <cstdint>
 #include <numbers>
@@ -150,6 +151,7 @@ struct World {
   PlannerSettings planner;
   RenderSettings render;
   Uncertainty uncertainty;
+  std::optional<Expectations> expect;  // the top-level file's expect { ... }, for `physltl-studio test`
 };
 
 }  // namespace physltl::scenario

@@ -1,0 +1,232 @@
+#include "scenario_cases.h"
+
+#include "failed_search.h"
+#include "goldens.h"
+#include "main_job.h"
+#include "overlays.h"
+#include "plan_files.h"
+#include "plan_pictures.h"
+#include "physltl/planning/planning_problem.h"
+#include "physltl/render/preview.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <functional>
+
+namespace physltl::app::scenario_test {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// A case's body, timed; an exception (a picture that cannot be written) fails that case, not the run.
+CaseResult timed(const std::string& name, const std::function<CaseResult()>& body) {
+  const auto start = Clock::now();
+  CaseResult result;
+  try {
+    result = body();
+  } catch (const std::exception& e) {
+    result = {name, Outcome::kFailed, e.what()};
+  }
+  result.name = name;
+  result.time_s = seconds_since(start);
+  return result;
+}
+
+CaseResult failed(std::string message) { return {"", Outcome::kFailed, std::move(message)}; }
+
+render::Tolerance tolerance_for(const scenario::Expectations& e, const scenario::PictureTolerance& picture) {
+  render::Tolerance t;
+  for (const scenario::PictureTolerance* layer : {&e.tolerance, &picture}) {
+    if (layer->max_channel_difference) t.max_channel_difference = *layer->max_channel_difference;
+    if (layer->max_fraction_beyond) t.max_fraction_beyond = *layer->max_fraction_beyond;
+  }
+  return t;
+}
+
+CaseResult check_case(const knowledge::Reasoning& reasoning, const scenario::Expectations& e) {
+  if (e.infeasible) {
+    if (reasoning.feasible()) return failed("expected infeasible (\"" + *e.infeasible + "\"), but check finds the task feasible");
+    // What `check` prints: the invalid propositions with their reasons, then why the task fails for them.
+    std::string reason;
+    for (const auto& p : reasoning.feasibility.invalid) reason += p.reason + "; ";
+    reason += reasoning.task.infeasibility();
+    if (reason.find(*e.infeasible) == std::string::npos) {
+      return failed("the task is infeasible, but its reason \"" + reason + "\" does not contain \"" + *e.infeasible + "\"");
+    }
+  } else if (!reasoning.feasible()) {
+    return failed("check finds the task infeasible: " + reasoning.task.infeasibility());
+  }
+  for (const std::string& region : e.unreachable) {
+    if (reasoning.feasibility.find(region) == nullptr) return failed("check does not mark '" + region + "' unreachable");
+  }
+  return {};
+}
+
+std::string frame_file(const scenario::FrameMoment& moment) {
+  return moment.last ? "frame_last.png" : fmt::format("frame_{:g}s.png", moment.time_s);
+}
+
+// The cases that need the plan, after it was found and validated.
+struct SolvedPlan {
+  const planning::PlanningProblem& problem;
+  const planning::ValidatedPlan& solution;
+};
+
+void bound_cases(const SolvedPlan& plan, const scenario::Expectations& e, std::vector<CaseResult>& cases) {
+  const planning::Replay& replay = *plan.solution.replay;
+  const double motion_s = plan.solution.result.plan.total_steps() * plan.problem.world().planner.step_size;
+  if (e.max_pushes) {
+    cases.push_back(timed("max_pushes", [&] {
+      return replay.pushes <= *e.max_pushes ? CaseResult{}
+                                            : failed(fmt::format("the plan pushes {} times, more than the bound of {}",
+                                                                 replay.pushes, *e.max_pushes));
+    }));
+  }
+  if (e.max_motion_s) {
+    cases.push_back(timed("max_motion_s", [&] {
+      return motion_s <= *e.max_motion_s ? CaseResult{}
+                                         : failed(fmt::format("the plan moves for {:.2f} s, more than the bound of {:g} s",
+                                                              motion_s, *e.max_motion_s));
+    }));
+  }
+  if (e.max_bodies_moved) {
+    const int moved = static_cast<int>(replay.moved_bodies.size());
+    cases.push_back(timed("max_bodies_moved", [&] {
+      return moved <= *e.max_bodies_moved ? CaseResult{}
+                                          : failed(fmt::format("the plan moves {} bodies, more than the bound of {}",
+                                                               moved, *e.max_bodies_moved));
+    }));
+  }
+}
+
+void picture_cases(const SolvedPlan& plan, const scenario::Expectations& e, Goldens& goldens,
+                   std::vector<CaseResult>& cases) {
+  const scenario::World& world = plan.problem.world();
+  const knowledge::Reasoning& reasoning = plan.problem.reasoning();
+  const planning::Replay& replay = *plan.solution.replay;
+  if (e.tree) {
+    cases.push_back(timed("tree.png", [&] {
+      return goldens.picture("tree.png",
+                             draw_tree_picture(world, reasoning, plan.problem.decomposition(), plan.solution.result, &replay),
+                             tolerance_for(e, e.tree_tolerance));
+    }));
+  }
+  if (e.frames.empty()) return;
+  PlanAnimation animation(world, reasoning, replay, static_cast<int>(plan.problem.as_written().dfa.size()));
+  for (const scenario::FrameMoment& moment : e.frames) {
+    const std::string file = frame_file(moment);
+    cases.push_back(timed(file, [&] {
+      if (!moment.last && moment.time_s > animation.duration_s() + 1e-9) {
+        return failed(fmt::format("the plan moves for {:.2f} s only: it has no frame at {:g} s", animation.duration_s(),
+                                  moment.time_s));
+      }
+      return goldens.picture(file, animation.draw(moment.last ? animation.duration_s() : moment.time_s),
+                             tolerance_for(e, e.frames_tolerance));
+    }));
+  }
+}
+
+// The cases a scenario without a plan cannot run: those before the preview, or those after it.
+void skip(const scenario::Expectations& e, bool after_preview, const std::string& why, std::vector<CaseResult>& cases) {
+  std::vector<std::string> names;
+  if (!after_preview) {
+    if (e.max_pushes) names.push_back("max_pushes");
+    if (e.max_motion_s) names.push_back("max_motion_s");
+    if (e.max_bodies_moved) names.push_back("max_bodies_moved");
+    names.push_back("plan.json");
+  } else {
+    if (e.tree) names.push_back("tree.png");
+    for (const auto& frame : e.frames) names.push_back(frame_file(frame));
+  }
+  for (const std::string& name : names) cases.push_back({name, Outcome::kSkipped, "skipped: " + why});
+}
+
+}  // namespace
+
+std::filesystem::path goldens_folder(const TestEntry& entry, const TestSettings& settings) {
+  const std::filesystem::path root = settings.goldens_dir ? *settings.goldens_dir : entry.file.parent_path() / "goldens";
+  return root / entry.golden_name;
+}
+
+std::string update_line(const TestEntry& entry, const TestSettings& settings) {
+  return "physltl-studio test " + entry.label + (settings.goldens_dir ? " --goldens " + settings.goldens_dir->string() : "") +
+         " --update";
+}
+
+ScenarioResult test_scenario(const TestEntry& entry, const scenario::World& world, const TestSettings& settings) {
+  const auto start = Clock::now();
+  ScenarioResult result{entry.label, {}, 0.0, false};
+  std::vector<CaseResult>& cases = result.cases;
+  const scenario::Expectations e = world.expect.value_or(scenario::Expectations{});
+  const std::filesystem::path actual_folder = settings.out_dir / entry.golden_name;
+  std::filesystem::remove_all(actual_folder);  // what an earlier run left describes that run
+  Goldens goldens(goldens_folder(entry, settings), actual_folder, settings.update, update_line(entry, settings));
+
+  std::optional<planning::PlanningProblem> problem;
+  cases.push_back(timed("check", [&] {
+    problem.emplace(world);
+    return check_case(problem->reasoning(), e);
+  }));
+  const knowledge::Reasoning& reasoning = problem->reasoning();
+  const bool checked = cases.back().outcome == Outcome::kPassed;
+
+  std::optional<planning::ValidatedPlan> solution;
+  if (checked && !e.infeasible) {
+    const planning::PlannerEntry& planner = planning::PlannerRegistry::instance().default_planner();
+    cases.push_back(timed("solves", [&] {
+      solution = planning::solve(*problem, planner,
+                                 {.seed = world.planner.seed, .time_limit = world.planner.time_limit,
+                                  .stop = settings.stop, .threads = 1, .improve = kMainJobImprove});
+      const planning::PlanResult& r = solution->result;
+      if (settings.stop != nullptr && settings.stop->load()) return CaseResult{"", Outcome::kSkipped, "interrupted"};
+      if (!r.solved) {
+        const RunSummary summary{world, reasoning, problem->as_written(), planner, r, nullptr};
+        std::string where;
+        if (search_was_cut_short(r)) {
+          write_failed_search(summary, problem->decomposition(), actual_folder / "failed", true);
+          where = "; diagnosis: " + (actual_folder / "failed").string() + "/";
+        }
+        return failed(fmt::format("{} in {:.1f} s (seed {}, time limit {:g} s){}", no_plan_line(r),
+                                  r.stats.planning_time_s, world.planner.seed, world.planner.time_limit, where));
+      }
+      if (!solution->replay->validated()) return failed("BUG: the plan failed validation on replay: " + solution->replay->failure);
+      return CaseResult{};
+    }));
+    if (settings.stop != nullptr && settings.stop->load()) {
+      result.interrupted = true;
+      result.time_s = seconds_since(start);
+      return result;
+    }
+  }
+  const bool solved = solution && cases.back().outcome == Outcome::kPassed;
+  const std::string why_not = checked ? "no plan" : "check failed";
+  const auto preview_case = [&] {
+    cases.push_back(timed("preview.png", [&] {
+      return goldens.picture("preview.png", render::draw_preview(world, reasoning.initial_state, preview_overlay(world, reasoning)),
+                             tolerance_for(e, e.preview_tolerance));
+    }));
+  };
+  if (!solved) {
+    if (!e.infeasible) skip(e, false, why_not, cases);
+    preview_case();
+    if (!e.infeasible) skip(e, true, why_not, cases);
+  } else {
+    const RunSummary summary{world, reasoning, problem->as_written(), planning::PlannerRegistry::instance().default_planner(),
+                             solution->result, &*solution->replay,
+                             solution->improvement ? &*solution->improvement : nullptr};
+    const SolvedPlan plan{*problem, *solution};
+    bound_cases(plan, e, cases);
+    cases.push_back(timed("plan.json", [&] { return goldens.plan(plan_json(summary)); }));
+    preview_case();
+    picture_cases(plan, e, goldens, cases);
+  }
+  result.time_s = seconds_since(start);
+  return result;
+}
+
+}  // namespace physltl::app::scenario_test

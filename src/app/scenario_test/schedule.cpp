@@ -1,0 +1,46 @@
+#include "schedule.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <numeric>
+
+namespace physltl::app::scenario_test {
+namespace {
+
+nlohmann::json read_times(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) return nlohmann::json::object();
+  nlohmann::json times = nlohmann::json::parse(in, nullptr, false);
+  return times.is_object() ? times : nlohmann::json::object();
+}
+
+}  // namespace
+
+std::vector<std::size_t> longest_first(const std::vector<TestEntry>& entries, const std::filesystem::path& times) {
+  const nlohmann::json last = read_times(times);
+  const auto last_time = [&](std::size_t i) {
+    const auto it = last.find(entries[i].label);
+    return it != last.end() && it->is_number() ? it->get<double>() : -1.0;
+  };
+  std::vector<std::size_t> order(entries.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const double ta = last_time(a), tb = last_time(b);
+    if ((ta < 0) != (tb < 0)) return ta < 0;  // unknown first: it may be the longest
+    return ta > tb;
+  });
+  return order;
+}
+
+void record_times(const std::vector<ScenarioResult>& results, const std::filesystem::path& times) {
+  nlohmann::json all = read_times(times);
+  for (const ScenarioResult& r : results) all[r.label] = r.time_s;
+  std::filesystem::create_directories(times.parent_path());
+  const std::filesystem::path temp = times.string() + ".tmp";
+  std::ofstream(temp) << all.dump(2) << "\n";
+  std::filesystem::rename(temp, times);
+}
+
+}  // namespace physltl::app::scenario_test

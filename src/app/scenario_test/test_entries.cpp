@@ -1,0 +1,63 @@
+#include "test_entries.h"
+
+#include "bad_input.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace physltl::app::scenario_test {
+namespace {
+
+// Settings become part of a folder name: anything but letters, digits and ._=- turns into '_'.
+std::string folder_safe(const std::string& text) {
+  std::string safe = text;
+  for (char& c : safe) {
+    const bool keep = std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '=' || c == '-';
+    if (!keep) c = '_';
+  }
+  return safe;
+}
+
+TestEntry parse_entry(const std::string& text) {
+  TestEntry entry{text, {}, {}, {}};
+  std::size_t start = 0;
+  std::size_t sep = text.find("::");
+  entry.file = text.substr(0, sep);
+  entry.golden_name = entry.file.stem().string();
+  while (sep != std::string::npos) {
+    start = sep + 2;
+    sep = text.find("::", start);
+    const std::string setting = text.substr(start, sep == std::string::npos ? std::string::npos : sep - start);
+    if (setting.find('=') == std::string::npos || setting.front() == '=') {
+      throw BadInput("'" + text + "': expected FILE::key=value::..., got the setting '" + setting + "'");
+    }
+    entry.settings.push_back(setting);
+    entry.golden_name += "." + folder_safe(setting);
+  }
+  if (entry.file.extension() != ".lua" || !std::filesystem::is_regular_file(entry.file)) {
+    throw BadInput("'" + entry.file.string() + "' is not a scenario file (.lua)");
+  }
+  return entry;
+}
+
+}  // namespace
+
+std::vector<TestEntry> expand_test_paths(const std::vector<std::string>& paths) {
+  std::vector<TestEntry> entries;
+  for (const std::string& path : paths) {
+    if (path.find("::") == std::string::npos && std::filesystem::is_directory(path)) {
+      std::vector<std::filesystem::path> files;
+      for (const auto& item : std::filesystem::directory_iterator(path)) {
+        if (item.is_regular_file() && item.path().extension() == ".lua") files.push_back(item.path());
+      }
+      if (files.empty()) throw BadInput("'" + path + "' holds no scenario file (.lua)");
+      std::sort(files.begin(), files.end());
+      for (const auto& file : files) entries.push_back(parse_entry(file.string()));
+    } else {
+      entries.push_back(parse_entry(path));
+    }
+  }
+  return entries;
+}
+
+}  // namespace physltl::app::scenario_test

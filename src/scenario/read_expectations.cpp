@@ -1,0 +1,100 @@
+#include "read_expectations.h"
+
+#include <cmath>
+
+namespace physltl::scenario {
+namespace {
+
+PictureTolerance read_tolerance(TableReader& r) {
+  PictureTolerance t;
+  if (auto channel = r.optional_number("max_channel_difference")) {
+    if (*channel < 0 || *channel > 255 || *channel != static_cast<int>(*channel)) {
+      r.error("'max_channel_difference' must be a whole number from 0 to 255");
+    } else {
+      t.max_channel_difference = static_cast<int>(*channel);
+    }
+  }
+  if (auto share = r.optional_number("max_share_beyond")) {
+    if (*share < 0 || *share > 1) {
+      r.error("'max_share_beyond' must be a share of the pixels, from 0 to 1");
+    } else {
+      t.max_fraction_beyond = *share;
+    }
+  }
+  return t;
+}
+
+std::vector<FrameMoment> read_frames(TableReader& r) {
+  std::vector<FrameMoment> frames;
+  const LuaValue* list = r.list("frames");
+  if (list == nullptr) return frames;
+  for (const LuaValue& item : list->array) {
+    if (item.kind == LuaValue::Kind::kNumber && item.number >= 0 && std::isfinite(item.number)) {
+      frames.push_back({item.number, false});
+    } else if (item.kind == LuaValue::Kind::kString && item.string == "last") {
+      frames.push_back({0.0, true});
+    } else {
+      r.error("'frames' lists seconds of motion (0 or more) or \"last\", e.g. frames = { 0, 12.5, \"last\" }");
+      return {};
+    }
+  }
+  return frames;
+}
+
+std::optional<int> read_bound(TableReader& r, const std::string& key) {
+  const std::optional<double> v = r.optional_number(key);
+  if (!v) return std::nullopt;
+  if (*v < 0 || *v != static_cast<int>(*v)) {
+    r.error("'" + key + "' must be a whole number, 0 or more");
+    return std::nullopt;
+  }
+  return static_cast<int>(*v);
+}
+
+}  // namespace
+
+Expectations read_expectations(TableReader& r) {
+  Expectations e;
+  const std::optional<bool> solved = r.has("solved") ? std::optional<bool>(r.boolean("solved", true)) : std::nullopt;
+  if (r.has("infeasible")) e.infeasible = r.string("infeasible");
+  if (solved && *solved == bool(e.infeasible)) {
+    r.error(e.infeasible ? "'solved = true' and 'infeasible' contradict each other"
+                         : "'solved = false' needs 'infeasible = \"...\"', the text the reason must contain");
+  }
+  e.unreachable = r.strings("unreachable");
+  e.max_pushes = read_bound(r, "max_pushes");
+  e.max_bodies_moved = read_bound(r, "max_bodies_moved");
+  if (auto motion = r.optional_number("max_motion_s")) {
+    if (*motion < 0) r.error("'max_motion_s' must be 0 or more");
+    e.max_motion_s = *motion;
+  }
+  e.tree = r.boolean("tree", false);
+  e.frames = read_frames(r);
+  if (auto t = r.nested("tolerance")) {
+    e.tolerance = read_tolerance(*t);
+    for (auto [key, slot] : {std::pair{"preview", &e.preview_tolerance}, std::pair{"tree", &e.tree_tolerance},
+                             std::pair{"frames", &e.frames_tolerance}}) {
+      if (auto picture = t->nested(key)) {
+        *slot = read_tolerance(*picture);
+        picture->finish();
+      }
+    }
+    t->finish();
+  }
+  if (e.infeasible && (e.max_pushes || e.max_bodies_moved || e.max_motion_s || e.tree || !e.frames.empty())) {
+    r.error("an infeasible scenario plans nothing: bounds, 'tree' and 'frames' need a plan");
+  }
+  return e;
+}
+
+void check_expectations(const World& world, std::vector<Diagnostic>& diagnostics) {
+  if (!world.expect) return;
+  const Expectations& e = *world.expect;
+  for (const std::string& name : e.unreachable) {
+    bool known = false;
+    for (const Region& region : world.regions) known = known || region.name == name;
+    if (!known) diagnostics.push_back({e.where, "expect: 'unreachable' names '" + name + "', which is no region"});
+  }
+}
+
+}  // namespace physltl::scenario

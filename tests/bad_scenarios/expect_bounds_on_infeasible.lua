@@ -1,0 +1,6 @@
+-- expect: 6: an infeasible scenario plans nothing
+workspace { bounds = { { 0, 0 }, { 4, 3 } } }
+robot { start = { 0.5, 0.5 } }
+region { name = "goal", polygon = { { 3, 2 }, { 3.8, 2 }, { 3.8, 2.8 }, { 3, 2.8 } } }
+task { formula = "F goal" }
+expect { infeasible = "enclosed", max_pushes = 2 }

@@ -1,0 +1,7 @@
+-- expect: 7: expect is given twice
+workspace { bounds = { { 0, 0 }, { 4, 3 } } }
+robot { start = { 0.5, 0.5 } }
+region { name = "goal", polygon = { { 3, 2 }, { 3.8, 2 }, { 3.8, 2.8 }, { 3, 2.8 } } }
+task { formula = "F goal" }
+expect { tree = true }
+expect { tree = false }
