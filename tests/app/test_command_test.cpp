@@ -125,6 +125,48 @@ TEST(TestCommand, AWallOfRoomsMovedTenCentimetresFailsItsPreviewWithADiffPicture
   EXPECT_EQ(test_command(scenario.string() + " --out " + out.string()).exit_code, 0);
 }
 
+// The wall moved as above, with the preview's tolerance loosened in the scenario: the preview passes.
+TEST(TestCommand, AScenarioLoosensOnePicturesToleranceForItself) {
+  const fs::path dir = test_dir("scenarios");
+  fs::remove_all(dir);
+  const fs::path out = fresh_out_dir();
+  const fs::path scenario = copy_scenario(dir, "rooms.lua");
+  ASSERT_EQ(test_command(scenario.string() + " --update --out " + out.string()).exit_code, 0);
+  copy_scenario(dir, "rooms.lua", [](std::string& text) {
+    replace(text, "P.paper_rooms()",
+            "local block = P.block\n"
+            "P.block = function(b)\n"
+            "  if b.name == 'rooms_34' then b.min[1] = b.min[1] + 0.1; b.max[1] = b.max[1] + 0.1 end\n"
+            "  block(b)\n"
+            "end\n"
+            "P.paper_rooms()\n"
+            "P.block = block");
+    replace(text, "frames = { 0, 12.5, \"last\" }", "frames = { 0, 12.5, \"last\" }, tolerance = { preview = { max_share_beyond = 0.5 } }");
+  });
+  const Result r = test_command(scenario.string() + " --out " + out.string());
+  EXPECT_EQ(r.out.find("FAILED  preview.png"), std::string::npos) << r.out;
+}
+
+// A search that runs out of time keeps its diagnosis beside the failure and quotes what it refused most.
+TEST(TestCommand, ASearchThatFindsNothingKeepsItsFailedDiagnosisAndSkipsWhatNeedsAPlan) {
+  const fs::path dir = test_dir("scenarios");
+  fs::remove_all(dir);
+  const fs::path laps = rooms_laps(dir);
+  std::ofstream(laps, std::ios::app) << "planner { time_limit = 1, seed = 1 }\n";
+  std::string text = slurp(laps);
+  const auto first = text.find("planner {");
+  text.erase(first, text.find('\n', first) - first + 1);  // rooms.lua's own planner { }: one is allowed
+  std::ofstream(laps) << text;
+  const fs::path out = fresh_out_dir();
+  const Result r = test_command(laps.string() + " --update --out " + out.string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("FAILED  solves: no plan found (time limit)"), std::string::npos) << r.out << r.err;
+  EXPECT_NE(r.out.find("diagnosis: " + (out / "test" / "laps" / "failed").string()), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(out / "test" / "laps" / "failed" / "report.json"));
+  EXPECT_TRUE(fs::exists(out / "test" / "laps" / "failed" / "tree.png"));
+  EXPECT_GT(summary_counts(r.out)[3], 0) << r.out;
+}
+
 TEST(TestCommand, ABoxOfOrderedMovedFiveCentimetresFailsItsPlanCaseBeforeAnyPicture) {
   const fs::path dir = test_dir("scenarios");
   fs::remove_all(dir);
