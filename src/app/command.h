@@ -19,5 +19,6 @@ CommandRunner add_bench_command(CLI::App& app);
 CommandRunner add_bench_merge_command(CLI::App& app);  // `bench merge`
 CommandRunner add_execute_command(CLI::App& app);
 CommandRunner add_test_command(CLI::App& app);  // golden tests of scenarios
+CommandRunner add_import_command(CLI::App& app);  // scenarios from other formats (Sokoban levels)
 
 }  // namespace physltl::app

@@ -71,6 +71,9 @@ int run_command_line(int argc, char** argv) {
   subcommands.emplace("test", make_command("physltl-studio test",
                                            "Test scenarios against their expectations and goldens: plan, pictures; JUnit XML.",
                                            add_test_command));
+  subcommands.emplace("import", make_command("physltl-studio import",
+                                             "Write Lua scenarios from other formats: import sokoban FILE (one per level).",
+                                             add_import_command));
   subcommands.emplace("bench", make_command("physltl-studio bench",
                                             "Benchmark the planners on a range of seeds: table, bench.json, OMPL log; campaigns in shards, `bench merge`.",
                                             add_bench_command));

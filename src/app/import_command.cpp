@@ -1,0 +1,68 @@
+#include "command.h"
+#include "import/sokoban_level.h"
+#include "import/sokoban_scenario.h"
+
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+namespace physltl::app {
+namespace {
+
+struct ImportArgs {
+  std::string format;
+  std::string file;
+  std::optional<int> level;
+  import::GridSizes sizes;
+  std::string out_dir = "scenarios/imported";
+};
+
+int run_import(const ImportArgs& args) {
+  if (args.format != "sokoban") throw BadInput("import knows the format 'sokoban', not '" + args.format + "'");
+  if (args.sizes.box >= args.sizes.cell || 2 * args.sizes.robot_radius >= args.sizes.cell) {
+    throw BadInput("--box and the robot's diameter must be smaller than --cell, or nothing fits through a corridor");
+  }
+  // Every level is read and checked before anything is written: a malformed one stops the import whole.
+  std::vector<import::SokobanLevel> levels = import::read_sokoban_levels(args.file);
+  if (args.level) {
+    if (*args.level > static_cast<int>(levels.size())) {
+      throw BadInput(args.file + " has " + std::to_string(levels.size()) + " levels, not " + std::to_string(*args.level));
+    }
+    levels = {levels[static_cast<size_t>(*args.level - 1)]};
+  }
+  const std::filesystem::path out(args.out_dir);
+  std::filesystem::create_directories(out);
+  const std::string stem = std::filesystem::path(args.file).stem().string();
+  for (const import::SokobanLevel& level : levels) {
+    const std::filesystem::path file = out / (stem + "_" + std::to_string(level.number) + ".lua");
+    const std::filesystem::path temp = file.string() + ".tmp";
+    {
+      std::ofstream lua(temp);
+      lua << import::sokoban_scenario(level, std::filesystem::path(args.file).filename().string(), args.sizes);
+      if (!lua) throw BadInput("cannot write " + temp.string());
+    }
+    std::filesystem::rename(temp, file);
+    const std::size_t boxes = level.boxes.size();
+    std::cout << "wrote      " << file.string() << " (" << boxes << (boxes == 1 ? " box" : " boxes") << ")\n";
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+CommandRunner add_import_command(CLI::App& app) {
+  auto args = std::make_shared<ImportArgs>();
+  app.add_option("format", args->format, "The file's format: sokoban (the standard Sokoban text format)")->required();
+  app.add_option("file", args->file, "The file of levels")->required()->check(CLI::ExistingFile);
+  app.add_option("--level", args->level, "Import only level N (numbered from 1 in file order)")->check(CLI::PositiveNumber);
+  app.add_option("--cell", args->sizes.cell, "Cell size in metres")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--box", args->sizes.box, "A box's side in metres")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--robot-radius", args->sizes.robot_radius, "The robot's radius in metres")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--out", args->out_dir, "Folder for the scenarios, one <file stem>_<N>.lua per level")->capture_default_str();
+  return [args] { return run_import(*args); };
+}
+
+}  // namespace physltl::app

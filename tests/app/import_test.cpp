@@ -1,0 +1,70 @@
+// `physltl-studio import sokoban`: levels of the standard text format as scenarios that load and plan.
+
+#include "command_runner.h"
+
+#include <gtest/gtest.h>
+
+namespace physltl::testing_support {
+namespace {
+
+const std::string kLevels = kSource + "/tests/app/sokoban_levels.txt";
+
+TEST(ImportSokoban, WritesOneScenarioPerLevelThatChecksAndTheFirstPlansItsPush) {
+  const fs::path out = fresh_out_dir();
+  const Result r = run("import sokoban " + kLevels + " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (int n = 1; n <= 4; ++n) {
+    const fs::path level = out / ("sokoban_levels_" + std::to_string(n) + ".lua");
+    ASSERT_TRUE(fs::exists(level)) << level;
+    EXPECT_EQ(run("check " + level.string() + " --no-preview").exit_code, 0) << level;
+  }
+  const Result plan = run((out / "sokoban_levels_1.lua").string() + " --threads 1 --out " + (out / "plans").string());
+  EXPECT_EQ(plan.exit_code, 0) << plan.out << plan.err;
+  EXPECT_NE(plan.out.find("validated by replay"), std::string::npos) << plan.out;
+}
+
+TEST(ImportSokoban, AnyBoxOnAnyGoalUpToFiveBoxesAndAGoalForEachBeyond) {
+  const fs::path out = fresh_out_dir();
+  ASSERT_EQ(run("import sokoban " + kLevels + " --out " + out.string()).exit_code, 0);
+  const std::string two = slurp(out / "sokoban_levels_3.lua");
+  EXPECT_NE(two.find("F G((M1@goal1 | M2@goal1) & (M1@goal2 | M2@goal2))"), std::string::npos) << two;
+  const std::string six = slurp(out / "sokoban_levels_4.lua");
+  const auto task = six.find("task { formula = \"F G(");
+  ASSERT_NE(task, std::string::npos) << six;
+  const std::string formula = six.substr(task, six.find('\n', task) - task);
+  EXPECT_EQ(formula.find('|'), std::string::npos) << formula;
+  for (int b = 1; b <= 6; ++b) EXPECT_NE(formula.find("M" + std::to_string(b) + "@goal"), std::string::npos) << formula;
+}
+
+TEST(ImportSokoban, LevelNImportsThatLevelOnly) {
+  const fs::path out = fresh_out_dir();
+  ASSERT_EQ(run("import sokoban " + kLevels + " --level 2 --out " + out.string()).exit_code, 0);
+  EXPECT_TRUE(fs::exists(out / "sokoban_levels_2.lua"));
+  EXPECT_FALSE(fs::exists(out / "sokoban_levels_1.lua"));
+  EXPECT_EQ(run("import sokoban " + kLevels + " --level 9 --out " + out.string()).exit_code, 2);
+}
+
+TEST(ImportSokoban, AMalformedLevelIsRefusedWithFileLineAndNothingIsWritten) {
+  const fs::path dir = test_dir("levels");
+  struct Case {
+    std::string text, message;
+  };
+  const std::vector<Case> cases = {
+      {"#####\n#@$.#\n#####\n\n#####\n#@$x#\n#####\n", ":6: 'x' at column 4 is no Sokoban cell"},
+      {"#####\n#@$$.#\n######\n", ":1: level 1: 2 boxes but 1 goals"},
+      {"#####\n#@@$.#\n######\n", ":1: level 1: needs exactly one player"},
+      {"#####\n#@$.  \n#####\n", ":1: level 1: the player is not walled in"},
+  };
+  for (const Case& c : cases) {
+    const fs::path file = dir / "bad.txt";
+    std::ofstream(file) << c.text;
+    const fs::path out = fresh_out_dir();
+    const Result r = run("import sokoban " + file.string() + " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << c.text;
+    EXPECT_NE(r.err.find(file.string() + c.message), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out)) << c.text;
+  }
+}
+
+}  // namespace
+}  // namespace physltl::testing_support
