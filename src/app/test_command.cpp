@@ -61,7 +61,7 @@ int run_tests(const TestArgs& args) {
 
   std::vector<ScenarioResult> results(entries.size());
   const std::filesystem::path times = settings.out_dir / "times.json";
-  const std::vector<std::size_t> order = longest_first(entries, times);
+  const std::vector<std::size_t> order = longest_first(entries, worlds, times);
   std::atomic<std::size_t> next{0};
   std::mutex print;
   const auto work = [&] {

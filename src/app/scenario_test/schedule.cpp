@@ -18,7 +18,8 @@ nlohmann::json read_times(const std::filesystem::path& file) {
 
 }  // namespace
 
-std::vector<std::size_t> longest_first(const std::vector<TestEntry>& entries, const std::filesystem::path& times) {
+std::vector<std::size_t> longest_first(const std::vector<TestEntry>& entries, const std::vector<scenario::World>& worlds,
+                                       const std::filesystem::path& times) {
   const nlohmann::json last = read_times(times);
   const auto last_time = [&](std::size_t i) {
     const auto it = last.find(entries[i].label);
@@ -26,9 +27,11 @@ std::vector<std::size_t> longest_first(const std::vector<TestEntry>& entries, co
   };
   std::vector<std::size_t> order(entries.size());
   std::iota(order.begin(), order.end(), 0);
+  const auto bodies = [&](std::size_t i) { return worlds[i].movable_bodies.size() + worlds[i].fixed_bodies.size(); };
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     const double ta = last_time(a), tb = last_time(b);
     if ((ta < 0) != (tb < 0)) return ta < 0;  // unknown first: it may be the longest
+    if (ta < 0) return bodies(a) > bodies(b);
     return ta > tb;
   });
   return order;
