@@ -36,6 +36,18 @@ void replace(std::string& text, const std::string& from, const std::string& to) 
   text.replace(at, from.size(), to);
 }
 
+// rooms.lua's wall between rooms 3 and 4, drawn by the lua/ helper, 0.1 m east.
+void move_rooms_34_wall(std::string& text) {
+  replace(text, "P.paper_rooms()",
+          "local block = P.block\n"
+          "P.block = function(b)\n"
+          "  if b.name == 'rooms_34' then b.min[1] = b.min[1] + 0.1; b.max[1] = b.max[1] + 0.1 end\n"
+          "  block(b)\n"
+          "end\n"
+          "P.paper_rooms()\n"
+          "P.block = block");
+}
+
 Result test_command(const std::string& args) { return run("test " + args); }
 
 // "12 scenarios, 107 cases: 56 passed, 1 failed, 0 skipped, 51 updated": {cases, passed, failed, skipped}.
@@ -100,15 +112,7 @@ TEST(TestCommand, AWallOfRoomsMovedTenCentimetresFailsItsPreviewWithADiffPicture
   const fs::path scenario = copy_scenario(dir, "rooms.lua");
   ASSERT_EQ(test_command(scenario.string() + " --update --out " + out.string()).exit_code, 0);
   copy_scenario(dir, "rooms.lua", [](std::string& text) {
-    // The wall between rooms 3 and 4, drawn by the helper, 0.1 m east.
-    replace(text, "P.paper_rooms()",
-            "local block = P.block\n"
-            "P.block = function(b)\n"
-            "  if b.name == 'rooms_34' then b.min[1] = b.min[1] + 0.1; b.max[1] = b.max[1] + 0.1 end\n"
-            "  block(b)\n"
-            "end\n"
-            "P.paper_rooms()\n"
-            "P.block = block");
+    move_rooms_34_wall(text);
   });
   const Result moved = test_command(scenario.string() + " --out " + out.string());
   EXPECT_EQ(moved.exit_code, 1);
@@ -133,14 +137,7 @@ TEST(TestCommand, AScenarioLoosensOnePicturesToleranceForItself) {
   const fs::path scenario = copy_scenario(dir, "rooms.lua");
   ASSERT_EQ(test_command(scenario.string() + " --update --out " + out.string()).exit_code, 0);
   copy_scenario(dir, "rooms.lua", [](std::string& text) {
-    replace(text, "P.paper_rooms()",
-            "local block = P.block\n"
-            "P.block = function(b)\n"
-            "  if b.name == 'rooms_34' then b.min[1] = b.min[1] + 0.1; b.max[1] = b.max[1] + 0.1 end\n"
-            "  block(b)\n"
-            "end\n"
-            "P.paper_rooms()\n"
-            "P.block = block");
+    move_rooms_34_wall(text);
     replace(text, "frames = { 0, 12.5, \"last\" }", "frames = { 0, 12.5, \"last\" }, tolerance = { preview = { max_share_beyond = 0.5 } }");
   });
   const Result r = test_command(scenario.string() + " --out " + out.string());

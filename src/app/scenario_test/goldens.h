@@ -26,9 +26,6 @@ class Goldens {
   // the controls' ends and only for the bodies the plan moves (docs/testing.md).
   CaseResult plan(nlohmann::ordered_json plan);
 
-  const std::filesystem::path& folder() const { return folder_; }
-  const std::filesystem::path& actual_folder() const { return actual_folder_; }
-
  private:
   CaseResult missing(const std::string& file_name) const;
 

@@ -175,9 +175,9 @@ ScenarioResult test_scenario(const TestEntry& entry, const scenario::World& worl
   const knowledge::Reasoning& reasoning = problem->reasoning();
   const bool checked = cases.back().outcome == Outcome::kPassed;
 
+  const planning::PlannerEntry& planner = planning::PlannerRegistry::instance().default_planner();
   std::optional<planning::ValidatedPlan> solution;
   if (checked && !e.infeasible) {
-    const planning::PlannerEntry& planner = planning::PlannerRegistry::instance().default_planner();
     cases.push_back(timed("solves", [&] {
       solution = planning::solve(*problem, planner,
                                  {.seed = world.planner.seed, .time_limit = world.planner.time_limit,
@@ -216,8 +216,7 @@ ScenarioResult test_scenario(const TestEntry& entry, const scenario::World& worl
     preview_case();
     if (!e.infeasible) skip(e, true, why_not, cases);
   } else {
-    const RunSummary summary{world, reasoning, problem->as_written(), planning::PlannerRegistry::instance().default_planner(),
-                             solution->result, &*solution->replay,
+    const RunSummary summary{world, reasoning, problem->as_written(), planner, solution->result, &*solution->replay,
                              solution->improvement ? &*solution->improvement : nullptr};
     const SolvedPlan plan{*problem, *solution};
     bound_cases(plan, e, cases);
