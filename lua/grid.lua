@@ -1,14 +1,16 @@
--- Grid push puzzles for the regression worlds: rows of characters, '#' a wall cell, '$' a box, '.' a goal,
--- '*' a box on a goal, '@' the robot, '+' the robot on a goal, anything else floor. Cells `cell` metres
--- (0.6), boxes `box` metres (0.5); the k-th box from the top left is Mk and the k-th goal goalk, and the
--- task puts every box on its goal and keeps it there: F G(M1@goal1 & M2@goal2 & ...).
+-- Grid push puzzles: rows of characters, '#' a wall cell, '$' a box, '.' a goal, '*' a box on a goal,
+-- 'o' an obstacle box the task does not name, '@' the robot, '+' the robot on a goal, anything else floor.
+-- Cells `cell` metres (0.6), boxes `box` metres (0.5); the k-th box from the top left is Mk, the k-th
+-- obstacle Ok and the k-th goal goalk, and the task puts every box on its goal and keeps it there:
+-- F G(M1@goal1 & M2@goal2 & ...), unless the scenario's parameters give a task.
+--   require "grid" { "#####", "#@$.#", "#####" }
 local P = require "physltl"
 return function(rows, cell, box)
   cell, box = cell or 0.6, box or 0.5
   local height, width = #rows, 0
   for _, row in ipairs(rows) do width = math.max(width, #row) end
   workspace { bounds = { { 0, 0 }, { width * cell, height * cell } }, floor_friction = 0.5 }
-  local boxes, goals, terms = 0, 0, {}
+  local boxes, obstacles, goals, terms = 0, 0, 0, {}
   for r, row in ipairs(rows) do
     local y0 = (height - r) * cell
     local run = nil  -- first column of the wall cells being merged into one block
@@ -25,6 +27,10 @@ return function(rows, cell, box)
       if ch == "$" or ch == "*" then
         boxes = boxes + 1
         P.box { name = "M" .. boxes, at = centre, size = box, mass = 0.5 }
+      end
+      if ch == "o" then
+        obstacles = obstacles + 1
+        P.box { name = "O" .. obstacles, at = centre, size = box, mass = 0.5 }
       end
       if ch == "." or ch == "*" or ch == "+" then
         goals = goals + 1
