@@ -1,4 +1,6 @@
 #include "check_report.h"
+#include "lookahead_summary.h"
+#include "physltl/planning/planning_problem.h"
 #include "command.h"
 #include "output_folder.h"
 #include "overlays.h"
@@ -44,14 +46,18 @@ CommandRunner add_check_command(CLI::App& app) {
   app.add_flag("--no-preview", args->no_preview, "Do not render preview.png");
   return [args] {
     const scenario::World world = args->scenario.load();
-    const knowledge::Reasoning reasoning = knowledge::reason_about(world);
+    const planning::PlanningProblem problem(world);
+    const knowledge::Reasoning& reasoning = problem.reasoning();
     // The picture first: when it cannot be written, the command fails before reporting anything.
     std::optional<std::filesystem::path> preview;
     if (!args->no_preview) preview = write_preview(world, reasoning, args->out_dir);
     if (args->json) {
-      std::cout << check_report_json(world, reasoning).dump(2) << "\n";
+      nlohmann::ordered_json report = check_report_json(world, reasoning);
+      report["lookahead"] = problem.feasible() ? lookahead_json(problem.lookahead(), world) : nlohmann::ordered_json(nullptr);
+      std::cout << report.dump(2) << "\n";
     } else {
       print_check_report(std::cout, world, reasoning);
+      if (problem.feasible()) std::cout << "lookahead  " << lookahead_line(problem.lookahead(), world) << "\n";
       if (preview) std::cout << "preview    " << preview->string() << "\n";
     }
     return reasoning.feasible() ? kExitOk : kExitNoPlan;

@@ -1,5 +1,6 @@
 #include "plan_files.h"
 
+#include "lookahead_summary.h"
 #include "robustness/robustness_report.h"
 
 #include "physltl/ltl/formula.h"
@@ -60,7 +61,9 @@ json report_json(const RunSummary& run) {
       {"physics_steps", r.stats.physics_steps},
       {"invalid_steps", r.stats.invalid_steps},
       {"refused", refusals_json(r.stats.refused)},
+      {"lookahead", r.lookahead ? lookahead_json(*r.lookahead, run.world) : json(nullptr)},
   };
+  if (r.lookahead) report["lookahead"]["replans"] = r.stats.lookahead_replans;
   if (run.replay != nullptr) {
     report["validation"] = {
         {"reproduces_plan", run.replay->reproduces_plan},

@@ -1,5 +1,6 @@
 #include "plan_pictures.h"
 
+#include "lookahead_summary.h"
 #include "overlays.h"
 #include "physltl/knowledge/kappa.h"
 #include "physltl/ltl/formula.h"
@@ -138,6 +139,11 @@ render::Image draw_tree_picture(const scenario::World& world, const knowledge::R
   }
   overlay.legend = {"search tree: " + std::to_string(result.tree.size() + 1) + " nodes, coloured by automaton state",
                     result.solved ? "solution path on top" : "no solution (" + result.stop_reason + ")"};
+  if (result.lookahead && !result.lookahead->pushes.empty()) {
+    const auto arrows = push_arrows(*result.lookahead);
+    overlay.segments.insert(overlay.segments.end(), arrows.begin(), arrows.end());
+    overlay.legend.push_back(push_arrows_legend(*result.lookahead));
+  }
   render::Renderer renderer(world, world.render.width, world.render.height);
   const auto initial = replay != nullptr ? replay->states.front() : scenario::EnvironmentState::initial(world);
   overlay.object_goals = object_goal_overlays(world, reasoning, initial);

@@ -1,6 +1,7 @@
 #include "command.h"
 #include "main_job.h"
 #include "planner_names.h"
+#include "lookahead_summary.h"
 #include "output_folder.h"
 #include "physltl/ltl/formula.h"
 #include "physltl/render/video.h"
@@ -97,6 +98,7 @@ int run(const RunArgs& args) {
                   task.dfa.size(), planner.name, world.planner.seed));
   say(fmt::format("prepare    {:.2f} s: reasoning, decomposition, and where the lead goes round the bodies",
                   problem.preparation_s()));
+  if (planner.uses_knowledge && task.names_bodies()) say("lookahead  " + lookahead_line(problem.lookahead(), world));
 
   StopSignal stop;  // Ctrl-C and SIGTERM end the search; nothing is written then
   ProgressLine progress(args.quiet);
@@ -158,11 +160,15 @@ int run(const RunArgs& args) {
     write_tree_picture(world, reasoning, problem.decomposition(), result, &replay, out.path() / "tree.png");
     const int automaton_states = static_cast<int>(problem.as_written().dfa.size());
     const auto frames_started = std::chrono::steady_clock::now();
+    const bool pushes_planned = result.lookahead && !result.lookahead->pushes.empty();
     const PlanFrames pictures = write_plan_frames(
-        world, reasoning, replay, automaton_states, out.path() / "frames", out.path() / "plan.mp4", [&](int done, int total) {
+        world, reasoning, replay, automaton_states, out.path() / "frames", out.path() / "plan.mp4",
+        [&](int done, int total) {
           const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - frames_started).count();
           progress.show(fmt::format("frames {}/{}, {:.0f} s left", done, total, elapsed / done * (total - done)));
-        });
+        },
+        pushes_planned ? push_arrows(*result.lookahead) : std::vector<render::SegmentOverlay>{},
+        pushes_planned ? push_arrows_legend(*result.lookahead) : "");
     progress.done();
     say(fmt::format("render     {} frames, tree.png{}", pictures.frames, pictures.video.written ? ", plan.mp4" : ""));
     if (!pictures.video.written) {

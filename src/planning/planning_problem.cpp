@@ -17,7 +17,8 @@ std::optional<PlanningProblem::Prepared> PlanningProblem::prepare(const scenario
   TaskAutomaton as_written = TaskAutomaton::make(ltl::parse(world.task.formula), world);
   decomposition::Decomposition decomposition = decomposition::Decomposition::build(world);
   RouteChoice routes = choose_routes(world, simplified, decomposition);
-  return Prepared{std::move(simplified), std::move(as_written), std::move(decomposition), std::move(routes)};
+  auto ahead = prepare_lookahead(world, reasoning.knowledge, simplified);
+  return Prepared{std::move(simplified), std::move(as_written), std::move(decomposition), std::move(routes), std::move(ahead)};
 }
 
 const TaskAutomaton& PlanningProblem::search_task(const PlannerEntry& planner) const {
@@ -28,8 +29,11 @@ std::optional<std::string> PlanningProblem::refusal(const PlannerEntry& planner,
   return PlannerRegistry::instance().refusal(planner, search_task(planner), needs);
 }
 
+const PushPlan& PlanningProblem::lookahead() const { return push_plan_of(*prepared_->lookahead); }
+
 Problem PlanningProblem::for_planner(const PlannerEntry& planner) const {
-  return {world_, search_task(planner), as_written(), reasoning_.knowledge, decomposition(), &routes()};
+  return {world_, search_task(planner), as_written(), reasoning_.knowledge, decomposition(), &routes(),
+          planner.uses_knowledge ? prepared_->lookahead.get() : nullptr};
 }
 
 ValidatedPlan solve(const PlanningProblem& problem, const PlannerEntry& planner, const PlannerOptions& options) {

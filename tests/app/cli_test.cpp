@@ -3,6 +3,7 @@
 #include "physltl/render/png.h"
 
 #include <gtest/gtest.h>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "command_runner.h"
@@ -50,6 +51,33 @@ TEST(Cli, CheckJsonReportsTheReasoningOnRooms) {
   EXPECT_EQ(p3["reachable"], false);
   EXPECT_EQ(p3["reason"], "p3: region enclosed by fixed walls");
   EXPECT_EQ(entry_named(j["regions"], "p4")["reachable"], true);
+}
+
+TEST(Cli, CheckSaysWhetherTheLookAheadAppliesAndItsPushOrder) {
+  const std::string puzzle = kSource + "/tests/planning/data/puzzles/long_haul.lua";
+  const Result text = run("check " + puzzle + " --no-preview");
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("lookahead  2 pushes: M1 +x 4.2 m, M1 -y 1.8 m"), std::string::npos) << text.out;
+  const auto j = nlohmann::json::parse(run("check " + puzzle + " --json --no-preview").out);
+  EXPECT_EQ(j["lookahead"]["applies"], true);
+  EXPECT_EQ(j["lookahead"]["outcome"], "found");
+  ASSERT_EQ(j["lookahead"]["pushes"].size(), 2u);
+  EXPECT_EQ(j["lookahead"]["pushes"][1]["direction"], "-y");
+  const auto rooms = nlohmann::json::parse(run("check " + kSource + "/scenarios/rooms.lua --json --no-preview").out);
+  EXPECT_EQ(rooms["lookahead"]["applies"], false);
+  EXPECT_EQ(rooms["lookahead"]["reason"], "the task names no body");
+}
+
+TEST(Cli, TheMainJobPrintsThePushOrderItFollowsAndReportJsonHoldsIt) {
+  const std::string out = std::string(PHYSLTL_TEST_OUTPUT_DIR) + "/lookahead_run";
+  const Result r = run(kSource + "/tests/planning/data/puzzles/long_haul.lua --improve 0 --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("lookahead  2 pushes: M1 +x 4.2 m, M1 -y 1.8 m"), std::string::npos) << r.out;
+  std::ifstream report_file(out + "/long_haul/report.json");
+  const auto report = nlohmann::json::parse(report_file);
+  EXPECT_EQ(report["lookahead"]["pushes"].size(), 2u);
+  EXPECT_EQ(report["lookahead"]["pushes"][0]["body"], "M1");
+  EXPECT_TRUE(report["lookahead"].contains("replans"));
 }
 
 TEST(Cli, CheckOfAWorldWhoseOnlyGoalIsEnclosedExitsOneAfterTheReport) {

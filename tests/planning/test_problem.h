@@ -5,6 +5,7 @@
 #include "physltl/ltl/parser.h"
 #include "physltl/ltl/simplify.h"
 #include "physltl/ltl/translate.h"
+#include "physltl/planning/lookahead/push_plan.h"
 #include "physltl/planning/registry.h"
 #include "physltl/planning/validation/replay.h"
 #include "physltl/planning/validation/validated_plan.h"
@@ -31,13 +32,15 @@ struct TestProblem {
   TaskAutomaton task;      // of the simplified formula: what the search aims at
   TaskAutomaton original;  // of the formula as written: what replay checks
   decomposition::Decomposition decomposition;
+  std::shared_ptr<const lookahead::Lookahead> ahead;  // of `task`, as a run prepares it
 
   explicit TestProblem(const std::string& name, const std::map<std::string, std::string>& params = {})
       : world(scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/scenarios/" + name, {.params = params})),
         knowledge(knowledge::formulate(world)),
         task(make_task(true)),
         original(make_task(false)),
-        decomposition(decomposition::Decomposition::build(world)) {}
+        decomposition(decomposition::Decomposition::build(world)),
+        ahead(prepare_lookahead(world, knowledge, task)) {}
 
   TaskAutomaton make_task(bool simplified) const {
     const ltl::Formula phi = ltl::parse(world.task.formula);
@@ -46,7 +49,7 @@ struct TestProblem {
     return TaskAutomaton::make(*ltl::simplify_semantically(phi, invalid).formula, world);
   }
 
-  Problem problem() const { return {world, task, original, knowledge, decomposition}; }
+  Problem problem() const { return {world, task, original, knowledge, decomposition, nullptr, ahead.get()}; }
 
   // The knowledge planner's replay of `plan` against the formula as written.
   Replay check(const Plan& plan) const {
@@ -56,7 +59,8 @@ struct TestProblem {
   // `planner` searching `search_task` (the simplified task, or another), replay checking the formula as written.
   PlanResult plan_task(const TaskAutomaton& search_task, const PlannerOptions& options,
                        const std::string& planner = "knowledge") const {
-    return planner_named(planner).plan(Problem{world, search_task, original, knowledge, decomposition}, options);
+    const lookahead::Lookahead* following = &search_task == &task ? ahead.get() : nullptr;
+    return planner_named(planner).plan(Problem{world, search_task, original, knowledge, decomposition, nullptr, following}, options);
   }
 
   PlanResult solve(std::uint64_t seed, const std::string& planner = "knowledge") const {

@@ -3,12 +3,14 @@
 
 #include "physltl/decomposition/decomposition.h"
 #include "physltl/knowledge/abstract_knowledge.h"
+#include "physltl/planning/lookahead/push_plan.h"
 #include "physltl/planning/plan.h"
 #include "physltl/planning/refusal.h"
 #include "physltl/planning/task.h"
 
 #include <atomic>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -48,6 +50,9 @@ struct PlannerStats {
   long long cell_skips_refused = 0;
   // Refused steps by rule, and our tree search's dropped nodes (refusal.h).
   Refusals refused;
+  // The knowledge planner's look-ahead (lookahead/push_plan.h): push orders planned again from where the
+  // physics left the bodies off the order.
+  int lookahead_replans = 0;
 };
 
 // Where our tree search stood when it stopped without a plan (failed/report.json, docs/report.md).
@@ -83,6 +88,9 @@ struct PlanResult {
   std::vector<TreeEdge> tree;
   PlannerStats stats;
   SearchEnd end;  // filled when not solved
+  // The look-ahead's push order from the start that the knowledge planner followed (stats count the
+  // orders planned again on the way); none when it followed none.
+  std::optional<PushPlan> lookahead;
   // How the planner was configured, for bench.json and the OMPL log (name, value as text).
   std::vector<std::pair<std::string, std::string>> settings;
 };

@@ -6,12 +6,14 @@
 
 #include "physltl/decomposition/decomposition.h"
 #include "physltl/knowledge/reasoning.h"
+#include "physltl/planning/lookahead/push_plan.h"
 #include "physltl/planning/registry.h"
 #include "physltl/planning/tree/route_choice.h"
 #include "physltl/planning/task.h"
 #include "physltl/planning/validation/validated_plan.h"
 
 #include <chrono>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -36,6 +38,8 @@ class PlanningProblem {
   const TaskAutomaton& as_written() const { return prepared_->as_written; }
   const decomposition::Decomposition& decomposition() const { return prepared_->decomposition; }
   const RouteChoice& routes() const { return prepared_->routes; }
+  // The knowledge planner's look-ahead: whether it applies and the push order it follows.
+  const PushPlan& lookahead() const;
   // Seconds the reasoning, the decomposition and the route choice took: once per World and task.
   double preparation_s() const { return preparation_s_; }
   // Why `planner` cannot take this task (and `needs`); nothing when it can.
@@ -49,6 +53,7 @@ class PlanningProblem {
     TaskAutomaton as_written;
     decomposition::Decomposition decomposition;
     RouteChoice routes;
+    std::shared_ptr<const lookahead::Lookahead> lookahead;
   };
   static std::optional<Prepared> prepare(const scenario::World& world, const knowledge::Reasoning& reasoning);
 

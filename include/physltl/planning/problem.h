@@ -10,6 +10,9 @@
 namespace physltl::planning {
 
 struct RouteChoice;
+namespace lookahead {
+struct Lookahead;
+}
 
 struct Problem {
   const scenario::World& world;
@@ -20,6 +23,9 @@ struct Problem {
   // The knowledge planner's choice of going round or pushing through (route_choice.h), prepared for the
   // task once; chosen by the search itself when not given.
   const RouteChoice* routes = nullptr;
+  // The look-ahead's push order for the knowledge planner to follow (lookahead/push_plan.h); none when not
+  // given.
+  const lookahead::Lookahead* lookahead = nullptr;
 };
 
 }  // namespace physltl::planning

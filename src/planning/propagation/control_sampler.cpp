@@ -84,7 +84,7 @@ Control ControlSampler::sample_uniform(Random& random) const {
 }
 
 Control ControlSampler::sample(const scenario::EnvironmentState& state, const knowledge::Kappa& kappa,
-                               const Vec2& target, bool may_push, Random& random) const {
+                               const Vec2& target, bool may_push, Random& random, bool stop_at_target) const {
   Control control;
   control.steps = random.uniform_int(world_.planner.min_steps, world_.planner.max_steps);
   if (!use_knowledge_ || random.chance(kUniformShare)) {
@@ -100,6 +100,11 @@ Control ControlSampler::sample(const scenario::EnvironmentState& state, const kn
     speed = random.uniform(0.7, 1.0);
   } else {
     direction = unit(heading + 0.6 * random_unit(random));
+  }
+  if (stop_at_target) {
+    const double per_step = speed * world_.robot.max_speed * world_.planner.step_size;
+    const int to_target = static_cast<int>(std::ceil((target - state.robot_position).norm() / per_step));
+    control.steps = std::clamp(to_target, world_.planner.min_steps, control.steps);
   }
   control.setpoint = along(state, direction, speed * world_.robot.max_speed, control.steps);
   return control;

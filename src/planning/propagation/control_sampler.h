@@ -18,8 +18,10 @@ class ControlSampler {
 
   // `target`: a point further along the lead, where the search wants the robot to go. `may_push`: false
   // where the task needs no push (the lead goes round the bodies), so the knowledge sampler only steers.
+  // `stop_at_target`: the control no longer than it takes the robot to get to the target, so that a push
+  // can end where the look-ahead wants its body.
   Control sample(const scenario::EnvironmentState& state, const knowledge::Kappa& kappa, const Vec2& target,
-                 bool may_push, Random& random) const;
+                 bool may_push, Random& random, bool stop_at_target = false) const;
   // A control as the baseline samples it: a uniform set-point for a uniform number of steps.
   Control sample_uniform(Random& random) const;
 

@@ -30,8 +30,9 @@ void TreeGrower::grow(const Motion& from, const Vec2& target, const ObjectLead::
   if (guidance == Guidance::kWidened) return propagate(sampler_.sample_uniform(random), from.stage, true, growth);
   const scenario::EnvironmentState& state = simulation_.environment();
   const Vec2 aim = goal != nullptr ? object_lead_.target(*goal, state, simulation_.kappa(), random) : target;
-  const bool may_push = guidance == Guidance::kPushing;
-  propagate(sampler_.sample(state, simulation_.kappa(), aim, may_push, random), from.stage, may_push, growth);
+  const bool may_push = guidance != Guidance::kGoingRound;
+  const bool stop_at_target = guidance == Guidance::kPushingTo;
+  propagate(sampler_.sample(state, simulation_.kappa(), aim, may_push, random, stop_at_target), from.stage, may_push, growth);
 }
 
 int TreeGrower::stage_after_step(int stage) const {

@@ -50,6 +50,7 @@ struct Growth {
 // How an expansion samples its control and what it may touch.
 enum class Guidance {
   kPushing,     // the knowledge sampler, pushing where a push helps towards the target
+  kPushingTo,   // the same, each control ending where the robot gets to the target (the look-ahead's pushes)
   kGoingRound,  // the knowledge sampler steering only; touching a body the task does not name is cut
   kWidened,     // as the baseline grows: a uniform control, nothing cut but what the task and the world forbid
 };

@@ -1,8 +1,10 @@
 #include "tree/tree_search.h"
 
+#include "lookahead/lookahead.h"
 #include "tree/lead_search.h"
 #include "tree/object_lead.h"
 #include "tree/product_graph.h"
+#include "tree/push_plan_lead.h"
 #include "physltl/planning/random.h"
 #include "physltl/planning/tree/route_choice.h"
 #include "stage_graph.h"
@@ -10,9 +12,14 @@
 #include "tree/worker_pool.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <map>
+#include <set>
+#include <cstdio>
 #include <array>
 #include <chrono>
 #include <functional>
+#include <limits>
 #include <optional>
 
 namespace physltl::planning {
@@ -64,6 +71,14 @@ constexpr long long kStallExpansions = 4096;
 constexpr double kWidenedShare = 0.25;
 constexpr double kWidenedAnywhereShare = 0.5;
 
+// The look-ahead's order (push_plan_lead.h): once this many expansions have passed without a node getting
+// further along it, the order is planned again from the latest node the physics left off it, at most
+// kMaxReplans times; a new order must be found within kReplanArrangements. Half the widening's stall, so
+// that the order is repaired before the search widens.
+constexpr long long kReplanExpansions = kStallExpansions / 2;
+constexpr int kMaxReplans = 8;
+constexpr long long kReplanArrangements = 100'000;
+
 // Where to grow from and towards, and the seed of the grower's own generator. With an object goal, the
 // grower finds the target in the node's state (object_lead.h).
 struct Expansion {
@@ -96,7 +111,13 @@ class Search {
         growers_(static_cast<size_t>(pool_.threads())),
         stage_motions_(static_cast<size_t>(stages_.stages())),
         stage_nodes_(static_cast<size_t>(stages_.stages()), 0),
-        stage_dropped_(static_cast<size_t>(stages_.stages()), 0) {}
+        stage_dropped_(static_cast<size_t>(stages_.stages()), 0) {
+    if (knowledge_mode_ && problem.lookahead != nullptr && problem.lookahead->plan.found) {
+      lookahead_ = problem.lookahead;
+      push_lead_.emplace(*lookahead_->lattice, lookahead_->start_cells, lookahead_->steps, knowledge_);
+
+    }
+  }
 
   // `started`: when planning began, before this search prepared its lead (the route choice costs time too).
   PlanResult run(std::chrono::steady_clock::time_point started) {
@@ -124,7 +145,9 @@ class Search {
       std::vector<int> next_lead;
       bool lead_kept = true;
       for (int batch = 0; batch < kBatchesPerLead; ++batch) {
-        if (body_move) {
+        if (body_move && push_lead_) {
+          choose_push_expansions(*body_move);
+        } else if (body_move) {
           choose_object_expansions(*body_move);
         } else {
           // Again for every batch: the last one may have added nodes to the lead or dropped some. With
@@ -209,10 +232,11 @@ class Search {
       expansions_since_progress_ = 0;
     }
     if (stage_nodes_[static_cast<size_t>(motion.stage)]++ == 0) stages_reached_.push_back(motion.stage);
-    motions_.push_back(std::move(motion));
     failed_starts_.push_back(0);
     chosen_.push_back(0);
     dropped_.push_back(false);
+    note_push_progress(motion);
+    motions_.push_back(std::move(motion));
   }
 
   // Lead states that already hold tree nodes, with their weights, for sampling where to grow.
@@ -307,6 +331,92 @@ class Search {
     }
   }
 
+  // Where a new node stands on the look-ahead's order, from where its parent stood.
+  void note_push_progress(const Motion& motion) {
+    if (!push_lead_) return;
+    const int hint = motion.parent >= 0 ? push_progress_[static_cast<size_t>(motion.parent)].push : 0;
+    const PushPlanLead::Progress progress = push_lead_->progress(motion.state, hint);
+    if (progress.remaining < best_push_remaining_) {
+      best_push_remaining_ = progress.remaining;
+      batches_since_push_progress_ = 0;
+    }
+    push_progress_.push_back(progress);
+    rank_on_order(static_cast<int>(push_progress_.size()) - 1);
+  }
+
+  // Nodes on the order, best first: how much work is left, and a little more each time one was grown from.
+  double order_rank(int m) const {
+    return push_progress_[static_cast<size_t>(m)].remaining + kObjectSelectionPenalty * chosen_[static_cast<size_t>(m)];
+  }
+  void rank_on_order(int m) {
+    if (push_progress_[static_cast<size_t>(m)].push >= 0) ranked_on_order_.insert({order_rank(m), m});
+  }
+
+  // The look-ahead's expansions, kBatch of them: from the frontier stage's nodes furthest along the push
+  // order (the best of a few drawn at random), and sometimes from any of them. Where the order has no
+  // target for a node (off the order, or its walk blocked), the object lead's.
+  void choose_push_expansions(const BodyMove& move) {
+    if (++batches_since_push_progress_ * kBatch >= kReplanExpansions) replan_pushes();
+    const std::vector<int>& nodes = stage_motions_[static_cast<size_t>(frontier_stage_)];
+    expansions_.resize(kBatch);
+    for (Expansion& e : expansions_) {
+      int from = nodes[static_cast<size_t>(random_.uniform_int(0, static_cast<int>(nodes.size()) - 1))];
+      const bool best = !ranked_on_order_.empty() && random_.chance(kObjectNearestShare);
+      if (best) from = ranked_on_order_.begin()->second;
+      const bool ranked = push_progress_[static_cast<size_t>(from)].push >= 0;
+      if (ranked) ranked_on_order_.erase({order_rank(from), from});
+      ++chosen_[static_cast<size_t>(from)];
+      if (ranked) rank_on_order(from);
+      e.from = from;
+      e.guidance = Guidance::kPushing;
+      const Motion& node = motions_[static_cast<size_t>(from)];
+      if (const auto target = push_lead_->target(node.state, push_progress_[static_cast<size_t>(from)].push)) {
+        e.target = target->point;
+        e.goal.reset();
+        e.guidance = Guidance::kPushingTo;
+      } else {
+        const ObjectLead::Goal goal = object_lead_.goal(task_.labelling, move);
+        const auto p = static_cast<size_t>(goal.body) + 1;
+        const std::optional<Vec2> approach = object_lead_.approach(node.robot, Vec2(node.state.value(p, 0), node.state.value(p, 1)));
+        e.target = approach.value_or(Vec2::Zero());
+        e.goal = approach ? std::nullopt : std::optional<ObjectLead::Goal>(goal);
+      }
+      widen_if_stalled(e);
+      e.seed = random_.next();
+    }
+  }
+
+  // A new push order from the latest node of the frontier stage that the physics left off the order with
+  // every body on a lattice place; the nodes' places on it found again.
+  void replan_pushes() {
+    batches_since_push_progress_ = 0;
+    if (stats_.lookahead_replans >= kMaxReplans) return;
+    const lookahead::PushLattice& lattice = *lookahead_->lattice;
+    const std::vector<int>& nodes = stage_motions_[static_cast<size_t>(frontier_stage_)];
+    for (auto it = nodes.rbegin(); it != nodes.rend(); ++it) {
+      if (push_progress_[static_cast<size_t>(*it)].push >= 0) continue;
+      const Motion& node = motions_[static_cast<size_t>(*it)];
+      physics::Simulation simulation(world_);
+      simulation.restore(node.state);
+      const std::optional<std::vector<int>> cells = lattice.arrangement(simulation.environment());
+      const int robot = lattice.robot_cell(node.robot);
+      if (!cells || robot < 0) continue;
+      ++stats_.lookahead_replans;
+      const lookahead::PushSearch search =
+          lookahead::PushSearcher(lattice, stages_, task_.labelling).search(node.stage, *cells, robot, kReplanArrangements);
+      if (!search.found) return;
+      push_lead_.emplace(lattice, *cells, search.steps, knowledge_);
+      best_push_remaining_ = std::numeric_limits<double>::infinity();
+      ranked_on_order_.clear();
+      for (size_t m = 0; m < motions_.size(); ++m) {
+        push_progress_[m] = push_lead_->progress(motions_[m].state, -1);
+        best_push_remaining_ = std::min(best_push_remaining_, push_progress_[m].remaining);
+        if (!dropped_[m]) rank_on_order(static_cast<int>(m));
+      }
+      return;
+    }
+  }
+
   // SampleControlAndSteps and propagation for the whole batch. The tree is only read meanwhile.
   // `alongside`, if given, runs as one more task of the batch, first.
   void grow_in_parallel(const std::function<void()>& alongside) {
@@ -374,6 +484,7 @@ class Search {
     stats_.refused.add(Refusal::kDroppedNode);
     ++stage_dropped_[static_cast<size_t>(motion.stage)];
     dropped_[static_cast<size_t>(m)] = true;
+    if (push_lead_) ranked_on_order_.erase({order_rank(m), m});
     graph_.remove_motion(motion.product_state, m);
     std::vector<int>& nodes = stage_motions_[static_cast<size_t>(motion.stage)];
     nodes.erase(std::find(nodes.begin(), nodes.end(), m));
@@ -415,6 +526,7 @@ class Search {
     stats_.tree_nodes = static_cast<long long>(motions_.size());
     stats_.planning_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     result.stats = stats_;
+    if (lookahead_ != nullptr) result.lookahead = lookahead_->plan;
     if (!result.solved) result.end = search_end();
   }
 
@@ -472,6 +584,12 @@ class Search {
   long long expansions_since_progress_ = 0;
   bool widened_ = false;                  // the search has stalled at least once
   const std::vector<int>* current_lead_ = nullptr;
+  const lookahead::Lookahead* lookahead_ = nullptr;   // the look-ahead the search follows, if any
+  std::optional<PushPlanLead> push_lead_;             // and its order as it stands
+  std::vector<PushPlanLead::Progress> push_progress_;  // per motion, where it stands on that order
+  std::set<std::pair<double, int>> ranked_on_order_;  // the nodes on it, not dropped, by order_rank
+  double best_push_remaining_ = std::numeric_limits<double>::infinity();
+  long long batches_since_push_progress_ = 0;      // batches of look-ahead expansions without a node further along
   std::vector<int> available_;         // indices into the current lead
   std::vector<double> cumulative_;     // running sums of their weights
   double frontier_weight_ = 0.0;       // the running sum where the frontier starts

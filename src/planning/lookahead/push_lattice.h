@@ -1,0 +1,75 @@
+#pragma once
+// The look-ahead's lattice: places one step apart where the pushable bodies may stand, anchored at a
+// named body's start, and what each place allows: a body there touches no wall, the robot there touches
+// none, the robot may walk to the next place. The step is the bodies' largest side plus kLatticeGap, so
+// bodies on neighbouring places do not touch and a push of one step leaves the robot in the place the
+// body left.
+
+#include "physltl/knowledge/abstract_knowledge.h"
+#include "physltl/planning/labelling.h"
+#include "physltl/scenario/state.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace physltl::planning::lookahead {
+
+inline constexpr double kLatticeGap = 0.10;  // m between neighbouring bodies' sides
+// A body counts as standing on a place when its centre is this share of a step from it, and square when
+// its yaw is this close to a quarter turn.
+inline constexpr double kSnapShare = 0.25;
+inline constexpr double kSquareYaw = 0.2;  // rad
+
+// Directions: +x, -x, +y, -y.
+inline constexpr int kDirections = 4;
+inline constexpr int kDx[kDirections] = {1, -1, 0, 0};
+inline constexpr int kDy[kDirections] = {0, 0, 1, -1};
+inline constexpr int opposite(int d) { return d ^ 1; }
+
+class PushLattice {
+ public:
+  // Nothing, with `why_not` said, when the World's pushable bodies do not stand on one lattice.
+  static std::optional<PushLattice> build(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
+                                          const Labelling& labelling, std::string& why_not);
+
+  double step() const { return step_; }
+  int cells() const { return columns_ * rows_; }
+  geometry::Vec2 centre(int cell) const;
+  // The place nearest `p`, or -1 outside the lattice.
+  int cell_at(const geometry::Vec2& p) const;
+  // The next place in direction `d`, or -1 past the lattice's edge.
+  int neighbour(int cell, int d) const;
+
+  // The bodies on the lattice: World::movable_bodies indices of the pushable ones.
+  const std::vector<int>& bodies() const { return bodies_; }
+  bool body_fits(int k, int cell) const { return body_free_[static_cast<std::size_t>(k)][static_cast<std::size_t>(cell)]; }
+  bool can_push(int k, int d) const { return pushable_[static_cast<std::size_t>(k)][static_cast<std::size_t>(d)]; }
+  // Labelling::named_bodies index of lattice body k, or -1 when the task does not name it.
+  int named(int k) const { return named_[static_cast<std::size_t>(k)]; }
+  // The place (labelling.h) of named lattice body k at `cell`.
+  int place(int k, int cell) const { return place_[static_cast<std::size_t>(k)][static_cast<std::size_t>(cell)]; }
+  bool robot_fits(int cell) const { return robot_free_[static_cast<std::size_t>(cell)]; }
+  bool robot_passes(int cell, int d) const { return robot_passes_[static_cast<std::size_t>(cell) * kDirections + static_cast<std::size_t>(d)]; }
+
+  // Each lattice body's place in `state`, or nothing when one stands off its place or is turned.
+  std::optional<std::vector<int>> arrangement(const scenario::EnvironmentState& state) const;
+  // The robot's place: the nearest place it fits in, within one step of `p`; -1 when none.
+  int robot_cell(const geometry::Vec2& p) const;
+
+ private:
+  PushLattice() = default;
+
+  double step_ = 0.0;
+  geometry::Vec2 origin_ = geometry::Vec2::Zero();  // the centre of place 0
+  int columns_ = 0, rows_ = 0;
+  std::vector<int> bodies_;
+  std::vector<int> named_;
+  std::vector<std::vector<bool>> body_free_;   // per lattice body, per place
+  std::vector<std::vector<bool>> pushable_;    // per lattice body, per direction
+  std::vector<std::vector<int>> place_;        // per lattice body, per place
+  std::vector<bool> robot_free_;
+  std::vector<bool> robot_passes_;             // per place and direction
+};
+
+}  // namespace physltl::planning::lookahead

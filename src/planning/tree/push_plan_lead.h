@@ -1,0 +1,76 @@
+#pragma once
+// The look-ahead's lead (lookahead/lookahead.h): how the tree follows a push order. The order is a list
+// of pushes, each a body moved some lattice steps one way, and before each the arrangement of every body.
+// A tree node is at push j when the other bodies stand on their places of that arrangement and the pushed
+// body lies along its push; how far it still is from the order's end (pushes left, the metres of this
+// one, and the robot's walk to the side it pushes from) ranks the nodes the tree grows from. The robot
+// walks between pushes along the lattice's places round the bodies, then pushes through the body's
+// centre. A node that fits no push of the order is off it: the tree grows from it only when drawn at
+// random, and the search may plan a new order from it (tree_search.cpp).
+
+#include "lookahead/push_lattice.h"
+#include "lookahead/push_search.h"
+#include "physltl/physics/simulation.h"
+
+#include <limits>
+#include <map>
+#include <utility>
+#include <optional>
+#include <vector>
+
+namespace physltl::planning {
+
+class PushPlanLead {
+ public:
+  struct Progress {
+    int push = -1;  // the push under way; pushes() when all are done; -1 off the order
+    double remaining = std::numeric_limits<double>::infinity();  // metres of work left
+  };
+
+  PushPlanLead(const lookahead::PushLattice& lattice, const std::vector<int>& start_cells,
+               const std::vector<lookahead::PushStep>& steps, const knowledge::AbstractKnowledge& knowledge);
+
+  int pushes() const { return static_cast<int>(runs_.size()); }
+  // Where `state` stands on the order, looked for from push `hint` on (a node's parent's push).
+  Progress progress(const physics::PhysicsState& state, int hint) const;
+  struct Target {
+    geometry::Vec2 point = geometry::Vec2::Zero();
+    bool pushing = false;  // the robot stands ready to push, and the point is where the push ends
+  };
+  // Where the robot heads from `state` at push `push`: round the bodies to the side it pushes from, then
+  // through the body to where it stands when the body is on its place. Nothing when the robot cannot get
+  // there along the lattice.
+  std::optional<Target> target(const physics::PhysicsState& state, int push) const;
+
+ private:
+  struct Run {
+    int body = 0;  // lattice body
+    int direction = 0;
+    int from = 0, to = 0;
+    std::vector<int> before;       // every lattice body's place before the push
+    std::vector<int> walk;         // per place, robot steps to the place the push starts from
+    double after = 0.0;            // metres of work in the pushes after this one
+  };
+  // Per place, robot steps to the place behind the pushed body of run j standing on `body_cell`, round
+  // the other bodies; computed on first use.
+  const std::vector<int>& walk_behind(int j, int body_cell) const;
+  geometry::Vec2 position(const physics::PhysicsState& state, int k) const;
+  struct Along {
+    double distance = 0.0;  // metres the pushed body has come along its push
+    double drift = 0.0;     // and its centre's metres off the push's line
+  };
+  // How far the pushed body of run j has got along it; nothing when `state` does not fit run j.
+  std::optional<Along> along(const physics::PhysicsState& state, int j) const;
+  bool ready_to_push(const geometry::Vec2& robot, const geometry::Vec2& body, int j) const;
+  double robot_way(const geometry::Vec2& robot, const geometry::Vec2& body, int j) const;
+
+  const lookahead::PushLattice& lattice_;
+  std::vector<Run> runs_;
+  // Not thread-safe: the search asks from one thread, between batches.
+  mutable std::map<std::pair<int, int>, std::vector<int>> walks_;  // by run and the pushed body's place
+  std::vector<int> end_;           // every body's place after the last push
+  std::vector<double> half_along_;  // per lattice body and direction: half its extent along it
+  double robot_radius_;
+};
+
+}  // namespace physltl::planning
