@@ -58,7 +58,7 @@ int walk(const PushLattice& lattice, int from, const std::vector<int>& holder, s
 PushSearcher::PushSearcher(const PushLattice& lattice, const StageGraph& stages, const Labelling& labelling)
     : lattice_(lattice), stages_(stages), labelling_(labelling) {}
 
-bool PushSearcher::is_goal(int stage) const {
+bool PushSearcher::ends_pushing(int stage) const {
   const int distance = stages_.distance(stage);
   return distance == 0 || (distance > 0 && !stages_.body_move(stage));
 }
@@ -77,7 +77,7 @@ PushSearcher::Goals PushSearcher::goals_from(int stage) const {
   // The places each named body has in some fact set that would end the pushing from `stage`.
   std::vector<std::set<int>> wanted(static_cast<std::size_t>(bodies));
   for (int facts = 0; facts < labelling_.fact_sets(); ++facts) {
-    if (!is_goal(stages_.after_letter(stage, labelling_.letter(facts, -1)))) continue;
+    if (!ends_pushing(stages_.after_letter(stage, labelling_.letter(facts, -1)))) continue;
     for (int k = 0; k < bodies; ++k) {
       if (lattice_.named(k) >= 0) wanted[static_cast<std::size_t>(k)].insert(labelling_.place(facts, lattice_.named(k)));
     }
@@ -111,20 +111,31 @@ PushSearcher::Goals PushSearcher::goals_from(int stage) const {
 }
 
 bool PushSearcher::alive(int stage, int k, int cell) const {
-  const Goals goals = goals_from(stage);
-  const auto& left = goals.pushes_left[static_cast<std::size_t>(k)];
-  return left.empty() || left[static_cast<std::size_t>(cell)] != kNever;
+  return goals_from(stage).left(k, cell) != kNever;
 }
 
-bool PushSearcher::square_frozen(const Goals& goals, const std::vector<int>& cells, const std::vector<int>& holder,
-                                 int at) const {
+int PushSearcher::Goals::left(int k, int cell) const {
+  const auto& table = pushes_left[static_cast<std::size_t>(k)];
+  return table.empty() ? 0 : table[static_cast<std::size_t>(cell)];
+}
+
+int PushSearcher::Goals::estimate(const std::vector<int>& cells) const {
+  int sum = 0;
+  for (std::size_t k = 0; k < cells.size(); ++k) sum += left(static_cast<int>(k), cells[k]);
+  return sum;
+}
+
+int PushSearcher::stage_after(int stage, const std::vector<int>& cells) const {
+  return stages_.after_letter(stage, labelling_.letter(facts_of(stage, cells), -1));
+}
+
+bool PushSearcher::square_frozen(const Goals& goals, const std::vector<int>& cells, const std::vector<int>& holder, int at) const {
   const auto blocked = [&](int c) { return c < 0 || holder[static_cast<std::size_t>(c)] >= 0 || !lattice_.robot_fits(c); };
   const auto misplaced = [&](int c) {
     if (c < 0) return false;
     const int k = holder[static_cast<std::size_t>(c)];
     if (k < 0) return false;
-    const auto& left = goals.pushes_left[static_cast<std::size_t>(k)];
-    return !left.empty() && left[static_cast<std::size_t>(cells[static_cast<std::size_t>(k)])] != 0;
+    return goals.left(k, cells[static_cast<std::size_t>(k)]) != 0;
   };
   // The four squares of places that hold `at`: `at` and its neighbours across x and y and diagonally.
   for (int dx : {0, 1}) {
@@ -140,98 +151,126 @@ bool PushSearcher::square_frozen(const Goals& goals, const std::vector<int>& cel
   return false;
 }
 
+// One search's state: the arrangements met, the open ones by priority, and scratch space for the walks.
+class ArrangementSearch {
+ public:
+  ArrangementSearch(const PushLattice& lattice, const StageGraph& stages, const PushSearcher& searcher,
+                    const PushSearcher::Goals& goals)
+      : lattice_(lattice),
+        stages_(stages),
+        searcher_(searcher),
+        goals_(goals),
+        holder_(static_cast<std::size_t>(lattice.cells()), -1),
+        seen_(static_cast<std::size_t>(lattice.cells()), -1),
+        seen_after_(static_cast<std::size_t>(lattice.cells()), -1) {}
+
+  // The arrangement to start from; returns its node.
+  int start(const std::vector<int>& cells, int robot_cell, int stage) {
+    hold(cells);
+    return add({cells, walk(lattice_, robot_cell, holder_, seen_, mark_++, queue_), stage, -1, {}, 0});
+  }
+  bool exhausted() const { return open_.empty(); }
+  // Settles the open arrangement of highest priority: adds every arrangement one push away. Returns the
+  // first added that ends the pushing, or -1.
+  int settle() {
+    const int index = std::get<2>(open_.top());
+    open_.pop();
+    const Node node = nodes_[static_cast<std::size_t>(index)];
+    hold(node.cells);
+    walk(lattice_, node.robot, holder_, seen_, mark_, queue_);
+    const int reach = mark_++;
+    for (std::size_t k = 0; k < node.cells.size(); ++k) {
+      for (int d = 0; d < kDirections; ++d) {
+        const int added = push(node, index, static_cast<int>(k), d, reach);
+        if (added >= 0 && searcher_.ends_pushing(nodes_[static_cast<std::size_t>(added)].stage)) return added;
+      }
+    }
+    return -1;
+  }
+  std::vector<PushStep> steps_to(int n) const {
+    std::vector<PushStep> steps;
+    for (; nodes_[static_cast<std::size_t>(n)].parent >= 0; n = nodes_[static_cast<std::size_t>(n)].parent) {
+      steps.push_back(nodes_[static_cast<std::size_t>(n)].step);
+    }
+    std::reverse(steps.begin(), steps.end());
+    return steps;
+  }
+
+ private:
+  void hold(const std::vector<int>& at) {
+    std::fill(holder_.begin(), holder_.end(), -1);
+    for (std::size_t k = 0; k < at.size(); ++k) holder_[static_cast<std::size_t>(at[k])] = static_cast<int>(k);
+  }
+
+  // The arrangement after pushing body k of `node` one step in direction d, added unless it was met
+  // before or is pruned; its node, or -1.
+  int push(const Node& node, int index, int k, int d, int reach) {
+    const int at = node.cells[static_cast<std::size_t>(k)];
+    if (!lattice_.can_push(k, d)) return -1;
+    const int stand = lattice_.neighbour(at, opposite(d));
+    const int to = lattice_.neighbour(at, d);
+    if (stand < 0 || to < 0 || seen_[static_cast<std::size_t>(stand)] != reach) return -1;
+    if (!lattice_.body_fits(k, to) || holder_[static_cast<std::size_t>(to)] >= 0 || goals_.left(k, to) == kNever) {
+      return -1;
+    }
+    std::vector<int> next = node.cells;
+    next[static_cast<std::size_t>(k)] = to;
+    const int next_stage = searcher_.stage_after(node.stage, next);
+    if (stages_.distance(next_stage) < 0 || stages_.dead(stages_.automaton_state_of(next_stage))) return -1;
+    holder_[static_cast<std::size_t>(at)] = -1;
+    holder_[static_cast<std::size_t>(to)] = k;
+    const bool frozen = searcher_.square_frozen(goals_, next, holder_, to);
+    const int robot = frozen ? 0 : walk(lattice_, at, holder_, seen_after_, mark_++, queue_);
+    holder_[static_cast<std::size_t>(to)] = -1;
+    holder_[static_cast<std::size_t>(at)] = k;
+    if (frozen) return -1;
+    return add({std::move(next), robot, next_stage, index, {k, d, at, to}, node.pushes + 1});
+  }
+
+  int add(Node node) {
+    const auto [it, inserted] = known_.emplace(key_of(node.cells, node.robot, node.stage), static_cast<int>(nodes_.size()));
+    if (!inserted) return -1;
+    open_.push({node.pushes + kHeuristicWeight * goals_.estimate(node.cells), order_++, it->second});
+    nodes_.push_back(std::move(node));
+    return it->second;
+  }
+
+  const PushLattice& lattice_;
+  const StageGraph& stages_;
+  const PushSearcher& searcher_;
+  const PushSearcher::Goals& goals_;
+  std::vector<int> holder_;      // per place, the body on it or -1
+  std::vector<int> seen_;        // the robot's reach before a push (marks)
+  std::vector<int> seen_after_;  // and after it
+  std::vector<int> queue_;
+  int mark_ = 0;
+  std::vector<Node> nodes_;
+  std::unordered_map<std::string, int> known_;
+  using Entry = std::tuple<double, long long, int>;  // priority, order of insertion, node
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open_;
+  long long order_ = 0;
+};
+
 PushSearch PushSearcher::search(int stage, const std::vector<int>& cells, int robot_cell,
                                 long long max_arrangements) const {
   PushSearch result;
   const Goals goals = goals_from(stage);
-  const auto estimate = [&](const std::vector<int>& at) {
-    int sum = 0;
-    for (std::size_t k = 0; k < at.size(); ++k) {
-      const auto& left = goals.pushes_left[k];
-      if (!left.empty()) sum += left[static_cast<std::size_t>(at[k])];
-    }
-    return sum;
-  };
+  result.outcome = "no order of pushes";
   for (std::size_t k = 0; k < cells.size(); ++k) {
-    const auto& left = goals.pushes_left[k];
-    if (!left.empty() && left[static_cast<std::size_t>(cells[k])] == kNever) {
-      result.outcome = "no order of pushes";
-      return result;
-    }
+    if (goals.left(static_cast<int>(k), cells[k]) == kNever) return result;
   }
-  std::vector<int> holder(static_cast<std::size_t>(lattice_.cells()), -1);
-  std::vector<int> seen(static_cast<std::size_t>(lattice_.cells()), -1);       // the robot's reach before a push
-  std::vector<int> seen_after(static_cast<std::size_t>(lattice_.cells()), -1);  // and after it
-  std::vector<int> queue;
-  int mark = 0;
-  const auto hold = [&](const std::vector<int>& at) {
-    std::fill(holder.begin(), holder.end(), -1);
-    for (std::size_t k = 0; k < at.size(); ++k) holder[static_cast<std::size_t>(at[k])] = static_cast<int>(k);
-  };
-
-  std::vector<Node> nodes;
-  std::unordered_map<std::string, int> known;
-  using Entry = std::tuple<double, long long, int>;  // priority, order of insertion, node
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-  long long order = 0;
-  hold(cells);
-  Node root{cells, walk(lattice_, robot_cell, holder, seen, mark++, queue), stage, -1, {}, 0};
-  known.emplace(key_of(root.cells, root.robot, root.stage), 0);
-  nodes.push_back(root);
-  open.push({kHeuristicWeight * estimate(cells), order++, 0});
-  int solution = is_goal(stage) ? 0 : -1;
-  while (solution < 0 && !open.empty()) {
-    const int index = std::get<2>(open.top());
-    open.pop();
+  ArrangementSearch search(lattice_, stages_, *this, goals);
+  int solution = search.start(cells, robot_cell, stage);
+  if (!ends_pushing(stage)) solution = -1;
+  while (solution < 0 && !search.exhausted()) {
     if (++result.settled > max_arrangements) {
       result.outcome = "search limit";
       return result;
     }
-    const Node node = nodes[static_cast<std::size_t>(index)];
-    hold(node.cells);
-    walk(lattice_, node.robot, holder, seen, mark, queue);
-    const int reach = mark++;
-    for (std::size_t k = 0; k < node.cells.size() && solution < 0; ++k) {
-      const int at = node.cells[k];
-      for (int d = 0; d < kDirections && solution < 0; ++d) {
-        if (!lattice_.can_push(static_cast<int>(k), d)) continue;
-        const int stand = lattice_.neighbour(at, opposite(d));
-        const int to = lattice_.neighbour(at, d);
-        if (stand < 0 || to < 0 || seen[static_cast<std::size_t>(stand)] != reach) continue;
-        if (!lattice_.body_fits(static_cast<int>(k), to) || holder[static_cast<std::size_t>(to)] >= 0) continue;
-        const auto& left = goals.pushes_left[k];
-        if (!left.empty() && left[static_cast<std::size_t>(to)] == kNever) continue;
-        std::vector<int> next = node.cells;
-        next[k] = to;
-        const int next_stage = stages_.after_letter(node.stage, labelling_.letter(facts_of(node.stage, next), -1));
-        if (stages_.distance(next_stage) < 0 || stages_.dead(stages_.automaton_state_of(next_stage))) continue;
-        holder[static_cast<std::size_t>(at)] = -1;
-        holder[static_cast<std::size_t>(to)] = static_cast<int>(k);
-        const bool frozen = square_frozen(goals, next, holder, to);
-        const int robot = frozen ? 0 : walk(lattice_, at, holder, seen_after, mark++, queue);
-        holder[static_cast<std::size_t>(to)] = -1;
-        holder[static_cast<std::size_t>(at)] = static_cast<int>(k);
-        if (frozen) continue;
-        const auto [it, inserted] = known.emplace(key_of(next, robot, next_stage), static_cast<int>(nodes.size()));
-        if (!inserted) continue;
-        nodes.push_back({std::move(next), robot, next_stage, index, {static_cast<int>(k), d, at, to}, node.pushes + 1});
-        const Node& added = nodes.back();
-        if (is_goal(added.stage)) {
-          solution = it->second;
-          break;
-        }
-        open.push({added.pushes + kHeuristicWeight * estimate(added.cells), order++, it->second});
-      }
-    }
+    solution = search.settle();
   }
-  if (solution < 0) {
-    result.outcome = "no order of pushes";
-    return result;
-  }
-  for (int n = solution; nodes[static_cast<std::size_t>(n)].parent >= 0; n = nodes[static_cast<std::size_t>(n)].parent) {
-    result.steps.push_back(nodes[static_cast<std::size_t>(n)].step);
-  }
-  std::reverse(result.steps.begin(), result.steps.end());
+  if (solution < 0) return result;
+  result.steps = search.steps_to(solution);
   result.found = true;
   result.outcome = "found";
   return result;

@@ -45,12 +45,20 @@ class PushSearcher {
   bool alive(int stage, int k, int cell) const;
 
  private:
+  friend class ArrangementSearch;
+  // Per lattice body, per place: the fewest pushes of that body alone to where the task wants it from a
+  // stage (kNever where it can get there no more); no table for a body the task leaves free.
   struct Goals {
-    std::vector<std::vector<int>> pushes_left;  // per lattice body, per place; empty: the task leaves it free
+    std::vector<std::vector<int>> pushes_left;
+    int left(int k, int cell) const;           // 0 for a body the task leaves free
+    int estimate(const std::vector<int>& cells) const;  // the sum over the bodies
   };
   Goals goals_from(int stage) const;
-  bool is_goal(int stage) const;
+  // The stage needs no more body moves: the robot's part of the task, or acceptance.
+  bool ends_pushing(int stage) const;
   int facts_of(int stage, const std::vector<int>& cells) const;
+  int stage_after(int stage, const std::vector<int>& cells) const;
+  // Four places in a square holding `at`, all walls or bodies, one a body not where the task wants it.
   bool square_frozen(const Goals& goals, const std::vector<int>& cells, const std::vector<int>& holder, int at) const;
 
   const PushLattice& lattice_;

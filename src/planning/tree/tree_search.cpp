@@ -296,18 +296,28 @@ class Search {
     if (random_.chance(kWidenedAnywhereShare)) e.from = random_.uniform_int(0, static_cast<int>(motions_.size()) - 1);
   }
 
+  // Where a body's centre is in the state of node `motion`.
+  Vec2 body_at(int motion, int body) const {
+    const physics::PhysicsState& state = motions_[static_cast<size_t>(motion)].state;
+    const auto b = static_cast<size_t>(body) + 1;  // the robot is body 0
+    return {state.value(b, 0), state.value(b, 1)};
+  }
+
+  // The object lead's aim from node `e.from`: from afar along the decomposition towards the body, near it
+  // the goal's target in the node's state.
+  void aim_at_body(Expansion& e, const ObjectLead::Goal& goal) {
+    const std::optional<Vec2> approach = object_lead_.approach(motions_[static_cast<size_t>(e.from)].robot, body_at(e.from, goal.body));
+    e.target = approach.value_or(Vec2::Zero());
+    e.goal = approach ? std::nullopt : std::optional<ObjectLead::Goal>(goal);
+  }
+
   // The object lead's expansions, kBatch of them, for moving a body of the frontier stage.
   void choose_object_expansions(const BodyMove& move) {
     const ObjectLead::Goal goal = object_lead_.goal(task_.labelling, move);
     const std::vector<int>& nodes = stage_motions_[static_cast<size_t>(frontier_stage_)];
-    const auto body_at = [&](int m) {
-      const physics::PhysicsState& state = motions_[static_cast<size_t>(m)].state;
-      const auto b = static_cast<size_t>(goal.body) + 1;  // the robot is body 0
-      return Vec2(state.value(b, 0), state.value(b, 1));
-    };
     const auto distance = [&](int m) {
-      return ObjectLead::remaining(goal, body_at(m)) +
-             kObjectRobotWeight * (motions_[static_cast<size_t>(m)].robot - body_at(m)).norm() +
+      return ObjectLead::remaining(goal, body_at(m, goal.body)) +
+             kObjectRobotWeight * (motions_[static_cast<size_t>(m)].robot - body_at(m, goal.body)).norm() +
              kObjectSelectionPenalty * chosen_[static_cast<size_t>(m)];
     };
     const auto any_node = [&] { return nodes[static_cast<size_t>(random_.uniform_int(0, static_cast<int>(nodes.size()) - 1))]; };
@@ -322,9 +332,7 @@ class Search {
       }
       ++chosen_[static_cast<size_t>(from)];
       e.from = from;
-      const std::optional<Vec2> approach = object_lead_.approach(motions_[static_cast<size_t>(from)].robot, body_at(from));
-      e.target = approach.value_or(Vec2::Zero());
-      e.goal = approach ? std::nullopt : std::optional<ObjectLead::Goal>(goal);
+      aim_at_body(e, goal);
       e.guidance = Guidance::kPushing;
       widen_if_stalled(e);
       e.seed = random_.next();
@@ -375,11 +383,7 @@ class Search {
         e.goal.reset();
         e.guidance = Guidance::kPushingTo;
       } else {
-        const ObjectLead::Goal goal = object_lead_.goal(task_.labelling, move);
-        const auto p = static_cast<size_t>(goal.body) + 1;
-        const std::optional<Vec2> approach = object_lead_.approach(node.robot, Vec2(node.state.value(p, 0), node.state.value(p, 1)));
-        e.target = approach.value_or(Vec2::Zero());
-        e.goal = approach ? std::nullopt : std::optional<ObjectLead::Goal>(goal);
+        aim_at_body(e, object_lead_.goal(task_.labelling, move));
       }
       widen_if_stalled(e);
       e.seed = random_.next();
