@@ -120,7 +120,23 @@ TEST(Execute, ReplansFromWhereTheRobotBrakedAgainstAWall) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(slurp(out / "start_at_wall" / "execution.json"));
   EXPECT_GE(j["succeeded"].get<int>(), 19);
-  EXPECT_GT(j["replans_median"].get<double>(), 0.0);  // the worlds do brake and replan
+  int replanned = 0;  // the worlds do brake and replan: 9 of the 20
+  for (const auto& world : j["per_world"]) replanned += world["replans"].get<int>() > 0;
+  EXPECT_GE(replanned, 5);
+}
+
+TEST(Execute, BrakesBeforeAnOffsetFromThePlanCarriesTheRobotIntoAWall) {
+  // A box pushed along lanes 5 cm wider than the robot on each side, then round a corner. A start moved
+  // up to 2 cm carries on as an offset from the plan; a tolerance shrunk to the plan's clearance at the
+  // current step saw it only as the robot touched a wall (14 of 20 worlds); the offset carried along the
+  // plan's next half second is seen before.
+  const fs::path out = fresh_out_dir();
+  const fs::path scenario = fs::path(kSource) / "tests" / "planning" / "data" / "regression" / "grid_corner_turn.lua";
+  const Result r = run("execute " + scenario.string() +
+                       " --worlds 20 --uncertainty mass=0.2,friction=0.2,start=0.02 --seed 1 --quiet --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(slurp(out / "grid_corner_turn" / "execution.json"));
+  EXPECT_GE(j["succeeded"].get<int>(), 19);
 }
 
 TEST(Execute, RenderDrawsOneExecutedWorldAsFramesAndAVideo) {

@@ -75,6 +75,28 @@ TEST(Simulation, AWallStopsTheRobotWithoutTunnelling) {
   EXPECT_LT(sim.environment().robot_position.x(), 6.0 - 0.25 + 0.02);
 }
 
+// ODE finds contacts where a step starts; a step that ends with the robot inside a wall touched it all the
+// same. Several starts, so that some step ends part-way into the wall whatever the step's phase.
+TEST(Simulation, AStepThatEndsInsideAWallReportsTouchingIt) {
+  int ended_inside = 0;
+  for (int k = 0; k < 5; ++k) {
+    auto world = small_world();
+    world.movable_bodies.clear();
+    world.robot.start = {4.0 + 0.01 * k, 5.0};
+    Simulation sim(world);
+    for (int i = 0; i < 60; ++i) {
+      sim.step({1, 0}, contacts);
+      const double overlap = sim.environment().robot_position.x() + world.robot.radius - 6.0;  // the wall's face
+      if (overlap <= 1e-4) continue;
+      ++ended_inside;
+      EXPECT_TRUE(std::any_of(contacts.begin(), contacts.end(), [](const scenario::RobotContact& c) {
+        return c.body == scenario::RobotContact::Body::kFixed;
+      })) << "start " << k << ", step " << i << ": " << overlap << " m inside the wall";
+    }
+  }
+  EXPECT_GT(ended_inside, 0);
+}
+
 TEST(Simulation, FloorFrictionHoldsAHeavyBoxAgainstTheRobot) {
   const auto world = small_world(1000.0);  // needs ~2.4 kN to slide, the robot's drive has 20 N
   Simulation sim(world);

@@ -66,6 +66,26 @@ TEST(Replay, AValidatedPlanKeepsTheRobotsLimitsAtEveryStep) {
   EXPECT_EQ(r.peak_speed, fastest);
 }
 
+// A lane 6 cm wider than the robot: a step that ended inside its corner, the next control taking the robot
+// out again, once counted as no touch (plans ended steps up to 4 cm inside). No state of a validated plan
+// overlaps a wall by more than the millimetre a robot resting against one sinks in.
+TEST(Replay, AValidatedPlanThroughATightLaneNeverEndsAStepInsideAWall) {
+  const TestProblem p("../tests/planning/data/lane.lua");
+  for (int seed = 1; seed <= 3; ++seed) {
+    const PlanResult result = p.solve(seed);
+    ASSERT_TRUE(result.solved) << result.stop_reason;
+    const Replay r = p.check(result.plan);
+    ASSERT_TRUE(r.validated()) << r.failure;
+    for (std::size_t i = 0; i < r.states.size(); ++i) {
+      for (const auto& wall : p.world.fixed_bodies) {
+        const double clearance =
+            geometry::distance(wall.footprint.shape, wall.footprint.pose, r.states[i].robot_position) - p.world.robot.radius;
+        EXPECT_GT(clearance, -0.001) << "seed " << seed << ", step " << i << ", " << wall.name;
+      }
+    }
+  }
+}
+
 // A plan whose controls were edited to drive faster than the robot can is not the robot's plan, even
 // where the physics would carry it out.
 TEST(Replay, APlanEditedToExceedTheSpeedLimitIsRejected) {

@@ -1,9 +1,9 @@
 #pragma once
 // Execution with monitoring and replanning: a plan runs step by step in an ExecutionWorld; when the robot,
-// or a body the plan moves, is farther from its planned position than the tolerance, the robot brakes to
-// rest and the rest of the task is planned again from the state it observes, in the declared model (the
-// executor never sees the truth, only states), with the task progressed over the letters executed so far
-// (docs/robustness.md).
+// or a body the plan moves, is farther from its planned position than the tolerance, or the robot's offset
+// from the plan would take it into a fixed body within half a second, the robot brakes to rest and the rest
+// of the task is planned again from the state it observes, in the declared model (the executor never sees
+// the truth, only states), with the task progressed over the letters executed so far (docs/robustness.md).
 
 #include "physltl/execution/execution_world.h"
 #include "physltl/planning/plan.h"
