@@ -61,7 +61,10 @@ std::string lookahead_line(const planning::PushPlan& plan, const scenario::World
 nlohmann::ordered_json lookahead_json(const planning::PushPlan& plan, const scenario::World& world) {
   nlohmann::ordered_json pushes = nlohmann::ordered_json::array();
   for (const planning::PlannedPush& push : plan.pushes) {
+    nlohmann::ordered_json ahead = nlohmann::ordered_json::array();
+    for (int b : push.ahead) ahead.push_back(world.movable_bodies[static_cast<std::size_t>(b)].name);
     pushes.push_back({{"body", world.movable_bodies[static_cast<std::size_t>(push.body)].name},
+                      {"ahead", ahead},
                       {"direction", direction_name(push)},
                       {"distance", push.distance},
                       {"from", {push.from.x(), push.from.y()}},

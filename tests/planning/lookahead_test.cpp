@@ -16,6 +16,7 @@ namespace physltl::planning {
 namespace {
 
 const std::string kPuzzles = "../tests/planning/data/puzzles/";
+const std::string kWorlds = "../tests/planning/data/lookahead/";
 
 // The lattice body of World body `name`.
 int lattice_body(const TestProblem& p, const std::string& name) {
@@ -43,6 +44,44 @@ TEST(LookAhead, AppliesWhereANamedBodyHasNoRoomBesideItOnItsWay) {
   const TestProblem roomy("sorting.lua");
   EXPECT_FALSE(roomy.ahead->plan.rule.applies);
   EXPECT_NE(roomy.ahead->plan.rule.reason.find("room for the robot beside it"), std::string::npos) << roomy.ahead->plan.rule.reason;
+}
+
+// side_by_side: two boxes next to each other in an open room; the walls alone leave room round them.
+TEST(LookAhead, AppliesWhereBoxesStandSideBySideInTheOpen) {
+  const TestProblem p(kWorlds + "side_by_side.lua");
+  ASSERT_TRUE(p.ahead->plan.rule.applies) << p.ahead->plan.rule.reason;
+  EXPECT_NE(p.ahead->plan.rule.reason.find("among the walls and the other bodies"), std::string::npos) << p.ahead->plan.rule.reason;
+  ASSERT_TRUE(p.ahead->plan.found) << p.ahead->plan.outcome;
+  EXPECT_EQ(p.ahead->plan.pushes.size(), 2u);  // each box one cell east onto its goal
+}
+
+// line_in_corridor: two boxes nose to tail in a one-cell corridor; the robot cannot get round either.
+TEST(LookAhead, PushesALineOfBoxesEndToEndWhereNoBoxCanGoAlone) {
+  const TestProblem p(kWorlds + "line_in_corridor.lua");
+  ASSERT_TRUE(p.ahead->plan.found) << p.ahead->plan.outcome;
+  ASSERT_EQ(p.ahead->plan.pushes.size(), 1u);
+  const PlannedPush& push = p.ahead->plan.pushes.front();
+  EXPECT_EQ(p.world.movable_bodies[static_cast<std::size_t>(push.body)].name, "M2");
+  ASSERT_EQ(push.ahead.size(), 1u);
+  EXPECT_EQ(p.world.movable_bodies[static_cast<std::size_t>(push.ahead.front())].name, "M1");
+  EXPECT_EQ(push.dx, -1);
+  EXPECT_EQ(push.cells, 2);
+  const PlanResult result = p.solve(1);
+  ASSERT_TRUE(result.solved) << result.stop_reason;
+  const Replay replay = p.check(result.plan);
+  EXPECT_TRUE(replay.validated()) << replay.failure;
+  EXPECT_EQ(replay.moved_bodies.size(), 2u);
+}
+
+// A line only ends an order (its bodies stand short of their places after it): in every order of our
+// puzzles, no push but the last moves one.
+TEST(LookAhead, OnlyTheLastPushOfAnOrderMovesALine) {
+  for (const std::string file : {"order_line.lua", "pair_in_line.lua", "staircase.lua", "tight_store.lua"}) {
+    const TestProblem p(kPuzzles + file);
+    ASSERT_TRUE(p.ahead->plan.found) << file << ": " << p.ahead->plan.outcome;
+    const auto& pushes = p.ahead->plan.pushes;
+    for (std::size_t i = 0; i + 1 < pushes.size(); ++i) EXPECT_TRUE(pushes[i].ahead.empty()) << file << ", push " << i;
+  }
 }
 
 // order_line: three boxes into a one-cell corridor of goals, goal1 at its mouth and goal3 at its far end.

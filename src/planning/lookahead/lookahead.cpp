@@ -11,7 +11,13 @@ namespace physltl::planning {
 
 std::string describe(const PlannedPush& push, const std::vector<std::string>& body_names) {
   const char* direction = push.dx > 0 ? "+x" : push.dx < 0 ? "-x" : push.dy > 0 ? "+y" : "-y";
-  return fmt::format("{} {} {:.2g} m", body_names[static_cast<std::size_t>(push.body)], direction, push.distance);
+  std::string bodies = body_names[static_cast<std::size_t>(push.body)];
+  if (!push.ahead.empty()) {
+    std::vector<std::string> ahead;
+    for (int b : push.ahead) ahead.push_back(body_names[static_cast<std::size_t>(b)]);
+    bodies += fmt::format(" (with {})", fmt::join(ahead, ", "));
+  }
+  return fmt::format("{} {} {:.2g} m", bodies, direction, push.distance);
 }
 
 std::shared_ptr<const lookahead::Lookahead> prepare_lookahead(const scenario::World& world,
@@ -30,28 +36,30 @@ namespace {
 constexpr double kRobotDiametersBeside = 2.0;
 constexpr double kWayCell = 0.05;  // m: the grid of that check
 
-// Why the look-ahead applies: a named body cannot get to its regions with room for the robot beside it.
-// Nothing when every named body can.
+// Why the look-ahead applies: a named body cannot get to its regions with room for the robot beside it,
+// among the walls and the other bodies where they stand (boxes side by side need an order as much as a
+// corridor does). Nothing when every named body can.
 std::optional<std::string> narrow_way(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
                                       const Labelling& labelling) {
-  std::vector<geometry::Footprint> walls;
-  for (const auto& f : knowledge.fixed_bodies) walls.push_back(f.footprint);
-  for (const auto& b : knowledge.movable_bodies) {
-    if (b.body_class == knowledge::BodyClass::kFixed) walls.push_back(b.footprint);
-  }
   for (const Labelling::NamedBody& named : labelling.named_bodies()) {
     const auto& body = knowledge.movable_bodies[static_cast<std::size_t>(named.body)];
     if (body.body_class == knowledge::BodyClass::kFixed) continue;
+    std::vector<geometry::Footprint> obstacles;
+    for (const auto& f : knowledge.fixed_bodies) obstacles.push_back(f.footprint);
+    for (std::size_t b = 0; b < knowledge.movable_bodies.size(); ++b) {
+      if (static_cast<int>(b) != named.body) obstacles.push_back(knowledge.movable_bodies[b].footprint);
+    }
     const double side = 2 * body.footprint.shape.half_extents().minCoeff();
     const double width = side + kRobotDiametersBeside * 2 * knowledge.robot.radius;
     const double cell = std::max(kWayCell, std::sqrt(knowledge.workspace.size().prod() / 250'000.0));
-    geometry::DiscField wide(knowledge.workspace, cell, width / 2, walls);
+    geometry::DiscField wide(knowledge.workspace, cell, width / 2, obstacles);
     wide.compute_distances([&](const geometry::Vec2& centre, double) {
       return std::any_of(named.regions.begin(), named.regions.end(),
                          [&](int r) { return world.regions[static_cast<std::size_t>(r)].polygon.contains(centre); });
     });
     if (!wide.reaches_target(body.footprint.pose.position)) {
-      return fmt::format("{}'s way to its regions is narrower than {:.2f} m (its side {:.2f} m and two robot diameters)",
+      return fmt::format("{}'s way to its regions is narrower than {:.2f} m (its side {:.2f} m and two robot diameters) "
+                         "among the walls and the other bodies",
                          body.name, width, side);
     }
   }
@@ -65,14 +73,17 @@ std::vector<PlannedPush> runs_of(const PushLattice& lattice, const std::vector<P
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const PushStep& step = steps[i];
     const int body = lattice.bodies()[static_cast<std::size_t>(step.body)];
-    if (!runs.empty() && i > 0 && steps[i - 1].body == step.body && steps[i - 1].direction == step.direction) {
+    if (!runs.empty() && i > 0 && steps[i - 1].body == step.body && steps[i - 1].direction == step.direction &&
+        steps[i - 1].ahead == step.ahead) {
       runs.back().cells += 1;
       runs.back().distance = runs.back().cells * lattice.step();
       runs.back().to = lattice.centre(step.to);
       continue;
     }
-    runs.push_back({body, kDx[step.direction], kDy[step.direction], 1, lattice.step(), lattice.centre(step.from),
-                    lattice.centre(step.to)});
+    std::vector<int> ahead;
+    for (int k : step.ahead) ahead.push_back(lattice.bodies()[static_cast<std::size_t>(k)]);
+    runs.push_back({body, std::move(ahead), kDx[step.direction], kDy[step.direction], 1, lattice.step(),
+                    lattice.centre(step.from), lattice.centre(step.to)});
   }
   return runs;
 }
@@ -87,7 +98,7 @@ Lookahead look_ahead(const scenario::World& world, const knowledge::AbstractKnow
   }
   const std::optional<std::string> narrow = narrow_way(world, knowledge, task.labelling);
   if (!narrow) {
-    plan.rule.reason = "every named body has room for the robot beside it all the way to its regions";
+    plan.rule.reason = "every named body has room for the robot beside it all the way to its regions, among the walls and the other bodies";
     plan.outcome = "not searched";
     return result;
   }

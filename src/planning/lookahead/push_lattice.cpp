@@ -48,6 +48,7 @@ std::optional<PushLattice> PushLattice::build(const scenario::World& world, cons
     return std::nullopt;
   }
   lattice.step_ = largest_side + kLatticeGap;
+  lattice.push_force_ = knowledge.robot.push_force;
   const double s = lattice.step_;
   const geometry::Rect& ws = knowledge.workspace;
   const geometry::Vec2 a = knowledge.movable_bodies[static_cast<std::size_t>(anchor)].footprint.pose.position;
@@ -100,6 +101,10 @@ std::optional<PushLattice> PushLattice::build(const scenario::World& world, cons
       }
     }
     lattice.pushable_.push_back(std::move(pushable));
+    lattice.friction_force_.push_back(body.floor_friction_force);
+    const geometry::Vec2 half = body.footprint.shape.half_extents();
+    const double c = std::abs(std::cos(body.footprint.pose.yaw)), sn = std::abs(std::sin(body.footprint.pose.yaw));
+    lattice.half_along_.push_back({c * half.x() + sn * half.y(), sn * half.x() + c * half.y()});
     int named = -1;
     for (std::size_t i = 0; i < labelling.named_bodies().size(); ++i) {
       if (labelling.named_bodies()[i].body == b) named = static_cast<int>(i);
@@ -119,6 +124,20 @@ std::optional<PushLattice> PushLattice::build(const scenario::World& world, cons
     lattice.place_.push_back(std::move(place));
   }
   return lattice;
+}
+
+std::optional<std::vector<double>> PushLattice::line_shortfalls(const std::vector<int>& line, int d) const {
+  double held = 0.0;
+  for (int k : line) held += friction_force_[static_cast<std::size_t>(k)];
+  if (held >= push_force_) return std::nullopt;
+  std::vector<double> shortfalls;
+  double shortfall = 0.0;
+  for (std::size_t i = 1; i < line.size(); ++i) {
+    shortfall += step_ - half_along(line[i - 1], d) - half_along(line[i], d);
+    if (shortfall >= step_ / 2) return std::nullopt;
+    shortfalls.push_back(shortfall);
+  }
+  return shortfalls;
 }
 
 geometry::Vec2 PushLattice::centre(int cell) const {

@@ -9,6 +9,7 @@
 #include "physltl/planning/labelling.h"
 #include "physltl/scenario/state.h"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,6 +46,13 @@ class PushLattice {
   const std::vector<int>& bodies() const { return bodies_; }
   bool body_fits(int k, int cell) const { return body_free_[static_cast<std::size_t>(k)][static_cast<std::size_t>(cell)]; }
   bool can_push(int k, int d) const { return pushable_[static_cast<std::size_t>(k)][static_cast<std::size_t>(d)]; }
+  // Half lattice body k's extent along direction d.
+  double half_along(int k, int d) const { return half_along_[static_cast<std::size_t>(k)][static_cast<std::size_t>(d / 2)]; }
+  // Whether the robot's drive moves the bodies `line` (lattice bodies, end to end, the robot's first) at
+  // once in direction d, and how far short of their next places the bodies ahead of the first end, nearest
+  // first: pushed one place on, the first closes the gaps before the others move. Nothing when the floor
+  // friction of them all holds the drive back, or a body would end nearer another place than its own.
+  std::optional<std::vector<double>> line_shortfalls(const std::vector<int>& line, int d) const;
   // Labelling::named_bodies index of lattice body k, or -1 when the task does not name it.
   int named(int k) const { return named_[static_cast<std::size_t>(k)]; }
   // The place (labelling.h) of named lattice body k at `cell`.
@@ -68,6 +76,9 @@ class PushLattice {
   std::vector<std::vector<bool>> body_free_;   // per lattice body, per place
   std::vector<std::vector<bool>> pushable_;    // per lattice body, per direction
   std::vector<std::vector<int>> place_;        // per lattice body, per place
+  std::vector<double> friction_force_;         // per lattice body: N to start it sliding
+  std::vector<std::array<double, 2>> half_along_;  // per lattice body: half its extent along x and y
+  double push_force_ = 0.0;                    // N: the robot's drive
   std::vector<bool> robot_free_;
   std::vector<bool> robot_passes_;             // per place and direction
 };

@@ -18,7 +18,7 @@ struct Node {
   int stage = 0;
   int parent = -1;
   PushStep step;
-  int pushes = 0;
+  int cost = 0;  // body steps so far: a line of n bodies pushed one step costs n
 };
 
 std::string key_of(const std::vector<int>& cells, int robot, int stage) {
@@ -137,6 +137,7 @@ bool PushSearcher::square_frozen(const Goals& goals, const std::vector<int>& cel
     if (k < 0) return false;
     return goals.left(k, cells[static_cast<std::size_t>(k)]) != 0;
   };
+  const auto body = [&](int c) { return c >= 0 && holder[static_cast<std::size_t>(c)] >= 0; };
   // The four squares of places that hold `at`: `at` and its neighbours across x and y and diagonally.
   for (int dx : {0, 1}) {
     for (int dy : {2, 3}) {
@@ -145,6 +146,8 @@ bool PushSearcher::square_frozen(const Goals& goals, const std::vector<int>& cel
       const int corner = side < 0 ? -1 : lattice_.neighbour(side, dy);
       const int square[4] = {at, side, up, corner};
       if (!std::all_of(std::begin(square), std::end(square), blocked)) continue;
+      // Two bodies side by side in it may still move as a line, pushed end to end.
+      if ((body(at) && (body(side) || body(up))) || (body(corner) && (body(side) || body(up)))) continue;
       if (std::any_of(std::begin(square), std::end(square), misplaced)) return true;
     }
   }
@@ -170,8 +173,9 @@ class ArrangementSearch {
     return add({cells, walk(lattice_, robot_cell, holder_, seen_, mark_++, queue_), stage, -1, {}, 0});
   }
   bool exhausted() const { return open_.empty(); }
-  // Settles the open arrangement of highest priority: adds every arrangement one push away. Returns the
-  // first added that ends the pushing, or -1.
+  // Settles the open arrangement of highest priority: adds every arrangement one push away, and where a
+  // body has others in a line ahead of it, the pushes of the line that end the pushing. Returns the first
+  // added that ends the pushing, or -1.
   int settle() {
     const int index = std::get<2>(open_.top());
     open_.pop();
@@ -181,7 +185,8 @@ class ArrangementSearch {
     const int reach = mark_++;
     for (std::size_t k = 0; k < node.cells.size(); ++k) {
       for (int d = 0; d < kDirections; ++d) {
-        const int added = push(node, index, static_cast<int>(k), d, reach);
+        const int added = is_line(node, static_cast<int>(k), d) ? finish_with_line(node, index, static_cast<int>(k), d, reach)
+                                                                 : push(node, index, static_cast<int>(k), d, reach);
         if (added >= 0 && searcher_.ends_pushing(nodes_[static_cast<std::size_t>(added)].stage)) return added;
       }
     }
@@ -202,6 +207,11 @@ class ArrangementSearch {
     for (std::size_t k = 0; k < at.size(); ++k) holder_[static_cast<std::size_t>(at[k])] = static_cast<int>(k);
   }
 
+  bool is_line(const Node& node, int k, int d) const {
+    const int ahead = lattice_.neighbour(node.cells[static_cast<std::size_t>(k)], d);
+    return ahead >= 0 && holder_[static_cast<std::size_t>(ahead)] >= 0;
+  }
+
   // The arrangement after pushing body k of `node` one step in direction d, added unless it was met
   // before or is pruned; its node, or -1.
   int push(const Node& node, int index, int k, int d, int reach) {
@@ -210,9 +220,7 @@ class ArrangementSearch {
     const int stand = lattice_.neighbour(at, opposite(d));
     const int to = lattice_.neighbour(at, d);
     if (stand < 0 || to < 0 || seen_[static_cast<std::size_t>(stand)] != reach) return -1;
-    if (!lattice_.body_fits(k, to) || holder_[static_cast<std::size_t>(to)] >= 0 || goals_.left(k, to) == kNever) {
-      return -1;
-    }
+    if (!lattice_.body_fits(k, to) || holder_[static_cast<std::size_t>(to)] >= 0 || goals_.left(k, to) == kNever) return -1;
     std::vector<int> next = node.cells;
     next[static_cast<std::size_t>(k)] = to;
     const int next_stage = searcher_.stage_after(node.stage, next);
@@ -224,13 +232,52 @@ class ArrangementSearch {
     holder_[static_cast<std::size_t>(to)] = -1;
     holder_[static_cast<std::size_t>(at)] = k;
     if (frozen) return -1;
-    return add({std::move(next), robot, next_stage, index, {k, d, at, to}, node.pushes + 1});
+    return add({std::move(next), robot, next_stage, index, {k, d, at, to, {}}, node.cost + 1});
+  }
+
+  // Body k of `node` pushed in direction d with the bodies in a line ahead of it, end to end, as many
+  // places as it takes to end the pushing: the node where it does, or -1. A line only ends an order: its
+  // first push closes the gaps between the bodies, which then stand short of their places
+  // (PushLattice::line_shortfalls), so no later push could start from the lattice.
+  int finish_with_line(const Node& node, int index, int k, int d, int reach) {
+    const int at = node.cells[static_cast<std::size_t>(k)];
+    const int stand = lattice_.neighbour(at, opposite(d));
+    if (stand < 0 || seen_[static_cast<std::size_t>(stand)] != reach) return -1;
+    std::vector<int> line{k};
+    for (int c = lattice_.neighbour(at, d); c >= 0 && holder_[static_cast<std::size_t>(c)] >= 0; c = lattice_.neighbour(c, d)) {
+      line.push_back(holder_[static_cast<std::size_t>(c)]);
+    }
+    if (!lattice_.line_shortfalls(line, d)) return -1;
+    if (!std::all_of(line.begin(), line.end(), [&](int j) { return lattice_.can_push(j, d); })) return -1;
+    const std::vector<int> ahead(line.begin() + 1, line.end());
+    std::vector<int> cells = node.cells;
+    int parent = index;
+    for (int cost = node.cost;;) {
+      for (int j : line) {
+        const int to = lattice_.neighbour(cells[static_cast<std::size_t>(j)], d);
+        if (to < 0 || !lattice_.body_fits(j, to)) return -1;
+        cells[static_cast<std::size_t>(j)] = to;
+      }
+      const int end = cells[static_cast<std::size_t>(line.back())];
+      if (holder_[static_cast<std::size_t>(end)] >= 0 && std::find(line.begin(), line.end(), holder_[static_cast<std::size_t>(end)]) == line.end()) {
+        return -1;  // the line runs into another body
+      }
+      const int stage = searcher_.stage_after(node.stage, cells);
+      if (stages_.distance(stage) < 0 || stages_.dead(stages_.automaton_state_of(stage))) return -1;
+      cost += static_cast<int>(line.size());
+      const int from = parent == index ? at : nodes_[static_cast<std::size_t>(parent)].step.to;
+      Node step{cells, 0, stage, parent, {k, d, from, cells[static_cast<std::size_t>(k)], ahead}, cost};
+      if (searcher_.ends_pushing(stage)) return add(std::move(step));
+      // A step on the way is no arrangement to search from: it is kept for the order only.
+      parent = static_cast<int>(nodes_.size());
+      nodes_.push_back(std::move(step));
+    }
   }
 
   int add(Node node) {
     const auto [it, inserted] = known_.emplace(key_of(node.cells, node.robot, node.stage), static_cast<int>(nodes_.size()));
     if (!inserted) return -1;
-    open_.push({node.pushes + kHeuristicWeight * goals_.estimate(node.cells), order_++, it->second});
+    open_.push({node.cost + kHeuristicWeight * goals_.estimate(node.cells), order_++, it->second});
     nodes_.push_back(std::move(node));
     return it->second;
   }

@@ -1,11 +1,12 @@
 #pragma once
 // The look-ahead's discrete search: over arrangements of the lattice's bodies (push_lattice.h) and the
-// task's stage, by pushes of one step (the robot walks, between pushes, through the places no body
-// holds), until the stage needs no more body moves. Weighted A*: a push costs 1 and the estimate is
-// each named body's fewest pushes to its places alone. Pruned inside this search only: arrangements
-// where the automaton dies, a body the task needs somewhere on a place it can never be pushed there from
-// (a box against a wall its goal is not along), and four places in a square all held by walls or bodies,
-// one of them a body not yet where the task needs it (none of them can move again).
+// task's stage, by pushes of one body one step (the robot walks, between pushes, through the places no
+// body holds), until the stage needs no more body moves; a line of bodies pushed end to end may end it.
+// Weighted A*: a push costs the bodies it moves, and the estimate is each named body's fewest pushes to
+// its places alone. Pruned inside this search only: arrangements where the automaton dies, a body the task needs
+// somewhere on a place it can never be pushed there from (a box against a wall its goal is not along),
+// and four places in a square all held by walls or bodies, no two bodies side by side, one of them a body
+// not yet where the task needs it (none of them can move again).
 
 #include "lookahead/push_lattice.h"
 #include "stage_graph.h"
@@ -21,9 +22,13 @@ inline constexpr double kHeuristicWeight = 2.0;
 inline constexpr long long kMaxArrangements = 400'000;
 
 struct PushStep {
-  int body = 0;  // lattice body
+  int body = 0;  // lattice body: the one the robot pushes
   int direction = 0;
-  int from = 0, to = 0;  // places
+  int from = 0, to = 0;  // its places
+  // Lattice bodies in a line ahead of it, nearest first, that it pushes along end to end: physics moves
+  // boxes so where the drive overcomes their friction together (a row in a corridor). Only the last
+  // pushes of an order move lines.
+  std::vector<int> ahead;
 };
 
 struct PushSearch {
@@ -58,7 +63,8 @@ class PushSearcher {
   bool ends_pushing(int stage) const;
   int facts_of(int stage, const std::vector<int>& cells) const;
   int stage_after(int stage, const std::vector<int>& cells) const;
-  // Four places in a square holding `at`, all walls or bodies, one a body not where the task wants it.
+  // Four places in a square holding `at`, all walls or bodies, no two bodies side by side (a line of
+  // them may still move), one a body not where the task wants it.
   bool square_frozen(const Goals& goals, const std::vector<int>& cells, const std::vector<int>& holder, int at) const;
 
   const PushLattice& lattice_;

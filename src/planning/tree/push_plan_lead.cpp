@@ -65,13 +65,14 @@ PushPlanLead::PushPlanLead(const lookahead::PushLattice& lattice, const std::vec
     : lattice_(lattice), robot_radius_(knowledge.robot.radius) {
   std::vector<int> cells = start_cells;
   for (const lookahead::PushStep& step : steps) {
-    if (runs_.empty() || runs_.back().body != step.body || runs_.back().direction != step.direction) {
-      runs_.push_back({step.body, step.direction, step.from, step.to, cells, {}, 0.0});
+    if (runs_.empty() || runs_.back().body != step.body || runs_.back().direction != step.direction ||
+        runs_.back().ahead != step.ahead) {
+      runs_.push_back({step.body, step.ahead, step.direction, step.from, step.to, cells, {}, 0.0});
     }
     runs_.back().to = step.to;
     cells[static_cast<std::size_t>(step.body)] = step.to;
+    for (int k : step.ahead) cells[static_cast<std::size_t>(k)] = lattice.neighbour(cells[static_cast<std::size_t>(k)], step.direction);
   }
-  end_ = cells;
   for (Run& run : runs_) {
     run.walk = walk_to(lattice, lattice.neighbour(run.from, lookahead::opposite(run.direction)), run.before);
   }
@@ -84,13 +85,16 @@ PushPlanLead::PushPlanLead(const lookahead::PushLattice& lattice, const std::vec
     runs_[static_cast<std::size_t>(j)].after =
         next.after + length + (walk == kNever ? kNoWay : (walk + kGetReady) * lattice.step());
   }
-  for (int b : lattice.bodies()) {
-    const auto& footprint = knowledge.movable_bodies[static_cast<std::size_t>(b)].footprint;
-    const geometry::Vec2 half = footprint.shape.half_extents();
-    const double c = std::abs(std::cos(footprint.pose.yaw)), s = std::abs(std::sin(footprint.pose.yaw));
-    const double along_x = c * half.x() + s * half.y(), along_y = s * half.x() + c * half.y();
-    half_along_.push_back(along_x);
-    half_along_.push_back(along_y);
+  for (int k : cells) end_positions_.push_back(lattice.centre(k));
+  if (!runs_.empty() && !runs_.back().ahead.empty()) {
+    // A line ends the order short of its places: the gaps between its bodies closed.
+    const Run& last = runs_.back();
+    std::vector<int> line{last.body};
+    line.insert(line.end(), last.ahead.begin(), last.ahead.end());
+    const std::vector<double> shortfalls = lattice.line_shortfalls(line, last.direction).value_or(std::vector<double>(last.ahead.size()));
+    for (std::size_t i = 0; i < last.ahead.size(); ++i) {
+      end_positions_[static_cast<std::size_t>(last.ahead[i])] -= shortfalls[i] * direction_of(last.direction);
+    }
   }
 }
 
@@ -113,28 +117,46 @@ geometry::Vec2 PushPlanLead::position(const physics::PhysicsState& state, int k)
 
 std::optional<PushPlanLead::Along> PushPlanLead::along(const physics::PhysicsState& state, int j) const {
   const double tolerance = kOnOrder;
-  const std::vector<int>& places = j < pushes() ? runs_[static_cast<std::size_t>(j)].before : end_;
+  if (j == pushes()) {
+    for (std::size_t k = 0; k < end_positions_.size(); ++k) {
+      if ((position(state, static_cast<int>(k)) - end_positions_[k]).norm() > tolerance) return std::nullopt;
+    }
+    return Along{};
+  }
+  const std::vector<int>& places = runs_[static_cast<std::size_t>(j)].before;
+  const auto moving = [&](int k) {
+    const Run& run = runs_[static_cast<std::size_t>(j)];
+    return k == run.body || std::find(run.ahead.begin(), run.ahead.end(), k) != run.ahead.end();
+  };
   for (std::size_t k = 0; k < places.size(); ++k) {
-    if (j < pushes() && static_cast<int>(k) == runs_[static_cast<std::size_t>(j)].body) continue;
+    if (moving(static_cast<int>(k))) continue;
     if ((position(state, static_cast<int>(k)) - lattice_.centre(places[k])).norm() > tolerance) return std::nullopt;
   }
-  if (j == pushes()) return Along{};
   const Run& run = runs_[static_cast<std::size_t>(j)];
   const geometry::Vec2 d = direction_of(run.direction);
-  const geometry::Vec2 offset = position(state, run.body) - lattice_.centre(run.from);
   const double length = (lattice_.centre(run.to) - lattice_.centre(run.from)).norm();
-  const double a = offset.dot(d);
-  const double lateral = std::abs(offset.x() * d.y() - offset.y() * d.x());
-  if (lateral > tolerance || a < -tolerance || a > length + tolerance) return std::nullopt;
-  return Along{a, lateral};
+  // How far body k has come along the push from its place before it, and how far off the push's line.
+  const auto offset_of = [&](int k) -> std::optional<Along> {
+    const geometry::Vec2 offset = position(state, k) - lattice_.centre(places[static_cast<std::size_t>(k)]);
+    const double a = offset.dot(d);
+    const double lateral = std::abs(offset.x() * d.y() - offset.y() * d.x());
+    if (lateral > tolerance || a < -tolerance || a > length + tolerance) return std::nullopt;
+    return Along{a, lateral};
+  };
+  const std::optional<Along> pushed = offset_of(run.body);
+  if (!pushed) return std::nullopt;
+  for (int k : run.ahead) {
+    if (!offset_of(k)) return std::nullopt;
+  }
+  return pushed;
 }
 
 bool PushPlanLead::ready_to_push(const geometry::Vec2& robot, const geometry::Vec2& body, int j) const {
   const Run& run = runs_[static_cast<std::size_t>(j)];
   const geometry::Vec2 d = direction_of(run.direction);
   const geometry::Vec2 v = body - robot;
-  const double touching = half_along_[static_cast<std::size_t>(run.body) * 2 + (run.direction < 2 ? 0 : 1)] + robot_radius_;
-  const double half_width = half_along_[static_cast<std::size_t>(run.body) * 2 + (run.direction < 2 ? 1 : 0)];
+  const double touching = lattice_.half_along(run.body, run.direction) + robot_radius_;
+  const double half_width = lattice_.half_along(run.body, run.direction ^ 2);
   const double depth = v.dot(d);
   const double lateral = std::abs(v.x() * d.y() - v.y() * d.x());
   return depth >= touching - kReadyDepth && depth <= touching + kReadyDepth && lateral <= kReadyLateral * half_width;
@@ -176,7 +198,7 @@ std::optional<PushPlanLead::Target> PushPlanLead::target(const physics::PhysicsS
   const geometry::Vec2 d = direction_of(run.direction);
   const geometry::Vec2 robot = state.robot_position();
   const geometry::Vec2 body = position(state, run.body);
-  const double touching = half_along_[static_cast<std::size_t>(run.body) * 2 + (run.direction < 2 ? 0 : 1)] + robot_radius_;
+  const double touching = lattice_.half_along(run.body, run.direction) + robot_radius_;
   // Pushing: to where the robot stands behind the body on its place, which also steers the body back onto
   // the lattice's line.
   if (ready_to_push(robot, body, push)) return Target{lattice_.centre(run.to) - touching * d, true};

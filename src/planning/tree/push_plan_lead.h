@@ -2,7 +2,7 @@
 // The look-ahead's lead (lookahead/lookahead.h): how the tree follows a push order. The order is a list
 // of pushes, each a body moved some lattice steps one way, and before each the arrangement of every body.
 // A tree node is at push j when the other bodies stand on their places of that arrangement and the pushed
-// body lies along its push; how far it still is from the order's end (pushes left, the metres of this
+// body (and any it pushes along, end to end) lies along its push; how far it still is from the order's end (pushes left, the metres of this
 // one, and the robot's walk to the side it pushes from) ranks the nodes the tree grows from. The robot
 // walks between pushes along the lattice's places round the bodies, then pushes through the body's
 // centre. A node that fits no push of the order is off it: the tree grows from it only when drawn at
@@ -45,6 +45,7 @@ class PushPlanLead {
  private:
   struct Run {
     int body = 0;  // lattice body
+    std::vector<int> ahead;  // lattice bodies in a line ahead of it, pushed along
     int direction = 0;
     int from = 0, to = 0;
     std::vector<int> before;       // every lattice body's place before the push
@@ -68,8 +69,7 @@ class PushPlanLead {
   std::vector<Run> runs_;
   // Not thread-safe: the search asks from one thread, between batches.
   mutable std::map<std::pair<int, int>, std::vector<int>> walks_;  // by run and the pushed body's place
-  std::vector<int> end_;           // every body's place after the last push
-  std::vector<double> half_along_;  // per lattice body and direction: half its extent along it
+  std::vector<geometry::Vec2> end_positions_;  // where every body stands after the last push
   double robot_radius_;
 };
 

@@ -26,9 +26,11 @@ namespace lookahead {
 struct Lookahead;  // the rule, the lattice and the order, as the tree search follows it
 }
 
-// One push of the look-ahead's plan: a body moved `cells` lattice steps in one direction.
+// One push of the look-ahead's plan: a body moved `cells` lattice steps in one direction, and the bodies
+// in a line ahead of it that it pushes along.
 struct PlannedPush {
   int body = 0;                           // World::movable_bodies index
+  std::vector<int> ahead;                 // World::movable_bodies indices, nearest first
   int dx = 0, dy = 0;                     // the direction: one of (+-1, 0), (0, +-1)
   int cells = 0;                          // lattice steps
   double distance = 0.0;                  // metres: cells times the lattice step
@@ -50,7 +52,7 @@ struct PushPlan {
   std::string outcome;             // "found", "no order of pushes", "search limit", or why not searched
 };
 
-// "M1 +x 0.6 m"
+// "M1 +x 0.6 m", "M3 (with M2, M1) -x 0.6 m"
 std::string describe(const PlannedPush& push, const std::vector<std::string>& body_names);
 
 // The look-ahead for `task` from the World's start, as a run prepares it once (planning_problem.h) and
