@@ -3,6 +3,7 @@
 #include "command_runner.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 namespace physltl::testing_support {
 namespace {
@@ -21,6 +22,21 @@ TEST(ImportSokoban, WritesOneScenarioPerLevelThatChecksAndTheFirstPlansItsPush) 
   const Result plan = run((out / "sokoban_levels_1.lua").string() + " --threads 1 --out " + (out / "plans").string());
   EXPECT_EQ(plan.exit_code, 0) << plan.out << plan.err;
   EXPECT_NE(plan.out.find("validated by replay"), std::string::npos) << plan.out;
+}
+
+// The levels docs/benchmarks.md measures ("Push puzzles"), seed 1: imported, planned and validated by replay.
+TEST(ImportSokoban, TheFirstTenMicrobanLevelsAreEachSolvedByTheKnowledgePlanner) {
+  const fs::path out = fresh_out_dir();
+  ASSERT_EQ(run("import sokoban " + kSource + "/tests/planning/data/sokoban/microban.txt --out " + out.string()).exit_code, 0);
+  std::string levels;
+  for (int n = 1; n <= 10; ++n) levels += " " + (out / ("microban_" + std::to_string(n) + ".lua")).string();
+  const Result r = run("bench" + levels + " --runs 1 --time-limit 30 --quiet --out " + (out / "bench").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (int n = 1; n <= 10; ++n) {
+    const std::string name = "microban_" + std::to_string(n);
+    const auto j = nlohmann::json::parse(slurp(out / "bench" / name / "bench.json"));
+    EXPECT_EQ(j["planners"][0]["solved"].get<int>(), 1) << name;
+  }
 }
 
 TEST(ImportSokoban, AnyBoxOnAnyGoalUpToFiveBoxesAndAGoalForEachBeyond) {
