@@ -66,6 +66,9 @@ TEST(LookAhead, PushesALineOfBoxesEndToEndWhereNoBoxCanGoAlone) {
   EXPECT_EQ(p.world.movable_bodies[static_cast<std::size_t>(push.ahead.front())].name, "M1");
   EXPECT_EQ(push.dx, -1);
   EXPECT_EQ(push.cells, 2);
+  std::vector<std::string> names;
+  for (const auto& b : p.world.movable_bodies) names.push_back(b.name);
+  EXPECT_EQ(describe(push, names), "M2 (with M1) -x 1.2 m");
   const PlanResult result = p.solve(1);
   ASSERT_TRUE(result.solved) << result.stop_reason;
   const Replay replay = p.check(result.plan);

@@ -266,11 +266,11 @@ class ArrangementSearch {
       if (stages_.distance(stage) < 0 || stages_.dead(stages_.automaton_state_of(stage))) return -1;
       cost += static_cast<int>(line.size());
       const int from = parent == index ? at : nodes_[static_cast<std::size_t>(parent)].step.to;
-      Node step{cells, 0, stage, parent, {k, d, from, cells[static_cast<std::size_t>(k)], ahead}, cost};
-      if (searcher_.ends_pushing(stage)) return add(std::move(step));
-      // A step on the way is no arrangement to search from: it is kept for the order only.
+      Node moved{cells, 0, stage, parent, {k, d, from, cells[static_cast<std::size_t>(k)], ahead}, cost};
+      if (searcher_.ends_pushing(stage)) return add(std::move(moved));
+      // A place on the way is no arrangement to search from: it is kept for the order only.
       parent = static_cast<int>(nodes_.size());
-      nodes_.push_back(std::move(step));
+      nodes_.push_back(std::move(moved));
     }
   }
 
