@@ -14,10 +14,6 @@ std::vector<std::string> body_names(const scenario::World& world) {
   return names;
 }
 
-const char* direction_name(const planning::PlannedPush& push) {
-  return push.dx > 0 ? "+x" : push.dx < 0 ? "-x" : push.dy > 0 ? "+y" : "-y";
-}
-
 // The arrows' colours, first push to last, and their heads.
 constexpr render::Color kFirstPush{1.0f, 0.9f, 0.2f, 1.0f};
 constexpr render::Color kLastPush{0.35f, 0.0f, 0.45f, 1.0f};
@@ -65,7 +61,7 @@ nlohmann::ordered_json lookahead_json(const planning::PushPlan& plan, const scen
     for (int b : push.ahead) ahead.push_back(world.movable_bodies[static_cast<std::size_t>(b)].name);
     pushes.push_back({{"body", world.movable_bodies[static_cast<std::size_t>(push.body)].name},
                       {"ahead", ahead},
-                      {"direction", direction_name(push)},
+                      {"direction", planning::direction_name(push)},
                       {"distance", push.distance},
                       {"from", {push.from.x(), push.from.y()}},
                       {"to", {push.to.x(), push.to.y()}}});

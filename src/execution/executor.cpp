@@ -83,17 +83,20 @@ class Run {
   int automaton_state_ = 0;
 };
 
+// How far the robot's outline is from the nearest fixed body with its centre at `at` (negative: overlapping).
+double clearance_at(const scenario::World& model, const scenario::Vec2& at) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const auto& body : model.fixed_bodies) {
+    nearest = std::min(nearest, geometry::distance(body.footprint.shape, body.footprint.pose, at));
+  }
+  return nearest - model.robot.radius;
+}
+
 // How close the plan takes the robot to a fixed body at each of its steps.
 std::vector<double> planned_clearance(const scenario::World& model, const planning::Replay& nominal) {
   std::vector<double> clearance;
   clearance.reserve(nominal.states.size());
-  for (const auto& state : nominal.states) {
-    double nearest = std::numeric_limits<double>::infinity();
-    for (const auto& body : model.fixed_bodies) {
-      nearest = std::min(nearest, geometry::distance(body.footprint.shape, body.footprint.pose, state.robot_position));
-    }
-    clearance.push_back(nearest - model.robot.radius);
-  }
+  for (const auto& state : nominal.states) clearance.push_back(clearance_at(model, state.robot_position));
   return clearance;
 }
 
@@ -113,12 +116,7 @@ bool offset_touches(const scenario::World& model, const planning::Replay& nomina
   const size_t end = std::min(nominal.states.size(), t + horizon + 1);
   for (size_t s = t; s < end; ++s) {
     if (clearance[s] >= drift) continue;  // shifted by `drift` at most, it stays clear
-    const scenario::Vec2 at = nominal.states[s].robot_position + offset;
-    double nearest = std::numeric_limits<double>::infinity();
-    for (const auto& body : model.fixed_bodies) {
-      nearest = std::min(nearest, geometry::distance(body.footprint.shape, body.footprint.pose, at));
-    }
-    const double shifted = nearest - model.robot.radius;
+    const double shifted = clearance_at(model, nominal.states[s].robot_position + offset);
     if (shifted < 0.0 && shifted < clearance[s]) return true;
   }
   return false;

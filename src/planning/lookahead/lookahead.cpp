@@ -9,15 +9,18 @@
 
 namespace physltl::planning {
 
+const char* direction_name(const PlannedPush& push) {
+  return push.dx > 0 ? "+x" : push.dx < 0 ? "-x" : push.dy > 0 ? "+y" : "-y";
+}
+
 std::string describe(const PlannedPush& push, const std::vector<std::string>& body_names) {
-  const char* direction = push.dx > 0 ? "+x" : push.dx < 0 ? "-x" : push.dy > 0 ? "+y" : "-y";
   std::string bodies = body_names[static_cast<std::size_t>(push.body)];
   if (!push.ahead.empty()) {
     std::vector<std::string> ahead;
     for (int b : push.ahead) ahead.push_back(body_names[static_cast<std::size_t>(b)]);
     bodies += fmt::format(" (with {})", fmt::join(ahead, ", "));
   }
-  return fmt::format("{} {} {:.2g} m", bodies, direction, push.distance);
+  return fmt::format("{} {} {:.2g} m", bodies, direction_name(push), push.distance);
 }
 
 std::shared_ptr<const lookahead::Lookahead> prepare_lookahead(const scenario::World& world,

@@ -102,9 +102,8 @@ std::optional<PushLattice> PushLattice::build(const scenario::World& world, cons
     }
     lattice.pushable_.push_back(std::move(pushable));
     lattice.friction_force_.push_back(body.floor_friction_force);
-    const geometry::Vec2 half = body.footprint.shape.half_extents();
-    const double c = std::abs(std::cos(body.footprint.pose.yaw)), sn = std::abs(std::sin(body.footprint.pose.yaw));
-    lattice.half_along_.push_back({c * half.x() + sn * half.y(), sn * half.x() + c * half.y()});
+    const geometry::Rect extent = geometry::bounds(body.footprint.shape, body.footprint.pose);
+    lattice.half_along_.push_back({extent.size().x() / 2, extent.size().y() / 2});
     int named = -1;
     for (std::size_t i = 0; i < labelling.named_bodies().size(); ++i) {
       if (labelling.named_bodies()[i].body == b) named = static_cast<int>(i);

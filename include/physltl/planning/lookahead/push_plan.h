@@ -52,6 +52,8 @@ struct PushPlan {
   std::string outcome;             // "found", "no order of pushes", "search limit", or why not searched
 };
 
+// "+x", "-x", "+y" or "-y"
+const char* direction_name(const PlannedPush& push);
 // "M1 +x 0.6 m", "M3 (with M2, M1) -x 0.6 m"
 std::string describe(const PlannedPush& push, const std::vector<std::string>& body_names);
 
