@@ -17,6 +17,7 @@
 #include <set>
 #include <cstdio>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <functional>
 #include <limits>
@@ -287,10 +288,16 @@ class Search {
 
   // Past a stall, some expansions grow as the baseline's would, some of those from anywhere in the tree.
   void widen_if_stalled(Expansion& e) {
+    if (widened_now()) widen(e);
+  }
+  // Counts an expansion; whether it is one of the widened share.
+  bool widened_now() {
     ++expansions_since_progress_;
-    if (!knowledge_mode_ || expansions_since_progress_ < kStallExpansions) return;
+    if (!knowledge_mode_ || expansions_since_progress_ < kStallExpansions) return false;
     widened_ = true;
-    if (!random_.chance(kWidenedShare)) return;
+    return random_.chance(kWidenedShare);
+  }
+  void widen(Expansion& e) {
     e.guidance = Guidance::kWidened;
     e.goal.reset();
     if (random_.chance(kWidenedAnywhereShare)) e.from = random_.uniform_int(0, static_cast<int>(motions_.size()) - 1);
@@ -311,9 +318,9 @@ class Search {
     e.goal = approach ? std::nullopt : std::optional<ObjectLead::Goal>(goal);
   }
 
-  // The object lead's expansions, kBatch of them, for moving a body of the frontier stage.
-  void choose_object_expansions(const BodyMove& move) {
-    const ObjectLead::Goal goal = object_lead_.goal(task_.labelling, move);
+  // The object lead's choice of a node to grow from for `goal`: of the frontier stage's nodes, usually the
+  // one whose body is nearest its goal along its way of a few drawn at random, sometimes any of them.
+  int object_lead_node(const ObjectLead::Goal& goal) {
     const std::vector<int>& nodes = stage_motions_[static_cast<size_t>(frontier_stage_)];
     const auto distance = [&](int m) {
       return ObjectLead::remaining(goal, body_at(m, goal.body)) +
@@ -321,17 +328,23 @@ class Search {
              kObjectSelectionPenalty * chosen_[static_cast<size_t>(m)];
     };
     const auto any_node = [&] { return nodes[static_cast<size_t>(random_.uniform_int(0, static_cast<int>(nodes.size()) - 1))]; };
+    int from = any_node();
+    if (random_.chance(kObjectNearestShare)) {
+      for (int i = 1; i < kObjectTournament; ++i) {
+        const int other = any_node();
+        if (distance(other) < distance(from)) from = other;
+      }
+    }
+    count_choice(from);
+    return from;
+  }
+
+  // The object lead's expansions, kBatch of them, for moving a body of the frontier stage.
+  void choose_object_expansions(const BodyMove& move) {
+    const ObjectLead::Goal goal = object_lead_.goal(task_.labelling, move);
     expansions_.resize(kBatch);
     for (Expansion& e : expansions_) {
-      int from = any_node();
-      if (random_.chance(kObjectNearestShare)) {
-        for (int i = 1; i < kObjectTournament; ++i) {
-          const int other = any_node();
-          if (distance(other) < distance(from)) from = other;
-        }
-      }
-      ++chosen_[static_cast<size_t>(from)];
-      e.from = from;
+      e.from = object_lead_node(goal);
       aim_at_body(e, goal);
       e.guidance = Guidance::kPushing;
       widen_if_stalled(e);
@@ -352,6 +365,14 @@ class Search {
     rank_on_order(static_cast<int>(push_progress_.size()) - 1);
   }
 
+  // Each choice of node `m` to grow from ranks it a little further back, on the order too.
+  void count_choice(int m) {
+    const bool ranked = push_lead_ && push_progress_[static_cast<size_t>(m)].push >= 0;
+    if (ranked) ranked_on_order_.erase({order_rank(m), m});
+    ++chosen_[static_cast<size_t>(m)];
+    if (ranked) rank_on_order(m);
+  }
+
   // Nodes on the order, best first: how much work is left, and a little more each time one was grown from.
   double order_rank(int m) const {
     return push_progress_[static_cast<size_t>(m)].remaining + kObjectSelectionPenalty * chosen_[static_cast<size_t>(m)];
@@ -363,18 +384,25 @@ class Search {
   // The look-ahead's expansions, kBatch of them: from the frontier stage's nodes furthest along the push
   // order (the best of a few drawn at random), and sometimes from any of them. Where the order has no
   // target for a node (off the order, or its walk blocked), the object lead's.
+  // Past a stall, the widened share of them grows where the baseline's search would, from the object
+  // lead's nodes (below): the order the physics cannot follow, or a way the lattice does not know, must
+  // not keep the tree from what the baseline finds.
   void choose_push_expansions(const BodyMove& move) {
     if (++batches_since_push_progress_ * kBatch >= kReplanExpansions) replan_pushes();
+    const ObjectLead::Goal goal = object_lead_.goal(task_.labelling, move);
     const std::vector<int>& nodes = stage_motions_[static_cast<size_t>(frontier_stage_)];
     expansions_.resize(kBatch);
     for (Expansion& e : expansions_) {
+      if (widened_now()) {
+        e.from = object_lead_node(goal);
+        widen(e);
+        e.seed = random_.next();
+        continue;
+      }
       int from = nodes[static_cast<size_t>(random_.uniform_int(0, static_cast<int>(nodes.size()) - 1))];
       const bool best = !ranked_on_order_.empty() && random_.chance(kObjectNearestShare);
       if (best) from = ranked_on_order_.begin()->second;
-      const bool ranked = push_progress_[static_cast<size_t>(from)].push >= 0;
-      if (ranked) ranked_on_order_.erase({order_rank(from), from});
-      ++chosen_[static_cast<size_t>(from)];
-      if (ranked) rank_on_order(from);
+      count_choice(from);
       e.from = from;
       e.guidance = Guidance::kPushing;
       const Motion& node = motions_[static_cast<size_t>(from)];
@@ -383,9 +411,8 @@ class Search {
         e.goal.reset();
         e.guidance = Guidance::kPushingTo;
       } else {
-        aim_at_body(e, object_lead_.goal(task_.labelling, move));
+        aim_at_body(e, goal);
       }
-      widen_if_stalled(e);
       e.seed = random_.next();
     }
   }
@@ -423,20 +450,31 @@ class Search {
 
   // SampleControlAndSteps and propagation for the whole batch. The tree is only read meanwhile.
   // `alongside`, if given, runs as one more task of the batch, first.
+  // add_growths() stops at the first expansion (in the order chosen) that reached acceptance, so the ones
+  // after it are not grown: skipping them changes neither the plan nor the tree nor the statistics, with
+  // any number of threads, and the batch that solves costs one propagation instead of kBatch.
   void grow_in_parallel(const std::function<void()>& alongside) {
     growths_.resize(expansions_.size());
     const int extra = alongside ? 1 : 0;
+    std::atomic<int> first_accepted{std::numeric_limits<int>::max()};
     pool_.run(static_cast<int>(expansions_.size()) + extra, [&](int worker, int task) {
       if (task < extra) return alongside();
+      const int expansion = task - extra;
+      if (expansion > first_accepted.load(std::memory_order_relaxed)) return;
       // Built on the thread that uses it: ODE keeps per-thread data.
       auto& grower = growers_[static_cast<size_t>(worker)];
       if (!grower) {
         grower.emplace(world_, task_, stages_, knowledge_, decomposition_, graph_, object_lead_,
                        knowledge_mode_);
       }
-      const Expansion& e = expansions_[static_cast<size_t>(task - extra)];
+      const Expansion& e = expansions_[static_cast<size_t>(expansion)];
+      Growth& growth = growths_[static_cast<size_t>(expansion)];
       grower->grow(motions_[static_cast<size_t>(e.from)], e.target, e.goal ? &*e.goal : nullptr, e.guidance, e.seed,
-                   growths_[static_cast<size_t>(task - extra)]);
+                   growth);
+      if (!growth.accepted) return;
+      int seen = first_accepted.load(std::memory_order_relaxed);
+      while (expansion < seen && !first_accepted.compare_exchange_weak(seen, expansion)) {
+      }
     });
   }
 
