@@ -5,6 +5,7 @@
 #include "lookahead/lookahead.h"
 #include "stage_graph.h"
 #include "test_problem.h"
+#include "tree/push_plan_lead.h"
 
 #include <gtest/gtest.h>
 
@@ -74,6 +75,33 @@ TEST(LookAhead, PushesALineOfBoxesEndToEndWhereNoBoxCanGoAlone) {
   const Replay replay = p.check(result.plan);
   EXPECT_TRUE(replay.validated()) << replay.failure;
   EXPECT_EQ(replay.moved_bodies.size(), 2u);
+}
+
+// Pushing a line, the body in front must meet its place too (a box into a one-cell pocket has 5 cm to
+// either side): a node whose front box has drifted off the push's line ranks behind one whose line is
+// straight, though the box the robot pushes is on it in both.
+TEST(LookAhead, ALineWhoseFrontBoxHasDriftedRanksBehindAStraightOne) {
+  const TestProblem p(kWorlds + "line_in_corridor.lua");
+  ASSERT_TRUE(p.ahead->plan.found) << p.ahead->plan.outcome;
+  const PushPlanLead lead(*p.ahead->lattice, p.ahead->start_cells, p.ahead->steps, p.knowledge);
+  physics::PhysicsState straight;
+  physics::Simulation(p.world).save(straight);
+  // Both boxes 0.3 m along the push (-x), the robot behind M2.
+  const auto index = [&](const std::string& name) {
+    for (std::size_t b = 0; b < p.world.movable_bodies.size(); ++b) {
+      if (p.world.movable_bodies[b].name == name) return b + 1;  // the robot is body 0
+    }
+    throw std::invalid_argument(name);
+  };
+  for (const char* name : {"M1", "M2"}) straight.set_value(index(name), 0, straight.value(index(name), 0) - 0.3);
+  straight.set_value(0, 0, straight.value(0, 0) - 0.3);
+  physics::PhysicsState drifted = straight;
+  drifted.set_value(index("M1"), 1, straight.value(index("M1"), 1) + 0.04);
+  const PushPlanLead::Progress on_line = lead.progress(straight, 0);
+  const PushPlanLead::Progress off_line = lead.progress(drifted, 0);
+  ASSERT_EQ(on_line.push, 0);
+  ASSERT_EQ(off_line.push, 0);
+  EXPECT_NEAR(off_line.remaining - on_line.remaining, 3.0 * 0.04, 1e-9);
 }
 
 // A line only ends an order (its bodies stand short of their places after it): in every order of our

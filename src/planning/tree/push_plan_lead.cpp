@@ -143,10 +143,12 @@ std::optional<PushPlanLead::Along> PushPlanLead::along(const physics::PhysicsSta
     if (lateral > tolerance || a < -tolerance || a > length + tolerance) return std::nullopt;
     return Along{a, lateral};
   };
-  const std::optional<Along> pushed = offset_of(run.body);
+  std::optional<Along> pushed = offset_of(run.body);
   if (!pushed) return std::nullopt;
   for (int k : run.ahead) {
-    if (!offset_of(k)) return std::nullopt;
+    const std::optional<Along> ahead = offset_of(k);
+    if (!ahead) return std::nullopt;
+    pushed->drift = std::max(pushed->drift, ahead->drift);
   }
   return pushed;
 }

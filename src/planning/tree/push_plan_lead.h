@@ -58,7 +58,7 @@ class PushPlanLead {
   geometry::Vec2 position(const physics::PhysicsState& state, int k) const;
   struct Along {
     double distance = 0.0;  // metres the pushed body has come along its push
-    double drift = 0.0;     // and its centre's metres off the push's line
+    double drift = 0.0;     // and its centre's metres off the push's line (a line's: its worst body's)
   };
   // How far the pushed body of run j has got along it; nothing when `state` does not fit run j.
   std::optional<Along> along(const physics::PhysicsState& state, int j) const;
