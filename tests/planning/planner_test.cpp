@@ -295,7 +295,9 @@ TEST(Improve, TheImprovedPlanValidatesIsNeverWorseAndFollowsFromTheSeed) {
     const Improvement& m = *improved.improvement;
     EXPECT_EQ(m.candidates, 60);
     EXPECT_LE(m.improved.duration_s, m.first.duration_s);
-    if (m.improved.duration_s == m.first.duration_s) EXPECT_LE(m.improved.pushes, m.first.pushes);
+    if (m.improved.duration_s == m.first.duration_s) {
+      EXPECT_LE(m.improved.pushes, m.first.pushes);
+    }
     shortened |= m.improved.duration_s < m.first.duration_s;
     // What it reports is the plan it returns, which a fresh replay validates.
     const Replay again = p.check(improved.result.plan);

@@ -33,6 +33,7 @@ TEST(Threads, TwoAndThreeThreadsFindExactlyTheOneThreadPlanAndItValidates) {
     }
     EXPECT_EQ(many.result.stats.propagations, one.result.stats.propagations);
     EXPECT_EQ(many.result.stats.tree_nodes, one.result.stats.tree_nodes);
+    EXPECT_EQ(many.result.stats.physics_steps, one.result.stats.physics_steps);
   }
 }
 

@@ -15,7 +15,8 @@ constexpr int kNever = std::numeric_limits<int>::max();
 // has 5 cm to either side in a corridor of 0.6 m it turns into.
 constexpr double kArrive = 0.04;  // m
 // And this close across it, which pushing does not correct: a node whose body has drifted sideways ranks
-// behind one on the line, by kDriftWeight metres of work per metre of drift.
+// behind one on the line, by kDriftWeight metres of work per metre of drift. Pushing a line, the body
+// that drifted most counts: the one in front must meet its place too.
 constexpr double kAlign = 0.06;  // m
 constexpr double kDriftWeight = 3.0;
 // A node fits a push when every body is this close to where the push wants it (the pushed one to its

@@ -58,9 +58,10 @@ class PushPlanLead {
   geometry::Vec2 position(const physics::PhysicsState& state, int k) const;
   struct Along {
     double distance = 0.0;  // metres the pushed body has come along its push
-    double drift = 0.0;     // and its centre's metres off the push's line (a line's: its worst body's)
+    double drift = 0.0;     // and the metres off the push's line of its centre, or of a line's worst body
   };
-  // How far the pushed body of run j has got along it; nothing when `state` does not fit run j.
+  // How far the pushed body of run j has got along it, and how far it (or a body of its line) has drifted;
+  // nothing when `state` does not fit run j.
   std::optional<Along> along(const physics::PhysicsState& state, int j) const;
   bool ready_to_push(const geometry::Vec2& robot, const geometry::Vec2& body, int j) const;
   double robot_way(const geometry::Vec2& robot, const geometry::Vec2& body, int j) const;

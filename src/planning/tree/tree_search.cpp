@@ -288,10 +288,10 @@ class Search {
 
   // Past a stall, some expansions grow as the baseline's would, some of those from anywhere in the tree.
   void widen_if_stalled(Expansion& e) {
-    if (widened_now()) widen(e);
+    if (next_expansion_widened()) widen(e);
   }
-  // Counts an expansion; whether it is one of the widened share.
-  bool widened_now() {
+  // Counts one more expansion towards the stall; past it, whether this one is of the widened share.
+  bool next_expansion_widened() {
     ++expansions_since_progress_;
     if (!knowledge_mode_ || expansions_since_progress_ < kStallExpansions) return false;
     widened_ = true;
@@ -385,15 +385,15 @@ class Search {
   // order (the best of a few drawn at random), and sometimes from any of them. Where the order has no
   // target for a node (off the order, or its walk blocked), the object lead's.
   // Past a stall, the widened share of them grows where the baseline's search would, from the object
-  // lead's nodes (below): the order the physics cannot follow, or a way the lattice does not know, must
-  // not keep the tree from what the baseline finds.
+  // lead's nodes (object_lead_node): an order the physics cannot follow, or a way the lattice does not
+  // know, must not keep the tree from what the baseline finds.
   void choose_push_expansions(const BodyMove& move) {
     if (++batches_since_push_progress_ * kBatch >= kReplanExpansions) replan_pushes();
     const ObjectLead::Goal goal = object_lead_.goal(task_.labelling, move);
     const std::vector<int>& nodes = stage_motions_[static_cast<size_t>(frontier_stage_)];
     expansions_.resize(kBatch);
     for (Expansion& e : expansions_) {
-      if (widened_now()) {
+      if (next_expansion_widened()) {
         e.from = object_lead_node(goal);
         widen(e);
         e.seed = random_.next();
@@ -450,9 +450,10 @@ class Search {
 
   // SampleControlAndSteps and propagation for the whole batch. The tree is only read meanwhile.
   // `alongside`, if given, runs as one more task of the batch, first.
-  // add_growths() stops at the first expansion (in the order chosen) that reached acceptance, so the ones
-  // after it are not grown: skipping them changes neither the plan nor the tree nor the statistics, with
-  // any number of threads, and the batch that solves costs one propagation instead of kBatch.
+  // add_growths() stops at the first expansion (in the order chosen) that reached acceptance, so those
+  // after it that have not started are skipped: the plan, the tree and the statistics stay the same with
+  // any number of threads, and one thread grows no expansion of the solving batch past the first that
+  // accepts. A skipped expansion's growth is emptied, so that nothing stale is left to read.
   void grow_in_parallel(const std::function<void()>& alongside) {
     growths_.resize(expansions_.size());
     const int extra = alongside ? 1 : 0;
@@ -460,7 +461,10 @@ class Search {
     pool_.run(static_cast<int>(expansions_.size()) + extra, [&](int worker, int task) {
       if (task < extra) return alongside();
       const int expansion = task - extra;
-      if (expansion > first_accepted.load(std::memory_order_relaxed)) return;
+      if (expansion > first_accepted.load(std::memory_order_relaxed)) {
+        growths_[static_cast<size_t>(expansion)] = Growth{};
+        return;
+      }
       // Built on the thread that uses it: ODE keeps per-thread data.
       auto& grower = growers_[static_cast<size_t>(worker)];
       if (!grower) {
@@ -621,7 +625,7 @@ class Search {
   int frontier_stage_ = 0;                // the stage of the first node that got that close
   int segment_start_ = 0;                 // where the lead starts: the root, or the frontier stage's first node
   std::vector<int> failed_starts_;        // per motion: expansions in a row that failed at once
-  std::vector<int> chosen_;               // per motion: times the object lead grew from it
+  std::vector<int> chosen_;               // per motion: times it was chosen to grow from
   std::vector<bool> dropped_;             // per motion: no longer chosen but by a widened expansion
   long long expansions_since_progress_ = 0;
   bool widened_ = false;                  // the search has stalled at least once
