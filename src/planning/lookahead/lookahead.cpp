@@ -76,8 +76,7 @@ std::vector<PlannedPush> runs_of(const PushLattice& lattice, const std::vector<P
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const PushStep& step = steps[i];
     const int body = lattice.bodies()[static_cast<std::size_t>(step.body)];
-    if (!runs.empty() && i > 0 && steps[i - 1].body == step.body && steps[i - 1].direction == step.direction &&
-        steps[i - 1].ahead == step.ahead) {
+    if (!runs.empty() && i > 0 && same_run(steps[i - 1], step)) {
       runs.back().cells += 1;
       runs.back().distance = runs.back().cells * lattice.step();
       runs.back().to = lattice.centre(step.to);

@@ -27,6 +27,7 @@ inline constexpr int kDirections = 4;
 inline constexpr int kDx[kDirections] = {1, -1, 0, 0};
 inline constexpr int kDy[kDirections] = {0, 0, 1, -1};
 inline constexpr int opposite(int d) { return d ^ 1; }
+inline constexpr int perpendicular(int d) { return d ^ 2; }  // a direction along the other axis
 
 class PushLattice {
  public:

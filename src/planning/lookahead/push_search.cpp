@@ -147,7 +147,7 @@ bool PushSearcher::square_frozen(const Goals& goals, const std::vector<int>& cel
       const int square[4] = {at, side, up, corner};
       if (!std::all_of(std::begin(square), std::end(square), blocked)) continue;
       // Two bodies side by side in it may still move as a line, pushed end to end.
-      if ((body(at) && (body(side) || body(up))) || (body(corner) && (body(side) || body(up)))) continue;
+      if ((body(at) || body(corner)) && (body(side) || body(up))) continue;
       if (std::any_of(std::begin(square), std::end(square), misplaced)) return true;
     }
   }
@@ -253,19 +253,18 @@ class ArrangementSearch {
     std::vector<int> cells = node.cells;
     int parent = index;
     for (int cost = node.cost;;) {
+      const int from = cells[static_cast<std::size_t>(k)];
       for (int j : line) {
         const int to = lattice_.neighbour(cells[static_cast<std::size_t>(j)], d);
         if (to < 0 || !lattice_.body_fits(j, to)) return -1;
         cells[static_cast<std::size_t>(j)] = to;
       }
       const int end = cells[static_cast<std::size_t>(line.back())];
-      if (holder_[static_cast<std::size_t>(end)] >= 0 && std::find(line.begin(), line.end(), holder_[static_cast<std::size_t>(end)]) == line.end()) {
-        return -1;  // the line runs into another body
-      }
+      // The arrangement before the push: every body of the line stands behind its front's new place.
+      if (holder_[static_cast<std::size_t>(end)] >= 0) return -1;  // the line runs into another body
       const int stage = searcher_.stage_after(node.stage, cells);
       if (stages_.distance(stage) < 0 || stages_.dead(stages_.automaton_state_of(stage))) return -1;
       cost += static_cast<int>(line.size());
-      const int from = parent == index ? at : nodes_[static_cast<std::size_t>(parent)].step.to;
       Node moved{cells, 0, stage, parent, {k, d, from, cells[static_cast<std::size_t>(k)], ahead}, cost};
       if (searcher_.ends_pushing(stage)) return add(std::move(moved));
       // A place on the way is no arrangement to search from: it is kept for the order only.

@@ -31,6 +31,11 @@ struct PushStep {
   std::vector<int> ahead;
 };
 
+// Whether `next` goes on with `step`'s push: the same body, way and line ahead (one push of the order).
+inline bool same_run(const PushStep& step, const PushStep& next) {
+  return step.body == next.body && step.direction == next.direction && step.ahead == next.ahead;
+}
+
 struct PushSearch {
   bool found = false;
   std::vector<PushStep> steps;

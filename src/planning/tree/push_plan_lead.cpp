@@ -65,9 +65,9 @@ PushPlanLead::PushPlanLead(const lookahead::PushLattice& lattice, const std::vec
                            const std::vector<lookahead::PushStep>& steps, const knowledge::AbstractKnowledge& knowledge)
     : lattice_(lattice), robot_radius_(knowledge.robot.radius) {
   std::vector<int> cells = start_cells;
-  for (const lookahead::PushStep& step : steps) {
-    if (runs_.empty() || runs_.back().body != step.body || runs_.back().direction != step.direction ||
-        runs_.back().ahead != step.ahead) {
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const lookahead::PushStep& step = steps[i];
+    if (i == 0 || !lookahead::same_run(steps[i - 1], step)) {
       runs_.push_back({step.body, step.ahead, step.direction, step.from, step.to, cells, {}, 0.0});
     }
     runs_.back().to = step.to;
@@ -76,15 +76,15 @@ PushPlanLead::PushPlanLead(const lookahead::PushLattice& lattice, const std::vec
   }
   for (Run& run : runs_) {
     run.walk = walk_to(lattice, lattice.neighbour(run.from, lookahead::opposite(run.direction)), run.before);
+    run.length = (lattice.centre(run.to) - lattice.centre(run.from)).norm();
   }
   for (int j = static_cast<int>(runs_.size()) - 2; j >= 0; --j) {
     const Run& next = runs_[static_cast<std::size_t>(j) + 1];
     const Run& run = runs_[static_cast<std::size_t>(j)];
     const int robot_after = lattice.neighbour(run.to, lookahead::opposite(run.direction));
     const int walk = robot_after < 0 ? kNever : next.walk[static_cast<std::size_t>(robot_after)];
-    const double length = (lattice.centre(next.to) - lattice.centre(next.from)).norm();
     runs_[static_cast<std::size_t>(j)].after =
-        next.after + length + (walk == kNever ? kNoWay : (walk + kGetReady) * lattice.step());
+        next.after + next.length + (walk == kNever ? kNoWay : (walk + kGetReady) * lattice.step());
   }
   for (int k : cells) end_positions_.push_back(lattice.centre(k));
   if (!runs_.empty() && !runs_.back().ahead.empty()) {
@@ -135,13 +135,12 @@ std::optional<PushPlanLead::Along> PushPlanLead::along(const physics::PhysicsSta
   }
   const Run& run = runs_[static_cast<std::size_t>(j)];
   const geometry::Vec2 d = direction_of(run.direction);
-  const double length = (lattice_.centre(run.to) - lattice_.centre(run.from)).norm();
   // How far body k has come along the push from its place before it, and how far off the push's line.
   const auto offset_of = [&](int k) -> std::optional<Along> {
     const geometry::Vec2 offset = position(state, k) - lattice_.centre(places[static_cast<std::size_t>(k)]);
     const double a = offset.dot(d);
     const double lateral = std::abs(offset.x() * d.y() - offset.y() * d.x());
-    if (lateral > tolerance || a < -tolerance || a > length + tolerance) return std::nullopt;
+    if (lateral > tolerance || a < -tolerance || a > run.length + tolerance) return std::nullopt;
     return Along{a, lateral};
   };
   std::optional<Along> pushed = offset_of(run.body);
@@ -159,7 +158,7 @@ bool PushPlanLead::ready_to_push(const geometry::Vec2& robot, const geometry::Ve
   const geometry::Vec2 d = direction_of(run.direction);
   const geometry::Vec2 v = body - robot;
   const double touching = lattice_.half_along(run.body, run.direction) + robot_radius_;
-  const double half_width = lattice_.half_along(run.body, run.direction ^ 2);
+  const double half_width = lattice_.half_along(run.body, lookahead::perpendicular(run.direction));
   const double depth = v.dot(d);
   const double lateral = std::abs(v.x() * d.y() - v.y() * d.x());
   return depth >= touching - kReadyDepth && depth <= touching + kReadyDepth && lateral <= kReadyLateral * half_width;
@@ -185,9 +184,8 @@ PushPlanLead::Progress PushPlanLead::progress(const physics::PhysicsState& state
     if (!a) continue;
     if (j == pushes()) return {j, 0.0};
     const Run& run = runs_[static_cast<std::size_t>(j)];
-    const double length = (lattice_.centre(run.to) - lattice_.centre(run.from)).norm();
     const geometry::Vec2 body = position(state, run.body);
-    const double left = std::abs(length - a->distance);
+    const double left = std::abs(run.length - a->distance);
     const Progress here{j, run.after + left + kDriftWeight * a->drift + robot_way(state.robot_position(), body, j)};
     if (left > kArrive || a->drift > kAlign) return here;
     done_here = here;  // this push is done: the next may fit too

@@ -51,6 +51,7 @@ class PushPlanLead {
     std::vector<int> before;       // every lattice body's place before the push
     std::vector<int> walk;         // per place, robot steps to the place the push starts from
     double after = 0.0;            // metres of work in the pushes after this one
+    double length = 0.0;           // metres the body goes in this one
   };
   // Per place, robot steps to the place behind the pushed body of run j standing on `body_cell`, round
   // the other bodies; computed on first use.

@@ -330,9 +330,11 @@ class Search {
     const auto any_node = [&] { return nodes[static_cast<size_t>(random_.uniform_int(0, static_cast<int>(nodes.size()) - 1))]; };
     int from = any_node();
     if (random_.chance(kObjectNearestShare)) {
+      double nearest = distance(from);
       for (int i = 1; i < kObjectTournament; ++i) {
         const int other = any_node();
-        if (distance(other) < distance(from)) from = other;
+        const double d = distance(other);
+        if (d < nearest) from = other, nearest = d;
       }
     }
     count_choice(from);
