@@ -2,7 +2,7 @@
 // The look-ahead (planning/lookahead/push_plan.h) as check, the main job and report.json show it
 // (docs/report.md).
 
-#include "physltl/planning/lookahead/push_plan.h"
+#include "physltl/planners/knowledge/push_plan.h"
 #include "physltl/render/scene.h"
 #include "physltl/scenario/world.h"
 

@@ -3,7 +3,7 @@
 #include "physltl/planning/registry.h"
 
 #include "ompl/ompl_planner.h"
-#include "tree/tree_search.h"
+#include "knowledge/tree_search.h"
 
 namespace physltl::planning {
 namespace {

@@ -1,4 +1,4 @@
-#include "stage_graph.h"
+#include "physltl/planning/stage_graph.h"
 
 #include <deque>
 

@@ -2,7 +2,7 @@
 
 #include "physltl/planning/registry.h"
 #include "physltl/planning/validation/replay.h"
-#include "stage_graph.h"
+#include "physltl/planning/stage_graph.h"
 
 #include "test_problem.h"
 

@@ -1,4 +1,4 @@
-#include "physltl/planning/tree/path_lower_bound.h"
+#include "physltl/planning/path_lower_bound.h"
 
 #include "physltl/planning/validation/improve.h"
 #include "test_problem.h"

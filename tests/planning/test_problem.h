@@ -5,7 +5,7 @@
 #include "physltl/ltl/parser.h"
 #include "physltl/ltl/simplify.h"
 #include "physltl/ltl/translate.h"
-#include "physltl/planning/lookahead/push_plan.h"
+#include "physltl/planners/knowledge/push_plan.h"
 #include "physltl/planning/registry.h"
 #include "physltl/planning/validation/replay.h"
 #include "physltl/planning/validation/validated_plan.h"

@@ -3,7 +3,7 @@
 
 #include "physltl/decomposition/decomposition.h"
 #include "physltl/knowledge/abstract_knowledge.h"
-#include "physltl/planning/lookahead/push_plan.h"
+#include "physltl/planners/knowledge/push_plan.h"
 #include "physltl/planning/plan.h"
 #include "physltl/planning/refusal.h"
 #include "physltl/planning/task.h"

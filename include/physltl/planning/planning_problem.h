@@ -6,9 +6,9 @@
 
 #include "physltl/decomposition/decomposition.h"
 #include "physltl/knowledge/reasoning.h"
-#include "physltl/planning/lookahead/push_plan.h"
+#include "physltl/planners/knowledge/push_plan.h"
 #include "physltl/planning/registry.h"
-#include "physltl/planning/tree/route_choice.h"
+#include "physltl/planners/knowledge/route_choice.h"
 #include "physltl/planning/task.h"
 #include "physltl/planning/validation/validated_plan.h"
 

@@ -2,7 +2,7 @@
 
 #include "bad_input.h"
 #include "physltl/planning/validation/improve.h"
-#include "physltl/planning/tree/path_lower_bound.h"
+#include "physltl/planning/path_lower_bound.h"
 #include "physltl/execution/robustness.h"
 #include "robustness/uncertainty_args.h"
 #include "scenario_settings.h"

@@ -1,4 +1,4 @@
-#include "propagation/checked_simulation.h"
+#include "physltl/planning/propagation/checked_simulation.h"
 
 namespace physltl::planning {
 

@@ -1,4 +1,4 @@
-#include "propagation/control_sampler.h"
+#include "physltl/planning/propagation/control_sampler.h"
 
 #include "physltl/knowledge/face_set.h"
 

@@ -1,0 +1,139 @@
+#include "lookahead.h"
+
+#include "physltl/geometry/disc_field.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace physltl::planning {
+
+const char* direction_name(const PlannedPush& push) {
+  return push.dx > 0 ? "+x" : push.dx < 0 ? "-x" : push.dy > 0 ? "+y" : "-y";
+}
+
+std::string describe(const PlannedPush& push, const std::vector<std::string>& body_names) {
+  std::string bodies = body_names[static_cast<std::size_t>(push.body)];
+  if (!push.ahead.empty()) {
+    std::vector<std::string> ahead;
+    for (int b : push.ahead) ahead.push_back(body_names[static_cast<std::size_t>(b)]);
+    bodies += fmt::format(" (with {})", fmt::join(ahead, ", "));
+  }
+  return fmt::format("{} {} {:.2g} m", bodies, direction_name(push), push.distance);
+}
+
+std::shared_ptr<const lookahead::Lookahead> prepare_lookahead(const scenario::World& world,
+                                                              const knowledge::AbstractKnowledge& knowledge,
+                                                              const TaskAutomaton& task) {
+  return std::make_shared<const lookahead::Lookahead>(lookahead::look_ahead(world, knowledge, task));
+}
+
+const PushPlan& push_plan_of(const lookahead::Lookahead& lookahead) { return lookahead.plan; }
+
+namespace lookahead {
+namespace {
+
+// The room a named body's way must have everywhere, beyond the body's own side, for the robot to walk
+// round the body there: a robot's diameter on either side.
+constexpr double kRobotDiametersBeside = 2.0;
+constexpr double kWayCell = 0.05;  // m: the grid of that check
+
+// Why the look-ahead applies: a named body cannot get to its regions with room for the robot beside it,
+// among the walls and the other bodies where they stand (boxes side by side need an order as much as a
+// corridor does). Nothing when every named body can.
+std::optional<std::string> narrow_way(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
+                                      const Labelling& labelling) {
+  for (const Labelling::NamedBody& named : labelling.named_bodies()) {
+    const auto& body = knowledge.movable_bodies[static_cast<std::size_t>(named.body)];
+    if (body.body_class == knowledge::BodyClass::kFixed) continue;
+    std::vector<geometry::Footprint> obstacles;
+    for (const auto& f : knowledge.fixed_bodies) obstacles.push_back(f.footprint);
+    for (std::size_t b = 0; b < knowledge.movable_bodies.size(); ++b) {
+      if (static_cast<int>(b) != named.body) obstacles.push_back(knowledge.movable_bodies[b].footprint);
+    }
+    const double side = 2 * body.footprint.shape.half_extents().minCoeff();
+    const double width = side + kRobotDiametersBeside * 2 * knowledge.robot.radius;
+    const double cell = std::max(kWayCell, std::sqrt(knowledge.workspace.size().prod() / 250'000.0));
+    geometry::DiscField wide(knowledge.workspace, cell, width / 2, obstacles);
+    wide.compute_distances([&](const geometry::Vec2& centre, double) {
+      return std::any_of(named.regions.begin(), named.regions.end(),
+                         [&](int r) { return world.regions[static_cast<std::size_t>(r)].polygon.contains(centre); });
+    });
+    if (!wide.reaches_target(body.footprint.pose.position)) {
+      return fmt::format("{}'s way to its regions is narrower than {:.2f} m (its side {:.2f} m and two robot diameters) "
+                         "among the walls and the other bodies",
+                         body.name, width, side);
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<PlannedPush> runs_of(const PushLattice& lattice, const std::vector<PushStep>& steps) {
+  std::vector<PlannedPush> runs;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const PushStep& step = steps[i];
+    const int body = lattice.bodies()[static_cast<std::size_t>(step.body)];
+    if (!runs.empty() && i > 0 && same_run(steps[i - 1], step)) {
+      runs.back().cells += 1;
+      runs.back().distance = runs.back().cells * lattice.step();
+      runs.back().to = lattice.centre(step.to);
+      continue;
+    }
+    std::vector<int> ahead;
+    for (int k : step.ahead) ahead.push_back(lattice.bodies()[static_cast<std::size_t>(k)]);
+    runs.push_back({body, std::move(ahead), kDx[step.direction], kDy[step.direction], 1, lattice.step(),
+                    lattice.centre(step.from), lattice.centre(step.to)});
+  }
+  return runs;
+}
+
+Lookahead look_ahead(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge, const TaskAutomaton& task) {
+  Lookahead result;
+  PushPlan& plan = result.plan;
+  if (!task.names_bodies()) {
+    plan.rule.reason = "the task names no body";
+    plan.outcome = "not searched";
+    return result;
+  }
+  const std::optional<std::string> narrow = narrow_way(world, knowledge, task.labelling);
+  if (!narrow) {
+    plan.rule.reason = "every named body has room for the robot beside it all the way to its regions, among the walls and the other bodies";
+    plan.outcome = "not searched";
+    return result;
+  }
+  std::string why_not;
+  result.lattice = PushLattice::build(world, knowledge, task.labelling, why_not);
+  if (!result.lattice) {
+    plan.rule.reason = *narrow + ", but " + why_not;
+    plan.outcome = "not searched";
+    return result;
+  }
+  plan.rule = {true, *narrow, result.lattice->step()};
+  const StageGraph stages(task);
+  const scenario::EnvironmentState start = scenario::EnvironmentState::initial(world);
+  const int letter = task.labelling.letter(start);
+  result.stage = stages.stage(task.step(task.dfa.start, letter), task.labelling.facts_of(letter));
+  result.start_cells = *result.lattice->arrangement(start);
+  const int robot = result.lattice->robot_cell(start.robot_position);
+  if (robot < 0) {
+    plan.outcome = "the robot stands off the lattice";
+    return result;
+  }
+  if (!stages.body_move(result.stage)) {
+    plan.outcome = "the task's first move is the robot's";
+    return result;
+  }
+  const PushSearch search = PushSearcher(*result.lattice, stages, task.labelling).search(result.stage, result.start_cells, robot);
+  plan.arrangements = search.settled;
+  plan.outcome = search.outcome;
+  plan.found = search.found;
+  result.steps = search.steps;
+  plan.pushes = runs_of(*result.lattice, search.steps);
+  return result;
+}
+
+}  // namespace lookahead
+}  // namespace physltl::planning

@@ -1,0 +1,325 @@
+#include "push_search.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <queue>
+#include <set>
+#include <unordered_map>
+
+namespace physltl::planning::lookahead {
+namespace {
+
+constexpr int kNever = std::numeric_limits<int>::max();
+
+struct Node {
+  std::vector<int> cells;
+  int robot = 0;  // the smallest place the robot can walk to: the arrangement's robot component
+  int stage = 0;
+  int parent = -1;
+  PushStep step;
+  int cost = 0;  // body steps so far: a line of n bodies pushed one step costs n
+};
+
+std::string key_of(const std::vector<int>& cells, int robot, int stage) {
+  std::string key;
+  key.reserve((cells.size() + 2) * sizeof(std::int32_t));
+  const auto put = [&](int v) { key.append(reinterpret_cast<const char*>(&v), sizeof v); };
+  for (int c : cells) put(c);
+  put(robot);
+  put(stage);
+  return key;
+}
+
+// The places the robot can walk to from `from` without entering one a body holds (holder[c] >= 0),
+// marked with `mark` in `seen`; returns the smallest.
+int walk(const PushLattice& lattice, int from, const std::vector<int>& holder, std::vector<int>& seen, int mark,
+         std::vector<int>& queue) {
+  queue.clear();
+  queue.push_back(from);
+  seen[static_cast<std::size_t>(from)] = mark;
+  int smallest = from;
+  for (std::size_t i = 0; i < queue.size(); ++i) {
+    const int c = queue[i];
+    smallest = std::min(smallest, c);
+    for (int d = 0; d < kDirections; ++d) {
+      if (!lattice.robot_passes(c, d)) continue;
+      const int next = lattice.neighbour(c, d);
+      if (seen[static_cast<std::size_t>(next)] == mark || holder[static_cast<std::size_t>(next)] >= 0) continue;
+      seen[static_cast<std::size_t>(next)] = mark;
+      queue.push_back(next);
+    }
+  }
+  return smallest;
+}
+
+}  // namespace
+
+PushSearcher::PushSearcher(const PushLattice& lattice, const StageGraph& stages, const Labelling& labelling)
+    : lattice_(lattice), stages_(stages), labelling_(labelling) {}
+
+bool PushSearcher::ends_pushing(int stage) const {
+  const int distance = stages_.distance(stage);
+  return distance == 0 || (distance > 0 && !stages_.body_move(stage));
+}
+
+int PushSearcher::facts_of(int stage, const std::vector<int>& cells) const {
+  int facts = stages_.facts_of(stage);
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    const int named = lattice_.named(static_cast<int>(k));
+    if (named >= 0) facts = labelling_.with_place(facts, named, lattice_.place(static_cast<int>(k), cells[k]));
+  }
+  return facts;
+}
+
+PushSearcher::Goals PushSearcher::goals_from(int stage) const {
+  const int bodies = static_cast<int>(lattice_.bodies().size());
+  // The places each named body has in some fact set that would end the pushing from `stage`.
+  std::vector<std::set<int>> wanted(static_cast<std::size_t>(bodies));
+  for (int facts = 0; facts < labelling_.fact_sets(); ++facts) {
+    if (!ends_pushing(stages_.after_letter(stage, labelling_.letter(facts, -1)))) continue;
+    for (int k = 0; k < bodies; ++k) {
+      if (lattice_.named(k) >= 0) wanted[static_cast<std::size_t>(k)].insert(labelling_.place(facts, lattice_.named(k)));
+    }
+  }
+  Goals goals;
+  goals.pushes_left.resize(static_cast<std::size_t>(bodies));
+  for (int k = 0; k < bodies; ++k) {
+    const std::set<int>& places = wanted[static_cast<std::size_t>(k)];
+    if (lattice_.named(k) < 0 || places.empty() || places.count(0) > 0) continue;  // free: anywhere will do
+    // Backwards from the wanted places: the body comes to `c` from `c - d`, pushed by a robot at `c - 2d`.
+    std::vector<int> left(static_cast<std::size_t>(lattice_.cells()), kNever);
+    std::vector<int> queue;
+    for (int c = 0; c < lattice_.cells(); ++c) {
+      if (lattice_.body_fits(k, c) && places.count(lattice_.place(k, c)) > 0) left[static_cast<std::size_t>(c)] = 0, queue.push_back(c);
+    }
+    for (std::size_t i = 0; i < queue.size(); ++i) {
+      const int c = queue[i];
+      for (int d = 0; d < kDirections; ++d) {
+        if (!lattice_.can_push(k, d)) continue;
+        const int before = lattice_.neighbour(c, opposite(d));
+        if (before < 0 || !lattice_.body_fits(k, before) || left[static_cast<std::size_t>(before)] != kNever) continue;
+        const int stand = lattice_.neighbour(before, opposite(d));
+        if (stand < 0 || !lattice_.robot_fits(stand)) continue;
+        left[static_cast<std::size_t>(before)] = left[static_cast<std::size_t>(c)] + 1;
+        queue.push_back(before);
+      }
+    }
+    goals.pushes_left[static_cast<std::size_t>(k)] = std::move(left);
+  }
+  return goals;
+}
+
+bool PushSearcher::alive(int stage, int k, int cell) const {
+  return goals_from(stage).left(k, cell) != kNever;
+}
+
+int PushSearcher::Goals::left(int k, int cell) const {
+  const auto& table = pushes_left[static_cast<std::size_t>(k)];
+  return table.empty() ? 0 : table[static_cast<std::size_t>(cell)];
+}
+
+int PushSearcher::Goals::estimate(const std::vector<int>& cells) const {
+  int sum = 0;
+  for (std::size_t k = 0; k < cells.size(); ++k) sum += left(static_cast<int>(k), cells[k]);
+  return sum;
+}
+
+int PushSearcher::stage_after(int stage, const std::vector<int>& cells) const {
+  return stages_.after_letter(stage, labelling_.letter(facts_of(stage, cells), -1));
+}
+
+bool PushSearcher::square_frozen(const Goals& goals, const std::vector<int>& cells, const std::vector<int>& holder, int at) const {
+  const auto blocked = [&](int c) { return c < 0 || holder[static_cast<std::size_t>(c)] >= 0 || !lattice_.robot_fits(c); };
+  const auto misplaced = [&](int c) {
+    if (c < 0) return false;
+    const int k = holder[static_cast<std::size_t>(c)];
+    if (k < 0) return false;
+    return goals.left(k, cells[static_cast<std::size_t>(k)]) != 0;
+  };
+  const auto body = [&](int c) { return c >= 0 && holder[static_cast<std::size_t>(c)] >= 0; };
+  // The four squares of places that hold `at`: `at` and its neighbours across x and y and diagonally.
+  for (int dx : {0, 1}) {
+    for (int dy : {2, 3}) {
+      const int side = lattice_.neighbour(at, dx);
+      const int up = lattice_.neighbour(at, dy);
+      const int corner = side < 0 ? -1 : lattice_.neighbour(side, dy);
+      const int square[4] = {at, side, up, corner};
+      if (!std::all_of(std::begin(square), std::end(square), blocked)) continue;
+      // Two bodies side by side in it may still move as a line, pushed end to end.
+      if ((body(at) || body(corner)) && (body(side) || body(up))) continue;
+      if (std::any_of(std::begin(square), std::end(square), misplaced)) return true;
+    }
+  }
+  return false;
+}
+
+// One search's state: the arrangements met, the open ones by priority, and scratch space for the walks.
+class ArrangementSearch {
+ public:
+  ArrangementSearch(const PushLattice& lattice, const StageGraph& stages, const PushSearcher& searcher,
+                    const PushSearcher::Goals& goals)
+      : lattice_(lattice),
+        stages_(stages),
+        searcher_(searcher),
+        goals_(goals),
+        holder_(static_cast<std::size_t>(lattice.cells()), -1),
+        seen_(static_cast<std::size_t>(lattice.cells()), -1),
+        seen_after_(static_cast<std::size_t>(lattice.cells()), -1) {}
+
+  // The arrangement to start from; returns its node.
+  int start(const std::vector<int>& cells, int robot_cell, int stage) {
+    hold(cells);
+    return add({cells, walk(lattice_, robot_cell, holder_, seen_, mark_++, queue_), stage, -1, {}, 0});
+  }
+  bool exhausted() const { return open_.empty(); }
+  // Settles the open arrangement of highest priority: adds every arrangement one push away, and where a
+  // body has others in a line ahead of it, the pushes of the line that end the pushing. Returns the first
+  // added that ends the pushing, or -1.
+  int settle() {
+    const int index = std::get<2>(open_.top());
+    open_.pop();
+    const Node node = nodes_[static_cast<std::size_t>(index)];
+    hold(node.cells);
+    walk(lattice_, node.robot, holder_, seen_, mark_, queue_);
+    const int reach = mark_++;
+    for (std::size_t k = 0; k < node.cells.size(); ++k) {
+      for (int d = 0; d < kDirections; ++d) {
+        const int added = is_line(node, static_cast<int>(k), d) ? finish_with_line(node, index, static_cast<int>(k), d, reach)
+                                                                 : push(node, index, static_cast<int>(k), d, reach);
+        if (added >= 0 && searcher_.ends_pushing(nodes_[static_cast<std::size_t>(added)].stage)) return added;
+      }
+    }
+    return -1;
+  }
+  std::vector<PushStep> steps_to(int n) const {
+    std::vector<PushStep> steps;
+    for (; nodes_[static_cast<std::size_t>(n)].parent >= 0; n = nodes_[static_cast<std::size_t>(n)].parent) {
+      steps.push_back(nodes_[static_cast<std::size_t>(n)].step);
+    }
+    std::reverse(steps.begin(), steps.end());
+    return steps;
+  }
+
+ private:
+  void hold(const std::vector<int>& at) {
+    std::fill(holder_.begin(), holder_.end(), -1);
+    for (std::size_t k = 0; k < at.size(); ++k) holder_[static_cast<std::size_t>(at[k])] = static_cast<int>(k);
+  }
+
+  bool is_line(const Node& node, int k, int d) const {
+    const int ahead = lattice_.neighbour(node.cells[static_cast<std::size_t>(k)], d);
+    return ahead >= 0 && holder_[static_cast<std::size_t>(ahead)] >= 0;
+  }
+
+  // The arrangement after pushing body k of `node` one step in direction d, added unless it was met
+  // before or is pruned; its node, or -1.
+  int push(const Node& node, int index, int k, int d, int reach) {
+    const int at = node.cells[static_cast<std::size_t>(k)];
+    if (!lattice_.can_push(k, d)) return -1;
+    const int stand = lattice_.neighbour(at, opposite(d));
+    const int to = lattice_.neighbour(at, d);
+    if (stand < 0 || to < 0 || seen_[static_cast<std::size_t>(stand)] != reach) return -1;
+    if (!lattice_.body_fits(k, to) || holder_[static_cast<std::size_t>(to)] >= 0 || goals_.left(k, to) == kNever) return -1;
+    std::vector<int> next = node.cells;
+    next[static_cast<std::size_t>(k)] = to;
+    const int next_stage = searcher_.stage_after(node.stage, next);
+    if (stages_.distance(next_stage) < 0 || stages_.dead(stages_.automaton_state_of(next_stage))) return -1;
+    holder_[static_cast<std::size_t>(at)] = -1;
+    holder_[static_cast<std::size_t>(to)] = k;
+    const bool frozen = searcher_.square_frozen(goals_, next, holder_, to);
+    const int robot = frozen ? 0 : walk(lattice_, at, holder_, seen_after_, mark_++, queue_);
+    holder_[static_cast<std::size_t>(to)] = -1;
+    holder_[static_cast<std::size_t>(at)] = k;
+    if (frozen) return -1;
+    return add({std::move(next), robot, next_stage, index, {k, d, at, to, {}}, node.cost + 1});
+  }
+
+  // Body k of `node` pushed in direction d with the bodies in a line ahead of it, end to end, as many
+  // places as it takes to end the pushing: the node where it does, or -1. A line only ends an order: its
+  // first push closes the gaps between the bodies, which then stand short of their places
+  // (PushLattice::line_shortfalls), so no later push could start from the lattice.
+  int finish_with_line(const Node& node, int index, int k, int d, int reach) {
+    const int at = node.cells[static_cast<std::size_t>(k)];
+    const int stand = lattice_.neighbour(at, opposite(d));
+    if (stand < 0 || seen_[static_cast<std::size_t>(stand)] != reach) return -1;
+    std::vector<int> line{k};
+    for (int c = lattice_.neighbour(at, d); c >= 0 && holder_[static_cast<std::size_t>(c)] >= 0; c = lattice_.neighbour(c, d)) {
+      line.push_back(holder_[static_cast<std::size_t>(c)]);
+    }
+    if (!lattice_.line_shortfalls(line, d)) return -1;
+    if (!std::all_of(line.begin(), line.end(), [&](int j) { return lattice_.can_push(j, d); })) return -1;
+    const std::vector<int> ahead(line.begin() + 1, line.end());
+    std::vector<int> cells = node.cells;
+    int parent = index;
+    for (int cost = node.cost;;) {
+      const int from = cells[static_cast<std::size_t>(k)];
+      for (int j : line) {
+        const int to = lattice_.neighbour(cells[static_cast<std::size_t>(j)], d);
+        if (to < 0 || !lattice_.body_fits(j, to)) return -1;
+        cells[static_cast<std::size_t>(j)] = to;
+      }
+      const int end = cells[static_cast<std::size_t>(line.back())];
+      // The arrangement before the push: every body of the line stands behind its front's new place.
+      if (holder_[static_cast<std::size_t>(end)] >= 0) return -1;  // the line runs into another body
+      const int stage = searcher_.stage_after(node.stage, cells);
+      if (stages_.distance(stage) < 0 || stages_.dead(stages_.automaton_state_of(stage))) return -1;
+      cost += static_cast<int>(line.size());
+      Node moved{cells, 0, stage, parent, {k, d, from, cells[static_cast<std::size_t>(k)], ahead}, cost};
+      if (searcher_.ends_pushing(stage)) return add(std::move(moved));
+      // A place on the way is no arrangement to search from: it is kept for the order only.
+      parent = static_cast<int>(nodes_.size());
+      nodes_.push_back(std::move(moved));
+    }
+  }
+
+  int add(Node node) {
+    const auto [it, inserted] = known_.emplace(key_of(node.cells, node.robot, node.stage), static_cast<int>(nodes_.size()));
+    if (!inserted) return -1;
+    open_.push({node.cost + kHeuristicWeight * goals_.estimate(node.cells), order_++, it->second});
+    nodes_.push_back(std::move(node));
+    return it->second;
+  }
+
+  const PushLattice& lattice_;
+  const StageGraph& stages_;
+  const PushSearcher& searcher_;
+  const PushSearcher::Goals& goals_;
+  std::vector<int> holder_;      // per place, the body on it or -1
+  std::vector<int> seen_;        // the robot's reach before a push (marks)
+  std::vector<int> seen_after_;  // and after it
+  std::vector<int> queue_;
+  int mark_ = 0;
+  std::vector<Node> nodes_;
+  std::unordered_map<std::string, int> known_;
+  using Entry = std::tuple<double, long long, int>;  // priority, order of insertion, node
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open_;
+  long long order_ = 0;
+};
+
+PushSearch PushSearcher::search(int stage, const std::vector<int>& cells, int robot_cell,
+                                long long max_arrangements) const {
+  PushSearch result;
+  const Goals goals = goals_from(stage);
+  result.outcome = "no order of pushes";
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    if (goals.left(static_cast<int>(k), cells[k]) == kNever) return result;
+  }
+  ArrangementSearch search(lattice_, stages_, *this, goals);
+  int solution = search.start(cells, robot_cell, stage);
+  if (!ends_pushing(stage)) solution = -1;
+  while (solution < 0 && !search.exhausted()) {
+    if (++result.settled > max_arrangements) {
+      result.outcome = "search limit";
+      return result;
+    }
+    solution = search.settle();
+  }
+  if (solution < 0) return result;
+  result.steps = search.steps_to(solution);
+  result.found = true;
+  result.outcome = "found";
+  return result;
+}
+
+}  // namespace physltl::planning::lookahead

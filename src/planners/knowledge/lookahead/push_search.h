@@ -1,0 +1,80 @@
+#pragma once
+// The look-ahead's discrete search: over arrangements of the lattice's bodies (push_lattice.h) and the
+// task's stage, by pushes of one body one step (the robot walks, between pushes, through the places no
+// body holds), until the stage needs no more body moves; a line of bodies pushed end to end may end it.
+// Weighted A*: a push costs the bodies it moves, and the estimate is each named body's fewest pushes to
+// its places alone. Pruned inside this search only: arrangements where the automaton dies, a body the task needs
+// somewhere on a place it can never be pushed there from (a box against a wall its goal is not along),
+// and four places in a square all held by walls or bodies, no two bodies side by side, one of them a body
+// not yet where the task needs it (none of them can move again).
+
+#include "push_lattice.h"
+#include "physltl/planning/stage_graph.h"
+
+#include <string>
+#include <vector>
+
+namespace physltl::planning::lookahead {
+
+// Measured on the look-ahead puzzles (docs/benchmarks.md): 2 finds orders for the hardest in seconds
+// with pushes within a few of the fewest; 1 (plain A*) settled ten times as many arrangements.
+inline constexpr double kHeuristicWeight = 2.0;
+inline constexpr long long kMaxArrangements = 400'000;
+
+struct PushStep {
+  int body = 0;  // lattice body: the one the robot pushes
+  int direction = 0;
+  int from = 0, to = 0;  // its places
+  // Lattice bodies in a line ahead of it, nearest first, that it pushes along end to end: physics moves
+  // boxes so where the drive overcomes their friction together (a row in a corridor). Only the last
+  // pushes of an order move lines.
+  std::vector<int> ahead;
+};
+
+// Whether `next` goes on with `step`'s push: the same body, way and line ahead (one push of the order).
+inline bool same_run(const PushStep& step, const PushStep& next) {
+  return step.body == next.body && step.direction == next.direction && step.ahead == next.ahead;
+}
+
+struct PushSearch {
+  bool found = false;
+  std::vector<PushStep> steps;
+  long long settled = 0;
+  std::string outcome;  // "found", "no order of pushes", "search limit"
+};
+
+class PushSearcher {
+ public:
+  PushSearcher(const PushLattice& lattice, const StageGraph& stages, const Labelling& labelling);
+
+  // From `stage` with the lattice bodies on `cells` and the robot on `robot_cell`.
+  PushSearch search(int stage, const std::vector<int>& cells, int robot_cell,
+                    long long max_arrangements = kMaxArrangements) const;
+  // Whether body k on `cell` can still get to where the task needs it, pushed alone; always true for a
+  // body the task leaves free.
+  bool alive(int stage, int k, int cell) const;
+
+ private:
+  friend class ArrangementSearch;
+  // Per lattice body, per place: the fewest pushes of that body alone to where the task wants it from a
+  // stage (kNever where it can get there no more); no table for a body the task leaves free.
+  struct Goals {
+    std::vector<std::vector<int>> pushes_left;
+    int left(int k, int cell) const;           // 0 for a body the task leaves free
+    int estimate(const std::vector<int>& cells) const;  // the sum over the bodies
+  };
+  Goals goals_from(int stage) const;
+  // The stage needs no more body moves: the robot's part of the task, or acceptance.
+  bool ends_pushing(int stage) const;
+  int facts_of(int stage, const std::vector<int>& cells) const;
+  int stage_after(int stage, const std::vector<int>& cells) const;
+  // Four places in a square holding `at`, all walls or bodies, no two bodies side by side (a line of
+  // them may still move), one a body not where the task wants it.
+  bool square_frozen(const Goals& goals, const std::vector<int>& cells, const std::vector<int>& holder, int at) const;
+
+  const PushLattice& lattice_;
+  const StageGraph& stages_;
+  const Labelling& labelling_;
+};
+
+}  // namespace physltl::planning::lookahead

@@ -1,0 +1,166 @@
+#include "object_lead.h"
+
+#include "physltl/knowledge/face_set.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+
+namespace physltl::planning {
+namespace {
+
+// The way's grid: fine enough for doorways a body barely fits through, coarse enough to stay small.
+constexpr double kMaxWayCells = 250'000;
+// How far along its way the body is aimed at, from where it stands: far enough to smooth the grid's steps,
+// near enough to follow a bend.
+constexpr double kWayLookahead = 1.0;  // m
+// The robot acts on its own (target()) within this straight distance of the body, and when the
+// decomposition's way there is not much longer (no wall in between).
+constexpr double kNear = 2.5;  // m
+constexpr double kNearDetour = 1.5;
+constexpr int kApproachTriangles = 4;  // triangles ahead the approach aims at
+constexpr std::size_t kCachedTriangles = 64;
+// The robot goes round the body with this much room between them.
+constexpr double kRoundClearance = 0.08;  // m
+
+Vec2 unit(const Vec2& v) {
+  const double n = v.norm();
+  return n > 1e-12 ? Vec2(v / n) : Vec2(1.0, 0.0);
+}
+
+// Whether the segment from `a` to `b` passes through the placed shape (sampled every few centimetres).
+bool crosses(const geometry::Shape& shape, const geometry::Pose2& pose, const Vec2& a, const Vec2& b) {
+  const int samples = std::max(2, static_cast<int>((b - a).norm() / 0.05));
+  for (int i = 1; i < samples; ++i) {
+    if (geometry::contains(shape, pose, a + (b - a) * (static_cast<double>(i) / samples))) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+ObjectLead::ObjectLead(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
+                       const decomposition::Decomposition& decomposition)
+    : world_(world), knowledge_(knowledge), decomposition_(decomposition) {}
+
+ObjectLead::Goal ObjectLead::goal(const Labelling& labelling, const BodyMove& move) {
+  const Labelling::NamedBody& named = labelling.named_bodies()[static_cast<std::size_t>(move.named)];
+  std::unique_ptr<geometry::DiscField>& way = ways_[{named.body, move.place}];
+  if (!way) {
+    const auto& body = knowledge_.movable_bodies[static_cast<std::size_t>(named.body)];
+    std::vector<geometry::Footprint> obstacles;
+    for (const auto& f : knowledge_.fixed_bodies) obstacles.push_back(f.footprint);
+    for (std::size_t b = 0; b < knowledge_.movable_bodies.size(); ++b) {
+      const auto& other = knowledge_.movable_bodies[b];
+      if (static_cast<int>(b) != named.body && other.body_class == knowledge::BodyClass::kFixed) obstacles.push_back(other.footprint);
+    }
+    const double inscribed = body.footprint.shape.centre_clearance();
+    const Vec2 size = knowledge_.workspace.size();
+    const double cell = std::max({0.5 * inscribed, 0.05, std::sqrt(size.x() * size.y() / kMaxWayCells)});
+    way = std::make_unique<geometry::DiscField>(knowledge_.workspace, std::min(cell, inscribed), inscribed, obstacles);
+    std::vector<const geometry::Polygon*> regions;
+    for (int r : named.regions) regions.push_back(&world_.regions[static_cast<std::size_t>(r)].polygon);
+    const geometry::Polygon* target = move.place > 0 ? regions[static_cast<std::size_t>(move.place - 1)] : nullptr;
+    way->compute_distances([&](const Vec2& centre, double) {
+      if (target != nullptr) return target->contains(centre);
+      return std::none_of(regions.begin(), regions.end(), [&](const geometry::Polygon* r) { return r->contains(centre); });
+    });
+  }
+  return {named.body, way.get()};
+}
+
+double ObjectLead::remaining(const Goal& goal, const Vec2& centre) {
+  const double d = goal.way->distance(centre);
+  if (d < geometry::DiscField::kUnreachable) return d;
+  // Against a wall the centre's cell may count as blocked (the field keeps half a cell of margin): the way
+  // from the nearest free cell.
+  const Vec2 free = goal.way->nearest_free(centre, 3 * goal.way->cell());
+  return goal.way->distance(free) + (free - centre).norm();
+}
+
+const std::vector<double>& ObjectLead::distances_to_triangle(int triangle) {
+  const auto known = triangle_distances_.find(triangle);
+  if (known != triangle_distances_.end()) return known->second;
+  if (triangle_distances_.size() >= kCachedTriangles) triangle_distances_.clear();
+  const auto& triangles = decomposition_.triangles();
+  std::vector<double> distance(triangles.size(), std::numeric_limits<double>::infinity());
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  distance[static_cast<std::size_t>(triangle)] = 0.0;
+  open.push({0.0, triangle});
+  while (!open.empty()) {
+    const auto [d, t] = open.top();
+    open.pop();
+    if (d > distance[static_cast<std::size_t>(t)]) continue;
+    for (int n : triangles[static_cast<std::size_t>(t)].neighbors) {
+      const double next = d + (triangles[static_cast<std::size_t>(n)].centroid - triangles[static_cast<std::size_t>(t)].centroid).norm();
+      if (next < distance[static_cast<std::size_t>(n)]) distance[static_cast<std::size_t>(n)] = next, open.push({next, n});
+    }
+  }
+  return triangle_distances_.emplace(triangle, std::move(distance)).first->second;
+}
+
+std::optional<Vec2> ObjectLead::approach(const Vec2& robot, const Vec2& body) {
+  const double straight = (body - robot).norm();
+  const std::vector<double>& distance = distances_to_triangle(decomposition_.locate(body));
+  int at = decomposition_.locate(robot);
+  if (straight <= kNear && distance[static_cast<std::size_t>(at)] <= kNearDetour * straight + 0.5) return std::nullopt;
+  const auto& triangles = decomposition_.triangles();
+  for (int step = 0; step < kApproachTriangles; ++step) {
+    int best = at;
+    for (int n : triangles[static_cast<std::size_t>(at)].neighbors) {
+      if (distance[static_cast<std::size_t>(n)] < distance[static_cast<std::size_t>(best)]) best = n;
+    }
+    if (best == at) break;
+    at = best;
+  }
+  return triangles[static_cast<std::size_t>(at)].centroid;
+}
+
+Vec2 ObjectLead::target(const Goal& goal, const scenario::EnvironmentState& state, const knowledge::Kappa& kappa,
+                        Random& random) const {
+  const geometry::Pose2& pose = state.movable_poses[static_cast<std::size_t>(goal.body)];
+  const Vec2& robot = state.robot_position;
+  const Vec2 from = goal.way->nearest_free(pose.position, 3 * goal.way->cell());
+  const Vec2 wanted = unit(goal.way->ahead_of(from, kWayLookahead) - pose.position);
+  // The active side whose push helps most along the way.
+  const auto& body = knowledge_.movable_bodies[static_cast<std::size_t>(goal.body)];
+  const knowledge::MRegionTemplate* best = nullptr;
+  double best_help = -std::numeric_limits<double>::infinity();
+  for (const auto& m : body.mregions) {
+    if (!kappa.bodies[static_cast<std::size_t>(goal.body)].active_faces.contains(m.face)) continue;
+    const double help = knowledge::push_direction(m, pose).dot(wanted);
+    if (help > best_help) best_help = help, best = &m;
+  }
+  if (best == nullptr) {
+    // No side to push from: let the robot wander near the body; the search's other expansions go on.
+    const double a = random.uniform(-3.14159265358979, 3.14159265358979);
+    return pose.position + (body.bound_radius + 2 * world_.robot.radius) * Vec2(std::cos(a), std::sin(a));
+  }
+  const Vec2 push = knowledge::push_direction(*best, pose);
+  if (knowledge::mregion_at(*best, pose).contains(robot)) return robot + push;
+  // The middle of the side's contact segment, where the robot touches it; round the body if it is in the way.
+  const Eigen::Rotation2Dd rotation(pose.yaw);
+  const Vec2 contact = pose.position + rotation * (0.5 * (best->contact_from + best->contact_to));
+  // Where the robot's centre would hit the body (the contact point lies just outside), and the corners
+  // it goes round by.
+  const double r = world_.robot.radius;
+  const geometry::Shape blocking = geometry::grown(body.footprint.shape, 0.9 * r);
+  if (!crosses(blocking, pose, robot, contact)) return contact;
+  const geometry::Shape round = geometry::grown(body.footprint.shape, r + kRoundClearance);
+  Vec2 corner_target = contact;
+  double shortest = std::numeric_limits<double>::infinity();
+  const geometry::Polygon round_corners = geometry::convex_parts_at(round, pose, geometry::CircleAs::kCircumscribed).front();
+  for (const Vec2& corner : round_corners.vertices) {
+    if (crosses(blocking, pose, robot, corner)) continue;
+    const double way = (corner - robot).norm() + (contact - corner).norm();
+    if (way < shortest) shortest = way, corner_target = corner;
+  }
+  return corner_target;
+}
+
+}  // namespace physltl::planning

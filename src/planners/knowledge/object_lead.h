@@ -1,0 +1,65 @@
+#pragma once
+// The object lead: how the search moves a body to where the task needs it, when the next move of the
+// task's stages is the body's (stage_graph.h). The body's way is a distance field for its centre
+// (geometry::DiscField: a disc of the body's inscribed radius among the fixed bodies and the bodies too
+// heavy to push), so every place knows how far the body still has to go and in which direction. The
+// robot's part follows from a state: push along the active mRegion whose push helps most along that way;
+// first walk to it, round the body, when the robot stands elsewhere; from afar, follow the decomposition's
+// triangles towards the body. docs/planner.md says why.
+
+#include "physltl/decomposition/decomposition.h"
+#include "physltl/geometry/disc_field.h"
+#include "physltl/knowledge/abstract_knowledge.h"
+#include "physltl/knowledge/kappa.h"
+#include "physltl/planning/labelling.h"
+#include "physltl/planning/plan.h"
+#include "physltl/planning/random.h"
+#include "physltl/planning/stage_graph.h"
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace physltl::planning {
+
+class ObjectLead {
+ public:
+  // One body move with its way.
+  struct Goal {
+    int body = 0;  // World::movable_bodies index
+    const geometry::DiscField* way = nullptr;
+  };
+
+  ObjectLead(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
+             const decomposition::Decomposition& decomposition);
+
+  // The goal of `move`, its way computed on first use. Not thread-safe: the search calls it between
+  // batches.
+  Goal goal(const Labelling& labelling, const BodyMove& move);
+
+  // Metres the body's centre at `centre` still has to travel; infinite when it cannot get there.
+  static double remaining(const Goal& goal, const Vec2& centre);
+
+  // Where the robot heads, from far away, to get to the body at `body`: a point a few triangles along the
+  // decomposition's shortest way; nothing when the robot is near enough to act (target() takes over). Not
+  // thread-safe (it keeps the triangles' distances to recent bodies' places).
+  std::optional<Vec2> approach(const Vec2& robot, const Vec2& body);
+
+  // Where the robot heads from `state` to move the goal's body on: past the body along a push while it
+  // stands in the mRegion of that push, else to that mRegion, round the body.
+  Vec2 target(const Goal& goal, const scenario::EnvironmentState& state, const knowledge::Kappa& kappa,
+              Random& random) const;
+
+ private:
+  const std::vector<double>& distances_to_triangle(int triangle);
+
+  const scenario::World& world_;
+  const knowledge::AbstractKnowledge& knowledge_;
+  const decomposition::Decomposition& decomposition_;
+  std::map<std::pair<int, int>, std::unique_ptr<geometry::DiscField>> ways_;  // by (body, place)
+  std::map<int, std::vector<double>> triangle_distances_;                       // by target triangle
+};
+
+}  // namespace physltl::planning

@@ -1,0 +1,98 @@
+#pragma once
+// One thread's share of the search: from a tree node, sample a control towards a target point and
+// propagate it through ODE step by step under the validity checker and INFERENCE. Each grower owns its
+// ODE world, kappa and scratch space. What it grows depends only on the node, the target and the seed,
+// never on the grower's history, which is what lets several threads expand one tree and still give a
+// seed's plan exactly.
+
+#include "physltl/planning/propagation/checked_simulation.h"
+#include "physltl/planning/propagation/control_sampler.h"
+#include "physltl/decomposition/decomposition.h"
+#include "physltl/knowledge/abstract_knowledge.h"
+#include "physltl/knowledge/validity.h"
+#include "physltl/physics/simulation.h"
+#include "object_lead.h"
+#include "physltl/planning/refusal.h"
+#include "physltl/planning/task.h"
+#include "product_graph.h"
+#include "physltl/planning/stage_graph.h"
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace physltl::planning {
+
+// A node of the search tree: the state after `control` from `parent`.
+struct Motion {
+  physics::PhysicsState state;
+  Vec2 robot = Vec2::Zero();
+  int parent = -1;
+  Control control;
+  int stage = 0;  // the automaton's state and the named bodies' places (stage_graph.h)
+  int product_state = 0;
+};
+
+// What one expansion grew: a child of the node grown from (its `parent` is left for the tree to fill
+// in), unless the first step was already invalid.
+struct Growth {
+  std::optional<Motion> motion;
+  // A task that ends at rest: after a motion that reached acceptance, the robot braking until it and the
+  // boxes stand still, still accepted: controls of at most the scenario's max_steps each, the first a
+  // child of `motion` and each next a child of the one before.
+  std::vector<Motion> braking;
+  bool accepted = false;  // the motion (and the braking, where the task needs it) reached acceptance
+  int physics_steps = 0;
+  bool stopped_by_invalid_step = false;
+  std::optional<Refusal> refusal;  // the rule that ended the motion (or its braking), if one did
+};
+
+// How an expansion samples its control and what it may touch.
+enum class Guidance {
+  kPushing,     // the knowledge sampler, pushing where a push helps towards the target
+  kPushingTo,   // the same, each control ending where the robot gets to the target (the look-ahead's pushes)
+  kGoingRound,  // the knowledge sampler steering only; touching a body the task does not name is cut
+  kWidened,     // as the baseline grows: a uniform control, nothing cut but what the task and the world forbid
+};
+
+class TreeGrower {
+ public:
+  TreeGrower(const scenario::World& world, const TaskAutomaton& task, const StageGraph& stages,
+             const knowledge::AbstractKnowledge& knowledge, const decomposition::Decomposition& decomposition,
+             const ProductGraph& graph, const ObjectLead& object_lead, bool use_knowledge);
+
+  // Replaces `growth` with what grows from `from` towards `target`, drawing from a generator seeded with
+  // `seed`. With an object goal the target is where that goal's body move needs the robot (object_lead.h),
+  // found in `from`'s state.
+  void grow(const Motion& from, const Vec2& target, const ObjectLead::Goal* goal, Guidance guidance,
+            std::uint64_t seed, Growth& growth);
+
+ private:
+  // Applies `control` from the simulation's current state until the end, an invalid step, a dead
+  // automaton state or acceptance; the valid steps make the growth's motion.
+  void propagate(const Control& control, int stage, bool may_push, Growth& growth);
+  // From an accepting motion's end: the drive's set-point zero until the robot and the boxes are at rest,
+  // every step valid and the automaton still accepting at the end. Whether that worked.
+  bool brake(int stage, Growth& growth);
+  // One valid step under `control`, then INFERENCE; false when the step was invalid, or when it touched a
+  // movable body the task does not name while `may_push` is false (the growth then says which rule).
+  bool valid_step(const Vec2& setpoint, bool may_push, Growth& growth);
+  // The stage after the physics step just taken, from `stage`; -1 when the automaton died.
+  int stage_after_step(int stage) const;
+  bool accepting(int stage) const { return task_.dfa.accepting[static_cast<std::size_t>(stages_.automaton_state_of(stage))]; }
+  Motion make_motion(const Control& control, int stage) const;
+
+  const TaskAutomaton& task_;
+  const StageGraph& stages_;
+  const decomposition::Decomposition& decomposition_;
+  const ProductGraph& graph_;
+  const ObjectLead& object_lead_;
+  const ControlSampler sampler_;
+  const int max_braking_steps_;
+  const int max_control_steps_;
+  std::vector<bool> named_;  // per movable body: the task says where it must be (touching it is never refused)
+  CheckedSimulation simulation_;
+  physics::PhysicsState last_valid_;
+};
+
+}  // namespace physltl::planning

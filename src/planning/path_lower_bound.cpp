@@ -1,0 +1,104 @@
+#include "physltl/planning/path_lower_bound.h"
+
+#include <functional>
+#include <limits>
+#include <queue>
+
+namespace physltl::planning {
+namespace {
+
+// A relaxation of the task's product with the free space, small enough to search exactly: a place is the
+// start or a region, and the robot moves from a place to a region at the free-space distance between them
+// (any point of one to any point of the other), reading that region; reading "no region" is free. Any
+// path the robot can follow reads its regions in some order, each leg at least that distance long, so the
+// cheapest accepted order is a lower bound.
+// `bodies_stay`: the bodies the task names keep their places (nothing is pushed); otherwise they may be
+// anywhere at no cost.
+double shortest_accepted_route(const scenario::World& world, const TaskAutomaton& task,
+                               const std::vector<std::vector<double>>& leg, bool bodies_stay) {
+  const int regions = static_cast<int>(world.regions.size());
+  const int states = static_cast<int>(task.dfa.size());
+  const auto id = [&](int place, int q) { return place * states + q; };
+  std::vector<double> cost(leg.size() * static_cast<size_t>(states), std::numeric_limits<double>::infinity());
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  const scenario::EnvironmentState initial = scenario::EnvironmentState::initial(world);
+  const int start = id(0, task.start_state(initial));
+  const int facts_at_start = task.labelling.facts(initial);
+  cost[static_cast<size_t>(start)] = 0.0;
+  open.push({0.0, start});
+  while (!open.empty()) {
+    const auto [c, u] = open.top();
+    open.pop();
+    if (c > cost[static_cast<size_t>(u)]) continue;
+    const int place = u / states, q = u % states;
+    if (task.dfa.accepting[static_cast<size_t>(q)]) return c;
+    const auto relax = [&](int v, double length) {
+      if (c + length < cost[static_cast<size_t>(v)]) cost[static_cast<size_t>(v)] = c + length, open.push({c + length, v});
+    };
+    // Where the bodies may be anywhere at no cost (moving them takes the robot somewhere too, so this only
+    // makes the bound lower), every fact set is tried.
+    for (int facts = 0; facts < task.labelling.fact_sets(); ++facts) {
+      if (bodies_stay && facts != facts_at_start) continue;
+      relax(id(place, task.step(q, task.labelling.letter(facts, -1))), 0.0);
+      for (int region = 0; region < regions; ++region) {
+        relax(id(region + 1, task.step(q, task.labelling.letter(facts, region))), leg[static_cast<size_t>(place)][static_cast<size_t>(region + 1)]);
+      }
+    }
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+// A robot braked against a wall or a box, or placed touching one, has its centre on or a hair inside the
+// grown obstacle (physics contacts are soft: ODE lets a body sink about a millimetre into another); its
+// start is then the free floor within kStartReach of that centre, or it would have no way anywhere.
+constexpr double kStartReach = 0.02;
+
+geometry::Polygon start_place(const geometry::FreeSpace& space, const geometry::Vec2& start) {
+  if (space.free(start, start)) return geometry::Polygon{{start}};
+  const geometry::Vec2 dx(kStartReach, 0.0), dy(0.0, kStartReach);
+  return geometry::Polygon{{start - dx - dy, start + dx - dy, start + dx + dy, start - dx + dy}};
+}
+
+}  // namespace
+
+geometry::FreeSpace robot_free_space(const scenario::World& world, RobotObstacles obstacles, double clearance,
+                                     const std::vector<geometry::Polygon>& avoided) {
+  const double r = world.robot.radius + clearance / 2.0;
+  std::vector<geometry::Polygon> grown = avoided;
+  const auto add = [&](const geometry::Footprint& f) {
+    for (geometry::Polygon& part : geometry::grown_from_inside(f.shape, f.pose, r)) grown.push_back(std::move(part));
+  };
+  for (const auto& f : world.fixed_bodies) add(f.footprint);
+  if (obstacles == RobotObstacles::kAllBodies) {
+    for (const auto& m : world.movable_bodies) add(m.footprint);
+  }
+  const geometry::Rect bounds{world.workspace.bounds.min + geometry::Vec2::Constant(r),
+                              world.workspace.bounds.max - geometry::Vec2::Constant(r)};
+  return geometry::FreeSpace(std::move(grown), bounds);
+}
+
+std::vector<std::vector<double>> place_distances(const scenario::World& world, const geometry::FreeSpace& space) {
+  std::vector<geometry::FreeSpace::Place> places{space.place(start_place(space, world.robot.start))};
+  for (const auto& region : world.regions) places.push_back(space.place(region.polygon));
+  std::vector<std::vector<double>> leg(places.size(), std::vector<double>(places.size(), 0.0));
+  for (size_t from = 0; from < places.size(); ++from) {
+    const std::vector<double> corners = space.distances_from(places[from]);
+    for (size_t to = 1; to < places.size(); ++to) {
+      if (to != from) leg[from][to] = space.distance_to(corners, places[from], places[to]);
+    }
+  }
+  return leg;
+}
+
+double shortest_free_path_length(const scenario::World& world, const TaskAutomaton& task) {
+  return shortest_accepted_route(world, task, place_distances(world, robot_free_space(world, RobotObstacles::kFixedBodies)),
+                                 false);
+}
+
+double shortest_push_free_path_length(const scenario::World& world, const TaskAutomaton& task) {
+  return shortest_accepted_route(world, task, place_distances(world, robot_free_space(world, RobotObstacles::kAllBodies)),
+                                 true);
+}
+
+}  // namespace physltl::planning
