@@ -8,6 +8,7 @@
 #include "bench/shard_folder.h"
 #include "bench/unit_runner.h"
 #include "command.h"
+#include "planner_args.h"
 #include "planner_names.h"
 #include "stop_signal.h"
 
@@ -31,7 +32,7 @@ struct BenchArgs {
   std::optional<double> time_limit;
   bool compare = false;
   std::optional<std::string> planners;  // A,B,...
-  std::string ompl_sampler = "ompl";
+  PlannerParameterArgs parameters;
   std::vector<int> threads{1};
   std::optional<std::string> sweep;  // key=v1,v2,...
   std::string log_file;
@@ -53,9 +54,9 @@ CampaignSettings campaign_settings(const BenchArgs& args) {
     }
   }
   CampaignSettings settings;
-  const planning::PlannerRegistry& registry = planning::PlannerRegistry::instance();
-  settings.planners = args.planners ? parse_planner_list(*args.planners) : std::vector{&registry.default_planner()};
-  const planning::PlannerEntry* reference = &registry.reference_planner();
+  const planning::PlannerRegistry& planners = registry();
+  settings.planners = args.planners ? parse_planner_list(*args.planners) : std::vector{&planners.default_planner()};
+  const planning::PlannerEntry* reference = &planners.reference_planner();
   if (args.compare && std::find(settings.planners.begin(), settings.planners.end(), reference) == settings.planners.end()) {
     settings.planners.push_back(reference);
   }
@@ -66,7 +67,7 @@ CampaignSettings campaign_settings(const BenchArgs& args) {
   settings.improve = args.improve;
   settings.robustness = args.robustness;
   settings.uncertainty = args.uncertainty;
-  settings.ompl_sampler = parse_ompl_sampler(args.ompl_sampler);
+  settings.parameters = args.parameters.values();
   return settings;
 }
 
@@ -216,9 +217,7 @@ CommandRunner add_bench_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   app.add_option("--planners", args->planners,
                  "Planners to measure, interleaved seed by seed (default: knowledge): " + planner_names());
-  app.add_option("--ompl-sampler", args->ompl_sampler,
-                 "Control sampler of OMPL's planners: ompl (OMPL's uniform one) or ours (the knowledge planner's)")
-      ->capture_default_str();
+  args->parameters.add_to(app);
   app.add_flag("--compare", args->compare, "Also run the baseline planner on the same seeds, interleaved");
   app.add_option("--improve", args->improve,
                  "Candidates spent shortening each first validated plan, timed apart from the search (default: none)")

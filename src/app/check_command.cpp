@@ -1,5 +1,6 @@
 #include "check_report.h"
-#include "lookahead_summary.h"
+#include "planner_names.h"
+#include "planner_views.h"
 #include "physltl/planning/planning_problem.h"
 #include "command.h"
 #include "output_folder.h"
@@ -51,13 +52,18 @@ CommandRunner add_check_command(CLI::App& app) {
     // The picture first: when it cannot be written, the command fails before reporting anything.
     std::optional<std::filesystem::path> preview;
     if (!args->no_preview) preview = write_preview(world, reasoning, args->out_dir);
+    // What the planner a run uses would prepare: the knowledge planner's look-ahead.
+    const planning::PlannerEntry& planner = registry().default_planner();
+    const planning::PlannerAccount prepared =
+        problem.feasible() ? account_of(planner, problem.preparation(planner), world) : planning::PlannerAccount{};
     if (args->json) {
       nlohmann::ordered_json report = check_report_json(world, reasoning);
-      report["lookahead"] = problem.feasible() ? lookahead_json(problem.lookahead(), world) : nlohmann::ordered_json(nullptr);
+      add_planner_keys(report, registry().report_keys(), prepared.report);
       std::cout << report.dump(2) << "\n";
     } else {
       print_check_report(std::cout, world, reasoning);
-      if (problem.feasible()) std::cout << "lookahead  " << lookahead_line(problem.lookahead(), world) << "\n";
+      for (const std::string& line : prepared.lines) std::cout << line << "\n";
+      for (const std::string& line : prepared.details) std::cout << line << "\n";
       if (preview) std::cout << "preview    " << preview->string() << "\n";
     }
     return reasoning.feasible() ? kExitOk : kExitNoPlan;

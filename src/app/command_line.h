@@ -1,6 +1,6 @@
 #pragma once
 // physltl-studio's command line: the main job and every subcommand, with the planners the registry holds
-// when it is called (a program may add its own first: planning::PlannerRegistry::instance().add).
+// when it is called (a program may add its own first: planners::registry().add).
 
 namespace physltl::app {
 

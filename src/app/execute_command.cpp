@@ -9,6 +9,7 @@
 #include "physltl/execution/perturbation.h"
 #include "physltl/execution/robustness.h"
 #include "plan_pictures.h"
+#include "planner_args.h"
 #include "planner_names.h"
 #include "physltl/execution/replanner.h"
 #include "physltl/planning/planning_problem.h"
@@ -37,6 +38,7 @@ struct ExecuteArgs {
   double tolerance = execution::ExecutionOptions{}.tolerance_m;
   long long budget = 200'000;
   std::optional<std::string> planner;  // the registry's default planner when not given
+  PlannerParameterArgs parameters;     // of the planners that take a budget
   std::optional<std::uint64_t> seed;
   std::string out_dir = "out";
   bool quiet = false;
@@ -50,7 +52,7 @@ void render_execution(const scenario::World& model, const knowledge::Reasoning& 
                       const std::function<void(const std::string&)>& say) {
   const scenario::World truth = execution::perturbed_world(model, model.uncertainty, model.planner.seed, shown.index);
   const planning::Replay executed = planning::replay(truth, planning::Plan{shown.run.controls, {}}, formula,
-                                                     knowledge::formulate(truth), knowledge::ValidityMode::kKnowledge);
+                                                     knowledge::formulate(truth));
   std::vector<render::SegmentOverlay> marks;
   const render::Color planned{0.55f, 0.55f, 0.55f, 1.0f}, replanned{0.9f, 0.1f, 0.1f, 1.0f};
   for (size_t i = 1; i < nominal.states.size(); ++i) {
@@ -77,7 +79,7 @@ void render_execution(const scenario::World& model, const knowledge::Reasoning& 
 
 int execute(const ExecuteArgs& args) {
   const planning::PlannerEntry& planner =
-      args.planner ? parse_planner(*args.planner) : planning::PlannerRegistry::instance().default_planner();
+      args.planner ? parse_planner(*args.planner) : registry().default_planner();
   scenario::World world = args.scenario.load();
   if (args.seed) world.planner.seed = *args.seed;
   if (args.uncertainty) world.uncertainty = override_uncertainty(world.uncertainty, *args.uncertainty);
@@ -91,12 +93,15 @@ int execute(const ExecuteArgs& args) {
     return kExitNoPlan;
   }
   // It replans with a budget of propagations, so that an execution is the same on any machine.
-  if (const auto why = problem.refusal(planner, {.propagation_budget = true})) throw BadInput(*why);
+  if (const auto why = registry().refusal(planner, problem.search_task(planner), {.propagation_budget = true})) {
+    throw BadInput(*why);
+  }
+  planning::PlannerOptions options = planning::options_for(world);
+  options.parameters = args.parameters.values();
   OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
-  const planning::ValidatedPlan solution = planning::solve(
-      problem, planner, {.seed = world.planner.seed, .time_limit = world.planner.time_limit, .threads = 1});
+  const planning::ValidatedPlan solution = planning::solve(problem, planner, options);
   if (!solution.solved()) {
-    std::cerr << "physltl-studio: " << no_plan_line(solution.result) << "; nothing written\n";
+    std::cerr << "physltl-studio: " << no_plan_line(planner, solution.result) << "; nothing written\n";
     return kExitNoPlan;
   }
   const planning::Plan& plan = solution.result.plan;
@@ -112,7 +117,7 @@ int execute(const ExecuteArgs& args) {
     const execution::WorldRun open_loop = execution::judge_in_world(truth, plan, &nominal, problem.as_written());
     execution::SimulatedWorld reality(truth);
     const execution::Execution run =
-        executor.run(reality, execution::budgeted_replanner(planner, world.planner.seed, i, args.budget));
+        executor.run(reality, execution::budgeted_replanner(planner, options, i, args.budget));
     const execution::WorldRun judged =
         execution::judge_in_world(truth, planning::Plan{run.controls, {}}, nullptr, problem.as_written());
     report.worlds.push_back({i, open_loop, judged, run});
@@ -151,11 +156,12 @@ CommandRunner add_execute_command(CLI::App& app) {
   app.add_option("--budget", args->budget, "Propagations each replanning may spend")
       ->check(CLI::Range(1000LL, 100'000'000LL))
       ->capture_default_str();
-  const planning::PlannerRegistry& registry = planning::PlannerRegistry::instance();
+  const planning::PlannerRegistry& planners = registry();
   app.add_option("--planner", args->planner,
                  "The planner that plans and replans, one that takes a budget of propagations: " +
-                     registry.names(&planning::Capabilities::propagation_budget) + " (default: " +
-                     registry.default_planner().name + ")");
+                     planners.names(&planning::Capabilities::propagation_budget) + " (default: " +
+                     planners.default_planner().name + ")");
+  args->parameters.add_to(app, &planning::Capabilities::propagation_budget);
   app.add_option("--seed", args->seed, "Seed of the plan and of the perturbed worlds (default: the scenario's)");
   app.add_option("--out", args->out_dir, "Folder for outputs; writes <out>/<scenario>/execution.json")->capture_default_str();
   app.add_flag("--quiet", args->quiet, "Print only errors");

@@ -24,6 +24,6 @@ void write_failed_search(const RunSummary& run, const decomposition::Decompositi
                          const std::filesystem::path& folder, bool render);
 // "no plan found (time limit); most refused: route_choice_cut (812 of 1020 steps)", or without the part
 // after the reason when nothing was refused.
-std::string no_plan_line(const planning::PlanResult& result);
+std::string no_plan_line(const planning::PlannerEntry& planner, const planning::PlanResult& result);
 
 }  // namespace physltl::app

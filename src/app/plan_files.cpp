@@ -1,6 +1,7 @@
 #include "plan_files.h"
 
-#include "lookahead_summary.h"
+#include "planner_names.h"
+#include "planner_views.h"
 #include "robustness/robustness_report.h"
 
 #include "physltl/ltl/formula.h"
@@ -21,15 +22,6 @@ void write_json(const std::filesystem::path& file, const json& j) {
   std::ofstream out(file);
   out << j.dump(2) << "\n";
   if (!out) throw std::runtime_error("cannot write " + file.string());
-}
-
-json refusals_json(const planning::Refusals& refused) {
-  json counts = json::object();
-  for (int k = 0; k < planning::kRefusalKinds; ++k) {
-    const auto rule = static_cast<planning::Refusal>(k);
-    counts[planning::refusal_name(rule)] = refused[rule];
-  }
-  return counts;
 }
 
 json report_json(const RunSummary& run) {
@@ -60,10 +52,9 @@ json report_json(const RunSummary& run) {
       {"propagations", r.stats.propagations},
       {"physics_steps", r.stats.physics_steps},
       {"invalid_steps", r.stats.invalid_steps},
-      {"refused", refusals_json(r.stats.refused)},
-      {"lookahead", r.lookahead ? lookahead_json(*r.lookahead, run.world) : json(nullptr)},
+      {"refused", refusals_json(refusal_counts(registry(), run.planner, r.stats.refused))},
   };
-  if (r.lookahead) report["lookahead"]["replans"] = r.stats.lookahead_replans;
+  add_planner_keys(report, registry().report_keys(), account_of(run.planner, r.own.get(), run.world).report);
   if (run.replay != nullptr) {
     report["validation"] = {
         {"reproduces_plan", run.replay->reproduces_plan},

@@ -30,8 +30,6 @@ struct RunSummary {
 };
 
 nlohmann::ordered_json report_json(const RunSummary& run);
-// {"fixed_contact": n, "task_letter": n, ...}: every rule of refusal.h, in its order.
-nlohmann::ordered_json refusals_json(const planning::Refusals& refused);
 nlohmann::ordered_json plan_json(const RunSummary& run);  // needs a replay
 // Throws std::runtime_error when the file cannot be written.
 void write_json(const std::filesystem::path& file, const nlohmann::ordered_json& j);

@@ -1,6 +1,5 @@
 #include "plan_pictures.h"
 
-#include "lookahead_summary.h"
 #include "overlays.h"
 #include "physltl/knowledge/kappa.h"
 #include "physltl/ltl/formula.h"
@@ -126,7 +125,7 @@ PlanFrames write_plan_frames(const scenario::World& world, const knowledge::Reas
 
 render::Image draw_tree_picture(const scenario::World& world, const knowledge::Reasoning& reasoning,
                                 const decomposition::Decomposition& decomposition, const planning::PlanResult& result,
-                                const planning::Replay* replay) {
+                                const planning::Replay* replay, const PlannedMoves& moves) {
   render::Overlay overlay;
   overlay.avoided_regions = ltl::avoided_propositions(reasoning.task.normal_form);
   for (const auto& t : decomposition.triangles()) overlay.decomposition.push_back(t.corners);
@@ -139,10 +138,9 @@ render::Image draw_tree_picture(const scenario::World& world, const knowledge::R
   }
   overlay.legend = {"search tree: " + std::to_string(result.tree.size() + 1) + " nodes, coloured by automaton state",
                     result.solved ? "solution path on top" : "no solution (" + result.stop_reason + ")"};
-  if (result.lookahead && !result.lookahead->pushes.empty()) {
-    const auto arrows = push_arrows(*result.lookahead);
-    overlay.segments.insert(overlay.segments.end(), arrows.begin(), arrows.end());
-    overlay.legend.push_back(push_arrows_legend(*result.lookahead));
+  if (!moves.arrows.empty()) {
+    overlay.segments.insert(overlay.segments.end(), moves.arrows.begin(), moves.arrows.end());
+    overlay.legend.push_back(moves.legend);
   }
   render::Renderer renderer(world, world.render.width, world.render.height);
   const auto initial = replay != nullptr ? replay->states.front() : scenario::EnvironmentState::initial(world);
@@ -152,8 +150,8 @@ render::Image draw_tree_picture(const scenario::World& world, const knowledge::R
 
 void write_tree_picture(const scenario::World& world, const knowledge::Reasoning& reasoning,
                         const decomposition::Decomposition& decomposition, const planning::PlanResult& result,
-                        const planning::Replay* replay, const std::filesystem::path& file) {
-  render::write_png(draw_tree_picture(world, reasoning, decomposition, result, replay), file);
+                        const planning::Replay* replay, const PlannedMoves& moves, const std::filesystem::path& file) {
+  render::write_png(draw_tree_picture(world, reasoning, decomposition, result, replay, moves), file);
 }
 
 }  // namespace physltl::app

@@ -9,6 +9,7 @@
 #include "physltl/render/scene.h"
 #include "physltl/render/video.h"
 #include "physltl/knowledge/reasoning.h"
+#include "planner_views.h"
 
 #include <filesystem>
 #include <functional>
@@ -67,15 +68,15 @@ PlanFrames write_plan_frames(const scenario::World& world, const knowledge::Reas
                              const std::filesystem::path& video, const Progress& progress,
                              const std::vector<render::SegmentOverlay>& marks = {}, const std::string& mark_legend = "");
 
-// tree.png: the decomposition faintly, the tree's edges coloured by automaton state, the path on top;
-// `reasoning` names the regions the task avoids.
+// tree.png: the decomposition faintly, the tree's edges coloured by automaton state, the path on top, the
+// planner's planned moves as arrows; `reasoning` names the regions the task avoids.
 void write_tree_picture(const scenario::World& world, const knowledge::Reasoning& reasoning,
                         const decomposition::Decomposition& decomposition, const planning::PlanResult& result,
-                        const planning::Replay* replay, const std::filesystem::path& file);
+                        const planning::Replay* replay, const PlannedMoves& moves, const std::filesystem::path& file);
 
 render::Image draw_tree_picture(const scenario::World& world, const knowledge::Reasoning& reasoning,
                                 const decomposition::Decomposition& decomposition, const planning::PlanResult& result,
-                                const planning::Replay* replay);
+                                const planning::Replay* replay, const PlannedMoves& moves);
 
 // A colour per automaton state, from start (cool) to accepting (warm).
 render::Color automaton_state_color(int state, int states);

@@ -2,15 +2,22 @@
 
 #include "bad_input.h"
 
+#include "physltl/planners/registry.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <algorithm>
 #include <sstream>
 
 namespace physltl::app {
 
-std::string planner_names() { return planning::PlannerRegistry::instance().names(); }
+planning::PlannerRegistry& registry() { return planners::registry(); }
+
+std::string planner_names() { return registry().names(); }
 
 const planning::PlannerEntry& parse_planner(const std::string& name) {
-  if (const planning::PlannerEntry* planner = planning::PlannerRegistry::instance().find(name)) return *planner;
+  if (const planning::PlannerEntry* planner = registry().find(name)) return *planner;
   throw BadInput("unknown planner '" + name + "'; the planners are " + planner_names());
 }
 
@@ -28,10 +35,46 @@ std::vector<const planning::PlannerEntry*> parse_planner_list(const std::string&
   return planners;
 }
 
-planning::OmplControlSampler parse_ompl_sampler(const std::string& name) {
-  if (name == "ompl") return planning::OmplControlSampler::kOmpl;
-  if (name == "ours") return planning::OmplControlSampler::kOurs;
-  throw BadInput("--ompl-sampler: unknown sampler '" + name + "'; the samplers are ompl, ours");
+std::map<std::string, std::string> parameter_values(const std::map<std::string, std::string>& given) {
+  std::map<std::string, std::string> values;
+  for (const planning::PlannerParameter* parameter : registry().parameters()) {
+    const auto it = given.find(parameter->name);
+    const std::string& value = it != given.end() ? it->second : parameter->default_value();
+    if (std::find(parameter->choices.begin(), parameter->choices.end(), value) == parameter->choices.end()) {
+      throw BadInput(fmt::format("--{}: unknown value '{}'; it takes {}", parameter->name, value, fmt::join(parameter->choices, ", ")));
+    }
+    values[parameter->name] = value;
+  }
+  return values;
+}
+
+}  // namespace physltl::app
+
+namespace physltl::app {
+
+std::vector<std::string> parameter_notes(const std::map<std::string, std::string>& values) {
+  std::vector<std::string> notes;
+  for (const planning::PlannerParameter* parameter : registry().parameters()) {
+    const auto value = values.find(parameter->name);
+    if (value == values.end() || !parameter->note) continue;
+    if (std::string note = parameter->note(value->second); !note.empty()) notes.push_back(std::move(note));
+  }
+  return notes;
+}
+
+std::string manifest_key(const std::string& parameter) {
+  std::string key = parameter;
+  std::replace(key.begin(), key.end(), '-', '_');
+  return key;
+}
+
+std::map<std::string, std::string> manifest_parameters(const nlohmann::json& settings) {
+  std::map<std::string, std::string> given;
+  for (const planning::PlannerParameter* parameter : registry().parameters()) {
+    const std::string key = manifest_key(parameter->name);
+    if (settings.contains(key)) given[parameter->name] = settings.at(key).get<std::string>();
+  }
+  return given;
 }
 
 }  // namespace physltl::app

@@ -1,22 +1,34 @@
 #pragma once
-// The planners' names on the command line, as the registry knows them: --planner NAME and bench
-// --planners A,B,...
+// The planners on the command line, as the program's registry knows them (planners/registry.h):
+// --planner NAME, bench --planners A,B,..., and each planner's own parameters (--NAME VALUE).
 
-#include "physltl/planning/planner_options.h"
 #include "physltl/planning/registry.h"
 
+#include <nlohmann/json.hpp>
+
+#include <map>
 #include <string>
 #include <vector>
 
 namespace physltl::app {
 
+// The program's registry.
+planning::PlannerRegistry& registry();
 // "knowledge, baseline, ompl-ltl, ..."
 std::string planner_names();
 // The planner `name` names; BadInput naming it and the choices otherwise.
 const planning::PlannerEntry& parse_planner(const std::string& name);
 // A comma-separated list, each once.
 std::vector<const planning::PlannerEntry*> parse_planner_list(const std::string& text);
-// --ompl-sampler: "ompl" (OMPL's uniform control sampler, the default) or "ours".
-planning::OmplControlSampler parse_ompl_sampler(const std::string& name);
+
+// Every parameter of the registry's planners given a value: `given`'s, checked against its choices
+// (BadInput naming the option and its choices), else its default.
+std::map<std::string, std::string> parameter_values(const std::map<std::string, std::string>& given);
+// The lines bench prints under its table for `values` (PlannerParameter::note), in the registry's order.
+std::vector<std::string> parameter_notes(const std::map<std::string, std::string>& values);
+// A parameter's key in a campaign's manifest: its name with dashes as underscores ("ompl_sampler").
+std::string manifest_key(const std::string& parameter);
+// The parameters a manifest's settings give, by name (those it lacks are left to their defaults).
+std::map<std::string, std::string> manifest_parameters(const nlohmann::json& settings);
 
 }  // namespace physltl::app

@@ -1,7 +1,8 @@
 #include "command.h"
 #include "main_job.h"
+#include "planner_args.h"
 #include "planner_names.h"
-#include "lookahead_summary.h"
+#include "planner_views.h"
 #include "output_folder.h"
 #include "physltl/ltl/formula.h"
 #include "physltl/render/video.h"
@@ -38,7 +39,7 @@ struct RunArgs {
   std::optional<double> time_limit;
   std::string out_dir = "out";
   std::optional<std::string> planner;
-  std::string ompl_sampler = "ompl";
+  PlannerParameterArgs parameters;
   bool baseline = false;  // --planner baseline
   bool quiet = false;
   // Shortening the first validated plan (docs/planner.md).
@@ -66,7 +67,7 @@ class ProgressLine {
 };
 
 int run(const RunArgs& args) {
-  const planning::PlannerRegistry& registry = planning::PlannerRegistry::instance();
+  const planning::PlannerRegistry& registry = app::registry();
   if (args.baseline && args.planner && *args.planner != registry.reference_planner().name) {
     throw BadInput("--baseline and --planner " + *args.planner + " name two planners");
   }
@@ -88,7 +89,8 @@ int run(const RunArgs& args) {
     std::cerr << "physltl-studio: the task is infeasible: " << reasoning.task.infeasibility() << "\n";
     return kExitNoPlan;
   }
-  if (const auto why = problem.refusal(planner)) throw BadInput(*why);
+  if (const auto why = registry.refusal(planner, problem.search_task(planner))) throw BadInput(*why);
+  const std::map<std::string, std::string> parameters = args.parameters.values();
   // Made before planning so that an unwritable --out fails at once, not after minutes of search; it is
   // removed again unless the run succeeds.
   OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
@@ -97,19 +99,19 @@ int run(const RunArgs& args) {
                   planner.uses_knowledge ? ltl::to_string(*reasoning.simplified_formula()) : world.task.formula,
                   task.dfa.size(), planner.name, world.planner.seed));
   say(fmt::format("prepare    {:.2f} s: reasoning, decomposition, and where the lead goes round the bodies",
-                  problem.preparation_s()));
-  if (planner.uses_knowledge && task.names_bodies()) say("lookahead  " + lookahead_line(problem.lookahead(), world));
+                  problem.preparation_s(planner)));
+  for (const std::string& line : account_of(planner, problem.preparation(planner), world).lines) say(line);
 
   StopSignal stop;  // Ctrl-C and SIGTERM end the search; nothing is written then
   ProgressLine progress(args.quiet);
   progress.show(fmt::format("planning (up to {:g} s) ...", world.planner.time_limit));
   const planning::ValidatedPlan solution = planning::solve(problem, planner,
-                                                          {.ompl_control_sampler = parse_ompl_sampler(args.ompl_sampler),
-                                                           .seed = world.planner.seed,
+                                                          {.seed = world.planner.seed,
                                                            .time_limit = world.planner.time_limit,
                                                            .stop = &stop.flag(),
                                                            .threads = args.threads,
-                                                           .improve = args.improve});
+                                                           .improve = args.improve,
+                                                           .parameters = parameters});
   progress.done();
   const planning::PlanResult& result = solution.result;
   const auto& stats = result.stats;
@@ -126,7 +128,7 @@ int run(const RunArgs& args) {
       write_failed_search(summary, problem.decomposition(), out.final_path() / "failed", args.render);
       say("outputs    " + (out.final_path() / "failed").string() + "/");
     }
-    std::cerr << "physltl-studio: " << no_plan_line(result) << "\n";
+    std::cerr << "physltl-studio: " << no_plan_line(planner, result) << "\n";
     return kExitNoPlan;
   }
 
@@ -157,18 +159,17 @@ int run(const RunArgs& args) {
   write_json(out.path() / "report.json", report_json(summary));
   write_json(out.path() / "plan.json", plan_json(summary));
   if (args.render) {
-    write_tree_picture(world, reasoning, problem.decomposition(), result, &replay, out.path() / "tree.png");
+    const PlannedMoves moves = planned_moves(account_of(planner, result.own.get(), world));
+    write_tree_picture(world, reasoning, problem.decomposition(), result, &replay, moves, out.path() / "tree.png");
     const int automaton_states = static_cast<int>(problem.as_written().dfa.size());
     const auto frames_started = std::chrono::steady_clock::now();
-    const bool pushes_planned = result.lookahead && !result.lookahead->pushes.empty();
     const PlanFrames pictures = write_plan_frames(
         world, reasoning, replay, automaton_states, out.path() / "frames", out.path() / "plan.mp4",
         [&](int done, int total) {
           const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - frames_started).count();
           progress.show(fmt::format("frames {}/{}, {:.0f} s left", done, total, elapsed / done * (total - done)));
         },
-        pushes_planned ? push_arrows(*result.lookahead) : std::vector<render::SegmentOverlay>{},
-        pushes_planned ? push_arrows_legend(*result.lookahead) : "");
+        moves.arrows, moves.legend);
     progress.done();
     say(fmt::format("render     {} frames, tree.png{}", pictures.frames, pictures.video.written ? ", plan.mp4" : ""));
     if (!pictures.video.written) {
@@ -195,10 +196,8 @@ CommandRunner add_run_command(CLI::App& app) {
   app.add_option("--time-limit", args->time_limit, "Planning time limit in seconds (default: the scenario's)")
       ->check(CLI::PositiveNumber);
   app.add_option("--out", args->out_dir, "Folder for outputs; each scenario writes <out>/<name>/")->capture_default_str();
-  app.add_option("--planner", args->planner, "Planner: " + planner_names() + " (default: " + planning::PlannerRegistry::instance().default_planner().name + ")");
-  app.add_option("--ompl-sampler", args->ompl_sampler,
-                 "Control sampler of OMPL's planners: ompl (OMPL's uniform one) or ours (the knowledge planner's)")
-      ->capture_default_str();
+  app.add_option("--planner", args->planner, "Planner: " + planner_names() + " (default: " + registry().default_planner().name + ")");
+  args->parameters.add_to(app);
   app.add_flag("--baseline", args->baseline, "Same as --planner baseline: the paper's simple physics-based LTL planner");
   app.add_flag("--quiet", args->quiet, "Print only errors");
   app.add_option("--improve", args->improve,

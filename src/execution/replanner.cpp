@@ -6,21 +6,25 @@
 
 namespace physltl::execution {
 
-Replanned replan(const scenario::World& from_here, const planning::PlannerEntry& planner, std::uint64_t seed,
-                 long long budget) {
+Replanned replan(const scenario::World& from_here, const planning::PlannerEntry& planner,
+                 const planning::PlannerOptions& options, long long budget) {
   Replanned out;
   const planning::PlanningProblem problem(from_here);
   if (!problem.feasible()) {
     out.stop_reason = "infeasible: " + problem.reasoning().task.infeasibility();
     return out;
   }
-  if (const auto why = problem.refusal(planner, {.propagation_budget = true})) {
+  if (const auto why = planning::cannot_take(planner, problem.search_task(planner), {.propagation_budget = true})) {
     out.stop_reason = "refused: " + *why;
     return out;
   }
   // The budget, not the clock, ends the search: the time limit only guards against a budget too large.
-  const planning::ValidatedPlan solution =
-      planning::solve(problem, planner, {.seed = seed, .time_limit = 3600.0, .max_propagations = budget, .threads = 1});
+  planning::PlannerOptions budgeted = options;
+  budgeted.time_limit = 3600.0;
+  budgeted.max_propagations = budget;
+  budgeted.threads = 1;
+  budgeted.improve = 0;
+  const planning::ValidatedPlan solution = planning::solve(problem, planner, budgeted);
   out.propagations = solution.result.stats.propagations;
   out.planning_s = solution.result.stats.planning_time_s;
   out.stop_reason = solution.result.stop_reason;
@@ -31,12 +35,13 @@ Replanned replan(const scenario::World& from_here, const planning::PlannerEntry&
   return out;
 }
 
-Replanner budgeted_replanner(const planning::PlannerEntry& planner, std::uint64_t seed, int world_index, long long budget) {
+Replanner budgeted_replanner(const planning::PlannerEntry& planner, const planning::PlannerOptions& options, int world_index,
+                             long long budget) {
   auto attempt = std::make_shared<std::uint64_t>(0);
-  return [&planner, seed, world_index, budget, attempt](const scenario::World& from_here) {
-    const std::uint64_t replanning_seed =
-        seed + 1'000'003ull * static_cast<std::uint64_t>(world_index + 1) + (*attempt)++;
-    return replan(from_here, planner, replanning_seed, budget);
+  return [&planner, options, world_index, budget, attempt](const scenario::World& from_here) {
+    planning::PlannerOptions replanning = options;
+    replanning.seed = options.seed + 1'000'003ull * static_cast<std::uint64_t>(world_index + 1) + (*attempt)++;
+    return replan(from_here, planner, replanning, budget);
   };
 }
 

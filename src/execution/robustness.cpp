@@ -52,7 +52,7 @@ WorldRun judge_in_world(const scenario::World& world, const planning::Plan& plan
   // The truth's own K: its masses decide what kappa calls immovable.
   const knowledge::AbstractKnowledge truth = knowledge::formulate(world);
   // Every planner's plan is judged by every rule, so kappa's count for the baseline's plans too.
-  const planning::Replay run = planning::replay(world, plan, formula, truth, knowledge::ValidityMode::kKnowledge);
+  const planning::Replay run = planning::replay(world, plan, formula, truth);
   WorldRun result;
   auto add = [&](const char* kind) { result.failures.emplace_back(kind); };
   if (!run.accepted) add(nominal != nullptr ? formula_failure(run, *nominal) : "region_not_reached");

@@ -3,12 +3,19 @@
 #include "physltl/ltl/parser.h"
 
 namespace physltl::planning {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
 
 PlanningProblem::PlanningProblem(const scenario::World& world, std::chrono::steady_clock::time_point started)
     : world_(world),
       reasoning_(knowledge::reason_about(world)),
       prepared_(prepare(world, reasoning_)),
-      preparation_s_(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()) {}
+      preparation_s_(seconds_since(started)) {}
 
 std::optional<PlanningProblem::Prepared> PlanningProblem::prepare(const scenario::World& world,
                                                                   const knowledge::Reasoning& reasoning) {
@@ -16,28 +23,45 @@ std::optional<PlanningProblem::Prepared> PlanningProblem::prepare(const scenario
   TaskAutomaton simplified = TaskAutomaton::make(*reasoning.simplified_formula(), *reasoning.task.dfa, world);
   TaskAutomaton as_written = TaskAutomaton::make(ltl::parse(world.task.formula), world);
   decomposition::Decomposition decomposition = decomposition::Decomposition::build(world);
-  RouteChoice routes = choose_routes(world, simplified, decomposition);
-  auto ahead = prepare_lookahead(world, reasoning.knowledge, simplified);
-  return Prepared{std::move(simplified), std::move(as_written), std::move(decomposition), std::move(routes), std::move(ahead)};
+  return Prepared{std::move(simplified), std::move(as_written), std::move(decomposition)};
 }
 
 const TaskAutomaton& PlanningProblem::search_task(const PlannerEntry& planner) const {
   return planner.uses_knowledge ? prepared_->simplified : prepared_->as_written;
 }
 
-std::optional<std::string> PlanningProblem::refusal(const PlannerEntry& planner, Needs needs) const {
-  return PlannerRegistry::instance().refusal(planner, search_task(planner), needs);
+const PlannerData* PlanningProblem::preparation(const PlannerEntry& planner) const {
+  const std::lock_guard lock(planners_mutex_);
+  auto known = planners_.find(&planner);
+  if (known == planners_.end()) {
+    const auto started = std::chrono::steady_clock::now();
+    PlannerPreparation made;
+    if (planner.prepare) made.data = planner.prepare(for_planner(planner));
+    made.seconds = seconds_since(started);
+    known = planners_.emplace(&planner, std::move(made)).first;
+  }
+  return known->second.data.get();
 }
 
-const PushPlan& PlanningProblem::lookahead() const { return push_plan_of(*prepared_->lookahead); }
+double PlanningProblem::preparation_s(const PlannerEntry& planner) const {
+  preparation(planner);
+  const std::lock_guard lock(planners_mutex_);
+  return preparation_s_ + planners_.at(&planner).seconds;
+}
+
+double PlanningProblem::preparation_s() const {
+  const std::lock_guard lock(planners_mutex_);
+  double seconds = preparation_s_;
+  for (const auto& [planner, made] : planners_) seconds += made.seconds;
+  return seconds;
+}
 
 Problem PlanningProblem::for_planner(const PlannerEntry& planner) const {
-  return {world_, search_task(planner), as_written(), reasoning_.knowledge, decomposition(), &routes(),
-          planner.uses_knowledge ? prepared_->lookahead.get() : nullptr};
+  return {world_, search_task(planner), as_written(), reasoning_.knowledge, decomposition()};
 }
 
 ValidatedPlan solve(const PlanningProblem& problem, const PlannerEntry& planner, const PlannerOptions& options) {
-  return plan_and_validate(problem.for_planner(planner), planner, options);
+  return plan_and_validate(problem.for_planner(planner), planner, problem.preparation(planner), options);
 }
 
 }  // namespace physltl::planning

@@ -3,7 +3,7 @@
 #include "plan_pictures.h"
 
 #include "golden_image.h"
-#include "physltl/planning/registry.h"
+#include "physltl/planners/registry.h"
 #include "physltl/ltl/parser.h"
 #include "physltl/ltl/translate.h"
 #include "physltl/render/frame_writer.h"
@@ -36,10 +36,9 @@ class FixedPlan : public testing::Test {
         planning::TaskAutomaton::make(ltl::parse(world_->task.formula), *world_));
     planning::PlannerOptions options;
     options.seed = 3;
-    result_ = new planning::PlanResult(planning::PlannerRegistry::instance().default_planner().plan(
-        planning::Problem{*world_, task, *as_written_, reasoning_->knowledge, *decomposition_}, options));
-    replay_ = new planning::Replay(planning::replay(*world_, result_->plan, *as_written_, reasoning_->knowledge,
-                                                    knowledge::ValidityMode::kKnowledge));
+    result_ = new planning::PlanResult(planners::registry().default_planner().plan(
+        planning::Problem{*world_, task, *as_written_, reasoning_->knowledge, *decomposition_}, nullptr, options));
+    replay_ = new planning::Replay(planning::replay(*world_, result_->plan, *as_written_, reasoning_->knowledge));
   }
 
   static void TearDownTestSuite() {
@@ -96,7 +95,7 @@ TEST_F(FixedPlan, FramesCoverThePlanAtTheScenariosFrameRate) {
 
 TEST_F(FixedPlan, TreePictureShowsTheSearchAndThePath) {
   const fs::path file = output("tree") / "tree.png";
-  write_tree_picture(*world_, *reasoning_, *decomposition_, *result_, replay_, file);
+  write_tree_picture(*world_, *reasoning_, *decomposition_, *result_, replay_, {}, file);
   EXPECT_TRUE(render::matches_golden(render::read_png(file), "ordered_plan_tree"));
 }
 

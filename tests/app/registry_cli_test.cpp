@@ -36,12 +36,45 @@ TEST(Registry, APlannerAddedThroughItIsInHelpAndRunsInRunBenchAndExecute) {
   EXPECT_EQ(nlohmann::json::parse(slurp(out / "ordered" / "execution.json"))["planner"], "test-planner");
 }
 
+// test-annotated declares a parameter (--test-flavour) and report data of its own (a line before the
+// search, "test_note" in report.json): nothing in src/app or the planning core names either.
+TEST(Registry, APlannersOwnParameterAndReportDataReachHelpRunBenchAndExecute) {
+  for (const std::string command : {"--help", "bench --help", "execute --help"}) {
+    const Result help = run_with_test_planners(command);
+    EXPECT_NE(help.out.find("--test-flavour"), std::string::npos) << command << ": " << help.out;
+  }
+  const fs::path out = fresh_out_dir();
+  const std::string scenario = small_ordered(test_dir()).string();
+  const Result r = run_with_test_planners(scenario + " --planner test-annotated --test-flavour salted --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("test-note  prepared"), std::string::npos) << r.out;
+  const auto report = nlohmann::json::parse(slurp(out / "ordered" / "report.json"));
+  EXPECT_EQ(report["test_note"]["flavour"], "salted");
+  EXPECT_EQ(report["test_note"]["prepared"], true);
+  EXPECT_GT(report["test_note"]["propagations"].get<long long>(), 0);
+  // Every planner's report has the key, null where another planner ran.
+  const Result k = run_with_test_planners(scenario + " --quiet --out " + out.string());
+  ASSERT_EQ(k.exit_code, 0) << k.err;
+  EXPECT_TRUE(nlohmann::json::parse(slurp(out / "ordered" / "report.json"))["test_note"].is_null());
+
+  const Result b = run_with_test_planners("bench " + scenario + " --planners test-annotated --test-flavour salted --runs 1 --out " +
+                                          out.string());
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_NE(b.out.find("the test's planner was salted"), std::string::npos) << b.out;
+  const Result e = run_with_test_planners("execute " + scenario + " --planner test-annotated --test-flavour salted --worlds 1 "
+                                          "--quiet --out " + out.string());
+  ASSERT_EQ(e.exit_code, 0) << e.err;
+  const Result bad = run_with_test_planners(scenario + " --planner test-annotated --test-flavour sour --out " + out.string());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--test-flavour: unknown value 'sour'; it takes plain, salted"), std::string::npos) << bad.err;
+}
+
 TEST(Registry, ATaskAPlannerCannotTakeIsRefusedWithItsReasonInRunBenchAndExecuteAlike) {
   const fs::path out = fresh_out_dir();
   const std::string delivery = kSource + "/scenarios/delivery.lua";
   const std::string reason =
       "test-robot-only cannot take tasks about where bodies are (BODY@REGION): this test's planner reads the robot's "
-      "region only: use knowledge, baseline, ompl-rrt, ompl-kpiece, ompl-sst, ompl-pdst or test-planner";
+      "region only: use knowledge, baseline, ompl-rrt, ompl-kpiece, ompl-sst, ompl-pdst, test-planner or test-annotated";
   for (const std::string& command : {delivery + " --planner test-robot-only",
                                      "bench " + delivery + " --planners test-robot-only --runs 1",
                                      "execute " + delivery + " --planner test-robot-only --worlds 1"}) {
@@ -54,7 +87,7 @@ TEST(Registry, ATaskAPlannerCannotTakeIsRefusedWithItsReasonInRunBenchAndExecute
                                           " --planner test-robot-only --worlds 1 --out " + out.string());
   EXPECT_EQ(e.exit_code, 2);
   EXPECT_NE(e.err.find("test-robot-only cannot take a budget of propagations: this test's planner stops at a time "
-                       "limit only: use knowledge, baseline or test-planner"),
+                       "limit only: use knowledge, baseline, test-planner or test-annotated"),
             std::string::npos)
       << e.err;
   EXPECT_FALSE(fs::exists(out / "delivery"));

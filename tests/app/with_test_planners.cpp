@@ -1,20 +1,79 @@
-// physltl-studio with two planners added through the registry, as a lab would add its own: nothing in
-// src/app knows them (registry_cli_test.cpp runs this program).
+// physltl-studio with three planners added through the registry, as a lab would add its own: nothing in
+// src/app or in the planning core knows them (registry_cli_test.cpp runs this program).
 
 #include "command_line.h"
 
-#include "physltl/planning/registry.h"
+#include "physltl/planners/registry.h"
+
+#include <memory>
+#include <string>
+
+namespace {
+
+using namespace physltl::planning;
+
+// What test-annotated keeps of its own: the flavour it was given, and whether it prepared the problem.
+struct Annotation : PlannerData {
+  std::string flavour;
+  bool prepared = false;
+  long long propagations = 0;
+};
+
+// The baseline's search with a parameter of its own (--test-flavour) and data of its own: a line before
+// the search, a key in report.json.
+PlannerEntry annotated(const PlannerEntry& baseline) {
+  PlannerEntry entry;
+  entry.name = "test-annotated";
+  entry.summary = "the baseline with a parameter and report data of its own (a test's)";
+  entry.can = baseline.can;
+  entry.uses_knowledge = false;
+  entry.parameters = {{"test-flavour", "A parameter of the test's planner: plain or salted", {"plain", "salted"},
+                       [](const std::string& value) { return value == "salted" ? "the test's planner was salted" : ""; }}};
+  entry.report_keys = {"test_note"};
+  entry.prepare = [](const Problem&) {
+    auto prepared = std::make_shared<Annotation>();
+    prepared->prepared = true;
+    return prepared;
+  };
+  entry.plan = [&baseline](const Problem& problem, const PlannerData* prepared, const PlannerOptions& options) {
+    PlanResult result = baseline.plan(problem, nullptr, options);
+    auto note = std::make_shared<Annotation>();
+    note->flavour = options.parameter("test-flavour", "plain");
+    note->prepared = prepared != nullptr && dynamic_cast<const Annotation&>(*prepared).prepared;
+    note->propagations = result.stats.propagations;
+    result.own = std::move(note);
+    return result;
+  };
+  entry.account = [](const PlannerData& data, const physltl::scenario::World&) {
+    const auto& note = dynamic_cast<const Annotation&>(data);
+    PlannerAccount account;
+    if (note.flavour.empty()) {
+      account.lines.push_back("test-note  prepared");
+    } else {
+      account.report["test_note"] = {{"flavour", note.flavour}, {"prepared", note.prepared}, {"propagations", note.propagations}};
+    }
+    return account;
+  };
+  return entry;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
-  using namespace physltl::planning;
-  PlannerRegistry& registry = PlannerRegistry::instance();
+  PlannerRegistry& registry = physltl::planners::registry();
   const PlannerEntry& baseline = registry.reference_planner();
   // The baseline's search under another name: it can take everything the baseline can.
-  registry.add({"test-planner", "the baseline under another name (a test's)", baseline.can, false, baseline.plan});
+  PlannerEntry same = baseline;
+  same.name = "test-planner";
+  same.summary = "the baseline under another name (a test's)";
+  registry.add(std::move(same));
   // One that reads the robot's region only, like OMPL's product, and has no budget.
-  Capabilities robot_only = baseline.can;
-  robot_only.object_tasks = {false, "this test's planner reads the robot's region only"};
-  robot_only.propagation_budget = {false, "this test's planner stops at a time limit only"};
-  registry.add({"test-robot-only", "the baseline, refusing tasks about bodies (a test's)", robot_only, false, baseline.plan});
+  PlannerEntry robot_only = baseline;
+  robot_only.name = "test-robot-only";
+  robot_only.summary = "the baseline, refusing tasks about bodies (a test's)";
+  robot_only.can.object_tasks = {false, "this test's planner reads the robot's region only"};
+  robot_only.can.propagation_budget = {false, "this test's planner stops at a time limit only"};
+  registry.add(std::move(robot_only));
+  registry.add(annotated(baseline));
   return physltl::app::run_command_line(argc, argv);
 }

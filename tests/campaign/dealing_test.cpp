@@ -2,6 +2,7 @@
 
 #include "bench/campaign.h"
 #include "bad_input.h"
+#include "physltl/planners/registry.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +14,7 @@ namespace campaign_dealing {
 using namespace physltl::app;
 using physltl::planning::PlannerEntry;
 
-const PlannerEntry* planner(const char* name) { return physltl::planning::PlannerRegistry::instance().find(name); }
+const PlannerEntry* planner(const char* name) { return physltl::planners::registry().find(name); }
 
 // 3 scenarios (one swept over two values) x 7 planners x `runs` seeds.
 std::vector<CaseUnits> seven_planners() {

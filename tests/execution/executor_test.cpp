@@ -16,7 +16,9 @@ using namespace physltl::execution;
 
 // The remaining task planned in the model from here, as execute replans.
 execution::Replanned replan(const scenario::World& from_here) {
-  return execution::replan(from_here, PlannerRegistry::instance().default_planner(), 5, 200'000);
+  PlannerOptions options;
+  options.seed = 5;
+  return execution::replan(from_here, planners::registry().default_planner(), options, 200'000);
 }
 
 class Executing : public OrderedPlanPushingBoxes {
@@ -29,7 +31,7 @@ class Executing : public OrderedPlanPushingBoxes {
   // The executed controls replayed from the truth's start: the same run, bit for bit, judged as robustness is.
   void expect_replay_reproduces(const scenario::World& truth, const execution::Execution& run, bool succeeds) const {
     const Plan executed{run.controls, {}};
-    const Replay again = replay(truth, executed, problem_.original, knowledge::formulate(truth), knowledge::ValidityMode::kKnowledge);
+    const Replay again = replay(truth, executed, problem_.original, knowledge::formulate(truth));
     ASSERT_EQ(again.states.size(), run.states.size());
     for (size_t i = 0; i < run.states.size(); ++i) {
       ASSERT_EQ(again.states[i].robot_position, run.states[i].robot_position) << "step " << i;

@@ -1,6 +1,6 @@
 // Tasks about where bodies must be (BODY@REGION): the stages, the planner and the replay.
 
-#include "physltl/planning/registry.h"
+#include "physltl/planners/registry.h"
 #include "physltl/planning/validation/replay.h"
 #include "physltl/planning/stage_graph.h"
 
@@ -154,22 +154,22 @@ TEST(Replay, AStayTaskWhoseCrateEndsOutsideTheDockIsRejected) {
   result.plan.controls.push_back({Vec2::Zero(), 30});     // and stop
   result.plan.states.clear();                             // states not checked here: only the trace
   const TestProblem stay("delivery.lua", {{"task", "F G crate@dock"}});
-  const Replay r = replay(stay.world, result.plan, stay.original, stay.knowledge, knowledge::ValidityMode::kKnowledge);
+  const Replay r = replay(stay.world, result.plan, stay.original, stay.knowledge);
   ASSERT_GE(first_step_with(stay, r, "crate@dock"), 0);  // it was there
   EXPECT_TRUE(stay.original.labelling.object_facts(r.facts_trace.back()).empty());  // and left
   EXPECT_FALSE(r.accepted);
-  const Replay through = replay(reach.world, result.plan, reach.original, reach.knowledge, knowledge::ValidityMode::kKnowledge);
+  const Replay through = replay(reach.world, result.plan, reach.original, reach.knowledge);
   EXPECT_TRUE(through.accepted);  // while "at some time" holds
 }
 
 TEST(Planner, LtlPlannerRefusesTasksAboutBodiesAndSaysWhyWhileOmplsControlPlannersTakeThem) {
   const TestProblem p("delivery.lua");
-  const auto why = PlannerRegistry::instance().refusal(planner_named("ompl-ltl"), p.task);
+  const auto why = planners::registry().refusal(planner_named("ompl-ltl"), p.task);
   ASSERT_TRUE(why);
   EXPECT_NE(why->find("BODY@REGION"), std::string::npos) << *why;
-  EXPECT_FALSE(PlannerRegistry::instance().refusal(planner_named("ompl-rrt"), p.task));
-  EXPECT_FALSE(PlannerRegistry::instance().refusal(planner_named("knowledge"), p.task));
-  EXPECT_FALSE(PlannerRegistry::instance().refusal(planner_named("baseline"), p.task));
+  EXPECT_FALSE(planners::registry().refusal(planner_named("ompl-rrt"), p.task));
+  EXPECT_FALSE(planners::registry().refusal(planner_named("knowledge"), p.task));
+  EXPECT_FALSE(planners::registry().refusal(planner_named("baseline"), p.task));
 }
 
 }  // namespace

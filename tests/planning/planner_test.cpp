@@ -39,7 +39,7 @@ TEST(Planner, BaselineAlsoSolvesOrderedWithoutKnowledge) {
   const TestProblem p("ordered.lua");
   const PlanResult result = p.solve(5, "baseline");
   ASSERT_TRUE(result.solved) << result.stop_reason;
-  EXPECT_TRUE(replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kBaseline).validated());
+  EXPECT_TRUE(replay(p.world, result.plan, p.original, p.knowledge, {.mode = knowledge::ValidityMode::kBaseline}).validated());
 }
 
 TEST(Replay, ATamperedPlanIsRejected) {
@@ -106,14 +106,14 @@ TEST(Replay, StoppingAtTheFirstFailureGivesTheSameVerdict) {
   PlanResult result = p.solve(3);
   ASSERT_TRUE(result.solved);
   const Replay whole = p.check(result.plan);
-  const Replay until = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge, true);
+  const Replay until = replay(p.world, result.plan, p.original, p.knowledge, {.stop_at_first_failure = true});
   ASSERT_TRUE(whole.validated());
   EXPECT_TRUE(until.validated());
   EXPECT_EQ(until.states.size(), whole.states.size());
   EXPECT_EQ(until.pushes, whole.pushes);
   result.plan.controls[2].setpoint *= 3.0;  // beyond the robot's speed from the third control on
   const Replay whole_bad = p.check(result.plan);
-  const Replay until_bad = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge, true);
+  const Replay until_bad = replay(p.world, result.plan, p.original, p.knowledge, {.stop_at_first_failure = true});
   EXPECT_FALSE(whole_bad.validated());
   EXPECT_FALSE(until_bad.validated());
   EXPECT_EQ(until_bad.failure, whole_bad.failure);
@@ -130,7 +130,7 @@ TEST(Replay, StartingAfterAReplayedPrefixGivesTheWholeReplay) {
   ASSERT_TRUE(whole.validated());
   for (std::size_t k : {std::size_t{1}, result.plan.controls.size() / 2, result.plan.controls.size() - 1}) {
     const ReplayedPrefix prefix{whole, k};
-    const Replay r = replay(p.world, result.plan, p.original, p.knowledge, knowledge::ValidityMode::kKnowledge, false, &prefix);
+    const Replay r = replay(p.world, result.plan, p.original, p.knowledge, {.prefix = &prefix});
     EXPECT_TRUE(r.validated()) << k;
     EXPECT_EQ(r.states.size(), whole.states.size()) << k;
     EXPECT_EQ(r.region_trace, whole.region_trace) << k;
@@ -265,7 +265,7 @@ ValidatedPlan solve_and_improve(const TestProblem& p, std::uint64_t seed, int im
   options.seed = seed;
   options.time_limit = 20;
   options.improve = improve;
-  return plan_and_validate(p.problem(), planner_named("knowledge"), options);
+  return plan_and_validate(p.problem(), planner_named("knowledge"), p.preparation("knowledge"), options);
 }
 
 void expect_same_plan(const Plan& a, const Plan& b) {

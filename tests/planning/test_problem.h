@@ -5,8 +5,7 @@
 #include "physltl/ltl/parser.h"
 #include "physltl/ltl/simplify.h"
 #include "physltl/ltl/translate.h"
-#include "physltl/planners/knowledge/push_plan.h"
-#include "physltl/planning/registry.h"
+#include "physltl/planners/registry.h"
 #include "physltl/planning/validation/replay.h"
 #include "physltl/planning/validation/validated_plan.h"
 #include "physltl/scenario/load.h"
@@ -21,7 +20,7 @@ namespace physltl::planning {
 
 // A planner of the registry, by name; the test fails at once for a name it does not have.
 inline const PlannerEntry& planner_named(const std::string& name) {
-  const PlannerEntry* planner = PlannerRegistry::instance().find(name);
+  const PlannerEntry* planner = planners::registry().find(name);
   if (planner == nullptr) throw std::invalid_argument("no planner named " + name);
   return *planner;
 }
@@ -32,15 +31,13 @@ struct TestProblem {
   TaskAutomaton task;      // of the simplified formula: what the search aims at
   TaskAutomaton original;  // of the formula as written: what replay checks
   decomposition::Decomposition decomposition;
-  std::shared_ptr<const lookahead::Lookahead> ahead;  // of `task`, as a run prepares it
 
   explicit TestProblem(const std::string& name, const std::map<std::string, std::string>& params = {})
       : world(scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/scenarios/" + name, {.params = params})),
         knowledge(knowledge::formulate(world)),
         task(make_task(true)),
         original(make_task(false)),
-        decomposition(decomposition::Decomposition::build(world)),
-        ahead(prepare_lookahead(world, knowledge, task)) {}
+        decomposition(decomposition::Decomposition::build(world)) {}
 
   TaskAutomaton make_task(bool simplified) const {
     const ltl::Formula phi = ltl::parse(world.task.formula);
@@ -49,26 +46,40 @@ struct TestProblem {
     return TaskAutomaton::make(*ltl::simplify_semantically(phi, invalid).formula, world);
   }
 
-  Problem problem() const { return {world, task, original, knowledge, decomposition, nullptr, ahead.get()}; }
+  Problem problem() const { return {world, task, original, knowledge, decomposition}; }
+
+  // What `planner` prepares of problem() (its entry's prepare, as a run does once), made on the first call.
+  const PlannerData* preparation(const std::string& planner) const {
+    auto known = prepared_.find(planner);
+    if (known == prepared_.end()) {
+      const PlannerEntry& entry = planner_named(planner);
+      known = prepared_.emplace(planner, entry.prepare ? entry.prepare(problem()) : nullptr).first;
+    }
+    return known->second.get();
+  }
 
   // The knowledge planner's replay of `plan` against the formula as written.
   Replay check(const Plan& plan) const {
-    return replay(world, plan, original, knowledge, knowledge::ValidityMode::kKnowledge);
+    return replay(world, plan, original, knowledge);
   }
 
   // `planner` searching `search_task` (the simplified task, or another), replay checking the formula as written.
   PlanResult plan_task(const TaskAutomaton& search_task, const PlannerOptions& options,
                        const std::string& planner = "knowledge") const {
-    const lookahead::Lookahead* following = &search_task == &task ? ahead.get() : nullptr;
-    return planner_named(planner).plan(Problem{world, search_task, original, knowledge, decomposition, nullptr, following}, options);
+    // What the planner prepared of problem() is for the simplified task: another task plans without it.
+    const PlannerData* prepared = &search_task == &task ? preparation(planner) : nullptr;
+    return planner_named(planner).plan(Problem{world, search_task, original, knowledge, decomposition}, prepared, options);
   }
 
   PlanResult solve(std::uint64_t seed, const std::string& planner = "knowledge") const {
     PlannerOptions options;
     options.seed = seed;
     options.time_limit = 20;
-    return planner_named(planner).plan(problem(), options);
+    return planner_named(planner).plan(problem(), preparation(planner), options);
   }
+
+ private:
+  mutable std::map<std::string, std::shared_ptr<const PlannerData>> prepared_;
 };
 
 // ordered.lua's plan of seed 3, validated, that pushes boxes: what the robustness and execution tests run

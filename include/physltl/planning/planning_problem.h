@@ -1,19 +1,19 @@
 #pragma once
 // One World's planning problem, made in one place and solved any number of times (per planner, seed and
 // thread count) by run, bench and execute alike: the reasoning about it, the task as the planners search
-// it and as written, the decomposition and the knowledge planner's route choice. Only a plan that replay
-// validated counts as solved.
+// it and as written, the decomposition, and what each planner prepared of it (its entry's prepare, run
+// the first time the planner is asked for and kept). Only a plan that replay validated counts as solved.
 
 #include "physltl/decomposition/decomposition.h"
 #include "physltl/knowledge/reasoning.h"
-#include "physltl/planners/knowledge/push_plan.h"
 #include "physltl/planning/registry.h"
-#include "physltl/planners/knowledge/route_choice.h"
 #include "physltl/planning/task.h"
 #include "physltl/planning/validation/validated_plan.h"
 
 #include <chrono>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 
@@ -37,13 +37,12 @@ class PlanningProblem {
   // The formula as written, which every replay checks.
   const TaskAutomaton& as_written() const { return prepared_->as_written; }
   const decomposition::Decomposition& decomposition() const { return prepared_->decomposition; }
-  const RouteChoice& routes() const { return prepared_->routes; }
-  // The knowledge planner's look-ahead: whether it applies and the push order it follows.
-  const PushPlan& lookahead() const;
-  // Seconds the reasoning, the decomposition and the route choice took: once per World and task.
-  double preparation_s() const { return preparation_s_; }
-  // Why `planner` cannot take this task (and `needs`); nothing when it can.
-  std::optional<std::string> refusal(const PlannerEntry& planner, Needs needs = {}) const;
+  // What `planner` prepared of this problem (null when it prepares nothing), made on the first call.
+  const PlannerData* preparation(const PlannerEntry& planner) const;
+  // Seconds the reasoning and the decomposition took, once per World and task, and what `planner`
+  // prepared of them; without a planner, what every planner prepared so far.
+  double preparation_s(const PlannerEntry& planner) const;
+  double preparation_s() const;
   // What `planner` searches.
   Problem for_planner(const PlannerEntry& planner) const;
 
@@ -52,8 +51,10 @@ class PlanningProblem {
     TaskAutomaton simplified;
     TaskAutomaton as_written;
     decomposition::Decomposition decomposition;
-    RouteChoice routes;
-    std::shared_ptr<const lookahead::Lookahead> lookahead;
+  };
+  struct PlannerPreparation {
+    std::shared_ptr<const PlannerData> data;
+    double seconds = 0.0;
   };
   static std::optional<Prepared> prepare(const scenario::World& world, const knowledge::Reasoning& reasoning);
 
@@ -61,6 +62,8 @@ class PlanningProblem {
   knowledge::Reasoning reasoning_;
   std::optional<Prepared> prepared_;
   double preparation_s_ = 0.0;
+  mutable std::mutex planners_mutex_;
+  mutable std::map<const PlannerEntry*, PlannerPreparation> planners_;
 };
 
 // Plans with `planner` (options.threads threads growing one search) and validates the plan by replay.

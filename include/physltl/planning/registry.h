@@ -1,13 +1,11 @@
 #pragma once
-// The planners by name: what each can take and how to run it. run, bench, execute, --help and every
-// refusal ask this registry, so a new planner is one folder of src/planning and one entry
-// (docs/planner.md, "Adding a planner").
+// The planners by name (planner_entry.h): run, bench, execute, --help and every refusal ask a registry,
+// so a new planner is one folder of src/planners and one entry (docs/planner.md, "Adding a planner").
+// The program's own registry, with the built-in planners, is planners::registry() (src/planners).
 
-#include "physltl/planning/planner_options.h"
-#include "physltl/planning/problem.h"
+#include "physltl/planning/planner_entry.h"
 
 #include <deque>
-#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -15,47 +13,19 @@
 
 namespace physltl::planning {
 
-// A kind of task or request a planner may be unable to take, with the reason in words when it cannot.
-struct Capability {
-  bool can = true;
-  std::string because;  // why not, when !can: "OMPL's product graph labels each triangle with ..."
-};
-
-struct Capabilities {
-  Capability object_tasks;          // tasks that name where bodies are (BODY@REGION)
-  Capability tasks_ending_at_rest;  // tasks only a plan that ends at rest satisfies
-  Capability propagation_budget;    // stops at PlannerOptions::max_propagations ("budget"): execute's replanning
-  bool threads = false;             // several threads grow one search (bench --threads K measures each K)
-};
-
-struct PlannerEntry {
-  std::string name;     // on the command line: --planner NAME
-  std::string summary;  // one line for --help and docs
-  Capabilities can;
-  // True: searches the task the reasoning simplified, each step checked by kappa's validity rules. False:
-  // the formula as written, contacts with fixed bodies its only rule (the paper's simple planner).
-  bool uses_knowledge = true;
-  std::function<PlanResult(const Problem&, const PlannerOptions&)> plan;
-};
-
-// What a caller asks of a planner beyond the task.
-struct Needs {
-  bool propagation_budget = false;
-};
-
 class PlannerRegistry {
  public:
-  // The process's registry, holding the built-in planners (planners.cpp) and whatever was added since.
-  static PlannerRegistry& instance();
-
-  // std::invalid_argument for a name already taken. Entries stay where they are: pointers to them last.
+  // std::invalid_argument for a name already taken, or for a parameter of the same name as another
+  // entry's but other choices. Entries stay where they are: pointers to them last.
   const PlannerEntry& add(PlannerEntry entry);
   const PlannerEntry* find(std::string_view name) const;
   const std::deque<PlannerEntry>& entries() const { return entries_; }
   // "knowledge, baseline, ompl-ltl, ...": all of them, or those that have `capability`.
   std::string names(Capability Capabilities::*capability = nullptr) const;
-  // The planner a run uses when none is named (the paper's, with knowledge), and the knowledge-free
-  // reference it is measured against (--compare, --baseline, bench's speed-up column).
+  // The planner a run uses when none is named, and the knowledge-free reference it is measured against
+  // (--compare, --baseline, bench's speed-up column), both by name among the entries; std::invalid_argument
+  // for a name not added.
+  void set_default_planners(const std::string& default_name, const std::string& reference_name);
   const PlannerEntry& default_planner() const;
   const PlannerEntry& reference_planner() const;
 
@@ -63,11 +33,19 @@ class PlannerRegistry {
   // when it can.
   std::optional<std::string> refusal(const PlannerEntry& planner, const TaskAutomaton& task, Needs needs = {}) const;
 
+  // Every planner's parameters, once each, in the order the entries declare them (a parameter several
+  // planners take is one); with `capability`, those of the planners that have it.
+  std::vector<const PlannerParameter*> parameters(Capability Capabilities::*capability = nullptr) const;
+  // Every planner's own refusal rules, once each, in the order the entries name them.
+  std::vector<std::string> own_refusals() const;
+  // Every key any planner's account may write in report.json, and in failed/report.json besides.
+  std::vector<std::string> report_keys() const;
+  std::vector<std::string> diagnosis_keys() const;
+
  private:
   std::deque<PlannerEntry> entries_;
+  const PlannerEntry* default_ = nullptr;
+  const PlannerEntry* reference_ = nullptr;
 };
-
-// Adds the planners this build has: ours (knowledge, baseline) and OMPL's.
-void add_builtin_planners(PlannerRegistry& registry);
 
 }  // namespace physltl::planning

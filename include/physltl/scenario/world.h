@@ -99,8 +99,11 @@ struct Task {
   Location where;
 };
 
+// Seconds of planning when a scenario does not say.
+inline constexpr double kDefaultTimeLimit = 60.0;
+
 struct PlannerSettings {
-  double time_limit = 60.0;  // s of planning
+  double time_limit = kDefaultTimeLimit;  // s of planning
   double step_size = 0.05;   // s per physics step
   int min_steps = 2;         // physics steps per control
   int max_steps = 30;

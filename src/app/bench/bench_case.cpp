@@ -1,6 +1,8 @@
 #include "bench_case.h"
 
 #include "bad_input.h"
+#include "planner_names.h"
+#include "planner_views.h"
 #include "physltl/planning/validation/improve.h"
 #include "physltl/planning/path_lower_bound.h"
 #include "physltl/execution/robustness.h"
@@ -50,18 +52,20 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   results.threads = settings.threads;
   results.improve = settings.improve;
   results.robustness = settings.robustness;
-  results.ompl_with_our_sampler = settings.ompl_sampler == planning::OmplControlSampler::kOurs;
+  results.parameter_notes = parameter_notes(settings.parameters);
   results.started_at = local_time_now();
   results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->problem->as_written());
   results.shortest_push_free_path_m = planning::shortest_push_free_path_length(c->world, c->problem->as_written());
-  results.preparation_s = c->problem->preparation_s();
   for (const auto planner : settings.planners) {
-    if (const auto why = c->problem->refusal(*planner)) throw BadInput(*why);
+    if (const auto why = registry().refusal(*planner, c->problem->search_task(*planner))) throw BadInput(*why);
+    // Each planner prepares the problem before its first run, outside every run's time.
+    c->problem->preparation(*planner);
     // A planner that grows its search on one thread runs once, with the first thread count.
     for (const int threads : settings.threads) {
       if (planner->can.threads || threads == settings.threads.front()) results.planners.push_back({planner, threads, {}});
     }
   }
+  results.preparation_s = c->problem->preparation_s();
   return c;
 }
 
@@ -129,7 +133,7 @@ BenchRun measure(const planning::PlanningProblem& problem, const planning::Plann
   run.tree_nodes = result.stats.tree_nodes;
   run.propagations = result.stats.propagations;
   run.physics_steps = result.stats.physics_steps;
-  run.refused = result.stats.refused;
+  run.refused = refusal_counts(registry(), planner, result.stats.refused);
   if (run.solved) {
     run.controls = static_cast<int>(result.plan.controls.size());
     run.pushes = solution.replay->pushes;

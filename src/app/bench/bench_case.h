@@ -29,7 +29,8 @@ struct CampaignSettings {
   int improve = 0;
   int robustness = 0;                      // perturbed worlds per solved run
   std::optional<std::string> uncertainty;  // --uncertainty: overrides each scenario's
-  planning::OmplControlSampler ompl_sampler = planning::OmplControlSampler::kOmpl;
+  // Every parameter of the program's planners, by name (planner_names.h parameter_values).
+  std::map<std::string, std::string> parameters;
 };
 
 struct BenchCase {

@@ -1,5 +1,7 @@
 #include "manifest.h"
 
+#include "planner_names.h"
+
 #include "build_version.h"
 #include "fingerprint.h"
 #include "outputs.h"
@@ -77,19 +79,19 @@ json campaign_manifest(const std::string& name, int shard_count, const std::vect
   }
   json unit_keys = json::array();
   for (const auto& unit : units) unit_keys.push_back(unit.key);
+  json campaign_settings = {{"planners", std::move(planners)},
+                            {"threads", settings.threads},
+                            {"runs", settings.runs},
+                            {"seed", settings.seed ? json(*settings.seed) : json(nullptr)},
+                            {"time_limit_s", optional_number(settings.time_limit)},
+                            {"improve", settings.improve},
+                            {"robustness", settings.robustness},
+                            {"uncertainty", settings.uncertainty ? json(*settings.uncertainty) : json(nullptr)}};
+  for (const auto& [parameter, value] : settings.parameters) campaign_settings[manifest_key(parameter)] = value;
   return {{"name", name},
           {"version", build_version()},
           {"shards", shard_count},
-          {"settings",
-           {{"planners", std::move(planners)},
-            {"threads", settings.threads},
-            {"runs", settings.runs},
-            {"seed", settings.seed ? json(*settings.seed) : json(nullptr)},
-            {"time_limit_s", optional_number(settings.time_limit)},
-            {"improve", settings.improve},
-            {"robustness", settings.robustness},
-            {"uncertainty", settings.uncertainty ? json(*settings.uncertainty) : json(nullptr)},
-            {"ompl_sampler", settings.ompl_sampler == planning::OmplControlSampler::kOurs ? "ours" : "ompl"}}},
+          {"settings", std::move(campaign_settings)},
           {"scenarios", std::move(scenarios)},
           {"cases", std::move(case_list)},
           {"units", std::move(unit_keys)}};

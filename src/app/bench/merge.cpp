@@ -75,7 +75,7 @@ CampaignResults skeleton(const nlohmann::json& campaign, const nlohmann::json& f
     r.threads = settings.at("threads").get<std::vector<int>>();
     r.improve = settings.at("improve").get<int>();
     r.robustness = settings.at("robustness").get<int>();
-    r.ompl_with_our_sampler = settings.at("ompl_sampler") == "ours";
+    r.parameter_notes = parameter_notes(parameter_values(manifest_parameters(settings)));
     r.started_at = facts.at(c).at("started_at").get<std::string>();
     r.preparation_s = facts.at(c).at("preparation_s").get<double>();
     r.shortest_free_path_m = number_or_infinity(facts.at(c).at("shortest_free_path_m"));

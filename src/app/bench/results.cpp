@@ -2,6 +2,8 @@
 
 #include "physltl/render/chart.h"
 #include "plan_files.h"
+#include "planner_names.h"
+#include "planner_views.h"
 #include "statistics.h"
 
 #include <fmt/format.h>
@@ -102,9 +104,9 @@ PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
 
 std::optional<double> ratio_of_medians(const BenchResults& results) {
   if (results.threads.empty()) return std::nullopt;
-  const planning::PlannerRegistry& registry = planning::PlannerRegistry::instance();
-  const PlannerRuns* knowledge = find_planner(results, &registry.default_planner(), results.threads[0]);
-  const PlannerRuns* baseline = find_planner(results, &registry.reference_planner(), results.threads[0]);
+  const planning::PlannerRegistry& planners = registry();
+  const PlannerRuns* knowledge = find_planner(results, &planners.default_planner(), results.threads[0]);
+  const PlannerRuns* baseline = find_planner(results, &planners.reference_planner(), results.threads[0]);
   if (knowledge == nullptr || baseline == nullptr) return std::nullopt;
   const double k = median_of(results, *knowledge);
   if (k <= 0.0) return std::nullopt;
@@ -114,7 +116,7 @@ std::optional<double> ratio_of_medians(const BenchResults& results) {
 std::vector<ThreadsRatio> threads_ratios(const BenchResults& results) {
   std::vector<ThreadsRatio> ratios;
   if (results.threads.empty()) return ratios;
-  const planning::PlannerEntry* knowledge = &planning::PlannerRegistry::instance().default_planner();
+  const planning::PlannerEntry* knowledge = &registry().default_planner();
   const PlannerRuns* first = find_planner(results, knowledge, results.threads[0]);
   if (first == nullptr || median_of(results, *first) <= 0.0) return ratios;
   for (size_t i = 1; i < results.threads.size(); ++i) {
@@ -148,7 +150,7 @@ std::string bench_table(const BenchResults& r) {
                         s.mean_s, s.p90_s, s.max_s, s.tree_nodes_median, s.propagations_per_s, s.pushes_median,
                         s.bodies_moved_median, s.solution_duration_median_s, s.path_length_median_m, robustness);
   }
-  if (r.ompl_with_our_sampler) text += "OMPL's planners sample controls with ours (--ompl-sampler ours)\n";
+  for (const std::string& note : r.parameter_notes) text += note + "\n";
   if (robust) {
     text += fmt::format("robust: the mean share, over solved runs, of {} perturbed worlds in which the plan succeeds open loop\n",
                         r.robustness);

@@ -33,7 +33,8 @@ struct BenchRun {
   int first_pushes = 0;              // of the first validated plan
   double first_duration_s = 0.0;
   long long cell_skips_refused = 0;  // OMPL's planners (PlannerStats)
-  planning::Refusals refused;        // our tree search: refused steps and dropped nodes by rule
+  // Refused steps by rule, every rule of the program's planners (planner_views.h refusal_counts).
+  std::vector<std::pair<std::string, long long>> refused;
   // With --robustness N (solved runs): the plan replayed in N perturbed worlds, timed apart from wall_s.
   int robust_worlds = 0;
   int robust_succeeded = 0;
@@ -51,7 +52,8 @@ struct PlannerRuns {
 struct BenchResults {
   int improve = 0;             // --improve candidates per run
   int robustness = 0;          // --robustness worlds per solved run
-  bool ompl_with_our_sampler = false;  // --ompl-sampler ours
+  // What the planners' parameters were given (--ompl-sampler ours), one line each for the table.
+  std::vector<std::string> parameter_notes;
   std::string scenario;       // the World's name
   std::string scenario_file;
   std::vector<std::string> settings;  // --set key=value

@@ -1,6 +1,8 @@
 #include "unit_record.h"
 
 #include "bad_input.h"
+#include "planner_names.h"
+#include "planner_views.h"
 
 namespace physltl::app {
 
@@ -27,7 +29,11 @@ nlohmann::ordered_json to_json(const UnitRecord& record) {
           {"first_pushes", run.first_pushes},
           {"first_duration_s", run.first_duration_s},
           {"cell_skips_refused", run.cell_skips_refused},
-          {"refused", run.refused.counts},
+          {"refused", [&] {
+             std::vector<long long> counts;
+             for (const auto& rule : run.refused) counts.push_back(rule.second);
+             return counts;
+           }()},
           {"robust_worlds", run.robust_worlds},
           {"robust_succeeded", run.robust_succeeded},
           {"robust_failures", run.robust_failures},
@@ -58,7 +64,8 @@ UnitRecord unit_record_from_json(const nlohmann::json& json, const std::string& 
     run.first_duration_s = json.at("first_duration_s").get<double>();
     run.cell_skips_refused = json.at("cell_skips_refused").get<long long>();
     // Results of builds before the refusals were counted have none.
-    if (json.contains("refused")) run.refused.counts = json.at("refused").get<decltype(run.refused.counts)>();
+    run.refused = named_refusals(registry(), json.contains("refused") ? json.at("refused").get<std::vector<long long>>()
+                                                                      : std::vector<long long>{});
     run.robust_worlds = json.at("robust_worlds").get<int>();
     run.robust_succeeded = json.at("robust_succeeded").get<int>();
     run.robust_failures = json.at("robust_failures").get<std::map<std::string, int>>();

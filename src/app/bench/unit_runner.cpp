@@ -35,12 +35,12 @@ bool run_units(const std::vector<std::unique_ptr<BenchCase>>& cases, const std::
     }
     const auto unit_started = clock::now();
     BenchRun run = measure(*c.problem, *planner.planner,
-                           {.ompl_control_sampler = settings.ompl_sampler,
-                            .seed = unit.seed,
+                           {.seed = unit.seed,
                             .time_limit = c.world.planner.time_limit,
                             .stop = &stop,
                             .threads = planner.threads,
-                            .improve = settings.improve},
+                            .improve = settings.improve,
+                            .parameters = settings.parameters},
                            settings.robustness);
     if (stop) {
       if (progress.show) fmt::print(stderr, "\n");

@@ -6,6 +6,8 @@
 #include "overlays.h"
 #include "plan_files.h"
 #include "plan_pictures.h"
+#include "planner_names.h"
+#include "planner_views.h"
 #include "physltl/planning/planning_problem.h"
 #include "physltl/render/preview.h"
 
@@ -74,6 +76,7 @@ std::string frame_file(const scenario::FrameMoment& moment) {
 // The cases that need the plan, after it was found and validated.
 struct SolvedPlan {
   const planning::PlanningProblem& problem;
+  const planning::PlannerEntry& planner;
   const planning::ValidatedPlan& solution;
 };
 
@@ -111,8 +114,9 @@ void picture_cases(const SolvedPlan& plan, const scenario::Expectations& e, Gold
   const planning::Replay& replay = *plan.solution.replay;
   if (e.tree) {
     cases.push_back(timed("tree.png", [&] {
+      const PlannedMoves moves = planned_moves(account_of(plan.planner, plan.solution.result.own.get(), world));
       return goldens.picture("tree.png",
-                             draw_tree_picture(world, reasoning, plan.problem.decomposition(), plan.solution.result, &replay),
+                             draw_tree_picture(world, reasoning, plan.problem.decomposition(), plan.solution.result, &replay, moves),
                              tolerance_for(e, e.tree_tolerance));
     }));
   }
@@ -175,7 +179,7 @@ ScenarioResult test_scenario(const TestEntry& entry, const scenario::World& worl
   const knowledge::Reasoning& reasoning = problem->reasoning();
   const bool checked = cases.back().outcome == Outcome::kPassed;
 
-  const planning::PlannerEntry& planner = planning::PlannerRegistry::instance().default_planner();
+  const planning::PlannerEntry& planner = registry().default_planner();
   std::optional<planning::ValidatedPlan> solution;
   if (checked && !e.infeasible) {
     cases.push_back(timed("solves", [&] {
@@ -191,7 +195,7 @@ ScenarioResult test_scenario(const TestEntry& entry, const scenario::World& worl
           write_failed_search(summary, problem->decomposition(), actual_folder / "failed", true);
           where = "; diagnosis: " + (actual_folder / "failed").string() + "/";
         }
-        return failed(fmt::format("{} in {:.1f} s (seed {}, time limit {:g} s){}", no_plan_line(r),
+        return failed(fmt::format("{} in {:.1f} s (seed {}, time limit {:g} s){}", no_plan_line(planner, r),
                                   r.stats.planning_time_s, world.planner.seed, world.planner.time_limit, where));
       }
       if (!solution->replay->validated()) return failed("BUG: the plan failed validation on replay: " + solution->replay->failure);
@@ -218,7 +222,7 @@ ScenarioResult test_scenario(const TestEntry& entry, const scenario::World& worl
   } else {
     const RunSummary summary{world, reasoning, problem->as_written(), planner, solution->result, &*solution->replay,
                              solution->improvement ? &*solution->improvement : nullptr};
-    const SolvedPlan plan{*problem, *solution};
+    const SolvedPlan plan{*problem, planner, *solution};
     bound_cases(plan, e, cases);
     cases.push_back(timed("plan.json", [&] { return goldens.plan(plan_json(summary)); }));
     preview_case();

@@ -1,4 +1,4 @@
-#include "physltl/planners/knowledge/route_choice.h"
+#include "route_choice.h"
 
 #include "physltl/planning/stage_graph.h"
 

@@ -51,7 +51,11 @@ bool TreeGrower::valid_step(const Vec2& setpoint, bool may_push, Growth& growth)
   const knowledge::Violation violation = simulation_.step(setpoint);
   if (violation == knowledge::Violation::kNone && (may_push || !pushes_unasked())) return true;
   growth.stopped_by_invalid_step = true;
-  growth.refusal = violation == knowledge::Violation::kNone ? Refusal::kRouteChoiceCut : *refusal_of(violation);
+  if (violation == knowledge::Violation::kNone) {
+    growth.route_choice_cut = true;
+  } else {
+    growth.refusal = refusal_of(violation);
+  }
   return false;
 }
 

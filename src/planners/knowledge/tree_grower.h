@@ -45,6 +45,7 @@ struct Growth {
   int physics_steps = 0;
   bool stopped_by_invalid_step = false;
   std::optional<Refusal> refusal;  // the rule that ended the motion (or its braking), if one did
+  bool route_choice_cut = false;   // or the route choice did (OwnRefusal::kRouteChoiceCut)
 };
 
 // How an expansion samples its control and what it may touch.

@@ -1,12 +1,10 @@
 #include "tree_search.h"
 
-#include "lookahead/lookahead.h"
 #include "lead_search.h"
 #include "object_lead.h"
 #include "product_graph.h"
 #include "push_plan_lead.h"
 #include "physltl/planning/random.h"
-#include "physltl/planners/knowledge/route_choice.h"
 #include "physltl/planning/stage_graph.h"
 #include "tree_grower.h"
 #include "worker_pool.h"
@@ -92,7 +90,7 @@ struct Expansion {
 
 class Search {
  public:
-  Search(const Problem& problem, const PlannerOptions& options, TreeSearchMode mode)
+  Search(const Problem& problem, const KnowledgePreparation* prepared, const PlannerOptions& options, TreeSearchMode mode)
       : world_(problem.world),
         task_(problem.task),
         knowledge_(problem.knowledge),
@@ -101,9 +99,9 @@ class Search {
         knowledge_mode_(mode == TreeSearchMode::kKnowledge),
         stages_(task_),
         // The knowledge planner's lead goes round the bodies where the task needs no pushing (route_choice.h).
-        routes_(!knowledge_mode_            ? RouteChoice{}
-                : problem.routes != nullptr ? *problem.routes
-                                            : choose_routes(world_, task_, decomposition_)),
+        routes_(!knowledge_mode_       ? RouteChoice{}
+                : prepared != nullptr ? prepared->routes
+                                      : choose_routes(world_, task_, decomposition_)),
         graph_(decomposition_, stages_, routes_.lead_factor),
         lead_search_(graph_),
         object_lead_(world_, knowledge_, decomposition_),
@@ -113,10 +111,9 @@ class Search {
         stage_motions_(static_cast<size_t>(stages_.stages())),
         stage_nodes_(static_cast<size_t>(stages_.stages()), 0),
         stage_dropped_(static_cast<size_t>(stages_.stages()), 0) {
-    if (knowledge_mode_ && problem.lookahead != nullptr && problem.lookahead->plan.found) {
-      lookahead_ = problem.lookahead;
+    if (knowledge_mode_ && prepared != nullptr && prepared->lookahead.plan.found) {
+      lookahead_ = &prepared->lookahead;
       push_lead_.emplace(*lookahead_->lattice, lookahead_->start_cells, lookahead_->steps, knowledge_);
-
     }
   }
 
@@ -423,7 +420,7 @@ class Search {
   // every body on a lattice place; the nodes' places on it found again.
   void replan_pushes() {
     batches_since_push_progress_ = 0;
-    if (stats_.lookahead_replans >= kMaxReplans) return;
+    if (lookahead_replans_ >= kMaxReplans) return;
     const lookahead::PushLattice& lattice = *lookahead_->lattice;
     const std::vector<int>& nodes = stage_motions_[static_cast<size_t>(frontier_stage_)];
     for (auto it = nodes.rbegin(); it != nodes.rend(); ++it) {
@@ -434,7 +431,7 @@ class Search {
       const std::optional<std::vector<int>> cells = lattice.arrangement(simulation.environment());
       const int robot = lattice.robot_cell(node.robot);
       if (!cells || robot < 0) continue;
-      ++stats_.lookahead_replans;
+      ++lookahead_replans_;
       const lookahead::PushSearch search =
           lookahead::PushSearcher(lattice, stages_, task_.labelling).search(node.stage, *cells, robot, kReplanArrangements);
       if (!search.found) return;
@@ -493,6 +490,7 @@ class Search {
       stats_.physics_steps += growth.physics_steps;
       stats_.invalid_steps += growth.stopped_by_invalid_step ? 1 : 0;
       if (growth.refusal) stats_.refused.add(*growth.refusal);
+      if (growth.route_choice_cut) stats_.refused.add_own(own_rule(OwnRefusal::kRouteChoiceCut));
       note_outcome(expansions_[i].from, growth);
       if (!growth.motion) continue;
       const int index = static_cast<int>(motions_.size());
@@ -529,7 +527,7 @@ class Search {
   // goes back to the nearest stage to acceptance that still has a node, the lead starting from its first.
   void drop(int m) {
     const Motion& motion = motions_[static_cast<size_t>(m)];
-    stats_.refused.add(Refusal::kDroppedNode);
+    stats_.refused.add_own(own_rule(OwnRefusal::kDroppedNode));
     ++stage_dropped_[static_cast<size_t>(motion.stage)];
     dropped_[static_cast<size_t>(m)] = true;
     if (push_lead_) ranked_on_order_.erase({order_rank(m), m});
@@ -574,8 +572,11 @@ class Search {
     stats_.tree_nodes = static_cast<long long>(motions_.size());
     stats_.planning_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     result.stats = stats_;
-    if (lookahead_ != nullptr) result.lookahead = lookahead_->plan;
-    if (!result.solved) result.end = search_end();
+    auto report = std::make_shared<SearchReport>();
+    if (lookahead_ != nullptr) report->lookahead = lookahead_->plan;
+    report->lookahead_replans = lookahead_replans_;
+    if (!result.solved) report->end = search_end();
+    result.own = std::move(report);
   }
 
   SearchEnd::Stage describe(int stage) const {
@@ -584,7 +585,6 @@ class Search {
 
   SearchEnd search_end() const {
     SearchEnd end;
-    end.known = true;
     end.frontier = describe(frontier_stage_);
     if (const auto& move = stages_.body_move(frontier_stage_)) {
       const Labelling::NamedBody& body = task_.labelling.named_bodies()[static_cast<size_t>(move->named)];
@@ -633,6 +633,7 @@ class Search {
   bool widened_ = false;                  // the search has stalled at least once
   const std::vector<int>* current_lead_ = nullptr;
   const lookahead::Lookahead* lookahead_ = nullptr;   // the look-ahead the search follows, if any
+  int lookahead_replans_ = 0;                          // times its order was planned again
   std::optional<PushPlanLead> push_lead_;             // and its order as it stands
   std::vector<PushPlanLead::Progress> push_progress_;  // per motion, where it stands on that order
   std::set<std::pair<double, int>> ranked_on_order_;  // the nodes on it, not dropped, by order_rank
@@ -654,9 +655,10 @@ class Search {
 
 }  // namespace
 
-PlanResult plan_with_tree_search(const Problem& problem, const PlannerOptions& options, TreeSearchMode mode) {
+PlanResult plan_with_tree_search(const Problem& problem, const KnowledgePreparation* prepared, const PlannerOptions& options,
+                                 TreeSearchMode mode) {
   const auto started = std::chrono::steady_clock::now();
-  return Search(problem, options, mode).run(started);
+  return Search(problem, prepared, options, mode).run(started);
 }
 
 }  // namespace physltl::planning

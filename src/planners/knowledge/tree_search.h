@@ -8,6 +8,8 @@
 // and lets several threads grow one tree without changing the plan (docs/planner.md); measured beside
 // OMPL's planners in docs/benchmarks.md.
 
+#include "planner_data.h"
+
 #include "physltl/planning/planner_options.h"
 #include "physltl/planning/problem.h"
 
@@ -18,6 +20,9 @@ enum class TreeSearchMode {
   kBaseline,   // fixed-body contacts only, uniform controls (the paper's simple planner)
 };
 
-PlanResult plan_with_tree_search(const Problem& problem, const PlannerOptions& options, TreeSearchMode mode);
+// `prepared`: the knowledge planner's route choice and look-ahead; without it, the knowledge search chooses
+// its routes itself and follows no push order.
+PlanResult plan_with_tree_search(const Problem& problem, const KnowledgePreparation* prepared, const PlannerOptions& options,
+                                 TreeSearchMode mode);
 
 }  // namespace physltl::planning

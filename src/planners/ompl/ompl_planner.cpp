@@ -32,6 +32,8 @@ using namespace ompl_adapter;
 
 namespace {
 
+bool with_our_sampler(const PlannerOptions& options) { return options.parameter(kOmplSamplerParameter, "ompl") == "ours"; }
+
 // The set-point space and its sampler: OMPL's uniform one, or ours (options.ompl_control_sampler).
 std::shared_ptr<oc::RealVectorControlSpace> make_controls(const std::shared_ptr<PhysicsSpace>& space,
                                                           const knowledge::AbstractKnowledge& knowledge,
@@ -48,7 +50,7 @@ std::shared_ptr<oc::RealVectorControlSpace> make_controls(const std::shared_ptr<
     control_bounds.setLow(1, -std::numbers::pi), control_bounds.setHigh(1, std::numbers::pi);
   }
   controls->setBounds(control_bounds);
-  if (options.ompl_control_sampler == OmplControlSampler::kOurs) {
+  if (with_our_sampler(options)) {
     controls->setControlSamplerAllocator([&world, &knowledge, &seeds, ompl_product](const oc::ControlSpace* cs) {
       return std::make_shared<OurControlSampler>(cs, world, knowledge, seeds.next(), ompl_product);
     });
@@ -102,7 +104,7 @@ Search on_ompls_product(const Problem& problem, const std::shared_ptr<PhysicsSpa
   auto product = std::make_shared<oc::ProductGraph>(labels, automaton);
   auto si = std::make_shared<oc::LTLSpaceInformation>(low, product);
   si->getStateSpace()->as<ob::CompoundStateSpace>()->setSubspaceWeight(2, kAutomatonStateWeight);
-  if (options.ompl_control_sampler == OmplControlSampler::kOurs) {
+  if (with_our_sampler(options)) {
     si->setDirectedControlSamplerAllocator([&world, &problem, &seeds](const oc::SpaceInformation* s) {
       return std::make_shared<OurDirectedSampler>(s, world, problem.knowledge, seeds.next(), true);
     });
@@ -135,7 +137,7 @@ Search on_ompls_product(const Problem& problem, const std::shared_ptr<PhysicsSpa
 Search on_our_product(const Problem& problem, const std::shared_ptr<PhysicsSpace>& space, const oc::SpaceInformationPtr& si,
                       const PlannerOptions& options, SeedSequence& seeds, const physics::PhysicsState& start) {
   const scenario::World& world = problem.world;
-  if (options.ompl_control_sampler == OmplControlSampler::kOurs) {
+  if (with_our_sampler(options)) {
     si->setDirectedControlSamplerAllocator([&world, &problem, &seeds](const oc::SpaceInformation* s) {
       return std::make_shared<OurDirectedSampler>(s, world, problem.knowledge, seeds.next(), false);
     });
@@ -194,7 +196,7 @@ std::vector<std::pair<std::string, std::string>> settings_of(const ob::Planner& 
       {"min_control_duration", std::to_string(world.planner.min_steps)},
       {"max_control_duration", std::to_string(world.planner.max_steps)},
       {"controls", differential ? "(forward speed, turn rate), uniform" : "(speed, heading), uniform"},
-      {"control_sampler", options.ompl_control_sampler == OmplControlSampler::kOurs
+      {"control_sampler", with_our_sampler(options)
                               ? "ours: the knowledge planner's, towards the target (RRT, PDST) or a random point"
                               : "OMPL RealVectorControlUniformSampler"},
       {"state_sampler", "robot pose uniform in the workspace, the rest as at the start"},

@@ -13,7 +13,12 @@
 #include "physltl/planning/planner_options.h"
 #include "physltl/planning/problem.h"
 
+#include <string>
+
 namespace physltl::planning {
+
+// The parameter that chooses the control sampler (PlannerEntry::parameters): "ompl" or "ours".
+inline const std::string kOmplSamplerParameter = "ompl-sampler";
 
 enum class OmplAlgorithm {
   kLtl,     // LTLPlanner (Bhatia et al.)

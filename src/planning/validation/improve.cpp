@@ -104,7 +104,7 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
     // Most candidates fail a check early (a shortcut through a wall or past a needed push): stop there.
     // The kept controls were checked in the current plan's replay: start after them.
     const ReplayedPrefix kept{replay, static_cast<std::size_t>(first)};
-    Replay checked = planning::replay(problem.world, candidate, problem.formula, problem.knowledge, mode, true, &kept);
+    Replay checked = planning::replay(problem.world, candidate, problem.formula, problem.knowledge, {.mode = mode, .stop_at_first_failure = true, .prefix = &kept});
     if (!checked.validated()) continue;
     const PlanMeasures measures = measure(problem.world, candidate, checked);
     if (!better(measures, result.improved)) continue;

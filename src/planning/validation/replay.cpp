@@ -40,112 +40,156 @@ std::string control_out_of_bounds(const scenario::World& world, const Control& c
   return "";
 }
 
-Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomaton& formula,
-              const knowledge::AbstractKnowledge& knowledge, knowledge::ValidityMode mode, bool until_first_failure,
-              const ReplayedPrefix* prefix) {
-  Replay r;
-  physics::Simulation simulation(world);
-  const Labelling& labelling = formula.labelling;
-  std::vector<scenario::RobotContact> contacts;
-  auto record = [&](int automaton_state, bool pushing) {
-    r.states.push_back(simulation.environment());
-    const int letter = labelling.letter(r.states.back());
-    r.region_trace.push_back(labelling.robot_region_of(letter));
-    r.facts_trace.push_back(labelling.facts_of(letter));
-    r.automaton_trace.push_back(formula.step(automaton_state, letter));
-    r.pushing.push_back(pushing);
-  };
-  auto fail = [&](bool& check, std::string why) {
-    if (check && r.failure.empty()) r.failure = std::move(why);
+namespace {
+
+// One replay: the plan's controls run in a fresh physics world, every step checked, the trace judged.
+class Replayer {
+ public:
+  Replayer(const scenario::World& world, const Plan& plan, const TaskAutomaton& formula,
+           const knowledge::AbstractKnowledge& knowledge, const ReplayOptions& options)
+      : world_(world), plan_(plan), formula_(formula), knowledge_(knowledge), options_(options), simulation_(world) {}
+
+  Replay run() {
+    record(formula_.dfa.start, false);
+    kappa_ = knowledge::infer(knowledge_, r_.states.back());
+    r_.reproduces_plan = plan_.states.size() == plan_.controls.size();
+    r_.valid = true;
+    r_.within_limits = true;
+    const size_t first_control = options_.prefix != nullptr ? take_prefix(*options_.prefix) : 0;
+    for (size_t c = first_control; c < plan_.controls.size(); ++c) {
+      if (!run_control(c)) return std::move(r_);
+    }
+    judge_trace();
+    return std::move(r_);
+  }
+
+ private:
+  void record(int automaton_state, bool pushing) {
+    r_.states.push_back(simulation_.environment());
+    const int letter = formula_.labelling.letter(r_.states.back());
+    r_.region_trace.push_back(formula_.labelling.robot_region_of(letter));
+    r_.facts_trace.push_back(formula_.labelling.facts_of(letter));
+    r_.automaton_trace.push_back(formula_.step(automaton_state, letter));
+    r_.pushing.push_back(pushing);
+  }
+
+  void fail(bool& check, std::string why) {
+    if (check && r_.failure.empty()) r_.failure = std::move(why);
     check = false;
-  };
-  record(formula.dfa.start, false);
-  knowledge::Kappa kappa = knowledge::infer(knowledge, r.states.back());
-  r.reproduces_plan = plan.states.size() == plan.controls.size();
-  r.valid = true;
-  r.within_limits = true;
-  const double force_bound = world.robot.max_force * (1.0 + 1e-9);  // rounding of the norm only
-  size_t first_control = 0;
-  if (prefix != nullptr && prefix->controls > 0) {
-    // The prefix's steps passed every check in `prefix->replay`; the plan continues from the state they
-    // reached (restoring a state is exact), with kappa inferred there as at every step.
-    const Replay& done = prefix->replay;
+  }
+
+  bool stopping() const { return options_.stop_at_first_failure && !r_.failure.empty(); }
+
+  // The prefix's steps passed every check in its replay; the plan continues from the state they reached
+  // (restoring a state is exact), with kappa inferred there as at every step. Returns the next control.
+  size_t take_prefix(const ReplayedPrefix& prefix) {
+    if (prefix.controls == 0) return 0;
+    const Replay& done = prefix.replay;
     size_t steps = 0;
-    for (size_t c = 0; c < prefix->controls; ++c) {
+    for (size_t c = 0; c < prefix.controls; ++c) {
       const auto begin = done.pushing.begin() + static_cast<std::ptrdiff_t>(steps) + 1;
-      steps += static_cast<size_t>(plan.controls[c].steps);
-      r.pushes += std::any_of(begin, done.pushing.begin() + static_cast<std::ptrdiff_t>(steps) + 1, [](bool p) { return p; });
+      steps += static_cast<size_t>(plan_.controls[c].steps);
+      r_.pushes += std::any_of(begin, done.pushing.begin() + static_cast<std::ptrdiff_t>(steps) + 1, [](bool p) { return p; });
     }
     const auto end = static_cast<std::ptrdiff_t>(steps) + 1;
-    r.states.assign(done.states.begin(), done.states.begin() + end);
-    r.region_trace.assign(done.region_trace.begin(), done.region_trace.begin() + end);
-    r.facts_trace.assign(done.facts_trace.begin(), done.facts_trace.begin() + end);
-    r.automaton_trace.assign(done.automaton_trace.begin(), done.automaton_trace.begin() + end);
-    r.pushing.assign(done.pushing.begin(), done.pushing.begin() + end);
-    for (size_t i = 1; i < r.states.size(); ++i) r.peak_speed = std::max(r.peak_speed, r.states[i].robot_velocity.norm());
-    kappa = knowledge::infer(knowledge, r.states.back());
-    simulation.restore(plan.states[prefix->controls - 1]);
-    first_control = prefix->controls;
+    r_.states.assign(done.states.begin(), done.states.begin() + end);
+    r_.region_trace.assign(done.region_trace.begin(), done.region_trace.begin() + end);
+    r_.facts_trace.assign(done.facts_trace.begin(), done.facts_trace.begin() + end);
+    r_.automaton_trace.assign(done.automaton_trace.begin(), done.automaton_trace.begin() + end);
+    r_.pushing.assign(done.pushing.begin(), done.pushing.begin() + end);
+    for (size_t i = 1; i < r_.states.size(); ++i) r_.peak_speed = std::max(r_.peak_speed, r_.states[i].robot_velocity.norm());
+    kappa_ = knowledge::infer(knowledge_, r_.states.back());
+    simulation_.restore(plan_.states[prefix.controls - 1]);
+    return prefix.controls;
   }
-  for (size_t c = first_control; c < plan.controls.size(); ++c) {
-    const Control& control = plan.controls[c];
-    if (const std::string why = control_out_of_bounds(world, control); !why.empty()) {
-      fail(r.within_limits, fmt::format("control {}: {}", c, why));
+
+  // Control `c`, step by step; false when the replay stops at a failure.
+  bool run_control(size_t c) {
+    const Control& control = plan_.controls[c];
+    if (const std::string why = control_out_of_bounds(world_, control); !why.empty()) {
+      fail(r_.within_limits, fmt::format("control {}: {}", c, why));
     }
     bool pushed = false;
     for (int s = 0; s < control.steps; ++s) {
-      simulation.step(control.setpoint, contacts);
+      simulation_.step(control.setpoint, contacts_);
       bool touching_movable = false;
-      for (const auto& contact : contacts) touching_movable |= contact.body == scenario::RobotContact::Body::kMovable;
+      for (const auto& contact : contacts_) touching_movable |= contact.body == scenario::RobotContact::Body::kMovable;
       pushed |= touching_movable;
-      record(r.automaton_trace.back(), touching_movable);
-      const auto& state = r.states.back();
-      const size_t step = r.states.size() - 1;
-      r.peak_speed = std::max(r.peak_speed, state.robot_velocity.norm());
-      if (simulation.last_drive().force.norm() > force_bound) {
-        fail(r.within_limits, fmt::format("step {} (control {}): drive force above max_force", step, c));
-      }
-      if (!knowledge::within_robot_limits(knowledge.robot, state)) {
-        fail(r.within_limits, fmt::format("step {} (control {}): {:.3f} m/s, {:.1f} deg/s beyond the robot's limits",
-                                          step, c, state.robot_velocity.norm(), state.robot_turn_rate * kDegreesPerRadian));
-      }
-      const auto validity = knowledge::check_validity(knowledge, kappa, state, contacts, mode);
-      if (!validity.valid()) {
-        std::string why = fmt::format("step {} (control {}): {}", step, c, knowledge::violation_name(validity.violation));
-        if (std::find(r.violations.begin(), r.violations.end(), validity.violation) == r.violations.end()) {
-          r.violations.push_back(validity.violation);
-          r.violation_messages.push_back(why);
-        }
-        fail(r.valid, std::move(why));
-      }
-      if (until_first_failure && !r.failure.empty()) return r;
-      knowledge::infer(knowledge, state, kappa);
+      record(r_.automaton_trace.back(), touching_movable);
+      check_step(c);
+      if (stopping()) return false;
+      knowledge::infer(knowledge_, r_.states.back(), kappa_);
     }
-    r.pushes += pushed;
-    if (r.reproduces_plan && !(simulation.save() == plan.states[c])) {
-      fail(r.reproduces_plan, fmt::format("control {} ends in a different state than planned", c));
+    r_.pushes += pushed;
+    if (r_.reproduces_plan && !(simulation_.save() == plan_.states[c])) {
+      fail(r_.reproduces_plan, fmt::format("control {} ends in a different state than planned", c));
     }
-    if (until_first_failure && !r.failure.empty()) return r;
+    return !stopping();
   }
-  std::vector<std::vector<std::string>> letters;
-  letters.reserve(r.region_trace.size());
-  for (size_t i = 0; i < r.region_trace.size(); ++i) {
-    letters.push_back(labelling.object_facts(r.facts_trace[i]));
-    if (r.region_trace[i] >= 0) letters.back().push_back(world.regions[static_cast<size_t>(r.region_trace[i])].name);
+
+  // The robot's limits and the validity rules at the step just recorded.
+  void check_step(size_t c) {
+    const auto& state = r_.states.back();
+    const size_t step = r_.states.size() - 1;
+    r_.peak_speed = std::max(r_.peak_speed, state.robot_velocity.norm());
+    const double force_bound = world_.robot.max_force * (1.0 + 1e-9);  // rounding of the norm only
+    if (simulation_.last_drive().force.norm() > force_bound) {
+      fail(r_.within_limits, fmt::format("step {} (control {}): drive force above max_force", step, c));
+    }
+    if (!knowledge::within_robot_limits(knowledge_.robot, state)) {
+      fail(r_.within_limits, fmt::format("step {} (control {}): {:.3f} m/s, {:.1f} deg/s beyond the robot's limits",
+                                         step, c, state.robot_velocity.norm(), state.robot_turn_rate * kDegreesPerRadian));
+    }
+    const auto validity = knowledge::check_validity(knowledge_, kappa_, state, contacts_, options_.mode);
+    if (!validity.valid()) {
+      std::string why = fmt::format("step {} (control {}): {}", step, c, knowledge::violation_name(validity.violation));
+      if (std::find(r_.violations.begin(), r_.violations.end(), validity.violation) == r_.violations.end()) {
+        r_.violations.push_back(validity.violation);
+        r_.violation_messages.push_back(why);
+      }
+      fail(r_.valid, std::move(why));
+    }
   }
-  const bool good_prefix = formula.dfa.acceptance == ltl::Acceptance::kGoodPrefix;
-  r.accepted = ltl::holds_when_staying(formula.formula, letters) &&
-               (!good_prefix || formula.dfa.accepting[r.automaton_trace.back()]);
-  if (!r.accepted && r.failure.empty()) {
-    r.failure = labelling.named_bodies().empty() ? "the region trace does not satisfy the formula"
-                                                 : "the trace of regions and body facts does not satisfy the formula";
+
+  // The trace against the formula as written, rest at the end, and the bodies moved.
+  void judge_trace() {
+    const Labelling& labelling = formula_.labelling;
+    std::vector<std::vector<std::string>> letters;
+    letters.reserve(r_.region_trace.size());
+    for (size_t i = 0; i < r_.region_trace.size(); ++i) {
+      letters.push_back(labelling.object_facts(r_.facts_trace[i]));
+      if (r_.region_trace[i] >= 0) letters.back().push_back(world_.regions[static_cast<size_t>(r_.region_trace[i])].name);
+    }
+    const bool good_prefix = formula_.dfa.acceptance == ltl::Acceptance::kGoodPrefix;
+    r_.accepted = ltl::holds_when_staying(formula_.formula, letters) &&
+                  (!good_prefix || formula_.dfa.accepting[r_.automaton_trace.back()]);
+    if (!r_.accepted && r_.failure.empty()) {
+      r_.failure = labelling.named_bodies().empty() ? "the region trace does not satisfy the formula"
+                                                    : "the trace of regions and body facts does not satisfy the formula";
+    }
+    r_.ends_at_rest = !formula_.ends_at_rest() || r_.states.back().at_rest();
+    for (size_t b = 0; b < world_.movable_bodies.size(); ++b) {
+      if (moved(r_.states.front().movable_poses[b], r_.states.back().movable_poses[b])) r_.moved_bodies.push_back(static_cast<int>(b));
+    }
+    if (!r_.ends_at_rest && r_.failure.empty()) r_.failure = "the plan does not end with the robot and the boxes at rest";
   }
-  r.ends_at_rest = !formula.ends_at_rest() || r.states.back().at_rest();
-  for (size_t b = 0; b < world.movable_bodies.size(); ++b) {
-    if (moved(r.states.front().movable_poses[b], r.states.back().movable_poses[b])) r.moved_bodies.push_back(static_cast<int>(b));
-  }
-  if (!r.ends_at_rest && r.failure.empty()) r.failure = "the plan does not end with the robot and the boxes at rest";
-  return r;
+
+  const scenario::World& world_;
+  const Plan& plan_;
+  const TaskAutomaton& formula_;
+  const knowledge::AbstractKnowledge& knowledge_;
+  const ReplayOptions& options_;
+  physics::Simulation simulation_;
+  std::vector<scenario::RobotContact> contacts_;
+  knowledge::Kappa kappa_;
+  Replay r_;
+};
+
+}  // namespace
+
+Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomaton& formula,
+              const knowledge::AbstractKnowledge& knowledge, const ReplayOptions& options) {
+  return Replayer(world, plan, formula, knowledge, options).run();
 }
 
 bool moved(const geometry::Pose2& from, const geometry::Pose2& to) {

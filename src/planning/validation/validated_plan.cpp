@@ -4,12 +4,13 @@
 
 namespace physltl::planning {
 
-ValidatedPlan plan_and_validate(const Problem& p, const PlannerEntry& planner, const PlannerOptions& options) {
-  ValidatedPlan validated{planner.plan(p, options), std::nullopt, std::nullopt};
+ValidatedPlan plan_and_validate(const Problem& p, const PlannerEntry& planner, const PlannerData* prepared,
+                                const PlannerOptions& options) {
+  ValidatedPlan validated{planner.plan(p, prepared, options), std::nullopt, std::nullopt};
   if (validated.result.solved) {
     const knowledge::ValidityMode mode =
         planner.uses_knowledge ? knowledge::ValidityMode::kKnowledge : knowledge::ValidityMode::kBaseline;
-    validated.replay = replay(p.world, validated.result.plan, p.formula, p.knowledge, mode);
+    validated.replay = replay(p.world, validated.result.plan, p.formula, p.knowledge, {.mode = mode});
     if (options.improve > 0 && validated.replay->validated()) {
       validated.improvement = improve(p, mode, options.seed, options.improve, validated.result.plan, *validated.replay);
     }

@@ -1,11 +1,12 @@
-// The look-ahead over arrangements (planning/lookahead/push_plan.h) on grid push puzzles of our own
+// The look-ahead over arrangements (planners/knowledge/lookahead/push_plan.h) on grid push puzzles of our own
 // (tests/planning/data/puzzles/): when it applies, the push order it finds, what it prunes, and a puzzle
 // solved end to end by the knowledge planner following it.
 
 #include "lookahead/lookahead.h"
 #include "physltl/planning/stage_graph.h"
-#include "test_problem.h"
+#include "planner_data.h"
 #include "push_plan_lead.h"
+#include "test_problem.h"
 
 #include <gtest/gtest.h>
 
@@ -19,9 +20,14 @@ namespace {
 const std::string kPuzzles = "../tests/planning/data/puzzles/";
 const std::string kWorlds = "../tests/planning/data/lookahead/";
 
+// The look-ahead as the knowledge planner prepared it for `p`.
+const lookahead::Lookahead& ahead_of(const TestProblem& p) {
+  return dynamic_cast<const KnowledgePreparation&>(*p.preparation("knowledge")).lookahead;
+}
+
 // The lattice body of World body `name`.
 int lattice_body(const TestProblem& p, const std::string& name) {
-  const auto& bodies = p.ahead->lattice->bodies();
+  const auto& bodies = ahead_of(p).lattice->bodies();
   for (std::size_t k = 0; k < bodies.size(); ++k) {
     if (p.world.movable_bodies[static_cast<std::size_t>(bodies[k])].name == name) return static_cast<int>(k);
   }
@@ -37,31 +43,31 @@ geometry::Vec2 region_centre(const TestProblem& p, const std::string& name) {
 
 TEST(LookAhead, AppliesWhereANamedBodyHasNoRoomBesideItOnItsWay) {
   const TestProblem puzzle(kPuzzles + "order_line.lua");
-  EXPECT_TRUE(puzzle.ahead->plan.rule.applies) << puzzle.ahead->plan.rule.reason;
-  EXPECT_DOUBLE_EQ(puzzle.ahead->plan.rule.step, 0.6);  // the boxes' side, 0.5 m, and the gap
+  EXPECT_TRUE(ahead_of(puzzle).plan.rule.applies) << ahead_of(puzzle).plan.rule.reason;
+  EXPECT_DOUBLE_EQ(ahead_of(puzzle).plan.rule.step, 0.6);  // the boxes' side, 0.5 m, and the gap
   const TestProblem robot_only("rooms.lua");
-  EXPECT_FALSE(robot_only.ahead->plan.rule.applies);
-  EXPECT_EQ(robot_only.ahead->plan.rule.reason, "the task names no body");
+  EXPECT_FALSE(ahead_of(robot_only).plan.rule.applies);
+  EXPECT_EQ(ahead_of(robot_only).plan.rule.reason, "the task names no body");
   const TestProblem roomy("sorting.lua");
-  EXPECT_FALSE(roomy.ahead->plan.rule.applies);
-  EXPECT_NE(roomy.ahead->plan.rule.reason.find("room for the robot beside it"), std::string::npos) << roomy.ahead->plan.rule.reason;
+  EXPECT_FALSE(ahead_of(roomy).plan.rule.applies);
+  EXPECT_NE(ahead_of(roomy).plan.rule.reason.find("room for the robot beside it"), std::string::npos) << ahead_of(roomy).plan.rule.reason;
 }
 
 // side_by_side: two boxes next to each other in an open room; the walls alone leave room round them.
 TEST(LookAhead, AppliesWhereBoxesStandSideBySideInTheOpen) {
   const TestProblem p(kWorlds + "side_by_side.lua");
-  ASSERT_TRUE(p.ahead->plan.rule.applies) << p.ahead->plan.rule.reason;
-  EXPECT_NE(p.ahead->plan.rule.reason.find("among the walls and the other bodies"), std::string::npos) << p.ahead->plan.rule.reason;
-  ASSERT_TRUE(p.ahead->plan.found) << p.ahead->plan.outcome;
-  EXPECT_EQ(p.ahead->plan.pushes.size(), 2u);  // each box one cell east onto its goal
+  ASSERT_TRUE(ahead_of(p).plan.rule.applies) << ahead_of(p).plan.rule.reason;
+  EXPECT_NE(ahead_of(p).plan.rule.reason.find("among the walls and the other bodies"), std::string::npos) << ahead_of(p).plan.rule.reason;
+  ASSERT_TRUE(ahead_of(p).plan.found) << ahead_of(p).plan.outcome;
+  EXPECT_EQ(ahead_of(p).plan.pushes.size(), 2u);  // each box one cell east onto its goal
 }
 
 // line_in_corridor: two boxes nose to tail in a one-cell corridor; the robot cannot get round either.
 TEST(LookAhead, PushesALineOfBoxesEndToEndWhereNoBoxCanGoAlone) {
   const TestProblem p(kWorlds + "line_in_corridor.lua");
-  ASSERT_TRUE(p.ahead->plan.found) << p.ahead->plan.outcome;
-  ASSERT_EQ(p.ahead->plan.pushes.size(), 1u);
-  const PlannedPush& push = p.ahead->plan.pushes.front();
+  ASSERT_TRUE(ahead_of(p).plan.found) << ahead_of(p).plan.outcome;
+  ASSERT_EQ(ahead_of(p).plan.pushes.size(), 1u);
+  const PlannedPush& push = ahead_of(p).plan.pushes.front();
   EXPECT_EQ(p.world.movable_bodies[static_cast<std::size_t>(push.body)].name, "M2");
   ASSERT_EQ(push.ahead.size(), 1u);
   EXPECT_EQ(p.world.movable_bodies[static_cast<std::size_t>(push.ahead.front())].name, "M1");
@@ -82,13 +88,13 @@ TEST(LookAhead, PushesALineOfBoxesEndToEndWhereNoBoxCanGoAlone) {
 // straight, though the box the robot pushes is on it in both.
 TEST(LookAhead, ALineWhoseFrontBoxHasDriftedRanksBehindAStraightOne) {
   const TestProblem p(kWorlds + "line_in_corridor.lua");
-  ASSERT_TRUE(p.ahead->plan.found) << p.ahead->plan.outcome;
-  const PushPlanLead lead(*p.ahead->lattice, p.ahead->start_cells, p.ahead->steps, p.knowledge);
+  ASSERT_TRUE(ahead_of(p).plan.found) << ahead_of(p).plan.outcome;
+  const PushPlanLead lead(*ahead_of(p).lattice, ahead_of(p).start_cells, ahead_of(p).steps, p.knowledge);
   physics::PhysicsState straight;
   physics::Simulation(p.world).save(straight);
   // Both boxes and the robot 0.3 m along the push (-x); the robot's walk to M2 counts alike in both.
   const auto index = [&](const std::string& name) {  // in the physics state, where the robot is body 0
-    const int body = p.ahead->lattice->bodies()[static_cast<std::size_t>(lattice_body(p, name))];
+    const int body = ahead_of(p).lattice->bodies()[static_cast<std::size_t>(lattice_body(p, name))];
     return static_cast<std::size_t>(body) + 1;
   };
   for (const char* name : {"M1", "M2"}) straight.set_value(index(name), 0, straight.value(index(name), 0) - 0.3);
@@ -107,8 +113,8 @@ TEST(LookAhead, ALineWhoseFrontBoxHasDriftedRanksBehindAStraightOne) {
 TEST(LookAhead, OnlyTheLastPushOfAnOrderMovesALine) {
   for (const std::string file : {"order_line.lua", "pair_in_line.lua", "staircase.lua", "tight_store.lua"}) {
     const TestProblem p(kPuzzles + file);
-    ASSERT_TRUE(p.ahead->plan.found) << file << ": " << p.ahead->plan.outcome;
-    const auto& pushes = p.ahead->plan.pushes;
+    ASSERT_TRUE(ahead_of(p).plan.found) << file << ": " << ahead_of(p).plan.outcome;
+    const auto& pushes = ahead_of(p).plan.pushes;
     for (std::size_t i = 0; i + 1 < pushes.size(); ++i) EXPECT_TRUE(pushes[i].ahead.empty()) << file << ", push " << i;
   }
 }
@@ -116,20 +122,20 @@ TEST(LookAhead, OnlyTheLastPushOfAnOrderMovesALine) {
 // order_line: three boxes into a one-cell corridor of goals, goal1 at its mouth and goal3 at its far end.
 TEST(LookAhead, FindsThePushOrderWhereTheWrongOrderIsDead) {
   const TestProblem p(kPuzzles + "order_line.lua");
-  ASSERT_TRUE(p.ahead->plan.found) << p.ahead->plan.outcome;
+  ASSERT_TRUE(ahead_of(p).plan.found) << ahead_of(p).plan.outcome;
   // The corridor's mouth is the place at (3.9, 2.7); the boxes start in the row at y = 3.9.
-  const auto into_corridor = std::find_if(p.ahead->plan.pushes.begin(), p.ahead->plan.pushes.end(),
+  const auto into_corridor = std::find_if(ahead_of(p).plan.pushes.begin(), ahead_of(p).plan.pushes.end(),
                                           [](const PlannedPush& push) { return push.to.y() < 3.0; });
-  ASSERT_NE(into_corridor, p.ahead->plan.pushes.end());
+  ASSERT_NE(into_corridor, ahead_of(p).plan.pushes.end());
   EXPECT_EQ(p.world.movable_bodies[static_cast<std::size_t>(into_corridor->body)].name, "M3");
 
   // M1 on goal1 first, at the corridor's mouth: then no order gets the others past it.
-  const lookahead::PushLattice& lattice = *p.ahead->lattice;
-  std::vector<int> cells = p.ahead->start_cells;
+  const lookahead::PushLattice& lattice = *ahead_of(p).lattice;
+  std::vector<int> cells = ahead_of(p).start_cells;
   cells[static_cast<std::size_t>(lattice_body(p, "M1"))] = lattice.cell_at(region_centre(p, "goal1"));
   const StageGraph stages(p.task);
   const lookahead::PushSearch wrong = lookahead::PushSearcher(lattice, stages, p.task.labelling)
-                                          .search(p.ahead->stage, cells, lattice.robot_cell(p.world.robot.start));
+                                          .search(ahead_of(p).stage, cells, lattice.robot_cell(p.world.robot.start));
   EXPECT_FALSE(wrong.found);
   EXPECT_EQ(wrong.outcome, "no order of pushes");
 }
@@ -137,28 +143,29 @@ TEST(LookAhead, FindsThePushOrderWhereTheWrongOrderIsDead) {
 // under_the_wall: a box along the top wall, its goal at that wall's east end.
 TEST(LookAhead, PrunesABoxAgainstAWallItsGoalIsNotAlong) {
   const TestProblem p(kPuzzles + "under_the_wall.lua");
-  ASSERT_TRUE(p.ahead->plan.rule.applies) << p.ahead->plan.rule.reason;
-  const lookahead::PushLattice& lattice = *p.ahead->lattice;
+  ASSERT_TRUE(ahead_of(p).plan.rule.applies) << ahead_of(p).plan.rule.reason;
+  const lookahead::PushLattice& lattice = *ahead_of(p).lattice;
   const StageGraph stages(p.task);
   const lookahead::PushSearcher searcher(lattice, stages, p.task.labelling);
   const int box = lattice_body(p, "M1");
-  EXPECT_TRUE(searcher.alive(p.ahead->stage, box, p.ahead->start_cells[static_cast<std::size_t>(box)]));
-  EXPECT_TRUE(searcher.alive(p.ahead->stage, box, lattice.cell_at({2.7, 1.5})));   // the middle of the room
-  EXPECT_FALSE(searcher.alive(p.ahead->stage, box, lattice.cell_at({2.7, 0.9})));  // along the bottom wall
-  EXPECT_FALSE(searcher.alive(p.ahead->stage, box, lattice.cell_at({0.9, 1.5})));  // along the west wall
-  ASSERT_TRUE(p.ahead->plan.found);
-  EXPECT_EQ(p.ahead->plan.pushes.size(), 1u);  // straight along the wall
+  EXPECT_TRUE(searcher.alive(ahead_of(p).stage, box, ahead_of(p).start_cells[static_cast<std::size_t>(box)]));
+  EXPECT_TRUE(searcher.alive(ahead_of(p).stage, box, lattice.cell_at({2.7, 1.5})));   // the middle of the room
+  EXPECT_FALSE(searcher.alive(ahead_of(p).stage, box, lattice.cell_at({2.7, 0.9})));  // along the bottom wall
+  EXPECT_FALSE(searcher.alive(ahead_of(p).stage, box, lattice.cell_at({0.9, 1.5})));  // along the west wall
+  ASSERT_TRUE(ahead_of(p).plan.found);
+  EXPECT_EQ(ahead_of(p).plan.pushes.size(), 1u);  // straight along the wall
 }
 
 // tight_store: three boxes into a store behind a door; the knowledge planner alone (without the look-ahead)
 // did not solve it in 60 s (docs/benchmarks.md).
 TEST(LookAhead, APuzzleIsSolvedFollowingTheOrderAndTheReplayAgrees) {
   const TestProblem p(kPuzzles + "tight_store.lua");
-  ASSERT_TRUE(p.ahead->plan.found);
+  ASSERT_TRUE(ahead_of(p).plan.found);
   const PlanResult result = p.solve(1);
   ASSERT_TRUE(result.solved) << result.stop_reason;
-  ASSERT_TRUE(result.lookahead.has_value());
-  EXPECT_EQ(result.lookahead->pushes.size(), p.ahead->plan.pushes.size());
+  const auto& report = dynamic_cast<const SearchReport&>(*result.own);
+  ASSERT_TRUE(report.lookahead.has_value());
+  EXPECT_EQ(report.lookahead->pushes.size(), ahead_of(p).plan.pushes.size());
   const Replay replay = p.check(result.plan);
   EXPECT_TRUE(replay.validated()) << replay.failure;
   EXPECT_EQ(replay.moved_bodies.size(), 3u);
@@ -193,7 +200,7 @@ TEST(LookAhead, EveryPuzzleOfOursIsSolvedAndItsReplayAgrees) {
   ASSERT_GE(files.size(), 20u);
   for (const std::string& file : files) {
     const TestProblem p(kPuzzles + file);
-    EXPECT_TRUE(p.ahead->plan.found) << file << ": " << p.ahead->plan.outcome;
+    EXPECT_TRUE(ahead_of(p).plan.found) << file << ": " << ahead_of(p).plan.outcome;
     const PlanResult result = p.solve(1);
     ASSERT_TRUE(result.solved) << file << ": " << result.stop_reason;
     const Replay replay = p.check(result.plan);

@@ -1,6 +1,6 @@
 // Going round the movable bodies or pushing through them: the rule, stage by stage.
 
-#include "physltl/planners/knowledge/route_choice.h"
+#include "route_choice.h"
 
 #include "physltl/planning/stage_graph.h"
 #include "test_problem.h"

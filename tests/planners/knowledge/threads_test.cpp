@@ -22,10 +22,10 @@ PlannerOptions options_with(std::uint64_t seed, int threads) {
 
 TEST(Threads, TwoAndThreeThreadsFindExactlyTheOneThreadPlanAndItValidates) {
   const TestProblem p("ordered.lua");
-  const ValidatedPlan one = plan_and_validate(p.problem(), planner_named("knowledge"), options_with(7, 1));
+  const ValidatedPlan one = plan_and_validate(p.problem(), planner_named("knowledge"), p.preparation("knowledge"), options_with(7, 1));
   ASSERT_TRUE(one.solved()) << one.result.stop_reason;
   for (int threads : {2, 3}) {
-    const ValidatedPlan many = plan_and_validate(p.problem(), planner_named("knowledge"), options_with(7, threads));
+    const ValidatedPlan many = plan_and_validate(p.problem(), planner_named("knowledge"), p.preparation("knowledge"), options_with(7, threads));
     ASSERT_TRUE(many.solved()) << threads << " threads: " << many.result.stop_reason;
     ASSERT_EQ(many.result.plan.controls.size(), one.result.plan.controls.size()) << threads << " threads";
     for (size_t i = 0; i < one.result.plan.states.size(); ++i) {
@@ -47,7 +47,7 @@ TEST(Threads, AnOutsideStopEndsEveryThreadPromptly) {
     stop.store(true);
   });
   const auto started = std::chrono::steady_clock::now();
-  const ValidatedPlan result = plan_and_validate(p.problem(), planner_named("knowledge"), options);
+  const ValidatedPlan result = plan_and_validate(p.problem(), planner_named("knowledge"), p.preparation("knowledge"), options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   // Sixteen rooms take the planner seconds; a stop after 50 ms lands mid-search.
   EXPECT_FALSE(result.solved());
@@ -58,7 +58,7 @@ TEST(Threads, AnOutsideStopEndsEveryThreadPromptly) {
 
 TEST(Threads, ASolvedSearchIsReplayedAgainstTheFormulaAsWritten) {
   const TestProblem p("rooms.lua");  // simplified: p3 is dropped from the task the search aims at
-  const ValidatedPlan result = plan_and_validate(p.problem(), planner_named("knowledge"), options_with(2, 2));
+  const ValidatedPlan result = plan_and_validate(p.problem(), planner_named("knowledge"), p.preparation("knowledge"), options_with(2, 2));
   ASSERT_TRUE(result.solved()) << result.result.stop_reason;
   EXPECT_TRUE(result.replay->accepted);
   EXPECT_TRUE(result.replay->reproduces_plan);

@@ -1,4 +1,4 @@
-// OMPL's planners on our problem (src/planning/ompl_planner.cpp): they solve the paper's scenario B with
+// OMPL's planners on our problem (src/planners/ompl/ompl_planner.cpp): they solve the paper's scenario B with
 // plans our replay validates, a seed gives the same plan where OMPL allows it, and the guards against OMPL's
 // LTL traps hold.
 
@@ -55,7 +55,7 @@ TEST(OmplPlanners, TheySolveAWorldOfBodiesOfEveryShapeAsTheBaselineDoes) {
     PlannerOptions options = ompl_options(2);
     const PlanResult result = p.plan_task(p.task, options, planner);
     ASSERT_TRUE(result.solved) << planner << ": " << result.stop_reason;
-    const Replay replayed = planning::replay(p.world, result.plan, p.original, p.knowledge, (planner_named(planner).uses_knowledge ? knowledge::ValidityMode::kKnowledge : knowledge::ValidityMode::kBaseline));
+    const Replay replayed = planning::replay(p.world, result.plan, p.original, p.knowledge, {.mode = planner_named(planner).uses_knowledge ? knowledge::ValidityMode::kKnowledge : knowledge::ValidityMode::kBaseline});
     EXPECT_TRUE(replayed.validated()) << planner << ": " << replayed.failure;
   }
 }
@@ -78,7 +78,7 @@ TEST(OmplPlanners, WithOurControlSamplerTheyStillSolveOrderedAndSaySo) {
   const TestProblem p("ordered.lua");
   for (const std::string planner : {"ompl-rrt", "ompl-kpiece"}) {
     PlannerOptions options = ompl_options(2);
-    options.ompl_control_sampler = OmplControlSampler::kOurs;
+    options.parameters["ompl-sampler"] = "ours";
     const PlanResult result = p.plan_task(p.task, options, planner);
     ASSERT_TRUE(result.solved) << planner << ": " << result.stop_reason;
     EXPECT_TRUE(p.check(result.plan).validated()) << planner;
@@ -133,12 +133,12 @@ TEST(OmplPlanners, PlansCrossTrianglesThinnerThanAStepWithinTheGraph) {
 TEST(OmplPlanners, ATaskThatMustEndAtRestIsPlannedOnOurProductAndRefusedByLtlPlanner) {
   const TestProblem p("avoid.lua");
   ASSERT_TRUE(p.task.ends_at_rest());
-  const auto why = PlannerRegistry::instance().refusal(planner_named("ompl-ltl"), p.task);
+  const auto why = planners::registry().refusal(planner_named("ompl-ltl"), p.task);
   ASSERT_TRUE(why.has_value());
   EXPECT_NE(why->find("ompl-ltl cannot take a task that only a plan ending at rest satisfies"), std::string::npos) << *why;
   EXPECT_THROW(p.plan_task(p.task, ompl_options(1), "ompl-ltl"), std::invalid_argument);
   for (const std::string planner : {"ompl-rrt", "ompl-kpiece"}) {
-    EXPECT_FALSE(PlannerRegistry::instance().refusal(planner_named(planner), p.task).has_value()) << planner;
+    EXPECT_FALSE(planners::registry().refusal(planner_named(planner), p.task).has_value()) << planner;
     const PlanResult result = p.plan_task(p.task, ompl_options(1), planner);
     ASSERT_TRUE(result.solved) << planner << ": " << result.stop_reason;
     const Replay replay = p.check(result.plan);
@@ -164,10 +164,10 @@ TEST(OmplPlanners, EachControlPlannerSolvesATaskAboutAnObjectAndItsPlanReplays) 
 
 TEST(OmplPlanners, TheRegistryHasEachOfThemByNameAndNoOtherName) {
   for (const std::string name : {"ompl-ltl", "ompl-rrt", "ompl-kpiece", "ompl-sst", "ompl-pdst"}) {
-    ASSERT_NE(PlannerRegistry::instance().find(name), nullptr) << name;
-    EXPECT_EQ(PlannerRegistry::instance().find(name)->name, name);
+    ASSERT_NE(planners::registry().find(name), nullptr) << name;
+    EXPECT_EQ(planners::registry().find(name)->name, name);
   }
-  EXPECT_EQ(PlannerRegistry::instance().find("ompl-est"), nullptr);
+  EXPECT_EQ(planners::registry().find("ompl-est"), nullptr);
 }
 
 }  // namespace

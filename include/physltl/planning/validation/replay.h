@@ -45,10 +45,6 @@ struct Replay {
   bool validated() const { return reproduces_plan && valid && accepted && within_limits && ends_at_rest; }
 };
 
-// Replays `plan` and checks it against `formula` (the task as written, not the simplified one the search
-// used) and against the validity rules of `mode`. The automaton of `formula` only labels the trace for
-// pictures and, for a co-safe task, says whether it is a good prefix; the verdict on the formula comes
-// from its semantics.
 // The first `controls` controls of a plan that `replay` validated, for a plan that begins with the same
 // controls and states: its replay takes those steps from `replay` and starts at the state they end in.
 struct ReplayedPrefix {
@@ -56,11 +52,20 @@ struct ReplayedPrefix {
   std::size_t controls = 0;
 };
 
-// `until_first_failure`: stop at the first step that fails a check, for callers that only need to know
-// whether the plan validates (the replay then holds the steps up to that one). `prefix`: see above.
+struct ReplayOptions {
+  knowledge::ValidityMode mode = knowledge::ValidityMode::kKnowledge;  // the rules every step must pass
+  // Stop at the first step that fails a check, for callers that only need to know whether the plan
+  // validates (the replay then holds the steps up to that one).
+  bool stop_at_first_failure = false;
+  const ReplayedPrefix* prefix = nullptr;  // steps already replayed, taken as they are
+};
+
+// Replays `plan` and checks it against `formula` (the task as written, not the simplified one the search
+// used) and against the validity rules of `options.mode`. The automaton of `formula` only labels the trace
+// for pictures and, for a co-safe task, says whether it is a good prefix; the verdict on the formula comes
+// from its semantics.
 Replay replay(const scenario::World& world, const Plan& plan, const TaskAutomaton& formula,
-              const knowledge::AbstractKnowledge& knowledge, knowledge::ValidityMode mode,
-              bool until_first_failure = false, const ReplayedPrefix* prefix = nullptr);
+              const knowledge::AbstractKnowledge& knowledge, const ReplayOptions& options = {});
 
 // Why `control` is outside what the robot can be asked, or "" when it is within its bounds.
 std::string control_out_of_bounds(const scenario::World& world, const Control& control);

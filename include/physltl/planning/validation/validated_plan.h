@@ -3,7 +3,7 @@
 // by the formula as written. Only a plan that replay validated counts as solved.
 
 #include "physltl/planning/problem.h"
-#include "physltl/planning/registry.h"
+#include "physltl/planning/planner_entry.h"
 #include "physltl/planning/validation/replay.h"
 
 #include <cstdint>
@@ -37,7 +37,9 @@ struct ValidatedPlan {
   bool solved() const { return replay.has_value() && replay->validated(); }
 };
 
-// Plans with `planner` and replays its plan: with kappa's validity rules for a planner that uses knowledge.
-ValidatedPlan plan_and_validate(const Problem& problem, const PlannerEntry& planner, const PlannerOptions& options);
+// Plans with `planner` (`prepared`: what its entry prepared of the problem) and replays its plan: with
+// kappa's validity rules for a planner that uses knowledge.
+ValidatedPlan plan_and_validate(const Problem& problem, const PlannerEntry& planner, const PlannerData* prepared,
+                                const PlannerOptions& options);
 
 }  // namespace physltl::planning

@@ -23,14 +23,6 @@ std::string describe(const PlannedPush& push, const std::vector<std::string>& bo
   return fmt::format("{} {} {:.2g} m", bodies, direction_name(push), push.distance);
 }
 
-std::shared_ptr<const lookahead::Lookahead> prepare_lookahead(const scenario::World& world,
-                                                              const knowledge::AbstractKnowledge& knowledge,
-                                                              const TaskAutomaton& task) {
-  return std::make_shared<const lookahead::Lookahead>(lookahead::look_ahead(world, knowledge, task));
-}
-
-const PushPlan& push_plan_of(const lookahead::Lookahead& lookahead) { return lookahead.plan; }
-
 namespace lookahead {
 namespace {
 

@@ -4,7 +4,7 @@
 
 #include "push_lattice.h"
 #include "push_search.h"
-#include "physltl/planners/knowledge/push_plan.h"
+#include "push_plan.h"
 #include "physltl/planning/task.h"
 
 #include <optional>

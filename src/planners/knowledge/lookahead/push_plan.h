@@ -11,20 +11,11 @@
 // pushes matters, and the robot cannot walk round a box to fix it later.
 
 #include "physltl/geometry/shapes.h"
-#include "physltl/knowledge/abstract_knowledge.h"
-#include "physltl/scenario/world.h"
-
-#include <memory>
 
 #include <string>
 #include <vector>
 
 namespace physltl::planning {
-
-struct TaskAutomaton;
-namespace lookahead {
-struct Lookahead;  // the rule, the lattice and the order, as the tree search follows it
-}
 
 // One push of the look-ahead's plan: a body moved `cells` lattice steps in one direction, and the bodies
 // in a line ahead of it that it pushes along.
@@ -56,12 +47,5 @@ struct PushPlan {
 const char* direction_name(const PlannedPush& push);
 // "M1 +x 0.6 m", "M3 (with M2, M1) -x 0.6 m"
 std::string describe(const PlannedPush& push, const std::vector<std::string>& body_names);
-
-// The look-ahead for `task` from the World's start, as a run prepares it once (planning_problem.h) and
-// gives the knowledge planner (Problem::lookahead); and what it found.
-std::shared_ptr<const lookahead::Lookahead> prepare_lookahead(const scenario::World& world,
-                                                              const knowledge::AbstractKnowledge& knowledge,
-                                                              const TaskAutomaton& task);
-const PushPlan& push_plan_of(const lookahead::Lookahead& lookahead);
 
 }  // namespace physltl::planning

@@ -1,0 +1,51 @@
+// The knowledge planner and the baseline as registry entries (planning/planner_entry.h): one tree search,
+// with and without the knowledge framework.
+
+#include "physltl/planners/knowledge/entries.h"
+
+#include "planner_data.h"
+#include "tree_search.h"
+
+namespace physltl::planners {
+namespace {
+
+using planning::KnowledgePreparation;
+using planning::PlannerData;
+using planning::Problem;
+
+std::shared_ptr<const PlannerData> prepare_knowledge(const Problem& problem) {
+  auto prepared = std::make_shared<KnowledgePreparation>();
+  prepared->routes = planning::choose_routes(problem.world, problem.task, problem.decomposition);
+  prepared->lookahead = planning::lookahead::look_ahead(problem.world, problem.knowledge, problem.task);
+  prepared->task_names_bodies = problem.task.names_bodies();
+  return prepared;
+}
+
+planning::PlannerEntry tree_search_entry(std::string name, std::string summary, planning::TreeSearchMode mode) {
+  planning::PlannerEntry entry;
+  entry.name = std::move(name);
+  entry.summary = std::move(summary);
+  entry.can = {{}, {}, {}, true};
+  entry.uses_knowledge = mode == planning::TreeSearchMode::kKnowledge;
+  entry.own_refusals = planning::kOwnRefusalNames;
+  entry.report_keys = {"lookahead"};
+  entry.diagnosis_keys = {"search_end"};
+  if (entry.uses_knowledge) entry.prepare = prepare_knowledge;
+  entry.plan = [mode](const Problem& problem, const PlannerData* prepared, const planning::PlannerOptions& options) {
+    return planning::plan_with_tree_search(problem, dynamic_cast<const KnowledgePreparation*>(prepared), options, mode);
+  };
+  entry.account = planning::knowledge_account;
+  return entry;
+}
+
+}  // namespace
+
+void add_knowledge_planners(planning::PlannerRegistry& registry) {
+  registry.add(tree_search_entry("knowledge", "ours with the knowledge framework (the paper's planner)",
+                                 planning::TreeSearchMode::kKnowledge));
+  registry.add(tree_search_entry("baseline",
+                                 "ours without knowledge: fixed-body contacts only, uniform controls (the paper's simple planner)",
+                                 planning::TreeSearchMode::kBaseline));
+}
+
+}  // namespace physltl::planners

@@ -1,0 +1,61 @@
+// OMPL's planners as registry entries (planning/planner_entry.h): LTLPlanner on OMPL's product, RRT,
+// KPIECE1, SST and PDST on OMPL's product or ours (ompl_planner.h).
+
+#include "physltl/planners/ompl/entries.h"
+
+#include "ompl_planner.h"
+
+namespace physltl::planners {
+namespace {
+
+using planning::Capabilities;
+using planning::Capability;
+using planning::OmplAlgorithm;
+
+// What OMPL's planners cannot take, with the reasons every refusal that names them gives.
+const Capability kLtlPlannerNoObjectTasks{false,
+                                          "LTLPlanner searches OMPL's product graph, which labels each triangle of the "
+                                          "decomposition with one letter, the robot's region, so its automaton never reads "
+                                          "a body's place"};
+const Capability kLtlPlannerNoRest{false,
+                                   "LTLPlanner searches OMPL's product graph, which takes co-safe tasks (and co-safe with "
+                                   "safety), satisfied by a finite run that need not end at rest"};
+const Capability kOmplNoBudget{false, "OMPL's planners stop at a time limit only, so a replanning would depend on the machine"};
+
+// --ompl-sampler: OMPL's uniform control sampler (the default), or the one our planners share
+// (planning/propagation/control_sampler.h).
+planning::PlannerParameter sampler_parameter() {
+  return {planning::kOmplSamplerParameter,
+          "Control sampler of OMPL's planners: ompl (OMPL's uniform one) or ours (the knowledge planner's)",
+          {"ompl", "ours"},
+          [](const std::string& value) {
+            return value == "ours" ? "OMPL's planners sample controls with ours (--ompl-sampler ours)" : "";
+          }};
+}
+
+// RRT, KPIECE1, SST and PDST take every task: on OMPL's product where it applies, on ours otherwise
+// (ompl_planner.h).
+planning::PlannerEntry ompl_entry(const char* name, const char* summary, OmplAlgorithm algorithm) {
+  planning::PlannerEntry entry;
+  entry.name = name;
+  entry.summary = summary;
+  entry.can = algorithm == OmplAlgorithm::kLtl ? Capabilities{kLtlPlannerNoObjectTasks, kLtlPlannerNoRest, kOmplNoBudget, false}
+                                               : Capabilities{{}, {}, kOmplNoBudget, false};
+  entry.parameters = {sampler_parameter()};
+  entry.plan = [algorithm](const planning::Problem& problem, const planning::PlannerData*, const planning::PlannerOptions& options) {
+    return planning::plan_with_ompl(problem, options, algorithm);
+  };
+  return entry;
+}
+
+}  // namespace
+
+void add_ompl_planners(planning::PlannerRegistry& registry) {
+  registry.add(ompl_entry("ompl-ltl", "OMPL's LTLPlanner (Bhatia et al.) on OMPL's product", OmplAlgorithm::kLtl));
+  registry.add(ompl_entry("ompl-rrt", "OMPL's control RRT (on OMPL's product, or ours for tasks about bodies or at rest)", OmplAlgorithm::kRrt));
+  registry.add(ompl_entry("ompl-kpiece", "OMPL's KPIECE1 (on OMPL's product, or ours for tasks about bodies or at rest)", OmplAlgorithm::kKpiece));
+  registry.add(ompl_entry("ompl-sst", "OMPL's SST (on OMPL's product, or ours for tasks about bodies or at rest)", OmplAlgorithm::kSst));
+  registry.add(ompl_entry("ompl-pdst", "OMPL's PDST (on OMPL's product, or ours for tasks about bodies or at rest)", OmplAlgorithm::kPdst));
+}
+
+}  // namespace physltl::planners
