@@ -1,5 +1,7 @@
 #include "physltl/geometry/free_space.h"
 
+#include "physltl/geometry/shortest_paths.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -7,7 +9,6 @@
 #include <functional>
 #include <limits>
 #include <numbers>
-#include <queue>
 
 namespace physltl::geometry {
 namespace {
@@ -147,20 +148,17 @@ FreeSpace::FreeSpace(std::vector<Polygon> obstacles, const Rect& bounds) : obsta
   }
   // About one obstacle per cell.
   const Vec2 size = bounds_.size().cwiseMax(Vec2::Constant(1e-9));
-  cell_ = std::max(std::sqrt(size.x() * size.y() / std::max<double>(1.0, static_cast<double>(obstacles_.size()))), 1e-3);
-  grid_origin_ = bounds_.min;
-  columns_ = std::clamp(static_cast<int>(std::ceil(size.x() / cell_)), 1, 4096);
-  rows_ = std::clamp(static_cast<int>(std::ceil(size.y() / cell_)), 1, 4096);
-  cells_.assign(static_cast<size_t>(columns_) * static_cast<size_t>(rows_), {});
-  const auto column = [&](double x) { return std::clamp(static_cast<int>(std::floor((x - grid_origin_.x()) / cell_)), 0, columns_ - 1); };
-  const auto row = [&](double y) { return std::clamp(static_cast<int>(std::floor((y - grid_origin_.y()) / cell_)), 0, rows_ - 1); };
+  const double cell = std::max(std::sqrt(size.x() * size.y() / std::max<double>(1.0, static_cast<double>(obstacles_.size()))), 1e-3);
+  grid_ = UniformGrid(bounds_.min, cell, std::min(static_cast<int>(std::ceil(size.x() / cell)), kMaxCellsPerSide),
+                      std::min(static_cast<int>(std::ceil(size.y() / cell)), kMaxCellsPerSide));
+  cells_.assign(grid_.size(), {});
   for (size_t i = 0; i < obstacles_.size(); ++i) {
     const Rect& r = obstacle_bounds_[i];
     if (r.max.x() < bounds_.min.x() || r.min.x() > bounds_.max.x() || r.max.y() < bounds_.min.y() || r.min.y() > bounds_.max.y()) {
       continue;  // wholly outside where a path may go
     }
-    for (int y = row(r.min.y()); y <= row(r.max.y()); ++y) {
-      for (int x = column(r.min.x()); x <= column(r.max.x()); ++x) cells_[static_cast<size_t>(y) * columns_ + x].push_back(static_cast<int>(i));
+    for (int y = grid_.row(r.min.y()); y <= grid_.row(r.max.y()); ++y) {
+      for (int x = grid_.column(r.min.x()); x <= grid_.column(r.max.x()); ++x) cells_[grid_.index(x, y)].push_back(static_cast<int>(i));
     }
   }
   // Each corner with its polygon's neighbouring corners, for the tangency test below.
@@ -209,18 +207,16 @@ bool FreeSpace::free(const Vec2& a, const Vec2& b) const {
   };
   // The cells the segment crosses, in order (Amanatides and Woo's traversal); an obstacle in several of
   // them is tested in each, which costs less than remembering which were.
-  const Vec2 from = (a - grid_origin_) / cell_, to = (b - grid_origin_) / cell_;
-  int x = std::clamp(static_cast<int>(std::floor(from.x())), 0, columns_ - 1);
-  int y = std::clamp(static_cast<int>(std::floor(from.y())), 0, rows_ - 1);
-  const int last_x = std::clamp(static_cast<int>(std::floor(to.x())), 0, columns_ - 1);
-  const int last_y = std::clamp(static_cast<int>(std::floor(to.y())), 0, rows_ - 1);
+  const Vec2 from = (a - grid_.origin()) / grid_.cell(), to = (b - grid_.origin()) / grid_.cell();
+  int x = grid_.column(a.x()), y = grid_.row(a.y());
+  const int last_x = grid_.column(b.x()), last_y = grid_.row(b.y());
   const Vec2 d = to - from;
   const int step_x = d.x() > 0 ? 1 : -1, step_y = d.y() > 0 ? 1 : -1;
   const double delta_x = d.x() != 0 ? std::abs(1.0 / d.x()) : kInfinity, delta_y = d.y() != 0 ? std::abs(1.0 / d.y()) : kInfinity;
   double next_x = d.x() != 0 ? ((step_x > 0 ? x + 1 - from.x() : from.x() - x) * delta_x) : kInfinity;
   double next_y = d.y() != 0 ? ((step_y > 0 ? y + 1 - from.y() : from.y() - y) * delta_y) : kInfinity;
   while (true) {
-    for (int i : cells_[static_cast<size_t>(y) * columns_ + x]) {
+    for (int i : cells_[grid_.index(x, y)]) {
       if (blocks(i)) return false;
     }
     if (x == last_x && y == last_y) return true;
@@ -231,13 +227,13 @@ bool FreeSpace::free(const Vec2& a, const Vec2& b) const {
     } else if (next_y < next_x) {
       y += step_y, next_y += delta_y;
     } else {
-      for (int i : cells_[static_cast<size_t>(y) * columns_ + std::clamp(x + step_x, 0, columns_ - 1)]) {
+      for (int i : cells_[grid_.index(std::clamp(x + step_x, 0, grid_.columns() - 1), y)]) {
         if (blocks(i)) return false;
       }
       x += step_x, next_x += delta_x;
       y += step_y, next_y += delta_y;
     }
-    if (x < 0 || x >= columns_ || y < 0 || y >= rows_) return true;
+    if (!grid_.contains(x, y)) return true;
   }
 }
 
@@ -293,25 +289,13 @@ double FreeSpace::reach(const Vec2& from, const Place& to) const {
 }
 
 std::vector<double> FreeSpace::distances_from(const Place& from) const {
-  std::vector<double> cost(corners_.size());
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-  for (size_t i = 0; i < corners_.size(); ++i) {
-    cost[i] = from.from_corner[i];
-    open.push({cost[i], static_cast<int>(i)});
-  }
-  while (!open.empty()) {
-    const auto [c, u] = open.top();
-    open.pop();
-    if (c > cost[static_cast<size_t>(u)]) continue;
-    for (const auto& [v, length] : edges_[static_cast<size_t>(u)]) {
-      if (c + length < cost[static_cast<size_t>(v)]) {
-        cost[static_cast<size_t>(v)] = c + length;
-        open.push({c + length, v});
-      }
-    }
-  }
-  return cost;
+  ShortestPaths ways(corners_.size());
+  for (size_t i = 0; i < corners_.size(); ++i) ways.seed(static_cast<int>(i), from.from_corner[i]);
+  ways.run([&](int u, double c) {
+    for (const auto& [v, length] : edges_[static_cast<size_t>(u)]) ways.relax(u, v, c + length);
+    return true;
+  });
+  return ways.distances();
 }
 
 double FreeSpace::distance_to(const std::vector<double>& from_corners, const Place& from, const Place& to) const {

@@ -1,8 +1,9 @@
 #include "physltl/planning/path_lower_bound.h"
 
+#include "physltl/geometry/shortest_paths.h"
+
 #include <functional>
 #include <limits>
-#include <queue>
 
 namespace physltl::planning {
 namespace {
@@ -19,34 +20,26 @@ double shortest_accepted_route(const scenario::World& world, const TaskAutomaton
   const int regions = static_cast<int>(world.regions.size());
   const int states = static_cast<int>(task.dfa.size());
   const auto id = [&](int place, int q) { return place * states + q; };
-  std::vector<double> cost(leg.size() * static_cast<size_t>(states), std::numeric_limits<double>::infinity());
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  geometry::ShortestPaths routes(leg.size() * static_cast<size_t>(states));
   const scenario::EnvironmentState initial = scenario::EnvironmentState::initial(world);
-  const int start = id(0, task.start_state(initial));
   const int facts_at_start = task.labelling.facts(initial);
-  cost[static_cast<size_t>(start)] = 0.0;
-  open.push({0.0, start});
-  while (!open.empty()) {
-    const auto [c, u] = open.top();
-    open.pop();
-    if (c > cost[static_cast<size_t>(u)]) continue;
+  routes.seed(id(0, task.start_state(initial)), 0.0);
+  const int accepted = routes.run([&](int u, double c) {
     const int place = u / states, q = u % states;
-    if (task.dfa.accepting[static_cast<size_t>(q)]) return c;
-    const auto relax = [&](int v, double length) {
-      if (c + length < cost[static_cast<size_t>(v)]) cost[static_cast<size_t>(v)] = c + length, open.push({c + length, v});
-    };
+    if (task.dfa.accepting[static_cast<size_t>(q)]) return false;
     // Where the bodies may be anywhere at no cost (moving them takes the robot somewhere too, so this only
     // makes the bound lower), every fact set is tried.
     for (int facts = 0; facts < task.labelling.fact_sets(); ++facts) {
       if (bodies_stay && facts != facts_at_start) continue;
-      relax(id(place, task.step(q, task.labelling.letter(facts, -1))), 0.0);
+      routes.relax(u, id(place, task.step(q, task.labelling.letter(facts, -1))), c);
       for (int region = 0; region < regions; ++region) {
-        relax(id(region + 1, task.step(q, task.labelling.letter(facts, region))), leg[static_cast<size_t>(place)][static_cast<size_t>(region + 1)]);
+        routes.relax(u, id(region + 1, task.step(q, task.labelling.letter(facts, region))),
+                     c + leg[static_cast<size_t>(place)][static_cast<size_t>(region + 1)]);
       }
     }
-  }
-  return std::numeric_limits<double>::infinity();
+    return true;
+  });
+  return accepted < 0 ? std::numeric_limits<double>::infinity() : routes.distance(accepted);
 }
 
 // A robot braked against a wall or a box, or placed touching one, has its centre on or a hair inside the

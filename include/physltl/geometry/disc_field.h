@@ -8,6 +8,7 @@
 // 8-connected free cells. Distances are along those cells (8-connected, diagonal steps sqrt(2) cells).
 
 #include "physltl/geometry/shape.h"
+#include "physltl/geometry/uniform_grid.h"
 
 #include <functional>
 #include <limits>
@@ -37,17 +38,10 @@ class DiscField {
   // The free cell whose centre is nearest to `p` within `search` metres, as a point; `p` when none is.
   Vec2 nearest_free(const Vec2& p, double search) const;
 
-  double cell() const { return cell_; }
+  double cell() const { return grid_.cell(); }
 
  private:
-  int column(double x) const;
-  int row(double y) const;
-  std::size_t index(int ix, int iy) const { return static_cast<std::size_t>(iy) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(ix); }
-  Vec2 centre(int ix, int iy) const { return origin_ + cell_ * Vec2(ix + 0.5, iy + 0.5); }
-
-  Vec2 origin_;
-  double cell_;
-  int nx_, ny_;
+  UniformGrid grid_;
   std::vector<bool> free_;
   std::vector<double> distance_;
 };

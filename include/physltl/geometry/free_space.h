@@ -5,6 +5,7 @@
 
 #include "physltl/geometry/shape.h"
 #include "physltl/geometry/shapes.h"
+#include "physltl/geometry/uniform_grid.h"
 
 #include <utility>
 #include <vector>
@@ -50,10 +51,9 @@ class FreeSpace {
   std::vector<Rect> obstacle_bounds_;
   // The obstacles overlapping each cell of a uniform grid over the bounds: a segment is tested against the
   // obstacles of the cells it crosses, not all of them.
-  Vec2 grid_origin_ = Vec2::Zero();
-  double cell_ = 1.0;
-  int columns_ = 1, rows_ = 1;
-  std::vector<std::vector<int>> cells_;
+  static constexpr int kMaxCellsPerSide = 4096;
+  UniformGrid grid_;
+  std::vector<std::vector<int>> cells_;  // per cell of grid_, the obstacles whose bounds reach into it
   Rect bounds_;
   std::vector<Vec2> corners_;                           // obstacle corners inside bounds and no obstacle
   std::vector<std::vector<std::pair<int, double>>> edges_;  // per corner: visible corners and distances

@@ -1,5 +1,7 @@
 #include "object_lead.h"
 
+#include "physltl/geometry/shortest_paths.h"
+
 #include "physltl/knowledge/face_set.h"
 
 #include <Eigen/Geometry>
@@ -8,7 +10,6 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <queue>
 
 namespace physltl::planning {
 namespace {
@@ -87,20 +88,15 @@ const std::vector<double>& ObjectLead::distances_to_triangle(int triangle) {
   if (known != triangle_distances_.end()) return known->second;
   if (triangle_distances_.size() >= kCachedTriangles) triangle_distances_.clear();
   const auto& triangles = decomposition_.triangles();
-  std::vector<double> distance(triangles.size(), std::numeric_limits<double>::infinity());
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-  distance[static_cast<std::size_t>(triangle)] = 0.0;
-  open.push({0.0, triangle});
-  while (!open.empty()) {
-    const auto [d, t] = open.top();
-    open.pop();
-    if (d > distance[static_cast<std::size_t>(t)]) continue;
+  geometry::ShortestPaths ways(triangles.size());
+  ways.seed(triangle, 0.0);
+  ways.run([&](int t, double d) {
     for (int n : triangles[static_cast<std::size_t>(t)].neighbors) {
-      const double next = d + (triangles[static_cast<std::size_t>(n)].centroid - triangles[static_cast<std::size_t>(t)].centroid).norm();
-      if (next < distance[static_cast<std::size_t>(n)]) distance[static_cast<std::size_t>(n)] = next, open.push({next, n});
+      ways.relax(t, n, d + (triangles[static_cast<std::size_t>(n)].centroid - triangles[static_cast<std::size_t>(t)].centroid).norm());
     }
-  }
+    return true;
+  });
+  std::vector<double> distance = ways.distances();
   return triangle_distances_.emplace(triangle, std::move(distance)).first->second;
 }
 

@@ -26,9 +26,7 @@ ProductGraph::ProductGraph(const decomposition::Decomposition& decomposition, co
   }
   lead_factor_ = std::move(lead_factor);
   entry_cost_.resize(motions_.size());
-  lead_cost_.resize(motions_.size());
-  lead_previous_.resize(motions_.size());
-  lead_stamps_.assign(motions_.size(), 0u);
+  lead_search_.resize(motions_.size());
   for (size_t id = 0; id < motions_.size(); ++id) update_entry_cost(static_cast<int>(id));
 }
 
@@ -52,51 +50,25 @@ void ProductGraph::count_selection(int id) {
 }
 
 std::vector<int> ProductGraph::lead(int start, int horizon) {
-  // Dijkstra; the buffers are members because the planner asks for a lead dozens of times a second, and a
-  // state's cost counts only if it was set in this search (its stamp): resetting every state of a large
-  // product would cost more than searching the part of it the lead needs.
-  if (++lead_stamp_ == 0) std::fill(lead_stamps_.begin(), lead_stamps_.end(), 0u), lead_stamp_ = 1;
-  auto reached = [&](int v) { return lead_stamps_[static_cast<size_t>(v)] == lead_stamp_; };
-  std::vector<double>& cost = lead_cost_;
-  std::vector<int>& previous = lead_previous_;
-  std::vector<std::pair<double, int>>& open = lead_open_;  // a min-heap
-  open.clear();
-  lead_stamps_[static_cast<size_t>(start)] = lead_stamp_;
-  cost[start] = 0.0;
-  previous[start] = -1;
-  open.push_back({0.0, start});
-  int goal = -1;
-  while (!open.empty()) {
-    std::pop_heap(open.begin(), open.end(), std::greater<>{});
-    const auto [c, u] = open.back();
-    open.pop_back();
-    if (c > cost[u]) continue;
-    ++lead_work_;
+  // The search's buffers stay between searches because the planner asks for a lead dozens of times a
+  // second, and a new search forgets the last in O(1) (geometry/shortest_paths.h): resetting every state
+  // of a large product would cost more than searching the part of it the lead needs.
+  lead_search_.start();
+  lead_search_.seed(start, 0.0);
+  const int goal = lead_search_.run([&](int u, double c) {
     const int stage = stage_of(u);
     const int distance = stages_.distance(stage);
-    if (distance >= 0 && (distance <= horizon || stages_.body_move(stage))) {
-      goal = u;
-      break;
-    }
+    if (distance >= 0 && (distance <= horizon || stages_.body_move(stage))) return false;
     const int triangle = triangle_of(u);
     for (int n = first_neighbour_[triangle]; n < first_neighbour_[triangle + 1]; ++n) {
       const int next = stages_.after_robot(stage, neighbours_[n].region);
       if (stages_.distance(next) < 0) continue;
       const int v = id(neighbours_[n].triangle, next);
-      const double next_cost = c + entry_cost_[v];
-      if (!reached(v) || next_cost < cost[v]) {
-        lead_stamps_[static_cast<size_t>(v)] = lead_stamp_;
-        cost[v] = next_cost;
-        previous[v] = u;
-        open.push_back({next_cost, v});
-        std::push_heap(open.begin(), open.end(), std::greater<>{});
-      }
+      lead_search_.relax(u, v, c + entry_cost_[v]);
     }
-  }
-  std::vector<int> path;
-  for (int v = goal; v >= 0; v = previous[v]) path.push_back(v);
-  std::reverse(path.begin(), path.end());
-  return path;
+    return true;
+  });
+  return goal < 0 ? std::vector<int>{} : lead_search_.path_to(goal);
 }
 
 }  // namespace physltl::planning

@@ -5,6 +5,7 @@
 // (stage_graph.h); for a task about the robot alone, the automaton state.
 
 #include "physltl/decomposition/decomposition.h"
+#include "physltl/geometry/shortest_paths.h"
 #include "physltl/planning/stage_graph.h"
 
 #include <utility>
@@ -38,7 +39,7 @@ class ProductGraph {
   // (0: an accepting one) or needs a body moved first, cheapest under 1/weight; empty if none.
   std::vector<int> lead(int start, int horizon = 0);
   // Product states settled by every lead search so far: their cost, which grows with the world.
-  long long lead_work() const { return lead_work_; }
+  long long lead_work() const { return lead_search_.settled(); }
 
  private:
   const StageGraph& stages_;
@@ -57,12 +58,7 @@ class ProductGraph {
   void update_entry_cost(int id);
   std::vector<float> lead_factor_;  // per product state; empty: all 1
   std::vector<double> entry_cost_;  // 1 / (weight * lead scale), kept up to date: the lead search reads it for every edge
-  std::vector<double> lead_cost_;
-  std::vector<int> lead_previous_;
-  std::vector<unsigned> lead_stamps_;  // per state: the search that last set its cost
-  unsigned lead_stamp_ = 0;
-  long long lead_work_ = 0;
-  std::vector<std::pair<double, int>> lead_open_;
+  geometry::ShortestPaths lead_search_;
 };
 
 }  // namespace physltl::planning

@@ -1,5 +1,7 @@
 #include "route_choice.h"
 
+#include "physltl/geometry/shortest_paths.h"
+
 #include "physltl/planning/stage_graph.h"
 
 #include "physltl/geometry/convex_partition.h"
@@ -11,7 +13,6 @@
 #include <functional>
 #include <limits>
 #include <map>
-#include <queue>
 #include <set>
 #include <utility>
 
@@ -76,21 +77,16 @@ std::vector<int> target_places(const TaskAutomaton& task, const StageGraph& stag
 std::vector<double> triangle_distances(const decomposition::Decomposition& decomposition, const std::vector<int>& sources,
                                        const std::vector<bool>& open) {
   const auto& triangles = decomposition.triangles();
-  std::vector<double> distance(triangles.size(), kInfinity);
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
-  for (int t : sources) distance[static_cast<size_t>(t)] = 0.0, queue.push({0.0, t});
-  while (!queue.empty()) {
-    const auto [d, t] = queue.top();
-    queue.pop();
-    if (d > distance[static_cast<size_t>(t)]) continue;
+  geometry::ShortestPaths ways(triangles.size());
+  for (int t : sources) ways.seed(t, 0.0);
+  ways.run([&](int t, double d) {
     for (int n : triangles[static_cast<size_t>(t)].neighbors) {
       if (!open[static_cast<size_t>(n)]) continue;
-      const double next = d + (triangles[static_cast<size_t>(n)].centroid - triangles[static_cast<size_t>(t)].centroid).norm();
-      if (next < distance[static_cast<size_t>(n)]) distance[static_cast<size_t>(n)] = next, queue.push({next, n});
+      ways.relax(t, n, d + (triangles[static_cast<size_t>(n)].centroid - triangles[static_cast<size_t>(t)].centroid).norm());
     }
-  }
-  return distance;
+    return true;
+  });
+  return ways.distances();
 }
 
 // The triangles standing for a place: the start's, or every triangle of a region.
