@@ -22,13 +22,9 @@ std::vector<render::MRegionOverlay> mregion_overlays(const knowledge::AbstractKn
 
 std::vector<render::ObjectGoalOverlay> object_goal_overlays(const scenario::World& world, const knowledge::Reasoning& reasoning,
                                                             const scenario::EnvironmentState& state) {
-  const auto index_of = [](const auto& list, const std::string& name) {
-    const auto it = std::find_if(list.begin(), list.end(), [&](const auto& n) { return n.name == name; });
-    return static_cast<int>(it - list.begin());
-  };
   std::vector<render::ObjectGoalOverlay> goals;
   for (const knowledge::ObjectVerdict& object : reasoning.feasibility.objects) {
-    const int body = index_of(world.movable_bodies, object.body), region = index_of(world.regions, object.region);
+    const int body = scenario::movable_body_index(world, object.body), region = scenario::region_index(world, object.region);
     const bool holds = world.regions[static_cast<size_t>(region)].polygon.contains(state.movable_poses[static_cast<size_t>(body)].position);
     goals.push_back({body, region, holds});
   }

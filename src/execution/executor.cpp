@@ -13,7 +13,7 @@ namespace physltl::execution {
 namespace {
 
 // The letter of a state as names: the robot's region and the facts BODY@REGION, as the replay reads them.
-std::vector<std::string> letter_names(const scenario::World& world, const planning::Labelling& labelling,
+std::vector<std::string> letter_names(const scenario::World& world, const knowledge::Labelling& labelling,
                                       const scenario::EnvironmentState& state) {
   const int letter = labelling.letter(state);
   std::vector<std::string> names = labelling.object_facts(labelling.facts_of(letter));
@@ -153,12 +153,13 @@ bool follow(Run& run, const scenario::World& model, const planning::Plan& plan, 
 }  // namespace
 
 scenario::World world_from_state(const scenario::World& model, const scenario::EnvironmentState& state,
-                                 const std::string& formula) {
+                                 const ltl::Formula& formula) {
   scenario::World world = model;
   world.robot.start = state.robot_position;
   world.robot.start_yaw = state.robot_yaw;
   for (size_t i = 0; i < world.movable_bodies.size(); ++i) world.movable_bodies[i].footprint.pose = state.movable_poses[i];
-  world.task.formula = formula;
+  world.task.formula = ltl::to_string(formula);
+  world.task.parsed = formula;
   return world;
 }
 
@@ -199,7 +200,7 @@ Execution Executor::run(ExecutionWorld& world, const Replanner& replanner) const
     Execution& result = run.result();
     result.replan_steps.push_back(result.steps);
     ++result.replans;
-    latest = replanner(world_from_state(model, run.now(), ltl::to_string(run.remaining())));
+    latest = replanner(world_from_state(model, run.now(), run.remaining()));
     result.planning_propagations += latest.propagations;
     result.planning_s += latest.planning_s;
     result.replan_results.push_back(latest.stop_reason);

@@ -1,4 +1,4 @@
-#include "physltl/planning/labelling.h"
+#include "physltl/knowledge/labelling.h"
 
 #include "physltl/ltl/object_atom.h"
 
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace physltl::planning {
+namespace physltl::knowledge {
 
 RegionMap::RegionMap(const scenario::World& world) : world_(&world) {
   for (const auto& region : world.regions) bounds_.push_back(region.polygon.bounds());
@@ -19,23 +19,13 @@ int RegionMap::at(const scenario::Vec2& p) const {
   return -1;
 }
 
-namespace {
-
-template <class Named>
-int index_of(const std::vector<Named>& list, const std::string& name) {
-  const auto it = std::find_if(list.begin(), list.end(), [&](const Named& n) { return n.name == name; });
-  return it == list.end() ? -1 : static_cast<int>(it - list.begin());
-}
-
-}  // namespace
-
 Labelling::Labelling(const scenario::World& world, const ltl::Dfa& dfa)
     : map_(world), regions_count_(static_cast<int>(world.regions.size())), proposition_names_(dfa.propositions) {
   for (const auto& region : world.regions) robot_proposition_.push_back(dfa.proposition_index(region.name));
   for (int p = 0; p < static_cast<int>(dfa.propositions.size()); ++p) {
     const auto object = ltl::object_atom(dfa.propositions[static_cast<size_t>(p)]);
     if (!object) continue;
-    const int body = index_of(world.movable_bodies, object->body), region = index_of(world.regions, object->region);
+    const int body = scenario::movable_body_index(world, object->body), region = scenario::region_index(world, object->region);
     if (body < 0 || region < 0) {
       // The scenario's validation refuses such formulas; a caller that skipped it gets told, not a crash.
       throw std::invalid_argument("'" + dfa.propositions[static_cast<size_t>(p)] +
@@ -105,4 +95,4 @@ std::vector<std::string> Labelling::object_facts(int facts) const {
   return names;
 }
 
-}  // namespace physltl::planning
+}  // namespace physltl::knowledge

@@ -78,7 +78,10 @@ std::string Analysis::infeasibility() const {
 }
 
 Analysis analyse(std::string_view text, std::span<const std::string> invalid, std::span<const std::string> always_true) {
-  const Formula input = parse(text);
+  return analyse(parse(text), invalid, always_true);
+}
+
+Analysis analyse(const Formula& input, std::span<const std::string> invalid, std::span<const std::string> always_true) {
   const Formula pnf = positive_normal_form(input);
   Analysis a{input, pnf, classify(pnf), {invalid.begin(), invalid.end()}, {always_true.begin(), always_true.end()},
              {}, {}, {}, {}};

@@ -1,7 +1,5 @@
 #include "physltl/planning/planning_problem.h"
 
-#include "physltl/ltl/parser.h"
-
 namespace physltl::planning {
 namespace {
 
@@ -21,7 +19,7 @@ std::optional<PlanningProblem::Prepared> PlanningProblem::prepare(const scenario
                                                                   const knowledge::Reasoning& reasoning) {
   if (!reasoning.feasible()) return std::nullopt;
   TaskAutomaton simplified = TaskAutomaton::make(*reasoning.simplified_formula(), *reasoning.task.dfa, world);
-  TaskAutomaton as_written = TaskAutomaton::make(ltl::parse(world.task.formula), world);
+  TaskAutomaton as_written = TaskAutomaton::make(reasoning.task.input, world);
   decomposition::Decomposition decomposition = decomposition::Decomposition::build(world);
   return Prepared{std::move(simplified), std::move(as_written), std::move(decomposition)};
 }

@@ -9,7 +9,7 @@ namespace {
 // Per automaton state, the named bodies whose places can change what the automaton does from it or from
 // any state it can reach: a body matters at a state when moving it alone changes some step from there.
 std::vector<std::uint64_t> relevant_bodies(const TaskAutomaton& task) {
-  const Labelling& labels = task.labelling;
+  const knowledge::Labelling& labels = task.labelling;
   const int states = static_cast<int>(task.dfa.size());
   const int named = static_cast<int>(labels.named_bodies().size());
   std::vector<std::uint64_t> relevant(static_cast<std::size_t>(states), 0);
@@ -99,7 +99,7 @@ StageGraph::StageGraph(const TaskAutomaton& task)
 
 template <class Visit>
 void StageGraph::for_each_move(int stage, Visit visit) const {
-  const Labelling& labels = task_.labelling;
+  const knowledge::Labelling& labels = task_.labelling;
   const int q = automaton_state_of(stage), facts = facts_of(stage);
   for (int region = -1; region < labels.regions(); ++region) {
     visit(this->stage(task_.step(q, labels.letter(facts, region)), facts), std::nullopt);

@@ -18,7 +18,7 @@ TaskAutomaton TaskAutomaton::make(const ltl::Formula& formula, const scenario::W
 }
 
 TaskAutomaton TaskAutomaton::make(const ltl::Formula& formula, const ltl::Dfa& dfa, const scenario::World& world) {
-  TaskAutomaton task{formula, dfa, Labelling(world, dfa), {}};
+  TaskAutomaton task{formula, dfa, knowledge::Labelling(world, dfa), {}};
   const auto letters = static_cast<std::size_t>(task.labelling.letters());
   if (dfa.size() * letters > kMaxTableEntries) {
     throw std::invalid_argument("the task's automaton has " + std::to_string(dfa.size()) + " states over " +

@@ -16,51 +16,6 @@ ScenarioError::ScenarioError(std::vector<Diagnostic> diagnostics)
       }()),
       diagnostics_(std::move(diagnostics)) {}
 
-const char* side_name(Side side) {
-  switch (side) {
-    case Side::kMinusX: return "-x";
-    case Side::kPlusX: return "+x";
-    case Side::kMinusY: return "-y";
-    case Side::kPlusY: return "+y";
-  }
-  return "?";
-}
-
-int face_count(const geometry::Shape& shape) {
-  switch (shape.kind()) {
-    case geometry::Shape::Kind::kBox: return 4;
-    case geometry::Shape::Kind::kCircle: return kCylinderSectors;
-    case geometry::Shape::Kind::kPolygon: break;
-  }
-  return static_cast<int>(shape.outline().vertices.size());
-}
-
-std::string face_name(const geometry::Shape& shape, int face) {
-  switch (shape.kind()) {
-    case geometry::Shape::Kind::kBox: return side_name(static_cast<Side>(face));
-    case geometry::Shape::Kind::kCircle: return "sector " + std::to_string(face + 1);
-    case geometry::Shape::Kind::kPolygon: break;
-  }
-  return "face " + std::to_string(face + 1);
-}
-
-const char* shape_name(const geometry::Shape& shape) {
-  switch (shape.kind()) {
-    case geometry::Shape::Kind::kBox: return "box";
-    case geometry::Shape::Kind::kCircle: return "cylinder";
-    case geometry::Shape::Kind::kPolygon: break;
-  }
-  return "polygon";
-}
-
-const char* drive_name(Drive drive) {
-  switch (drive) {
-    case Drive::kHolonomic: return "holonomic";
-    case Drive::kDifferential: return "differential";
-  }
-  return "?";
-}
-
 std::string LoadOptions::default_lua_dir() { return PHYSLTL_LUA_DIR; }
 
 World load_scenario(const std::string& path, const LoadOptions& options) {

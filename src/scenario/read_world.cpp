@@ -1,5 +1,7 @@
 #include "read_world.h"
 
+#include "physltl/ltl/parser.h"
+
 #include "read_expectations.h"
 #include "table_reader.h"
 
@@ -258,7 +260,15 @@ void read_uncertainty(TableReader& r, Uncertainty& u) {
   u.body_yaw_deg = r.number("body_yaw_deg", u.body_yaw_deg);
 }
 
-void read_task(TableReader& r, Task& task) { task.formula = r.string("formula"); }
+// The formula is parsed here, once: every layer above takes Task::parsed.
+void read_task(TableReader& r, Task& task) {
+  task.formula = r.string("formula");
+  try {
+    task.parsed = ltl::parse(task.formula);
+  } catch (const ltl::ParseError& e) {
+    r.error("formula '" + task.formula + "': " + e.what());
+  }
+}
 
 // Each mesh's footprint: the floor projection of what stands below the robot's top, so the robot never
 // passes under anything it would hit; its height, unless given, the mesh's own.

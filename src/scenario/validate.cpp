@@ -256,19 +256,13 @@ class Validator {
     }
   }
 
-  // The formula must parse, name only regions of this scenario and be one the planner can take.
+  // The formula (parsed by the reader, which reports a syntax error) must name only regions and bodies of
+  // this scenario.
   void check_task() {
     const auto& t = world_.task;
     if (t.where.file.empty()) return;  // missing: reported by the reader
     const std::string what = "task: formula '" + t.formula + "'";
-    std::optional<ltl::Formula> formula;
-    try {
-      formula = ltl::parse(t.formula);
-    } catch (const ltl::ParseError& e) {
-      error(t.where, what + ": " + e.what());
-      return;
-    }
-    for (const std::string& p : ltl::propositions(*formula)) {
+    for (const std::string& p : ltl::propositions(t.parsed)) {
       if (const std::optional<ltl::ObjectAtom> object = ltl::object_atom(p)) {
         check_object_atom(what, p, *object);
       } else {
@@ -278,9 +272,7 @@ class Validator {
   }
 
   void check_region_named(const std::string& what, const std::string& name) {
-    const bool is_region = std::any_of(world_.regions.begin(), world_.regions.end(),
-                                       [&](const Region& r) { return r.name == name; });
-    if (is_region) return;
+    if (region_index(world_, name) >= 0) return;
     std::string known;
     for (const auto& r : world_.regions) known += (known.empty() ? "" : ", ") + r.name;
     error(world_.task.where, what + " names unknown region '" + name + "' (" +
@@ -294,7 +286,7 @@ class Validator {
     if (std::any_of(world_.fixed_bodies.begin(), world_.fixed_bodies.end(), named)) {
       error(where, what + ": '" + atom + "' names fixed '" + object.body + "', which never moves: object propositions " +
                        "are about movable bodies");
-    } else if (!std::any_of(world_.movable_bodies.begin(), world_.movable_bodies.end(), named)) {
+    } else if (movable_body_index(world_, object.body) < 0) {
       std::string known;
       for (const auto& b : world_.movable_bodies) known += (known.empty() ? "" : ", ") + b.name;
       error(where, what + ": '" + atom + "' names unknown body '" + object.body + "' (" +

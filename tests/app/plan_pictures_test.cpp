@@ -33,7 +33,7 @@ class FixedPlan : public testing::Test {
     decomposition_ = new decomposition::Decomposition(decomposition::Decomposition::build(*world_));
     const auto task = planning::TaskAutomaton::make(*reasoning_->simplified_formula(), *reasoning_->task.dfa, *world_);
     as_written_ = new planning::TaskAutomaton(
-        planning::TaskAutomaton::make(ltl::parse(world_->task.formula), *world_));
+        planning::TaskAutomaton::make(world_->task.parsed, *world_));
     planning::PlannerOptions options;
     options.seed = 3;
     result_ = new planning::PlanResult(planners::registry().default_planner().plan(

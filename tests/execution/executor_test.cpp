@@ -98,7 +98,7 @@ TEST(WorldFromState, PutsTheRobotAndTheBodiesWhereTheStateHasThemWithTheRemainin
   state.robot_position += scenario::Vec2(0.1, -0.2);
   state.movable_poses[0].position += scenario::Vec2(0.3, 0.0);
   state.movable_poses[0].yaw = 0.2;
-  const scenario::World here = execution::world_from_state(p.world, state, "F p2");
+  const scenario::World here = execution::world_from_state(p.world, state, ltl::parse("F p2"));
   EXPECT_EQ(here.robot.start, state.robot_position);
   EXPECT_EQ(here.movable_bodies[0].footprint.pose.position, state.movable_poses[0].position);
   EXPECT_EQ(here.movable_bodies[0].footprint.pose.yaw, 0.2);

@@ -24,7 +24,7 @@ long first_step_with(const TestProblem& p, const Replay& r, const std::string& f
 
 TEST(Labelling, ALetterIsTheRobotsRegionAndWhereEachNamedBodyIs) {
   const TestProblem p("sorting.lua");
-  const Labelling& labels = p.original.labelling;
+  const knowledge::Labelling& labels = p.original.labelling;
   ASSERT_EQ(labels.named_bodies().size(), 3u);  // B1, B2, B3, each with one region
   EXPECT_EQ(labels.fact_sets(), 8);
   scenario::EnvironmentState state = scenario::EnvironmentState::initial(p.world);
@@ -54,7 +54,7 @@ TEST(StageGraph, ABodyMoveComesFirstAndABodyNoLongerNeededIsForgotten) {
 TEST(StageGraph, ABodyThatMustStayPutKillsTheTaskWhenItLeaves) {
   const TestProblem p("sorting.lua");  // ... & G B3@shelf
   const StageGraph stages(p.task);
-  const Labelling& labels = p.task.labelling;
+  const knowledge::Labelling& labels = p.task.labelling;
   const int start = stages.stage(p.task.start_state(scenario::EnvironmentState::initial(p.world)), 0);
   int b3 = -1;
   for (size_t i = 0; i < labels.named_bodies().size(); ++i) {

@@ -18,11 +18,12 @@ scenario::World open_floor(const std::string& formula) {
   w.regions.push_back({"a", geometry::Polygon::from_rect({{4.5, -0.5}, {5.5, 0.5}}), {}});
   w.regions.push_back({"b", geometry::Polygon::from_rect({{-0.5, 4.5}, {0.5, 5.5}}), {}});
   w.task.formula = formula;
+  w.task.parsed = ltl::parse(formula);
   return w;
 }
 
 double bound(const scenario::World& world) {
-  return shortest_free_path_length(world, TaskAutomaton::make(ltl::parse(world.task.formula), world));
+  return shortest_free_path_length(world, TaskAutomaton::make(world.task.parsed, world));
 }
 
 TEST(PathLowerBound, OnAnOpenFloorTheLegsAreStraightAndTheirOrderCounts) {
@@ -73,13 +74,13 @@ TEST(PathLowerBound, APushFreePathGoesRoundTheMovableBodiesOrIsNone) {
   bar.name = "bar";
   bar.footprint = geometry::box_footprint(kBar);
   world.movable_bodies.push_back(bar);
-  const TaskAutomaton task = TaskAutomaton::make(ltl::parse(world.task.formula), world);
+  const TaskAutomaton task = TaskAutomaton::make(world.task.parsed, world);
   EXPECT_NEAR(shortest_free_path_length(world, task), 4.5, 1e-12);
   const double around = way_over_the_bar(), push_free = shortest_push_free_path_length(world, task);
   EXPECT_LE(push_free, around);
   EXPECT_GT(push_free, around - 0.05);
   world.movable_bodies[0].footprint.shape = geometry::Shape::box({0.1, 10.0});  // from the floor's south edge to its north edge
-  EXPECT_TRUE(std::isinf(shortest_push_free_path_length(world, TaskAutomaton::make(ltl::parse(world.task.formula), world))));
+  EXPECT_TRUE(std::isinf(shortest_push_free_path_length(world, TaskAutomaton::make(world.task.parsed, world))));
 }
 
 TEST(PathLowerBound, AnUnreachableRegionHasNoBound) {

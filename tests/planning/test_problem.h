@@ -40,7 +40,7 @@ struct TestProblem {
         decomposition(decomposition::Decomposition::build(world)) {}
 
   TaskAutomaton make_task(bool simplified) const {
-    const ltl::Formula phi = ltl::parse(world.task.formula);
+    const ltl::Formula& phi = world.task.parsed;
     if (!simplified) return TaskAutomaton::make(phi, world);
     const auto invalid = knowledge::evaluate_feasibility(knowledge).invalid_names();
     return TaskAutomaton::make(*ltl::simplify_semantically(phi, invalid).formula, world);

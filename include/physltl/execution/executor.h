@@ -67,6 +67,6 @@ class Executor {
 // The model world as it stands in `state`: the robot's start and every movable body where `state` has
 // them, and `formula` as its task.
 scenario::World world_from_state(const scenario::World& model, const scenario::EnvironmentState& state,
-                                 const std::string& formula);
+                                 const ltl::Formula& formula);
 
 }  // namespace physltl::execution

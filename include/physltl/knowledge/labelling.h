@@ -1,7 +1,8 @@
 #pragma once
-// What holds in a physics state, as the task's automaton reads it: the robot's region and, for each body
-// the task names (BODY@REGION, ltl/object_atom.h), which region its centre is in. The tree growers,
-// OMPL's propagator, replay and the pictures all ask this one piece, so none of them can disagree.
+// What holds in a state of the environment, as the task's automaton reads it: the robot's region and, for
+// each body the task names (BODY@REGION, ltl/object_atom.h), which region its centre is in. The reasoning
+// (the first letter), the planners, replay and the pictures all ask this one piece, so none of them can
+// disagree.
 //
 // Letters are numbered: letter = facts * (regions + 1) + robot region + 1, where `facts` numbers the
 // named bodies' places together (mixed radix: each body in none or one of the regions it is named with)
@@ -15,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace physltl::planning {
+namespace physltl::knowledge {
 
 // Which region contains a point. Asked after every physics step, so each region's bounding box is tried
 // before its polygon.
@@ -74,4 +75,4 @@ class Labelling {
   std::vector<std::string> proposition_names_;
 };
 
-}  // namespace physltl::planning
+}  // namespace physltl::knowledge

@@ -41,6 +41,8 @@ struct Analysis {
 // the region an object proposition names); the semantic simplification makes them true.
 Analysis analyse(std::string_view text, std::span<const std::string> invalid,
                  std::span<const std::string> always_true = {});
+// The same for a formula parsed already.
+Analysis analyse(const Formula& input, std::span<const std::string> invalid, std::span<const std::string> always_true = {});
 
 // Whether a run whose first letter is `first` (indices into dfa.propositions of those true at the start;
 // the rest false) can still satisfy the task, over letters that can occur after it.

@@ -4,7 +4,7 @@
 
 #include "physltl/ltl/dfa.h"
 #include "physltl/ltl/formula.h"
-#include "physltl/planning/labelling.h"
+#include "physltl/knowledge/labelling.h"
 #include "physltl/scenario/world.h"
 
 #include <vector>
@@ -14,7 +14,7 @@ namespace physltl::planning {
 struct TaskAutomaton {
   ltl::Formula formula;  // the task the automaton was made from
   ltl::Dfa dfa;
-  Labelling labelling;
+  knowledge::Labelling labelling;
   // step(state, letter) for every state and letter, tabulated: the planner asks after every physics step
   // and for every edge of its lead search. Indexed [state * letters + letter].
   std::vector<int> successors;

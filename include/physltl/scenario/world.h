@@ -6,11 +6,13 @@
 #include "physltl/geometry/shapes.h"
 #include "physltl/scenario/diagnostic.h"
 #include "physltl/scenario/expectations.h"
+#include "physltl/ltl/formula.h"
 
 #include <cstdint>
 #include <numbers>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace physltl::scenario {
@@ -95,7 +97,9 @@ struct Region {
 };
 
 struct Task {
-  std::string formula;
+  std::string formula;  // as written
+  // The formula, parsed once as the scenario is read: everything downstream takes it from here.
+  ltl::Formula parsed = ltl::Formula::tt();
   Location where;
 };
 
@@ -156,5 +160,10 @@ struct World {
   Uncertainty uncertainty;
   std::optional<Expectations> expect;  // the top-level file's expect { ... }, for `physltl-studio test`
 };
+
+// Where a body or region is among the World's, by name: World::movable_bodies or World::regions index,
+// or -1 when it has none of that name. Every name the task or a picture uses is turned into an index here.
+int movable_body_index(const World& world, std::string_view name);
+int region_index(const World& world, std::string_view name);
 
 }  // namespace physltl::scenario

@@ -48,8 +48,8 @@ ObjectLead::ObjectLead(const scenario::World& world, const knowledge::AbstractKn
                        const decomposition::Decomposition& decomposition)
     : world_(world), knowledge_(knowledge), decomposition_(decomposition) {}
 
-ObjectLead::Goal ObjectLead::goal(const Labelling& labelling, const BodyMove& move) {
-  const Labelling::NamedBody& named = labelling.named_bodies()[static_cast<std::size_t>(move.named)];
+ObjectLead::Goal ObjectLead::goal(const knowledge::Labelling& labelling, const BodyMove& move) {
+  const knowledge::Labelling::NamedBody& named = labelling.named_bodies()[static_cast<std::size_t>(move.named)];
   std::unique_ptr<geometry::DiscField>& way = ways_[{named.body, move.place}];
   if (!way) {
     const auto& body = knowledge_.movable_bodies[static_cast<std::size_t>(named.body)];

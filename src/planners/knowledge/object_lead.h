@@ -11,7 +11,7 @@
 #include "physltl/geometry/disc_field.h"
 #include "physltl/knowledge/abstract_knowledge.h"
 #include "physltl/knowledge/kappa.h"
-#include "physltl/planning/labelling.h"
+#include "physltl/knowledge/labelling.h"
 #include "physltl/planning/plan.h"
 #include "physltl/planning/random.h"
 #include "physltl/planning/stage_graph.h"
@@ -37,7 +37,7 @@ class ObjectLead {
 
   // The goal of `move`, its way computed on first use. Not thread-safe: the search calls it between
   // batches.
-  Goal goal(const Labelling& labelling, const BodyMove& move);
+  Goal goal(const knowledge::Labelling& labelling, const BodyMove& move);
 
   // Metres the body's centre at `centre` still has to travel; infinite when it cannot get there.
   static double remaining(const Goal& goal, const Vec2& centre);

@@ -46,7 +46,7 @@ std::vector<std::set<int>> entry_places(const scenario::World& world, const Task
       if (next != s) reach(next, region + 1);
     }
     if (const auto& move = stages.body_move(s)) {
-      const Labelling::NamedBody& body = task.labelling.named_bodies()[static_cast<size_t>(move->named)];
+      const knowledge::Labelling::NamedBody& body = task.labelling.named_bodies()[static_cast<size_t>(move->named)];
       const int facts = task.labelling.with_place(stages.facts_of(s), move->named, move->place);
       const int next = stages.after_letter(s, task.labelling.letter(facts, -1));
       const std::set<int> from = entries[static_cast<size_t>(s)];
@@ -213,7 +213,7 @@ std::vector<bool> triangles_under_bodies(const scenario::World& world, const Tas
   for (size_t b = 0; b < world.movable_bodies.size(); ++b) {
     const auto& named = task.labelling.named_bodies();
     const bool moved_on_purpose =
-        std::any_of(named.begin(), named.end(), [&](const Labelling::NamedBody& n) { return n.body == static_cast<int>(b); });
+        std::any_of(named.begin(), named.end(), [&](const knowledge::Labelling::NamedBody& n) { return n.body == static_cast<int>(b); });
     if (!moved_on_purpose) bodies.push_back(&world.movable_bodies[b].footprint);
   }
   std::vector<bool> under;

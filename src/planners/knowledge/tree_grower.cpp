@@ -19,7 +19,7 @@ TreeGrower::TreeGrower(const scenario::World& world, const TaskAutomaton& task, 
       max_control_steps_(world.planner.max_steps),
       named_(world.movable_bodies.size(), false),
       simulation_(world, knowledge, use_knowledge ? knowledge::ValidityMode::kKnowledge : knowledge::ValidityMode::kBaseline) {
-  for (const Labelling::NamedBody& n : task.labelling.named_bodies()) named_[static_cast<size_t>(n.body)] = true;
+  for (const knowledge::Labelling::NamedBody& n : task.labelling.named_bodies()) named_[static_cast<size_t>(n.body)] = true;
 }
 
 void TreeGrower::grow(const Motion& from, const Vec2& target, const ObjectLead::Goal* goal, Guidance guidance,

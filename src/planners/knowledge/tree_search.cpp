@@ -587,7 +587,7 @@ class Search {
     SearchEnd end;
     end.frontier = describe(frontier_stage_);
     if (const auto& move = stages_.body_move(frontier_stage_)) {
-      const Labelling::NamedBody& body = task_.labelling.named_bodies()[static_cast<size_t>(move->named)];
+      const knowledge::Labelling::NamedBody& body = task_.labelling.named_bodies()[static_cast<size_t>(move->named)];
       const std::string& name = world_.movable_bodies[static_cast<size_t>(body.body)].name;
       const auto region = [&](int place) { return world_.regions[static_cast<size_t>(body.regions[static_cast<size_t>(place - 1)])].name; };
       if (move->place > 0) {

@@ -153,7 +153,7 @@ class Replayer {
 
   // The trace against the formula as written, rest at the end, and the bodies moved.
   void judge_trace() {
-    const Labelling& labelling = formula_.labelling;
+    const knowledge::Labelling& labelling = formula_.labelling;
     std::vector<std::vector<std::string>> letters;
     letters.reserve(r_.region_trace.size());
     for (size_t i = 0; i < r_.region_trace.size(); ++i) {

@@ -35,8 +35,8 @@ constexpr double kWayCell = 0.05;  // m: the grid of that check
 // among the walls and the other bodies where they stand (boxes side by side need an order as much as a
 // corridor does). Nothing when every named body can.
 std::optional<std::string> narrow_way(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
-                                      const Labelling& labelling) {
-  for (const Labelling::NamedBody& named : labelling.named_bodies()) {
+                                      const knowledge::Labelling& labelling) {
+  for (const knowledge::Labelling::NamedBody& named : labelling.named_bodies()) {
     const auto& body = knowledge.movable_bodies[static_cast<std::size_t>(named.body)];
     if (body.body_class == knowledge::BodyClass::kFixed) continue;
     std::vector<geometry::Footprint> obstacles;

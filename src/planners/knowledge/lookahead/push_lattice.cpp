@@ -20,7 +20,7 @@ bool square(double yaw) {
 }  // namespace
 
 std::optional<PushLattice> PushLattice::build(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
-                                              const Labelling& labelling, std::string& why_not) {
+                                              const knowledge::Labelling& labelling, std::string& why_not) {
   PushLattice lattice;
   if (labelling.named_bodies().empty()) {
     why_not = "the task names no body";

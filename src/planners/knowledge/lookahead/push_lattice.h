@@ -6,7 +6,7 @@
 // body left.
 
 #include "physltl/knowledge/abstract_knowledge.h"
-#include "physltl/planning/labelling.h"
+#include "physltl/knowledge/labelling.h"
 #include "physltl/scenario/state.h"
 
 #include <array>
@@ -33,7 +33,7 @@ class PushLattice {
  public:
   // Nothing, with `why_not` said, when the World's pushable bodies do not stand on one lattice.
   static std::optional<PushLattice> build(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
-                                          const Labelling& labelling, std::string& why_not);
+                                          const knowledge::Labelling& labelling, std::string& why_not);
 
   double step() const { return step_; }
   int cells() const { return columns_ * rows_; }

@@ -55,7 +55,7 @@ int walk(const PushLattice& lattice, int from, const std::vector<int>& holder, s
 
 }  // namespace
 
-PushSearcher::PushSearcher(const PushLattice& lattice, const StageGraph& stages, const Labelling& labelling)
+PushSearcher::PushSearcher(const PushLattice& lattice, const StageGraph& stages, const knowledge::Labelling& labelling)
     : lattice_(lattice), stages_(stages), labelling_(labelling) {}
 
 bool PushSearcher::ends_pushing(int stage) const {

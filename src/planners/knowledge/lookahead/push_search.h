@@ -45,7 +45,7 @@ struct PushSearch {
 
 class PushSearcher {
  public:
-  PushSearcher(const PushLattice& lattice, const StageGraph& stages, const Labelling& labelling);
+  PushSearcher(const PushLattice& lattice, const StageGraph& stages, const knowledge::Labelling& labelling);
 
   // From `stage` with the lattice bodies on `cells` and the robot on `robot_cell`.
   PushSearch search(int stage, const std::vector<int>& cells, int robot_cell,
@@ -74,7 +74,7 @@ class PushSearcher {
 
   const PushLattice& lattice_;
   const StageGraph& stages_;
-  const Labelling& labelling_;
+  const knowledge::Labelling& labelling_;
 };
 
 }  // namespace physltl::planning::lookahead
