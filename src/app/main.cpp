@@ -1,3 +1,3 @@
-#include "command_line.h"
+#include "cli/command_line.h"
 
 int main(int argc, char** argv) { return physltl::app::run_command_line(argc, argv); }

@@ -1,4 +1,4 @@
-#include "bench/ompl_log.h"
+#include "views/ompl_log.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The app's overlays: mRegions coloured by kappa, and preview.png's legend.
 
-#include "overlays.h"
+#include "views/overlays.h"
 
 #include "golden_image.h"
 #include "physltl/render/renderer.h"

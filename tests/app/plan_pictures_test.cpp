@@ -1,6 +1,6 @@
 // Pictures of a fixed plan against golden images: a frame while the robot pushes a box, and the tree.
 
-#include "plan_pictures.h"
+#include "views/plan_pictures.h"
 
 #include "golden_image.h"
 #include "physltl/planners/registry.h"

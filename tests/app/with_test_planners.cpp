@@ -1,7 +1,7 @@
 // physltl-studio with three planners added through the registry, as a lab would add its own: nothing in
 // src/app or in the planning core knows them (registry_cli_test.cpp runs this program).
 
-#include "command_line.h"
+#include "cli/command_line.h"
 
 #include "physltl/planners/registry.h"
 

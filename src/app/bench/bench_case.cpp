@@ -1,13 +1,13 @@
 #include "bench_case.h"
 
-#include "bad_input.h"
-#include "planner_names.h"
-#include "planner_views.h"
+#include "common/bad_input.h"
+#include "run/planner_names.h"
+#include "views/planner_views.h"
 #include "physltl/planning/validation/improve.h"
 #include "physltl/planning/path_lower_bound.h"
 #include "physltl/execution/robustness.h"
-#include "robustness/uncertainty_args.h"
-#include "scenario_settings.h"
+#include "run/uncertainty_args.h"
+#include "run/scenario_settings.h"
 
 #include <fmt/format.h>
 

@@ -3,7 +3,7 @@
 // prepared for the planners once, with the facts bench reports about it (bench/campaign.h).
 
 #include "campaign.h"
-#include "outputs.h"
+#include "views/bench_outputs.h"
 #include "results.h"
 #include "unit_record.h"
 

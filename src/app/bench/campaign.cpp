@@ -1,6 +1,6 @@
 #include "campaign.h"
 
-#include "bad_input.h"
+#include "common/bad_input.h"
 #include "fingerprint.h"
 #include "physltl/planning/random.h"
 

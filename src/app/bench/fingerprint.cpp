@@ -1,6 +1,6 @@
 #include "fingerprint.h"
 
-#include "bad_input.h"
+#include "common/bad_input.h"
 
 #include <fmt/format.h>
 

@@ -1,10 +1,10 @@
 #include "manifest.h"
 
-#include "planner_names.h"
+#include "run/planner_names.h"
 
-#include "build_version.h"
+#include "common/build_version.h"
 #include "fingerprint.h"
-#include "outputs.h"
+#include "views/bench_outputs.h"
 #include "physltl/scenario/load.h"
 
 #include <fmt/format.h>

@@ -1,9 +1,9 @@
 #include "merge.h"
 
-#include "bad_input.h"
+#include "common/bad_input.h"
 #include "campaign.h"
 #include "manifest.h"
-#include "planner_names.h"
+#include "run/planner_names.h"
 #include "shard_folder.h"
 
 #include <fmt/format.h>

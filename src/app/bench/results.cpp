@@ -1,10 +1,10 @@
 #include "results.h"
 
 #include "physltl/render/chart.h"
-#include "plan_files.h"
-#include "planner_names.h"
-#include "planner_views.h"
-#include "statistics.h"
+#include "views/report_files.h"
+#include "run/planner_names.h"
+#include "views/planner_views.h"
+#include "common/statistics.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

@@ -2,7 +2,7 @@
 // What `bench` measured: one record per planner and seed, their summary, and the three ways it is shown
 // (the table on stdout, bench.json, the OMPL benchmark log). Keys documented in docs/benchmarks.md.
 
-#include "ompl_log.h"
+#include "views/ompl_log.h"
 #include "physltl/planning/registry.h"
 #include "physltl/render/image.h"
 

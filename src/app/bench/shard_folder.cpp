@@ -1,6 +1,6 @@
 #include "shard_folder.h"
 
-#include "bad_input.h"
+#include "common/bad_input.h"
 #include "manifest.h"
 
 #include <fcntl.h>

@@ -4,7 +4,7 @@
 // was running) and, once every unit has a result, one OMPL log per case (docs/campaigns.md).
 
 #include "campaign.h"
-#include "outputs.h"
+#include "views/bench_outputs.h"
 #include "unit_record.h"
 
 #include <nlohmann/json.hpp>

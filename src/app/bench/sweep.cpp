@@ -2,9 +2,9 @@
 
 #include "physltl/render/chart.h"
 
-#include "bad_input.h"
-#include "plan_files.h"
-#include "statistics.h"
+#include "common/bad_input.h"
+#include "views/report_files.h"
+#include "common/statistics.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

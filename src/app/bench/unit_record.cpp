@@ -1,8 +1,8 @@
 #include "unit_record.h"
 
-#include "bad_input.h"
-#include "planner_names.h"
-#include "planner_views.h"
+#include "common/bad_input.h"
+#include "run/planner_names.h"
+#include "views/planner_views.h"
 
 namespace physltl::app {
 

@@ -1,6 +1,6 @@
 #include "sokoban_level.h"
 
-#include "bad_input.h"
+#include "common/bad_input.h"
 
 #include <algorithm>
 #include <fstream>

@@ -1,21 +1,21 @@
 // `physltl-studio execute SCENARIO.lua --worlds N`: the plan run in N perturbed worlds, monitored, with
 // replanning from the observed state when it leaves the plan's tolerance (docs/robustness.md).
 
-#include "command.h"
-#include "robustness/execution_report.h"
-#include "failed_search.h"
-#include "output_folder.h"
+#include "cli/command.h"
+#include "views/execution_report.h"
+#include "views/failed_search.h"
+#include "common/output_folder.h"
 #include "physltl/execution/executor.h"
 #include "physltl/execution/perturbation.h"
 #include "physltl/execution/robustness.h"
-#include "plan_pictures.h"
-#include "planner_args.h"
-#include "planner_names.h"
+#include "views/plan_pictures.h"
+#include "cli/planner_args.h"
+#include "run/planner_names.h"
 #include "physltl/execution/replanner.h"
 #include "physltl/planning/planning_problem.h"
 #include "physltl/knowledge/reasoning.h"
-#include "scenario_args.h"
-#include "robustness/uncertainty_args.h"
+#include "cli/scenario_args.h"
+#include "run/uncertainty_args.h"
 
 #include <fmt/format.h>
 

@@ -1,10 +1,10 @@
-#include "outputs.h"
+#include "bench_outputs.h"
 
-#include "bad_input.h"
-#include "campaign.h"
-#include "output_folder.h"
+#include "common/bad_input.h"
+#include "bench/campaign.h"
+#include "common/output_folder.h"
 #include "physltl/render/png.h"
-#include "sweep.h"
+#include "bench/sweep.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

@@ -1,11 +1,11 @@
-#include "command.h"
-#include "scenario_settings.h"
+#include "cli/command.h"
+#include "run/scenario_settings.h"
 #include "scenario_test/junit_report.h"
 #include "scenario_test/scenario_cases.h"
 #include "scenario_test/schedule.h"
 #include "scenario_test/summary.h"
 #include "scenario_test/test_entries.h"
-#include "stop_signal.h"
+#include "cli/stop_signal.h"
 
 #include <fmt/format.h>
 

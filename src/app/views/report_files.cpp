@@ -1,8 +1,8 @@
-#include "plan_files.h"
+#include "report_files.h"
 
-#include "planner_names.h"
+#include "run/planner_names.h"
 #include "planner_views.h"
-#include "robustness/robustness_report.h"
+#include "robustness_report.h"
 
 #include "physltl/ltl/formula.h"
 

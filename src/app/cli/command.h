@@ -1,7 +1,7 @@
 #pragma once
 // Internal to the app module: how each subcommand plugs into the command line.
 
-#include "bad_input.h"
+#include "common/bad_input.h"
 
 #include <CLI/CLI.hpp>
 

@@ -2,7 +2,7 @@
 // What a search that ended without a plan tells its author: failed/report.json (docs/report.md) and the
 // last line on stderr, `no plan found (<reason>); most refused: <rule> (<n> of <m> steps)`.
 
-#include "plan_files.h"
+#include "report_files.h"
 #include "physltl/decomposition/decomposition.h"
 #include "physltl/planning/refusal.h"
 

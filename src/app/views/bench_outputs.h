@@ -3,7 +3,7 @@
 // table, <out>/<case>/bench.json and bench.png; per swept entry sweep.json and sweep.png; the OMPL logs.
 // All appear, or none (docs/benchmarks.md, docs/campaigns.md).
 
-#include "results.h"
+#include "bench/results.h"
 #include "ompl_log.h"
 
 #include <filesystem>

@@ -2,7 +2,7 @@
 
 #include "bench/campaign.h"
 #include "bench/merge.h"
-#include "command.h"
+#include "cli/command.h"
 
 #include <memory>
 #include <sstream>

@@ -1,6 +1,6 @@
 #include "uncertainty_args.h"
 
-#include "bad_input.h"
+#include "common/bad_input.h"
 #include "physltl/scenario/load.h"
 
 #include <fmt/format.h>

@@ -1,4 +1,4 @@
-#include "command.h"
+#include "cli/command.h"
 
 #include "physltl/ltl/analysis.h"
 #include "physltl/ltl/co_safety.h"

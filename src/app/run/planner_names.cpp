@@ -1,6 +1,6 @@
 #include "planner_names.h"
 
-#include "bad_input.h"
+#include "common/bad_input.h"
 
 #include "physltl/planners/registry.h"
 

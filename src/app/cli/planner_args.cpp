@@ -1,6 +1,6 @@
 #include "planner_args.h"
 
-#include "planner_names.h"
+#include "run/planner_names.h"
 
 namespace physltl::app {
 

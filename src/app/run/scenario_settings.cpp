@@ -1,6 +1,6 @@
 #include "scenario_settings.h"
 
-#include "bad_input.h"
+#include "common/bad_input.h"
 #include "physltl/scenario/load.h"
 
 namespace physltl::app {

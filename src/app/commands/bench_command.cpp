@@ -4,13 +4,13 @@
 #include "bench/bench_case.h"
 #include "bench/campaign.h"
 #include "bench/manifest.h"
-#include "bench/outputs.h"
+#include "views/bench_outputs.h"
 #include "bench/shard_folder.h"
 #include "bench/unit_runner.h"
-#include "command.h"
-#include "planner_args.h"
-#include "planner_names.h"
-#include "stop_signal.h"
+#include "cli/command.h"
+#include "cli/planner_args.h"
+#include "run/planner_names.h"
+#include "cli/stop_signal.h"
 
 #include <fmt/format.h>
 #include <unistd.h>

@@ -1,8 +1,8 @@
 #include "failed_search.h"
 
-#include "output_folder.h"
+#include "common/output_folder.h"
 #include "plan_pictures.h"
-#include "planner_names.h"
+#include "run/planner_names.h"
 #include "planner_views.h"
 
 #include <fmt/format.h>

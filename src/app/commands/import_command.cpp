@@ -1,4 +1,4 @@
-#include "command.h"
+#include "cli/command.h"
 #include "import/sokoban_level.h"
 #include "import/sokoban_scenario.h"
 

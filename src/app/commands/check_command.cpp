@@ -1,13 +1,13 @@
-#include "check_report.h"
-#include "planner_names.h"
-#include "planner_views.h"
+#include "views/check_report.h"
+#include "run/planner_names.h"
+#include "views/planner_views.h"
 #include "physltl/planning/planning_problem.h"
-#include "command.h"
-#include "output_folder.h"
-#include "overlays.h"
+#include "cli/command.h"
+#include "common/output_folder.h"
+#include "views/overlays.h"
 #include "physltl/render/preview.h"
 #include "physltl/knowledge/reasoning.h"
-#include "scenario_args.h"
+#include "cli/scenario_args.h"
 
 #include <filesystem>
 #include <iostream>

@@ -1,6 +1,6 @@
 #include "command_line.h"
 
-#include "build_version.h"
+#include "common/build_version.h"
 #include "command.h"
 #include "physltl/execution/perturbation.h"
 #include "physltl/scenario/diagnostic.h"
