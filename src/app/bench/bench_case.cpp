@@ -2,7 +2,6 @@
 
 #include "common/bad_input.h"
 #include "run/planner_names.h"
-#include "views/planner_views.h"
 #include "physltl/planning/validation/improve.h"
 #include "physltl/planning/path_lower_bound.h"
 #include "physltl/execution/robustness.h"
@@ -39,7 +38,7 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   if (settings.uncertainty) c->world.uncertainty = override_uncertainty(c->world.uncertainty, *settings.uncertainty);
   c->problem = std::make_unique<planning::PlanningProblem>(c->world);
   if (!c->problem->feasible()) {
-    throw InfeasibleCase(fmt::format("{}{}: {}", entry.path, entry.sweep ? " with " + entry.sweep->key + "=" + value : "",
+    throw InfeasibleTask(fmt::format("{}{}: {}", entry.path, entry.sweep ? " with " + entry.sweep->key + "=" + value : "",
                                      c->problem->reasoning().task.infeasibility()));
   }
   BenchResults& results = c->results;

@@ -3,7 +3,7 @@
 // prepared for the planners once, with the facts bench reports about it (bench/campaign.h).
 
 #include "campaign.h"
-#include "views/bench_outputs.h"
+#include "results.h"
 #include "results.h"
 #include "unit_record.h"
 
@@ -41,13 +41,8 @@ struct BenchCase {
   BenchResults results;  // the case's facts, and its planners without runs yet
 };
 
-// A case whose task is infeasible: bench says why and exits 1 (nothing to measure).
-struct InfeasibleCase : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
 // Loads every case before any run, so a bad value fails at once. Throws BadInput, ScenarioError or
-// InfeasibleCase. Every value of an entry runs on the same seeds (--seed, or the first value's scenario
+// InfeasibleTask. Every value of an entry runs on the same seeds (--seed, or the first value's scenario
 // seed), even if a script chose its default seed by its params.
 std::vector<std::unique_ptr<BenchCase>> load_cases(const std::vector<ScenarioEntry>& entries,
                                                    const CampaignSettings& settings);

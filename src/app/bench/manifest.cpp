@@ -4,7 +4,7 @@
 
 #include "common/build_version.h"
 #include "fingerprint.h"
-#include "views/bench_outputs.h"
+#include "results.h"
 #include "physltl/scenario/load.h"
 
 #include <fmt/format.h>

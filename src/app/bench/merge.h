@@ -2,7 +2,7 @@
 // `bench merge`: the shards of one campaign put back together into what the unsharded run writes
 // (docs/campaigns.md). Reads only the shard folders: no scenario is loaded, nothing is planned.
 
-#include "views/bench_outputs.h"
+#include "results.h"
 
 #include <filesystem>
 #include <string>

@@ -1,12 +1,8 @@
 #pragma once
-// What `bench` measured: one record per planner and seed, their summary, and the three ways it is shown
-// (the table on stdout, bench.json, the OMPL benchmark log). Keys documented in docs/benchmarks.md.
+// What `bench` measured: one record per planner and seed, and their summary, per case and per campaign
+// (views/bench_results.h shows them).
 
-#include "views/ompl_log.h"
 #include "physltl/planning/registry.h"
-#include "physltl/render/image.h"
-
-#include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <map>
@@ -102,14 +98,39 @@ struct ThreadsRatio {
 };
 std::vector<ThreadsRatio> threads_ratios(const BenchResults& results);
 
+// The machine this process runs on.
+std::string this_host();
+std::string this_cpu_info();
+
 // "knowledge", or "knowledge x2" when several thread counts were measured.
 std::string planner_label(const BenchResults& results, const PlannerRuns& planner);
 
-std::string bench_table(const BenchResults& results);
-nlohmann::ordered_json bench_json(const BenchResults& results);
-// bench.png: each planner's run times (log scale) and success.
-render::Image bench_chart(const BenchResults& results);
-// host and cpu_info describe the machine; they are the caller's to find out.
-OmplExperiment ompl_experiment(const BenchResults& results, const std::string& host, const std::string& cpu_info);
+// The planner `planner` with `threads` threads among `results`' planners, or null.
+const PlannerRuns* find_planner(const BenchResults& results, const planning::PlannerEntry* planner, int threads);
+
+// A scenario entry as its results need it.
+struct EntryResults {
+  std::vector<std::string> settings;  // the pairs every swept value shares
+  std::optional<std::string> sweep_key;
+};
+
+struct CaseResults {
+  size_t entry = 0;
+  std::string swept_value;  // empty unless the entry sweeps
+  BenchResults results;
+};
+
+struct CampaignResults {
+  std::vector<EntryResults> entries;
+  std::vector<CaseResults> cases;  // entry by entry, each swept value in order
+  std::string host;      // where the runs ran (several hosts for a merge, comma-separated)
+  std::string cpu_info;
+};
+
+// The machine this process runs on.
+std::string this_host();
+std::string this_cpu_info();
+
+
 
 }  // namespace physltl::app

@@ -1,11 +1,10 @@
 #include "shard_folder.h"
 
 #include "common/bad_input.h"
+#include "common/json_file.h"
 #include "manifest.h"
 
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <fstream>
 #include <sstream>
@@ -13,24 +12,6 @@
 namespace physltl::app {
 namespace fs = std::filesystem;
 namespace {
-
-// Written to disk before the rename makes it visible: a crash of the machine, not only of the process,
-// leaves the old file or the new one.
-void write_durably(const fs::path& file, const std::string& text) {
-  const fs::path temp = file.string() + ".tmp";
-  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw BadInput("cannot write " + temp.string());
-  size_t written = 0;
-  while (written < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-    if (n <= 0) break;
-    written += static_cast<size_t>(n);
-  }
-  const bool ok = written == text.size() && ::fsync(fd) == 0;
-  ::close(fd);
-  if (!ok) throw BadInput("cannot write " + temp.string());
-  fs::rename(temp, file);
-}
 
 // The parts of a manifest that say what the results are, not what this shard measured along the way;
 // null for a manifest without them (made by hand or by another version), which then differs from any.
@@ -93,7 +74,7 @@ ShardFolder::ShardFolder(fs::path folder, const nlohmann::ordered_json& manifest
     }
     records_ = read_unit_records(folder_);
     for (const auto& entry : fs::directory_iterator(folder_ / "units")) {
-      if (entry.path().extension() == ".tmp") fs::remove(entry.path());  // a unit killed while written
+      if (is_unfinished_write(entry.path())) fs::remove(entry.path());  // a unit killed while written
     }
   } else if (fs::exists(folder_)) {
     discarded_ = fs::is_directory(folder_ / "units")
@@ -102,26 +83,12 @@ ShardFolder::ShardFolder(fs::path folder, const nlohmann::ordered_json& manifest
     fs::remove_all(folder_);
   }
   fs::create_directories(folder_ / "units");
-  write_durably(folder_ / "manifest.json", manifest.dump(2) + "\n");
+  write_json_file(folder_ / "manifest.json", manifest, Durability::kSynced);
 }
 
 void ShardFolder::record(const UnitRecord& record) {
-  write_durably(folder_ / "units" / fmt::format("{}.json", record.index), to_json(record).dump(2) + "\n");
+  write_json_file(folder_ / "units" / fmt::format("{}.json", record.index), to_json(record), Durability::kSynced);
   records_.insert_or_assign(record.index, record);
-}
-
-void ShardFolder::write_logs(const CampaignResults& results) const {
-  for (size_t c = 0; c < results.cases.size(); ++c) {
-    CampaignResults one = results;
-    BenchResults& r = one.cases[c].results;
-    std::erase_if(r.planners, [](const PlannerRuns& p) { return p.runs.empty(); });
-    if (r.planners.empty()) continue;
-    unsigned most = 0;
-    for (const auto& p : r.planners) most = std::max(most, static_cast<unsigned>(p.runs.size()));
-    OmplExperiment experiment = case_experiment(one, c);
-    experiment.run_count = most;  // a shard holds a share of each planner's runs
-    write_ompl_log_file(folder_ / (folder_name(r.scenario, r.settings) + ".log"), experiment);
-  }
 }
 
 }  // namespace physltl::app

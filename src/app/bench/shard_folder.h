@@ -1,10 +1,11 @@
 #pragma once
 // A shard's folder, <out>/<campaign>/shard-K-of-N/: manifest.json, units/<index>.json (one per unit that
 // ended, each written atomically when it ends, so a shard killed at any moment loses at most the unit it
-// was running) and, once every unit has a result, one OMPL log per case (docs/campaigns.md).
+// was running) and, once every unit has a result, one OMPL log per case (docs/campaigns.md,
+// views/bench_outputs.h write_shard_logs).
 
 #include "campaign.h"
-#include "views/bench_outputs.h"
+#include "results.h"
 #include "unit_record.h"
 
 #include <nlohmann/json.hpp>
@@ -36,8 +37,6 @@ class ShardFolder {
 
   // units/<index>.json through a temporary file, flushed to disk, then renamed: whole or absent.
   void record(const UnitRecord& record);
-  // <case folder>.log for each case this shard ran units of, rebuilt from every result.
-  void write_logs(const CampaignResults& results) const;
 
  private:
   std::filesystem::path folder_;

@@ -1,12 +1,9 @@
 #pragma once
 // `bench --sweep key=v1,v2,...`: one scenario parameter over several values, every value on the same
-// seeds, interleaved so that drift in the machine's speed hits every value alike. How the planning time
-// grows with the parameter, as a table, a least-squares line and sweep.json (docs/benchmarks.md).
+// seeds, interleaved so that drift in the machine's speed hits every value alike (docs/benchmarks.md;
+// views/sweep_results.h shows how the planning time grows).
 
 #include "results.h"
-#include "physltl/render/image.h"
-
-#include <nlohmann/json.hpp>
 
 #include <string>
 #include <vector>
@@ -31,10 +28,5 @@ struct Sweep {
   std::vector<std::string> settings;  // the --set pairs every value shares
   std::vector<SweepPoint> points;     // in the order the values were given
 };
-
-std::string sweep_table(const Sweep& sweep);
-nlohmann::ordered_json sweep_json(const Sweep& sweep);
-// sweep.png: each planner's median time against the swept value.
-render::Image sweep_chart(const Sweep& sweep);
 
 }  // namespace physltl::app

@@ -2,7 +2,6 @@
 
 #include "common/bad_input.h"
 #include "run/planner_names.h"
-#include "views/planner_views.h"
 
 namespace physltl::app {
 

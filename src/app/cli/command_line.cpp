@@ -38,6 +38,12 @@ int parse_and_run(Command& command, int argc, char** argv) {
     return command.run();
   } catch (const physltl::scenario::ScenarioError& e) {
     for (const auto& d : e.diagnostics()) std::cerr << d.str() << "\n";
+  } catch (const InfeasibleTask& e) {
+    std::cerr << "physltl-studio: the task is infeasible: " << e.what() << "\n";
+    return kExitNoPlan;
+  } catch (const Interrupted& e) {
+    std::cerr << "physltl-studio: " << e.what() << "\n";
+    return kExitInterrupted;
   } catch (const BadInput& e) {
     std::cerr << "physltl-studio: " << e.what() << "\n";
   } catch (const physltl::execution::PerturbationError& e) {

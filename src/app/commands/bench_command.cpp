@@ -156,7 +156,7 @@ int run_shard(const BenchArgs& args, const std::vector<ScenarioEntry>& entries, 
                              folder.records().size(), mine.size(), folder.path().string());
     return kExitInterrupted;
   }
-  folder.write_logs(collect_results(entries, cases, units, folder.records()));
+  write_shard_logs(folder.path(), collect_results(entries, cases, units, folder.records()));
   if (!args.quiet) {
     const long solved = std::count_if(folder.records().begin(), folder.records().end(),
                                       [](const auto& entry) { return entry.second.run.solved; });
@@ -179,13 +179,7 @@ int bench(const BenchArgs& args) {
   const std::optional<ShardSpec> shard = args.shard ? std::optional(parse_shard(*args.shard)) : std::nullopt;
   const CampaignSettings settings = campaign_settings(args);
   const std::vector<ScenarioEntry> entries = scenario_entries(args);
-  std::vector<std::unique_ptr<BenchCase>> cases;
-  try {
-    cases = load_cases(entries, settings);
-  } catch (const InfeasibleCase& e) {
-    std::cerr << "physltl-studio: the task is infeasible: " << e.what() << "\n";
-    return kExitNoPlan;
-  }
+  const std::vector<std::unique_ptr<BenchCase>> cases = load_cases(entries, settings);
   const std::vector<CaseUnits> described = case_units(cases);
   const std::vector<Unit> units = campaign_units(described, settings.runs);
   if (!shard) {

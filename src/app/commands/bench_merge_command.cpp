@@ -3,6 +3,7 @@
 #include "bench/campaign.h"
 #include "bench/merge.h"
 #include "cli/command.h"
+#include "views/bench_outputs.h"
 
 #include <memory>
 #include <sstream>

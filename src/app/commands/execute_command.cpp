@@ -2,27 +2,24 @@
 // replanning from the observed state when it leaves the plan's tolerance (docs/robustness.md).
 
 #include "cli/command.h"
-#include "views/execution_report.h"
-#include "views/failed_search.h"
+#include "cli/planner_args.h"
+#include "cli/scenario_args.h"
+#include "common/json_file.h"
 #include "common/output_folder.h"
 #include "physltl/execution/executor.h"
 #include "physltl/execution/perturbation.h"
-#include "physltl/execution/robustness.h"
-#include "views/plan_pictures.h"
-#include "cli/planner_args.h"
-#include "run/planner_names.h"
 #include "physltl/execution/replanner.h"
-#include "physltl/planning/planning_problem.h"
-#include "physltl/knowledge/reasoning.h"
-#include "cli/scenario_args.h"
-#include "run/uncertainty_args.h"
+#include "physltl/execution/robustness.h"
+#include "run/planner_names.h"
+#include "pipeline/planning_run.h"
+#include "views/execution_report.h"
+#include "views/plan_pictures.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
 #include <functional>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -78,60 +75,46 @@ void render_execution(const scenario::World& model, const knowledge::Reasoning& 
 }
 
 int execute(const ExecuteArgs& args) {
-  const planning::PlannerEntry& planner =
-      args.planner ? parse_planner(*args.planner) : registry().default_planner();
-  scenario::World world = args.scenario.load();
-  if (args.seed) world.planner.seed = *args.seed;
-  if (args.uncertainty) world.uncertainty = override_uncertainty(world.uncertainty, *args.uncertainty);
+  const planning::PlannerEntry& planner = args.planner ? parse_planner(*args.planner) : registry().default_planner();
+  const scenario::World world = load_world(args.scenario.path, args.scenario.settings, {args.seed, {}, args.uncertainty});
   const auto say = [&](const std::string& line) {
     if (!args.quiet) std::cout << line << "\n";
   };
-  const planning::PlanningProblem problem(world);
-  const knowledge::Reasoning& reasoning = problem.reasoning();
-  if (!problem.feasible()) {
-    std::cerr << "physltl-studio: the task is infeasible: " << reasoning.task.infeasibility() << "\n";
-    return kExitNoPlan;
-  }
+  const PlanningRun run(world, planner);
   // It replans with a budget of propagations, so that an execution is the same on any machine.
-  if (const auto why = registry().refusal(planner, problem.search_task(planner), {.propagation_budget = true})) {
-    throw BadInput(*why);
-  }
-  planning::PlannerOptions options = planning::options_for(world);
+  run.require_plannable({.propagation_budget = true});
+  planning::PlannerOptions options = run.options();
   options.parameters = args.parameters.values();
   OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
-  const planning::ValidatedPlan solution = planning::solve(problem, planner, options);
-  if (!solution.solved()) {
-    std::cerr << "physltl-studio: " << no_plan_line(planner, solution.result) << "; nothing written\n";
+  const planning::ValidatedPlan solution = run.solve(options);
+  if (const auto failure = run.failure(solution, std::nullopt, false)) {
+    std::cerr << "physltl-studio: " << failure->line << "; nothing written\n";
     return kExitNoPlan;
   }
   const planning::Plan& plan = solution.result.plan;
   const planning::Replay& nominal = *solution.replay;
+  const planning::TaskAutomaton& formula = run.problem().as_written();
   say(fmt::format("plan       {} controls, {:.1f} s of motion ({} planner, seed {})", plan.controls.size(),
                   plan.total_steps() * world.planner.step_size, planner.name, world.planner.seed));
 
   ExecutionReport report{world, &planner, args.replans, args.tolerance, args.budget, plan.total_steps() * world.planner.step_size, {}};
-  const execution::Executor executor(world, problem.as_written(), plan, nominal,
-                                     {.tolerance_m = args.tolerance, .max_replans = args.replans});
+  const execution::Executor executor(world, formula, plan, nominal, {.tolerance_m = args.tolerance, .max_replans = args.replans});
   for (int i = 0; i < args.worlds; ++i) {
     const scenario::World truth = execution::perturbed_world(world, world.uncertainty, world.planner.seed, i);
-    const execution::WorldRun open_loop = execution::judge_in_world(truth, plan, &nominal, problem.as_written());
+    const execution::WorldRun open_loop = execution::judge_in_world(truth, plan, &nominal, formula);
     execution::SimulatedWorld reality(truth);
-    const execution::Execution run =
+    const execution::Execution executed =
         executor.run(reality, execution::budgeted_replanner(planner, options, i, args.budget));
-    const execution::WorldRun judged =
-        execution::judge_in_world(truth, planning::Plan{run.controls, {}}, nullptr, problem.as_written());
-    report.worlds.push_back({i, open_loop, judged, run});
+    const execution::WorldRun judged = execution::judge_in_world(truth, planning::Plan{executed.controls, {}}, nullptr, formula);
+    report.worlds.push_back({i, open_loop, judged, executed});
   }
   say("execution  " + execution_summary(report));
   if (args.render) {
     const auto shown = std::find_if(report.worlds.begin(), report.worlds.end(), [](const WorldExecution& w) { return w.run.replans > 0; });
-    render_execution(world, reasoning, problem.as_written(), nominal, shown != report.worlds.end() ? *shown : report.worlds.front(),
+    render_execution(world, run.problem().reasoning(), formula, nominal, shown != report.worlds.end() ? *shown : report.worlds.front(),
                      out.path(), say);
   }
-  std::ofstream file(out.path() / "execution.json");
-  file << execution_json(report).dump(2) << "\n";
-  if (!file) throw BadInput("cannot write " + (out.path() / "execution.json").string());
-  file.close();
+  write_json_file(out.path() / "execution.json", execution_json(report));
   out.commit_entries();
   say("outputs    " + (out.final_path() / "execution.json").string());
   return kExitOk;

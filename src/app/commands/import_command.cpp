@@ -1,8 +1,8 @@
 #include "cli/command.h"
+#include "common/json_file.h"
 #include "import/sokoban_level.h"
 #include "import/sokoban_scenario.h"
 
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -36,13 +36,7 @@ int run_import(const ImportArgs& args) {
   const std::string stem = std::filesystem::path(args.file).stem().string();
   for (const import::SokobanLevel& level : levels) {
     const std::filesystem::path file = out / (stem + "_" + std::to_string(level.number) + ".lua");
-    const std::filesystem::path temp = file.string() + ".tmp";
-    {
-      std::ofstream lua(temp);
-      lua << import::sokoban_scenario(level, std::filesystem::path(args.file).filename().string(), args.sizes);
-      if (!lua) throw BadInput("cannot write " + temp.string());
-    }
-    std::filesystem::rename(temp, file);
+    write_text_file(file, import::sokoban_scenario(level, std::filesystem::path(args.file).filename().string(), args.sizes));
     const std::size_t boxes = level.boxes.size();
     std::cout << "wrote      " << file.string() << " (" << boxes << (boxes == 1 ? " box" : " boxes") << ")\n";
   }

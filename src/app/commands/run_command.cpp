@@ -1,21 +1,20 @@
+// The main job, `physltl-studio SCENARIO.lua`: plan the scenario's task, validate the plan by replay,
+// improve it, write report.json and plan.json, and with --render tree.png, the frames and plan.mp4.
+
 #include "cli/command.h"
-#include "run/main_job.h"
 #include "cli/planner_args.h"
-#include "run/planner_names.h"
-#include "views/planner_views.h"
+#include "cli/scenario_args.h"
+#include "cli/stop_signal.h"
+#include "common/json_file.h"
 #include "common/output_folder.h"
 #include "physltl/ltl/formula.h"
-#include "physltl/render/video.h"
-#include "views/failed_search.h"
-#include "views/report_files.h"
+#include "run/main_job.h"
+#include "run/planner_names.h"
+#include "pipeline/planning_run.h"
 #include "views/plan_pictures.h"
-#include "physltl/planning/planning_problem.h"
-#include "physltl/knowledge/reasoning.h"
+#include "views/planner_views.h"
+#include "views/report_files.h"
 #include "views/robustness_report.h"
-#include "cli/scenario_args.h"
-#include "run/uncertainty_args.h"
-#include "cli/stop_signal.h"
-#include "views/world_summary.h"
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
@@ -23,7 +22,7 @@
 
 #include <algorithm>
 #include <chrono>
-#include <fstream>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -66,121 +65,121 @@ class ProgressLine {
   bool enabled_;
 };
 
-int run(const RunArgs& args) {
-  const planning::PlannerRegistry& registry = app::registry();
-  if (args.baseline && args.planner && *args.planner != registry.reference_planner().name) {
+const planning::PlannerEntry& chosen_planner(const RunArgs& args) {
+  const planning::PlannerRegistry& planners = registry();
+  if (args.baseline && args.planner && *args.planner != planners.reference_planner().name) {
     throw BadInput("--baseline and --planner " + *args.planner + " name two planners");
   }
-  const planning::PlannerEntry& planner = args.baseline  ? registry.reference_planner()
-                                          : args.planner ? parse_planner(*args.planner)
-                                                         : registry.default_planner();
-  scenario::World world = args.scenario.load();
-  if (args.seed) world.planner.seed = *args.seed;
-  if (args.time_limit) world.planner.time_limit = *args.time_limit;
-  if (args.uncertainty) world.uncertainty = override_uncertainty(world.uncertainty, *args.uncertainty);
-  const auto say = [&](const std::string& line) {
-    if (!args.quiet) std::cout << line << "\n";
-  };
+  return args.baseline ? planners.reference_planner() : args.planner ? parse_planner(*args.planner) : planners.default_planner();
+}
 
-  const planning::PlanningProblem problem(world);
-  const knowledge::Reasoning& reasoning = problem.reasoning();
-  for (const auto& p : reasoning.feasibility.invalid) say("invalid    " + p.reason);
-  if (!problem.feasible()) {
-    std::cerr << "physltl-studio: the task is infeasible: " << reasoning.task.infeasibility() << "\n";
-    return kExitNoPlan;
-  }
-  if (const auto why = registry.refusal(planner, problem.search_task(planner))) throw BadInput(*why);
-  const std::map<std::string, std::string> parameters = args.parameters.values();
-  // Made before planning so that an unwritable --out fails at once, not after minutes of search; it is
-  // removed again unless the run succeeds.
-  OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
-  const planning::TaskAutomaton& task = problem.search_task(planner);
+using Say = std::function<void(const std::string&)>;
+
+// What the planner is asked and what it prepared, before the search.
+void say_task(const PlanningRun& run, const Say& say) {
+  const planning::PlanningProblem& problem = run.problem();
+  const planning::PlannerEntry& planner = run.planner();
+  const scenario::World& world = problem.world();
   say(fmt::format("task       {} ({} automaton states, {} planner, seed {})",
-                  planner.uses_knowledge ? ltl::to_string(*reasoning.simplified_formula()) : world.task.formula,
-                  task.dfa.size(), planner.name, world.planner.seed));
+                  planner.uses_knowledge ? ltl::to_string(*problem.reasoning().simplified_formula()) : world.task.formula,
+                  problem.search_task(planner).dfa.size(), planner.name, world.planner.seed));
   say(fmt::format("prepare    {:.2f} s: reasoning, decomposition, and where the lead goes round the bodies",
                   problem.preparation_s(planner)));
   for (const std::string& line : account_of(planner, problem.preparation(planner), world).lines) say(line);
+}
 
-  StopSignal stop;  // Ctrl-C and SIGTERM end the search; nothing is written then
-  ProgressLine progress(args.quiet);
-  progress.show(fmt::format("planning (up to {:g} s) ...", world.planner.time_limit));
-  const planning::ValidatedPlan solution = planning::solve(problem, planner,
-                                                          {.seed = world.planner.seed,
-                                                           .time_limit = world.planner.time_limit,
-                                                           .stop = &stop.flag(),
-                                                           .threads = args.threads,
-                                                           .improve = args.improve,
-                                                           .parameters = parameters});
-  progress.done();
-  const planning::PlanResult& result = solution.result;
-  const auto& stats = result.stats;
-  say(fmt::format("search     {}: {:.2f} s, {} nodes, {} propagations, {} physics steps{}", result.stop_reason,
-                  stats.planning_time_s, stats.tree_nodes, stats.propagations, stats.physics_steps,
-                  args.threads > 1 && planner.can.threads ? fmt::format(" ({} threads)", args.threads) : ""));
-  if (stop.received()) {
-    std::cerr << "physltl-studio: interrupted; nothing written\n";
-    return kExitInterrupted;
-  }
-  if (!result.solved) {
-    if (search_was_cut_short(result)) {
-      const RunSummary summary{world, reasoning, problem.as_written(), planner, result, nullptr};
-      write_failed_search(summary, problem.decomposition(), out.final_path() / "failed", args.render);
-      say("outputs    " + (out.final_path() / "failed").string() + "/");
-    }
-    std::cerr << "physltl-studio: " << no_plan_line(planner, result) << "\n";
-    return kExitNoPlan;
-  }
-
-  const planning::Replay& replay = *solution.replay;
-  if (!replay.validated()) {
-    // The search and the replay disagree: a bug, never a result.
-    std::cerr << "physltl-studio: BUG: the plan failed validation on replay: " << replay.failure
-              << "; nothing written\n";
-    return kExitNoPlan;
-  }
+void say_solution(const planning::ValidatedPlan& solution, const scenario::World& world, const Say& say) {
   if (const auto& improved = solution.improvement) {
     say(fmt::format("improve    {} of {} candidates kept in {:.2f} s: {:.1f} -> {:.1f} s of motion, {} -> {} pushes",
                     improved->accepted, improved->candidates, improved->time_s, improved->first.duration_s,
                     improved->improved.duration_s, improved->first.pushes, improved->improved.pushes));
   }
-  say(fmt::format("plan       {} controls, {:.1f} s of motion, {} pushes, validated by replay",
-                  result.plan.controls.size(), result.plan.total_steps() * world.planner.step_size, replay.pushes));
+  const planning::Plan& plan = solution.result.plan;
+  say(fmt::format("plan       {} controls, {:.1f} s of motion, {} pushes, validated by replay", plan.controls.size(),
+                  plan.total_steps() * world.planner.step_size, solution.replay->pushes));
+}
 
+// --render: tree.png, the frames and plan.mp4.
+void render_plan(const PlanningRun& run, const planning::ValidatedPlan& solution, const OutputFolder& out,
+                 ProgressLine& progress, const Say& say) {
+  const planning::PlanningProblem& problem = run.problem();
+  const scenario::World& world = problem.world();
+  const planning::Replay& replay = *solution.replay;
+  const PlannedMoves moves = planned_moves(account_of(run.planner(), solution.result.own.get(), world));
+  write_tree_picture(world, problem.reasoning(), problem.decomposition(), solution.result, &replay, moves, out.path() / "tree.png");
+  const auto frames_started = std::chrono::steady_clock::now();
+  const PlanFrames pictures = write_plan_frames(
+      world, problem.reasoning(), replay, static_cast<int>(problem.as_written().dfa.size()), out.path() / "frames",
+      out.path() / "plan.mp4",
+      [&](int done, int total) {
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - frames_started).count();
+        progress.show(fmt::format("frames {}/{}, {:.0f} s left", done, total, elapsed / done * (total - done)));
+      },
+      moves.arrows, moves.legend);
+  progress.done();
+  say(fmt::format("render     {} frames, tree.png{}", pictures.frames, pictures.video.written ? ", plan.mp4" : ""));
+  if (!pictures.video.written) {
+    std::cerr << "physltl-studio: no video: " << pictures.video.message << "; the frames are in "
+              << (out.final_path() / "frames").string() << "\n";
+  }
+}
+
+// The validated plan's files: report.json and plan.json, with --robustness its share of perturbed worlds.
+void write_plan_files(const PlanningRun& run, const planning::ValidatedPlan& solution, const RunArgs& args,
+                      const OutputFolder& out, const Say& say) {
+  const scenario::World& world = run.problem().world();
   std::optional<execution::Robustness> robustness;
   if (args.robustness > 0) {
     robustness = execution::measure_robustness(world, world.uncertainty, args.robustness, world.planner.seed,
-                                              result.plan, replay, problem.as_written());
+                                               solution.result.plan, *solution.replay, run.problem().as_written());
     say("robustness " + robustness_line(*robustness, world.uncertainty));
   }
-  const RunSummary summary{world, reasoning, problem.as_written(), planner, result, &replay,
-                           solution.improvement ? &*solution.improvement : nullptr,
-                           robustness ? &*robustness : nullptr, &world.uncertainty};
-  write_json(out.path() / "report.json", report_json(summary));
-  write_json(out.path() / "plan.json", plan_json(summary));
-  if (args.render) {
-    const PlannedMoves moves = planned_moves(account_of(planner, result.own.get(), world));
-    write_tree_picture(world, reasoning, problem.decomposition(), result, &replay, moves, out.path() / "tree.png");
-    const int automaton_states = static_cast<int>(problem.as_written().dfa.size());
-    const auto frames_started = std::chrono::steady_clock::now();
-    const PlanFrames pictures = write_plan_frames(
-        world, reasoning, replay, automaton_states, out.path() / "frames", out.path() / "plan.mp4",
-        [&](int done, int total) {
-          const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - frames_started).count();
-          progress.show(fmt::format("frames {}/{}, {:.0f} s left", done, total, elapsed / done * (total - done)));
-        },
-        moves.arrows, moves.legend);
-    progress.done();
-    say(fmt::format("render     {} frames, tree.png{}", pictures.frames, pictures.video.written ? ", plan.mp4" : ""));
-    if (!pictures.video.written) {
-      std::cerr << "physltl-studio: no video: " << pictures.video.message << "; the frames are in "
-                << (out.final_path() / "frames").string() << "\n";
-    }
+  RunSummary summary = run.summary(solution);
+  summary.robustness = robustness ? &*robustness : nullptr;
+  summary.uncertainty = &world.uncertainty;
+  write_json_file(out.path() / "report.json", report_json(summary));
+  write_json_file(out.path() / "plan.json", plan_json(summary));
+}
+
+int run(const RunArgs& args) {
+  const planning::PlannerEntry& planner = chosen_planner(args);
+  const scenario::World world =
+      load_world(args.scenario.path, args.scenario.settings, {args.seed, args.time_limit, args.uncertainty});
+  const Say say = [&](const std::string& line) {
+    if (!args.quiet) std::cout << line << "\n";
+  };
+  const PlanningRun run(world, planner);
+  for (const auto& p : run.problem().reasoning().feasibility.invalid) say("invalid    " + p.reason);
+  run.require_plannable();
+  planning::PlannerOptions options = run.options();
+  options.parameters = args.parameters.values();
+  // Made before planning so that an unwritable --out fails at once, not after minutes of search; it is
+  // removed again unless the run succeeds.
+  OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
+  say_task(run, say);
+
+  StopSignal stop;  // Ctrl-C and SIGTERM end the search; nothing is written then
+  ProgressLine progress(args.quiet);
+  progress.show(fmt::format("planning (up to {:g} s) ...", world.planner.time_limit));
+  options.stop = &stop.flag();
+  options.threads = args.threads;
+  options.improve = args.improve;
+  const planning::ValidatedPlan solution = run.solve(options);
+  progress.done();
+  const planning::PlannerStats& stats = solution.result.stats;
+  say(fmt::format("search     {}: {:.2f} s, {} nodes, {} propagations, {} physics steps{}", solution.result.stop_reason,
+                  stats.planning_time_s, stats.tree_nodes, stats.propagations, stats.physics_steps,
+                  args.threads > 1 && planner.can.threads ? fmt::format(" ({} threads)", args.threads) : ""));
+  if (stop.received()) throw Interrupted();
+  if (const auto failure = run.failure(solution, out.final_path() / "failed", args.render)) {
+    if (failure->diagnosed) say("outputs    " + (out.final_path() / "failed").string() + "/");
+    std::cerr << "physltl-studio: " << failure->line << (solution.result.solved ? "; nothing written" : "") << "\n";
+    return kExitNoPlan;
   }
-  if (stop.received()) {
-    std::cerr << "physltl-studio: interrupted; nothing written\n";
-    return kExitInterrupted;
-  }
+  say_solution(solution, world, say);
+  write_plan_files(run, solution, args, out, say);
+  if (args.render) render_plan(run, solution, out, progress, say);
+  if (stop.received()) throw Interrupted();
   out.commit();
   say("outputs    " + out.final_path().string() + "/");
   return kExitOk;

@@ -1,5 +1,6 @@
 #pragma once
-// Internal to the app module: exit codes, and the error for anything the user got wrong. Apart from the
+// Internal to the app module: exit codes, and the errors a command ends with: the user's bad input, an
+// infeasible task, an interruption. Apart from the
 // command line's own header (CLI11, costly to compile), so that code which only reports bad input does
 // not pay for the parser.
 
@@ -18,6 +19,18 @@ enum ExitCode : int {
 // Thrown for anything the user got wrong; main() prints the message and exits with kExitBadInput.
 struct BadInput : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+
+// Thrown when the reasoning finds the task infeasible, with why: main() prints "the task is infeasible:
+// <why>" and exits with kExitNoPlan, having written nothing.
+struct InfeasibleTask : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Thrown when Ctrl-C or SIGTERM stopped a command: main() prints that nothing was written and exits with
+// kExitInterrupted.
+struct Interrupted : std::runtime_error {
+  Interrupted() : std::runtime_error("interrupted; nothing written") {}
 };
 
 }  // namespace physltl::app

@@ -1,6 +1,6 @@
 #pragma once
-// The planners on the command line, as the program's registry knows them (planners/registry.h):
-// --planner NAME, bench --planners A,B,..., and each planner's own parameters (--NAME VALUE).
+// The planners as the program's registry knows them (planners/registry.h): by name on the command line
+// (--planner NAME, bench --planners A,B,...), their own parameters (--NAME VALUE), their refusal rules.
 
 #include "physltl/planning/registry.h"
 
@@ -8,6 +8,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace physltl::app {
@@ -31,4 +32,13 @@ std::string manifest_key(const std::string& parameter);
 // The parameters a manifest's settings give, by name (those it lacks are left to their defaults).
 std::map<std::string, std::string> manifest_parameters(const nlohmann::json& settings);
 
+// Refused steps by rule: the semantic rules, then every planner's own rules of the registry (zero where
+// `planner` has no such rule), as report.json and bench.json list them.
+std::vector<std::pair<std::string, long long>> refusal_counts(const planning::PlannerRegistry& registry,
+                                                              const planning::PlannerEntry& planner,
+                                                              const planning::Refusals& refused);
+// The rules refusal_counts names, in its order; with `counts` (by position), the counts under those names.
+std::vector<std::string> refusal_rules(const planning::PlannerRegistry& registry);
+std::vector<std::pair<std::string, long long>> named_refusals(const planning::PlannerRegistry& registry,
+                                                              const std::vector<long long>& counts);
 }  // namespace physltl::app

@@ -1,5 +1,7 @@
 #include "goldens.h"
 
+#include "common/json_file.h"
+
 #include "physltl/render/png.h"
 
 #include <fmt/format.h>
@@ -10,16 +12,10 @@
 namespace physltl::app::scenario_test {
 namespace {
 
+// Whole or not at all: a golden interrupted half-way would fail every later run.
 void write_text(const std::filesystem::path& file, const std::string& text) {
   std::filesystem::create_directories(file.parent_path());
-  // Whole or not at all: a golden interrupted half-way would fail every later run.
-  const std::filesystem::path temp = file.string() + ".tmp";
-  {
-    std::ofstream out(temp, std::ios::binary);
-    out << text;
-    if (!out) throw std::runtime_error("cannot write " + temp.string());
-  }
-  std::filesystem::rename(temp, file);
+  write_text_file(file, text);
 }
 
 void write_picture(const render::Image& image, const std::filesystem::path& file) {

@@ -1,9 +1,11 @@
 #include "junit_report.h"
 
-#include <pugixml.hpp>
+#include "common/json_file.h"
 
 #include <fmt/format.h>
+#include <pugixml.hpp>
 
+#include <sstream>
 #include <stdexcept>
 
 namespace physltl::app::scenario_test {
@@ -57,11 +59,9 @@ void write_junit(const std::vector<ScenarioResult>& results, const std::filesyst
   suites.append_attribute("time") = seconds(time_s).c_str();
 
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
-  const std::filesystem::path temp = file.string() + ".tmp";
-  if (!doc.save_file(temp.c_str(), "  ", pugi::format_default, pugi::encoding_utf8)) {
-    throw std::runtime_error("cannot write " + temp.string());
-  }
-  std::filesystem::rename(temp, file);
+  std::ostringstream xml;
+  doc.save(xml, "  ", pugi::format_default, pugi::encoding_utf8);
+  write_text_file(file, xml.str());
 }
 
 }  // namespace physltl::app::scenario_test

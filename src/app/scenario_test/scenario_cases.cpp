@@ -8,7 +8,7 @@
 #include "views/plan_pictures.h"
 #include "run/planner_names.h"
 #include "views/planner_views.h"
-#include "physltl/planning/planning_problem.h"
+#include "pipeline/planning_run.h"
 #include "physltl/render/preview.h"
 
 #include <fmt/format.h>
@@ -75,14 +75,13 @@ std::string frame_file(const scenario::FrameMoment& moment) {
 
 // The cases that need the plan, after it was found and validated.
 struct SolvedPlan {
-  const planning::PlanningProblem& problem;
-  const planning::PlannerEntry& planner;
+  const PlanningRun& run;
   const planning::ValidatedPlan& solution;
 };
 
 void bound_cases(const SolvedPlan& plan, const scenario::Expectations& e, std::vector<CaseResult>& cases) {
   const planning::Replay& replay = *plan.solution.replay;
-  const double motion_s = plan.solution.result.plan.total_steps() * plan.problem.world().planner.step_size;
+  const double motion_s = plan.solution.result.plan.total_steps() * plan.run.problem().world().planner.step_size;
   if (e.max_pushes) {
     cases.push_back(timed("max_pushes", [&] {
       return replay.pushes <= *e.max_pushes ? CaseResult{}
@@ -109,19 +108,20 @@ void bound_cases(const SolvedPlan& plan, const scenario::Expectations& e, std::v
 
 void picture_cases(const SolvedPlan& plan, const scenario::Expectations& e, Goldens& goldens,
                    std::vector<CaseResult>& cases) {
-  const scenario::World& world = plan.problem.world();
-  const knowledge::Reasoning& reasoning = plan.problem.reasoning();
+  const planning::PlanningProblem& problem = plan.run.problem();
+  const scenario::World& world = problem.world();
+  const knowledge::Reasoning& reasoning = problem.reasoning();
   const planning::Replay& replay = *plan.solution.replay;
   if (e.tree) {
     cases.push_back(timed("tree.png", [&] {
-      const PlannedMoves moves = planned_moves(account_of(plan.planner, plan.solution.result.own.get(), world));
+      const PlannedMoves moves = planned_moves(account_of(plan.run.planner(), plan.solution.result.own.get(), world));
       return goldens.picture("tree.png",
-                             draw_tree_picture(world, reasoning, plan.problem.decomposition(), plan.solution.result, &replay, moves),
+                             draw_tree_picture(world, reasoning, problem.decomposition(), plan.solution.result, &replay, moves),
                              tolerance_for(e, e.tree_tolerance));
     }));
   }
   if (e.frames.empty()) return;
-  PlanAnimation animation(world, reasoning, replay, static_cast<int>(plan.problem.as_written().dfa.size()));
+  PlanAnimation animation(world, reasoning, replay, static_cast<int>(problem.as_written().dfa.size()));
   for (const scenario::FrameMoment& moment : e.frames) {
     const std::string file = frame_file(moment);
     cases.push_back(timed(file, [&] {
@@ -133,6 +133,25 @@ void picture_cases(const SolvedPlan& plan, const scenario::Expectations& e, Gold
                              tolerance_for(e, e.frames_tolerance));
     }));
   }
+}
+
+// The main job's plan, as the main job makes it on one thread; a search without a validated plan fails the
+// case, a search cut short with its diagnosis in `actual_folder`/failed/.
+CaseResult solve_case(const PlanningRun& run, const TestSettings& settings, const std::filesystem::path& actual_folder,
+                      std::optional<planning::ValidatedPlan>& solution) {
+  const scenario::World& world = run.problem().world();
+  planning::PlannerOptions options = run.options();
+  options.stop = settings.stop;
+  options.improve = kMainJobImprove;
+  solution = run.solve(options);
+  if (settings.stop != nullptr && settings.stop->load()) return CaseResult{"", Outcome::kSkipped, "interrupted"};
+  const std::filesystem::path failed_folder = actual_folder / "failed";
+  const auto failure = run.failure(*solution, failed_folder, true);
+  if (!failure) return CaseResult{};
+  if (solution->result.solved) return failed(failure->line);
+  return failed(fmt::format("{} in {:.1f} s (seed {}, time limit {:g} s){}", failure->line,
+                            solution->result.stats.planning_time_s, world.planner.seed, world.planner.time_limit,
+                            failure->diagnosed ? "; diagnosis: " + failed_folder.string() + "/" : ""));
 }
 
 // The cases a scenario without a plan cannot run: those before the preview, or those after it.
@@ -171,36 +190,17 @@ ScenarioResult test_scenario(const TestEntry& entry, const scenario::World& worl
   std::filesystem::remove_all(actual_folder);  // what an earlier run left describes that run
   Goldens goldens(goldens_folder(entry, settings), actual_folder, settings.update, update_line(entry, settings));
 
-  std::optional<planning::PlanningProblem> problem;
+  std::optional<PlanningRun> run;
   cases.push_back(timed("check", [&] {
-    problem.emplace(world);
-    return check_case(problem->reasoning(), e);
+    run.emplace(world, registry().default_planner());
+    return check_case(run->problem().reasoning(), e);
   }));
-  const knowledge::Reasoning& reasoning = problem->reasoning();
+  const knowledge::Reasoning& reasoning = run->problem().reasoning();
   const bool checked = cases.back().outcome == Outcome::kPassed;
 
-  const planning::PlannerEntry& planner = registry().default_planner();
   std::optional<planning::ValidatedPlan> solution;
   if (checked && !e.infeasible) {
-    cases.push_back(timed("solves", [&] {
-      solution = planning::solve(*problem, planner,
-                                 {.seed = world.planner.seed, .time_limit = world.planner.time_limit,
-                                  .stop = settings.stop, .threads = 1, .improve = kMainJobImprove});
-      const planning::PlanResult& r = solution->result;
-      if (settings.stop != nullptr && settings.stop->load()) return CaseResult{"", Outcome::kSkipped, "interrupted"};
-      if (!r.solved) {
-        const RunSummary summary{world, reasoning, problem->as_written(), planner, r, nullptr};
-        std::string where;
-        if (search_was_cut_short(r)) {
-          write_failed_search(summary, problem->decomposition(), actual_folder / "failed", true);
-          where = "; diagnosis: " + (actual_folder / "failed").string() + "/";
-        }
-        return failed(fmt::format("{} in {:.1f} s (seed {}, time limit {:g} s){}", no_plan_line(planner, r),
-                                  r.stats.planning_time_s, world.planner.seed, world.planner.time_limit, where));
-      }
-      if (!solution->replay->validated()) return failed("BUG: the plan failed validation on replay: " + solution->replay->failure);
-      return CaseResult{};
-    }));
+    cases.push_back(timed("solves", [&] { return solve_case(*run, settings, actual_folder, solution); }));
     if (settings.stop != nullptr && settings.stop->load()) {
       result.interrupted = true;
       result.time_s = seconds_since(start);
@@ -220,9 +220,8 @@ ScenarioResult test_scenario(const TestEntry& entry, const scenario::World& worl
     preview_case();
     if (!e.infeasible) skip(e, true, why_not, cases);
   } else {
-    const RunSummary summary{world, reasoning, problem->as_written(), planner, solution->result, &*solution->replay,
-                             solution->improvement ? &*solution->improvement : nullptr};
-    const SolvedPlan plan{*problem, planner, *solution};
+    const RunSummary summary = run->summary(*solution);
+    const SolvedPlan plan{*run, *solution};
     bound_cases(plan, e, cases);
     cases.push_back(timed("plan.json", [&] { return goldens.plan(plan_json(summary)); }));
     preview_case();

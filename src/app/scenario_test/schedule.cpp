@@ -1,5 +1,7 @@
 #include "schedule.h"
 
+#include "common/json_file.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -41,9 +43,7 @@ void record_times(const std::vector<ScenarioResult>& results, const std::filesys
   nlohmann::json all = read_times(times);
   for (const ScenarioResult& r : results) all[r.label] = r.time_s;
   std::filesystem::create_directories(times.parent_path());
-  const std::filesystem::path temp = times.string() + ".tmp";
-  std::ofstream(temp) << all.dump(2) << "\n";
-  std::filesystem::rename(temp, times);
+  write_json_file(times, all);
 }
 
 }  // namespace physltl::app::scenario_test

@@ -2,9 +2,10 @@
 
 #include "common/bad_input.h"
 #include "bench/campaign.h"
+#include "common/json_file.h"
 #include "common/output_folder.h"
 #include "physltl/render/png.h"
-#include "bench/sweep.h"
+#include "sweep_results.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -17,12 +18,6 @@
 
 namespace physltl::app {
 namespace {
-
-void write_json(const std::filesystem::path& file, const nlohmann::ordered_json& json) {
-  std::ofstream out(file);
-  out << json.dump(2) << "\n";
-  if (!out) throw BadInput("cannot write " + file.string());
-}
 
 // The SQL type ompl_benchmark_statistics gives the swept value's column.
 std::string property_type(const CampaignResults& campaign, size_t entry) {
@@ -70,24 +65,6 @@ class PendingLogs {
 
 }  // namespace
 
-std::string this_host() {
-  char name[256] = {};
-  return gethostname(name, sizeof name - 1) == 0 ? name : "";
-}
-
-// "<count> x <model name>" from /proc/cpuinfo, or empty.
-std::string this_cpu_info() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line, model;
-  int count = 0;
-  while (std::getline(in, line)) {
-    if (line.rfind("model name", 0) != 0) continue;
-    ++count;
-    model = line.substr(line.find(':') + 2);
-  }
-  return count > 0 ? fmt::format("{} x {}\n", count, model) : "";
-}
-
 OmplExperiment case_experiment(const CampaignResults& campaign, size_t case_index) {
   const CaseResults& c = campaign.cases[case_index];
   const EntryResults& entry = campaign.entries[c.entry];
@@ -121,7 +98,7 @@ std::vector<std::string> write_campaign_outputs(const CampaignResults& campaign,
     text << bench_table(c.results);
     auto& out = folders.emplace_back(
         std::make_unique<OutputFolder>(out_dir / folder_name(c.results.scenario, c.results.settings)));
-    write_json(out->path() / "bench.json", bench_json(c.results));
+    write_json_file(out->path() / "bench.json", bench_json(c.results));
     render::write_png(bench_chart(c.results), out->path() / "bench.png");
     written.push_back(out->final_path().string() + "/bench.json");
     written.push_back(out->final_path().string() + "/bench.png");
@@ -138,7 +115,7 @@ std::vector<std::string> write_campaign_outputs(const CampaignResults& campaign,
     folder_settings.push_back("sweep=" + sweep.key);
     auto& out = folders.emplace_back(std::make_unique<OutputFolder>(
         out_dir / folder_name(sweep.points.front().results.scenario, folder_settings)));
-    write_json(out->path() / "sweep.json", sweep_json(sweep));
+    write_json_file(out->path() / "sweep.json", sweep_json(sweep));
     render::write_png(sweep_chart(sweep), out->path() / "sweep.png");
     written.push_back(out->final_path().string() + "/sweep.json");
     written.push_back(out->final_path().string() + "/sweep.png");
@@ -152,6 +129,20 @@ std::vector<std::string> write_campaign_outputs(const CampaignResults& campaign,
   pending.commit();
   text << "outputs    " << fmt::format("{}", fmt::join(written, ", ")) << "\n";
   return written;
+}
+
+void write_shard_logs(const std::filesystem::path& shard_folder, const CampaignResults& results) {
+  for (size_t c = 0; c < results.cases.size(); ++c) {
+    CampaignResults one = results;
+    BenchResults& r = one.cases[c].results;
+    std::erase_if(r.planners, [](const PlannerRuns& p) { return p.runs.empty(); });
+    if (r.planners.empty()) continue;
+    unsigned most = 0;
+    for (const auto& p : r.planners) most = std::max(most, static_cast<unsigned>(p.runs.size()));
+    OmplExperiment experiment = case_experiment(one, c);
+    experiment.run_count = most;  // a shard holds a share of each planner's runs
+    write_ompl_log_file(shard_folder / (folder_name(r.scenario, r.settings) + ".log"), experiment);
+  }
 }
 
 }  // namespace physltl::app

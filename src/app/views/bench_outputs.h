@@ -3,8 +3,7 @@
 // table, <out>/<case>/bench.json and bench.png; per swept entry sweep.json and sweep.png; the OMPL logs.
 // All appear, or none (docs/benchmarks.md, docs/campaigns.md).
 
-#include "bench/results.h"
-#include "ompl_log.h"
+#include "bench_results.h"
 
 #include <filesystem>
 #include <optional>
@@ -14,29 +13,6 @@
 
 namespace physltl::app {
 
-// A scenario entry as its results need it.
-struct EntryResults {
-  std::vector<std::string> settings;  // the pairs every swept value shares
-  std::optional<std::string> sweep_key;
-};
-
-struct CaseResults {
-  size_t entry = 0;
-  std::string swept_value;  // empty unless the entry sweeps
-  BenchResults results;
-};
-
-struct CampaignResults {
-  std::vector<EntryResults> entries;
-  std::vector<CaseResults> cases;  // entry by entry, each swept value in order
-  std::string host;      // where the runs ran (several hosts for a merge, comma-separated)
-  std::string cpu_info;
-};
-
-// The machine this process runs on.
-std::string this_host();
-std::string this_cpu_info();
-
 // A case's OMPL experiment: named by its scenario and the settings it shares with its entry's other
 // values, so that every shard and every swept value of one entry log the same experiment; the swept value
 // is a typed experiment property (INTEGER, REAL or TEXT as the values allow).
@@ -44,6 +20,9 @@ OmplExperiment case_experiment(const CampaignResults& campaign, size_t case_inde
 
 // Writes `file` whole or not at all (beside it, then renamed). Throws BadInput when it cannot.
 void write_ompl_log_file(const std::filesystem::path& file, const OmplExperiment& experiment);
+
+// <case folder>.log in a shard's folder for each case the shard ran units of, rebuilt from every result.
+void write_shard_logs(const std::filesystem::path& shard_folder, const CampaignResults& results);
 
 // Writes the tables to `text`, the folders under `out_dir` and, when `logs` is not empty, the OMPL log of
 // case i to logs[i]; returns the files written. Throws BadInput or filesystem_error, leaving nothing.

@@ -1,5 +1,6 @@
 #include "failed_search.h"
 
+#include "common/json_file.h"
 #include "common/output_folder.h"
 #include "plan_pictures.h"
 #include "run/planner_names.h"
@@ -18,7 +19,7 @@ bool search_was_cut_short(const planning::PlanResult& result) {
 void write_failed_search(const RunSummary& run, const decomposition::Decomposition& decomposition,
                          const std::filesystem::path& folder, bool render) {
   OutputFolder out(folder);
-  write_json(out.path() / "report.json", failed_report_json(run));
+  write_json_file(out.path() / "report.json", failed_report_json(run));
   if (render) {
     const PlannedMoves moves = planned_moves(account_of(run.planner, run.result.own.get(), run.world));
     write_tree_picture(run.world, run.reasoning, decomposition, run.result, nullptr, moves, out.path() / "tree.png");

@@ -27,32 +27,6 @@ void add_planner_keys(nlohmann::ordered_json& report, const std::vector<std::str
   for (const std::string& key : keys) report[key] = values.contains(key) ? values.at(key) : nlohmann::ordered_json(nullptr);
 }
 
-std::vector<std::pair<std::string, long long>> refusal_counts(const planning::PlannerRegistry& registry,
-                                                              const planning::PlannerEntry& planner,
-                                                              const planning::Refusals& refused) {
-  std::vector<std::pair<std::string, long long>> counts = planning::named_counts(refused, {});
-  for (const std::string& rule : registry.own_refusals()) {
-    const auto own = std::find(planner.own_refusals.begin(), planner.own_refusals.end(), rule);
-    const auto index = own - planner.own_refusals.begin();
-    counts.emplace_back(rule, own == planner.own_refusals.end() ? 0 : refused.own_count(static_cast<int>(index)));
-  }
-  return counts;
-}
-
-std::vector<std::string> refusal_rules(const planning::PlannerRegistry& registry) {
-  std::vector<std::string> rules;
-  for (const auto& [rule, count] : planning::named_counts({}, registry.own_refusals())) rules.push_back(rule);
-  return rules;
-}
-
-std::vector<std::pair<std::string, long long>> named_refusals(const planning::PlannerRegistry& registry,
-                                                              const std::vector<long long>& counts) {
-  std::vector<std::pair<std::string, long long>> named;
-  const std::vector<std::string> rules = refusal_rules(registry);
-  for (std::size_t i = 0; i < rules.size(); ++i) named.emplace_back(rules[i], i < counts.size() ? counts[i] : 0);
-  return named;
-}
-
 nlohmann::ordered_json refusals_json(const std::vector<std::pair<std::string, long long>>& counts) {
   nlohmann::ordered_json json = nlohmann::ordered_json::object();
   for (const auto& [rule, count] : counts) json[rule] = count;

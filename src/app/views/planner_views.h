@@ -23,15 +23,6 @@ planning::PlannerAccount account_of(const planning::PlannerEntry& planner, const
 // has the keys of every planner of the program, whatever planner wrote it.
 void add_planner_keys(nlohmann::ordered_json& report, const std::vector<std::string>& keys, const nlohmann::ordered_json& values);
 
-// Refused steps by rule: the semantic rules, then every planner's own rules of the registry (zero where
-// `planner` has no such rule), as report.json and bench.json list them.
-std::vector<std::pair<std::string, long long>> refusal_counts(const planning::PlannerRegistry& registry,
-                                                              const planning::PlannerEntry& planner,
-                                                              const planning::Refusals& refused);
-// The rules refusal_counts names, in its order; with `counts` (by position), the counts under those names.
-std::vector<std::string> refusal_rules(const planning::PlannerRegistry& registry);
-std::vector<std::pair<std::string, long long>> named_refusals(const planning::PlannerRegistry& registry,
-                                                              const std::vector<long long>& counts);
 // {"fixed_contact": n, "task_letter": n, ...}
 nlohmann::ordered_json refusals_json(const std::vector<std::pair<std::string, long long>>& counts);
 

@@ -18,12 +18,6 @@ json point(const scenario::Vec2& p) { return {p.x(), p.y()}; }
 
 }  // namespace
 
-void write_json(const std::filesystem::path& file, const json& j) {
-  std::ofstream out(file);
-  out << j.dump(2) << "\n";
-  if (!out) throw std::runtime_error("cannot write " + file.string());
-}
-
 json report_json(const RunSummary& run) {
   const auto& r = run.result;
   const auto& reasoning = run.reasoning;

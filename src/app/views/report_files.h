@@ -31,8 +31,6 @@ struct RunSummary {
 
 nlohmann::ordered_json report_json(const RunSummary& run);
 nlohmann::ordered_json plan_json(const RunSummary& run);  // needs a replay
-// Throws std::runtime_error when the file cannot be written.
-void write_json(const std::filesystem::path& file, const nlohmann::ordered_json& j);
 
 
 }  // namespace physltl::app

@@ -1,0 +1,51 @@
+#include "planning_run.h"
+
+#include "common/bad_input.h"
+#include "run/planner_names.h"
+#include "run/scenario_settings.h"
+#include "run/uncertainty_args.h"
+#include "views/failed_search.h"
+
+namespace physltl::app {
+
+scenario::World load_world(const std::string& path, const std::vector<std::string>& settings, const WorldOverrides& overrides) {
+  scenario::World world = load_with_settings(path, settings);
+  if (overrides.seed) world.planner.seed = *overrides.seed;
+  if (overrides.time_limit) world.planner.time_limit = *overrides.time_limit;
+  if (overrides.uncertainty) world.uncertainty = override_uncertainty(world.uncertainty, *overrides.uncertainty);
+  return world;
+}
+
+PlanningRun::PlanningRun(const scenario::World& world, const planning::PlannerEntry& planner)
+    : problem_(world), planner_(planner) {}
+
+void PlanningRun::require_plannable(planning::Needs needs) const {
+  if (!problem_.feasible()) throw InfeasibleTask(problem_.reasoning().task.infeasibility());
+  if (const auto why = registry().refusal(planner_, problem_.search_task(planner_), needs)) throw BadInput(*why);
+}
+
+std::optional<PlanningRun::Failure> PlanningRun::failure(const planning::ValidatedPlan& solution,
+                                                         const std::optional<std::filesystem::path>& failed_folder,
+                                                         bool render) const {
+  const planning::PlanResult& result = solution.result;
+  if (!result.solved) {
+    const bool diagnosed = failed_folder && search_was_cut_short(result);
+    if (diagnosed) write_failed_search(summary(solution), problem_.decomposition(), *failed_folder, render);
+    return Failure{no_plan_line(planner_, result), diagnosed};
+  }
+  // The search and the replay disagree: a bug, never a result.
+  if (!solution.replay->validated()) return Failure{"BUG: the plan failed validation on replay: " + solution.replay->failure};
+  return std::nullopt;
+}
+
+RunSummary PlanningRun::summary(const planning::ValidatedPlan& solution) const {
+  return {problem_.world(),
+          problem_.reasoning(),
+          problem_.as_written(),
+          planner_,
+          solution.result,
+          solution.replay ? &*solution.replay : nullptr,
+          solution.improvement ? &*solution.improvement : nullptr};
+}
+
+}  // namespace physltl::app
