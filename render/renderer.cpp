@@ -15,6 +15,7 @@
 #include "gl_objects.h"
 #include "meshes.h"
 #include "palette.h"
+#include "shape_kinds.h"
 #include "shaders.h"
 #include "text.h"
 
@@ -236,16 +237,12 @@ struct Renderer::Impl {
   // A box is the unit cube scaled; cylinders and polygons are meshes of their own, made once a shape.
   void add_body(std::vector<float>& vertices, const geometry::Shape& shape, const Pose2& pose, double height,
                 const Color& color) const {
-    if (shape.is_box()) {
-      const Vector3f size(2 * shape.half_extents().x(), 2 * shape.half_extents().y(), height);
-      add_mesh(vertices, cube, body_transform(pose, size.z() / 2, size), color);
+    if (const auto size = kind_of(shape).as_cube(shape)) {
+      add_mesh(vertices, cube, body_transform(pose, static_cast<float>(height) / 2, Vector3f(size->x(), size->y(), height)), color);
       return;
     }
     auto [mesh, made] = shape_meshes.try_emplace(&shape);
-    if (made) {
-      mesh->second = shape.kind() == geometry::Shape::Kind::kCircle ? cylinder_mesh(shape.radius(), height, 48)
-                                                                     : prism_mesh(shape.parts(), height);
-    }
+    if (made) mesh->second = kind_of(shape).mesh(shape, height);
     add_mesh(vertices, mesh->second, body_transform(pose, 0, Vector3f::Ones()), color);
   }
 
@@ -323,16 +320,9 @@ struct Renderer::Impl {
     return paint;
   }
 
-  // A box's shadow is its rectangle, a cylinder's a disc, a polygon's the rectangle of its bounds.
   static void add_shadow(ShadowGeometry& shadows, const geometry::Shape& shape, const Pose2& pose, double height) {
-    switch (shape.kind()) {
-      case geometry::Shape::Kind::kBox: return shadows.add(pose, shape.half_extents(), 0.0, height);
-      case geometry::Shape::Kind::kCircle: return shadows.add(pose, Vec2::Zero(), shape.radius(), height);
-      case geometry::Shape::Kind::kPolygon: break;
-    }
-    const geometry::Rect local = geometry::bounds(shape, {});
-    const Pose2 middle{geometry::to_world(pose, 0.5 * (local.min + local.max)), pose.yaw};
-    shadows.add(middle, 0.5 * local.size(), 0.0, height);
+    const ShadowShape shadow = kind_of(shape).shadow(shape, pose);
+    shadows.add(shadow.pose, shadow.half_extents, shadow.corner_radius, height);
   }
 
   ShadowGeometry fixed_shadows() const {

@@ -80,32 +80,21 @@ std::vector<geometry::Polygon> clutter_outlines(const scenario::World& world) {
   return outlines;
 }
 
-// A triangle is a hole where its centroid lies in a fixed body; a cylinder counts as the polygon round it
-// whose sides are constraints of the mesh.
+// A triangle is a hole where its centroid lies in a fixed body as the mesh's constraints outline it (a
+// cylinder as the polygon round it).
 bool in_fixed_body(const scenario::FixedBody& body, const Vec2& p) {
-  const geometry::Shape& shape = body.footprint.shape;
-  if (shape.kind() != geometry::Shape::Kind::kCircle) return geometry::contains(shape, body.footprint.pose, p);
-  return geometry::convex_parts_at(shape, body.footprint.pose, geometry::CircleAs::kCircumscribed).front().contains(p);
+  return geometry::contains_as_parts(body.footprint.shape, body.footprint.pose, p, geometry::CircleAs::kCircumscribed);
 }
 
 }  // namespace
 
-Decomposition Decomposition::build(const scenario::World& world, const DecompositionOptions& options) {
-  const auto& bounds = world.workspace.bounds;
-  const double max_edge = options.max_edge > 0 ? options.max_edge : bounds.size().norm() / 20.0;
+namespace {
 
-  Cdt cdt;
-  insert_polygon(cdt, geometry::Polygon::from_rect(bounds).vertices, max_edge);
-  for (const auto& f : world.fixed_bodies) {
-    for (const auto& part : geometry::convex_parts_at(f.footprint.shape, f.footprint.pose, geometry::CircleAs::kCircumscribed)) {
-      insert_polygon(cdt, part.vertices, max_edge);
-    }
-  }
-  for (const auto& r : world.regions) insert_polygon(cdt, r.polygon.vertices, max_edge);
-  for (const geometry::Polygon& grown : clutter_outlines(world)) insert_polygon(cdt, grown.vertices, max_edge);
-  // Steiner points on a staggered grid bound the triangle size away from the constraints. (CGAL's
-  // Delaunay mesher would be the textbook tool, but it does not terminate on walls that touch the
-  // workspace border in Debian's CGAL 5.5; the grid gives the same kind of mesh, deterministically.)
+// Steiner points on a staggered grid bound the triangle size away from the constraints. (CGAL's Delaunay
+// mesher would be the textbook tool, but it does not terminate on walls that touch the workspace border in
+// Debian's CGAL 5.5; the grid gives the same kind of mesh, deterministically.)
+void insert_steiner_points(Cdt& cdt, const scenario::World& world, double max_edge) {
+  const auto& bounds = world.workspace.bounds;
   const int columns = static_cast<int>(std::ceil(bounds.size().x() / max_edge));
   const int rows = static_cast<int>(std::ceil(bounds.size().y() / max_edge));
   const Vec2 step(bounds.size().x() / columns, bounds.size().y() / rows);
@@ -123,6 +112,29 @@ Decomposition Decomposition::build(const scenario::World& world, const Decomposi
     }
   }
   cdt.insert(steiner.begin(), steiner.end());
+}
+
+// The workspace's border, the fixed bodies, the regions and the clutter's outlines as constraints.
+Cdt constrained_triangulation(const scenario::World& world, double max_edge) {
+  Cdt cdt;
+  insert_polygon(cdt, geometry::Polygon::from_rect(world.workspace.bounds).vertices, max_edge);
+  for (const auto& f : world.fixed_bodies) {
+    for (const auto& part : geometry::convex_parts_at(f.footprint.shape, f.footprint.pose, geometry::CircleAs::kCircumscribed)) {
+      insert_polygon(cdt, part.vertices, max_edge);
+    }
+  }
+  for (const auto& r : world.regions) insert_polygon(cdt, r.polygon.vertices, max_edge);
+  for (const geometry::Polygon& grown : clutter_outlines(world)) insert_polygon(cdt, grown.vertices, max_edge);
+  insert_steiner_points(cdt, world, max_edge);
+  return cdt;
+}
+
+}  // namespace
+
+Decomposition Decomposition::build(const scenario::World& world, const DecompositionOptions& options) {
+  const auto& bounds = world.workspace.bounds;
+  const double max_edge = options.max_edge > 0 ? options.max_edge : bounds.size().norm() / 20.0;
+  const Cdt cdt = constrained_triangulation(world, max_edge);
 
   Decomposition d;
   std::map<Cdt::Face_handle, int> index_of;
@@ -149,34 +161,27 @@ Decomposition Decomposition::build(const scenario::World& world, const Decomposi
     }
     std::sort(d.triangles_[index].neighbors.begin(), d.triangles_[index].neighbors.end());
   }
-
-  // Buckets about one triangle edge wide.
-  d.cell_ = max_edge;
-  d.grid_origin_ = bounds.min;
-  d.columns_ = std::max(1, static_cast<int>(std::ceil(bounds.size().x() / d.cell_)));
-  d.rows_ = std::max(1, static_cast<int>(std::ceil(bounds.size().y() / d.cell_)));
-  d.buckets_.assign(static_cast<size_t>(d.columns_) * d.rows_, {});
-  for (int i = 0; i < d.size(); ++i) {
-    Vec2 lo = d.triangles_[i].corners[0], hi = lo;
-    for (const auto& c : d.triangles_[i].corners) {
-      lo = lo.cwiseMin(c);
-      hi = hi.cwiseMax(c);
-    }
-    const int c0 = std::clamp(static_cast<int>((lo.x() - d.grid_origin_.x()) / d.cell_), 0, d.columns_ - 1);
-    const int c1 = std::clamp(static_cast<int>((hi.x() - d.grid_origin_.x()) / d.cell_), 0, d.columns_ - 1);
-    const int r0 = std::clamp(static_cast<int>((lo.y() - d.grid_origin_.y()) / d.cell_), 0, d.rows_ - 1);
-    const int r1 = std::clamp(static_cast<int>((hi.y() - d.grid_origin_.y()) / d.cell_), 0, d.rows_ - 1);
-    for (int r = r0; r <= r1; ++r) {
-      for (int c = c0; c <= c1; ++c) d.buckets_[static_cast<size_t>(r) * d.columns_ + c].push_back(i);
-    }
-  }
+  d.bucket_triangles(bounds, max_edge);
   return d;
 }
 
+void Decomposition::bucket_triangles(const geometry::Rect& bounds, double cell) {
+  grid_ = geometry::UniformGrid::covering(bounds, cell);
+  buckets_.assign(grid_.size(), {});
+  for (int i = 0; i < size(); ++i) {
+    Vec2 lo = triangles_[i].corners[0], hi = lo;
+    for (const auto& c : triangles_[i].corners) {
+      lo = lo.cwiseMin(c);
+      hi = hi.cwiseMax(c);
+    }
+    for (int r = grid_.row(lo.y()); r <= grid_.row(hi.y()); ++r) {
+      for (int c = grid_.column(lo.x()); c <= grid_.column(hi.x()); ++c) buckets_[grid_.index(c, r)].push_back(i);
+    }
+  }
+}
+
 int Decomposition::locate(const Vec2& p) const {
-  const int c = std::clamp(static_cast<int>((p.x() - grid_origin_.x()) / cell_), 0, columns_ - 1);
-  const int r = std::clamp(static_cast<int>((p.y() - grid_origin_.y()) / cell_), 0, rows_ - 1);
-  for (int i : buckets_[static_cast<size_t>(r) * columns_ + c]) {
+  for (int i : buckets_[grid_.index_of(p)]) {
     if (triangle_contains(triangles_[i], p)) return i;
   }
   int nearest = -1;

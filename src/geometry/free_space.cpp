@@ -1,6 +1,7 @@
 #include "physltl/geometry/free_space.h"
 
 #include "physltl/geometry/shortest_paths.h"
+#include "shape_kinds.h"
 
 #include <Eigen/Geometry>
 
@@ -73,28 +74,7 @@ Polygon grown_from_inside(const OrientedBox& box, double radius, int chords_per_
 }
 
 std::vector<Polygon> grown_from_inside(const Shape& shape, const Pose2& pose, double radius) {
-  if (shape.is_box()) return {grown_from_inside(OrientedBox{pose, shape.half_extents()}, radius)};
-  if (shape.kind() == Shape::Kind::kCircle) {
-    return convex_parts_at(Shape::circle(shape.radius() + radius), pose, CircleAs::kInscribed);
-  }
-  constexpr int kChordsPerCorner = 2;
-  std::vector<Polygon> grown;
-  for (const Polygon& part : convex_parts_at(shape, pose, CircleAs::kInscribed)) {
-    const auto& v = part.vertices;  // counter-clockwise
-    const size_t n = v.size();
-    Polygon g;
-    for (size_t i = 0; i < n; ++i) {
-      // The arc round corner i, from the outward normal of the side before to that of the side after.
-      const Vec2 before = v[i] - v[(i + n - 1) % n], after = v[(i + 1) % n] - v[i];
-      const double from = std::atan2(-before.x(), before.y()), turn = std::remainder(std::atan2(-after.x(), after.y()) - from, 2 * std::numbers::pi);
-      for (int k = 0; k <= kChordsPerCorner; ++k) {
-        const double a = from + turn * k / kChordsPerCorner;
-        g.vertices.push_back(v[i] + radius * Vec2(std::cos(a), std::sin(a)));
-      }
-    }
-    grown.push_back(std::move(g));
-  }
-  return grown;
+  return kind_of(shape).grown_from_inside(shape, pose, radius);
 }
 
 double distance(const Vec2& p, const Polygon& polygon) {

@@ -16,28 +16,16 @@ PointGrid::PointGrid(const Rect& area, double cell, std::span<const Vec2> points
   if (!(cell > 0) || !area.min.allFinite() || !area.max.allFinite()) {
     throw std::invalid_argument("PointGrid: a positive cell and a finite area");
   }
-  origin_ = area.min;
   const Vec2 size = (area.max - area.min).cwiseMax(Vec2::Zero());
-  cell_ = std::max(cell, size.maxCoeff() / kMaxCellsPerSide);
-  columns_ = std::max(1, static_cast<int>(std::ceil(size.x() / cell_)));
-  rows_ = std::max(1, static_cast<int>(std::ceil(size.y() / cell_)));
-  cells_.resize(static_cast<std::size_t>(columns_) * rows_);
+  const double side = std::max(cell, size.maxCoeff() / kMaxCellsPerSide);
+  grid_ = UniformGrid(area.min, side, static_cast<int>(std::ceil(size.x() / side)), static_cast<int>(std::ceil(size.y() / side)));
+  cells_.resize(grid_.size());
   points_.assign(points.begin(), points.end());
   for (std::size_t i = 0; i < points_.size(); ++i) {
     const int c = cell_of(points_[i]);
     cell_of_point_.push_back(c);
     cells_[static_cast<std::size_t>(c)].push_back(static_cast<int>(i));
   }
-}
-
-int PointGrid::column(double x) const {
-  const double c = std::floor((x - origin_.x()) / cell_);
-  return c >= 0 ? static_cast<int>(std::min(c, static_cast<double>(columns_ - 1))) : 0;  // NaN lands in 0 too
-}
-
-int PointGrid::row(double y) const {
-  const double r = std::floor((y - origin_.y()) / cell_);
-  return r >= 0 ? static_cast<int>(std::min(r, static_cast<double>(rows_ - 1))) : 0;
 }
 
 void PointGrid::move(int i, const Vec2& p) {
@@ -54,11 +42,11 @@ void PointGrid::move(int i, const Vec2& p) {
 
 void PointGrid::near(const Vec2& centre, double radius, std::vector<int>& out) const {
   out.clear();
-  const int c0 = column(centre.x() - radius), c1 = column(centre.x() + radius);
-  const int r0 = row(centre.y() - radius), r1 = row(centre.y() + radius);
+  const int c0 = grid_.column(centre.x() - radius), c1 = grid_.column(centre.x() + radius);
+  const int r0 = grid_.row(centre.y() - radius), r1 = grid_.row(centre.y() + radius);
   for (int r = r0; r <= r1; ++r) {
     for (int c = c0; c <= c1; ++c) {
-      for (int i : cells_[static_cast<std::size_t>(r * columns_ + c)]) {
+      for (int i : cells_[grid_.index(c, r)]) {
         const Vec2 d = (points_[static_cast<std::size_t>(i)] - centre).cwiseAbs();
         if (d.x() <= radius && d.y() <= radius) out.push_back(i);
       }

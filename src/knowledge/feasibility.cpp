@@ -16,30 +16,8 @@ namespace {
 
 using geometry::Vec2;
 
-// Square cells covering the workspace; a cell stands for its centre.
-class Grid {
- public:
-  Grid(const geometry::Rect& bounds, double cell_size)
-      : origin_(bounds.min),
-        cell_(cell_size),
-        nx_(std::max(1, static_cast<int>(std::ceil(bounds.size().x() / cell_size)))),
-        ny_(std::max(1, static_cast<int>(std::ceil(bounds.size().y() / cell_size)))) {}
-
-  int nx() const { return nx_; }
-  int ny() const { return ny_; }
-  size_t cells() const { return static_cast<size_t>(nx_) * static_cast<size_t>(ny_); }
-  size_t index(int ix, int iy) const { return static_cast<size_t>(iy) * static_cast<size_t>(nx_) + static_cast<size_t>(ix); }
-  Vec2 center(int ix, int iy) const { return origin_ + cell_ * Vec2(ix + 0.5, iy + 0.5); }
-  int column(double x) const { return std::clamp(static_cast<int>(std::floor((x - origin_.x()) / cell_)), 0, nx_ - 1); }
-  int row(double y) const { return std::clamp(static_cast<int>(std::floor((y - origin_.y()) / cell_)), 0, ny_ - 1); }
-  size_t index_of(const Vec2& p) const { return index(column(p.x()), row(p.y())); }
-
- private:
-  Vec2 origin_;
-  double cell_;
-  int nx_;
-  int ny_;
-};
+// Square cells covering the workspace (geometry/uniform_grid.h); a cell stands for its centre.
+using Grid = geometry::UniformGrid;
 
 // The footprints that block the robot: fixed bodies, and optionally the movable ones too heavy to push.
 std::vector<geometry::Footprint> blocking_footprints(const AbstractKnowledge& k, bool with_unpushable_bodies) {
@@ -62,12 +40,12 @@ class ConfigurationSpace {
       : grid_(grid),
         radius_(radius),
         inner_workspace_{k.workspace.min + Vec2::Constant(radius), k.workspace.max - Vec2::Constant(radius)},
-        blocked_(grid.cells(), 0),
-        reached_(grid.cells(), 0),
+        blocked_(grid.size(), 0),
+        reached_(grid.size(), 0),
         footprints_(std::move(footprints)) {
     for (const auto& f : footprints_) obstacles_.emplace_back(f.shape, f.pose);
-    for (int iy = 0; iy < grid.ny(); ++iy) {
-      for (int ix = 0; ix < grid.nx(); ++ix) blocked_[grid.index(ix, iy)] = !inner_workspace_.contains(grid.center(ix, iy));
+    for (int iy = 0; iy < grid.rows(); ++iy) {
+      for (int ix = 0; ix < grid.columns(); ++ix) blocked_[grid.index(ix, iy)] = !inner_workspace_.contains(grid.centre(ix, iy));
     }
     for (size_t i = 0; i < footprints_.size(); ++i) mark_blocked(footprints_[i], obstacles_[i]);
     flood_fill(grid.index_of(k.robot.start));
@@ -86,7 +64,7 @@ class ConfigurationSpace {
     const geometry::Rect reach = geometry::bounds(footprint.shape, footprint.pose);
     for (int iy = grid_.row(reach.min.y() - radius_); iy <= grid_.row(reach.max.y() + radius_); ++iy) {
       for (int ix = grid_.column(reach.min.x() - radius_); ix <= grid_.column(reach.max.x() + radius_); ++ix) {
-        if (obstacle.distance(grid_.center(ix, iy)) < radius_) blocked_[grid_.index(ix, iy)] = 1;
+        if (obstacle.distance(grid_.centre(ix, iy)) < radius_) blocked_[grid_.index(ix, iy)] = 1;
       }
     }
   }
@@ -96,7 +74,7 @@ class ConfigurationSpace {
   void flood_fill(size_t start) {
     std::vector<size_t> frontier{start};
     reached_[start] = 1;
-    const auto nx = static_cast<size_t>(grid_.nx());
+    const auto nx = static_cast<size_t>(grid_.columns());
     while (!frontier.empty()) {
       const size_t cell = frontier.back();
       frontier.pop_back();
@@ -109,7 +87,7 @@ class ConfigurationSpace {
       if (ix > 0) visit(cell - 1);
       if (ix + 1 < nx) visit(cell + 1);
       if (cell >= nx) visit(cell - nx);
-      if (cell + nx < grid_.cells()) visit(cell + nx);
+      if (cell + nx < grid_.size()) visit(cell + nx);
     }
   }
 
@@ -130,7 +108,7 @@ bool any_region_point(const Grid& grid, const geometry::Polygon& region, Accept&
   const geometry::Rect b = region.bounds();
   for (int iy = grid.row(b.min.y()); iy <= grid.row(b.max.y()); ++iy) {
     for (int ix = grid.column(b.min.x()); ix <= grid.column(b.max.x()); ++ix) {
-      const Vec2 c = grid.center(ix, iy);
+      const Vec2 c = grid.centre(ix, iy);
       if (region.contains(c) && accept(c, grid.index(ix, iy), true)) return true;
     }
   }
@@ -286,7 +264,7 @@ double grid_cell_size(const AbstractKnowledge& knowledge) {
 Feasibility evaluate_feasibility(const AbstractKnowledge& knowledge, std::span<const ObjectProposition> objects) {
   Feasibility result;
   result.cell_size = grid_cell_size(knowledge);
-  const Grid grid(knowledge.workspace, result.cell_size);
+  const Grid grid = Grid::covering(knowledge.workspace, result.cell_size);
   const ConfigurationSpace robot_space(knowledge, grid, knowledge.robot.radius, blocking_footprints(knowledge, true));
   Explainer explainer(knowledge, grid, result.cell_size, robot_space);
   for (const Proposition& p : knowledge.propositions) {

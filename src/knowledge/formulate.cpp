@@ -1,5 +1,7 @@
 #include "physltl/knowledge/abstract_knowledge.h"
 
+#include "shape_kinds.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -10,85 +12,6 @@ namespace physltl::knowledge {
 namespace {
 
 using geometry::Vec2;
-
-Vec2 outward_normal(scenario::Side side) {
-  switch (side) {
-    case scenario::Side::kMinusX: return {-1.0, 0.0};
-    case scenario::Side::kPlusX: return {1.0, 0.0};
-    case scenario::Side::kMinusY: return {0.0, -1.0};
-    case scenario::Side::kPlusY: return {0.0, 1.0};
-  }
-  return {0.0, 0.0};
-}
-
-bool is_x_side(scenario::Side side) { return side == scenario::Side::kMinusX || side == scenario::Side::kPlusX; }
-
-// A box's side: the strip and the contact segment along the body's own axes.
-MRegionTemplate box_side(scenario::Side side, const Vec2& half_extents, double depth, double robot_radius) {
-  const Vec2 normal = outward_normal(side);
-  const Vec2 tangent(-normal.y(), normal.x());
-  const double to_side = is_x_side(side) ? half_extents.x() : half_extents.y();
-  const double half_length = is_x_side(side) ? half_extents.y() : half_extents.x();
-  MRegionTemplate m;
-  m.face = static_cast<int>(side);
-  m.strip.pose.position = normal * (to_side + 0.5 * depth);
-  m.strip.half_extents = is_x_side(side) ? Vec2(0.5 * depth, half_length) : Vec2(half_length, 0.5 * depth);
-  const Vec2 touching = normal * (to_side + robot_radius);
-  m.contact_from = touching - tangent * half_length;
-  m.contact_to = touching + tangent * half_length;
-  m.push = -normal;
-  return m;
-}
-
-// A straight face from `a` to `b` whose outside is towards `normal` (of unit length).
-MRegionTemplate straight_face(int face, const Vec2& a, const Vec2& b, const Vec2& normal, double depth,
-                              double robot_radius) {
-  const Vec2 along = b - a;
-  const double half_length = 0.5 * along.norm();
-  const Vec2 tangent = along / (2.0 * half_length);
-  const Vec2 middle = 0.5 * (a + b);
-  MRegionTemplate m;
-  m.face = face;
-  m.strip.pose = {middle + normal * (0.5 * depth), std::atan2(tangent.y(), tangent.x())};
-  m.strip.half_extents = Vec2(half_length, 0.5 * depth);
-  m.contact_from = a + normal * robot_radius;
-  m.contact_to = b + normal * robot_radius;
-  m.push = -normal;
-  return m;
-}
-
-// Sector k of a cylinder of radius `radius`: the robot touching it anywhere on that arc pushes it towards
-// its axis (the contact normal passes through it), so the push runs through the middle of the arc and a
-// touch off it slides the body sideways as the physics says.
-MRegionTemplate cylinder_sector(int sector, double radius, double depth, double robot_radius) {
-  const double half_angle = std::numbers::pi / scenario::kCylinderSectors;
-  const double angle = 2.0 * half_angle * sector;
-  const Vec2 normal(std::cos(angle), std::sin(angle));
-  MRegionTemplate m;
-  m.face = sector;
-  m.strip.pose = {normal * (radius + 0.5 * depth), angle};
-  m.strip.half_extents = Vec2(0.5 * depth, (radius + depth) * std::tan(half_angle));
-  const double touching = radius + robot_radius;
-  m.contact_from = touching * Vec2(std::cos(angle - half_angle), std::sin(angle - half_angle));
-  m.contact_to = touching * Vec2(std::cos(angle + half_angle), std::sin(angle + half_angle));
-  m.push = -normal;
-  return m;
-}
-
-MRegionTemplate face_template(const geometry::Shape& shape, int face, double depth, double robot_radius) {
-  switch (shape.kind()) {
-    case geometry::Shape::Kind::kBox:
-      return box_side(static_cast<scenario::Side>(face), shape.half_extents(), depth, robot_radius);
-    case geometry::Shape::Kind::kCircle: return cylinder_sector(face, shape.radius(), depth, robot_radius);
-    case geometry::Shape::Kind::kPolygon: break;
-  }
-  const auto& v = shape.outline().vertices;
-  const Vec2 a = v[static_cast<size_t>(face)], b = v[(static_cast<size_t>(face) + 1) % v.size()];
-  const Vec2 edge = (b - a).normalized();
-  // The outside of a counter-clockwise outline is on the right of each side, of a clockwise one on the left.
-  const double turn = shape.outline().signed_area() > 0 ? 1.0 : -1.0;
-  return straight_face(face, a, b, turn * Vec2(edge.y(), -edge.x()), depth, robot_radius);
-}
 
 std::string face_list(const geometry::Shape& shape, const std::vector<int>& faces) {
   std::string out;
@@ -127,7 +50,7 @@ MovableBodyKnowledge movable_knowledge(const scenario::MovableBody& body, const 
   }
   const double depth = body.mregion_depth.value_or(2.0 * robot.radius + settings.mregion_margin);
   for (int face = 0; face < k.faces; ++face) {
-    if (pushable.contains(face)) k.mregions.push_back(face_template(body.footprint.shape, face, depth, robot.radius));
+    if (pushable.contains(face)) k.mregions.push_back(kind_of(body.footprint.shape).face_template(body.footprint.shape, face, depth, robot.radius));
   }
   for (const MRegionTemplate& m : k.mregions) {
     k.contact_reach = std::max({k.contact_reach, m.contact_from.norm(), m.contact_to.norm()});

@@ -20,6 +20,11 @@ struct Interval {
 // at the origin of coordinates.
 Interval inside_rectangle(const geometry::Vec2& origin, const geometry::Vec2& direction, const geometry::Vec2& half);
 
+// t with |origin + t * direction - center| < radius, direction of unit length.
+Interval inside_disc(const geometry::Vec2& origin, const geometry::Vec2& direction, const geometry::Vec2& center, double radius);
+// t with origin + t * direction strictly inside the convex, counter-clockwise polygon `v` (Cyrus-Beck).
+Interval inside_convex(const geometry::Vec2& origin, const geometry::Vec2& direction, const std::vector<geometry::Vec2>& v);
+
 // A body's footprint where it stands, as INFERENCE and the reachability grid ask about it.
 class Obstacle {
  public:
@@ -34,12 +39,15 @@ class Obstacle {
   void closer_than(const geometry::Vec2& origin, const geometry::Vec2& direction, double radius,
                    std::vector<Interval>& out) const;
 
- private:
+  const geometry::Shape& shape() const { return shape_; }
+  const geometry::Pose2& pose() const { return pose_; }
+  const geometry::Vec2& center() const { return center_; }
+  // A vector of the world in the body's frame.
   geometry::Vec2 local(const geometry::Vec2& world_vector) const {
     return {world_vector.dot(axis_x_), world_vector.dot(axis_y_)};
   }
-  Interval box_closer_than(const geometry::Vec2& origin, const geometry::Vec2& direction, double radius) const;
 
+ private:
   const geometry::Shape& shape_;
   geometry::Pose2 pose_;
   geometry::Vec2 center_;

@@ -1,5 +1,6 @@
 #include "shape_geoms.h"
 
+#include <array>
 #include <cmath>
 
 namespace physltl::physics {
@@ -53,15 +54,54 @@ dGeomID ConvexStore::prism(const geometry::Polygon& outline, const Vec2& centre)
   return dCreateConvex(nullptr, p.planes.data(), n + 2, p.points.data(), 2 * n, p.faces.data());
 }
 
-std::vector<PartGeom> make_geoms(const geometry::Shape& shape, ConvexStore& store) {
-  switch (shape.kind()) {
-    case geometry::Shape::Kind::kBox: {
-      const Vec2 size = 2.0 * shape.half_extents();
-      return {{dCreateBox(nullptr, size.x(), size.y(), kCollisionHeight)}};
-    }
-    case geometry::Shape::Kind::kCircle: return {{dCreateCylinder(nullptr, shape.radius(), kCollisionHeight)}};
-    case geometry::Shape::Kind::kPolygon: break;
-  }
+namespace {
+
+// What each kind of shape is to ODE, one row per kind (geometry/shape_kinds.h has the geometry's): its
+// geoms, its mass distribution and the floor's friction torque.
+struct ShapeKindPhysics {
+  std::vector<PartGeom> (*geoms)(const geometry::Shape& shape, ConvexStore& store);
+  dMass (*mass)(const geometry::Shape& shape, double mass);
+  double (*floor_torque)(const geometry::Shape& shape, double floor_force);
+};
+
+namespace box {
+
+Vec2 size(const geometry::Shape& shape) { return 2.0 * shape.half_extents(); }
+
+constexpr ShapeKindPhysics kRow{
+    [](const geometry::Shape& shape, ConvexStore&) {
+      return std::vector<PartGeom>{{dCreateBox(nullptr, size(shape).x(), size(shape).y(), kCollisionHeight)}};
+    },
+    [](const geometry::Shape& shape, double mass) {
+      dMass m;
+      dMassSetBoxTotal(&m, mass, size(shape).x(), size(shape).y(), kCollisionHeight);
+      return m;
+    },
+    [](const geometry::Shape& shape, double floor_force) { return floor_force * (2.0 / 3.0) * shape.half_extents().mean(); },
+};
+
+}  // namespace box
+
+namespace circle {
+
+constexpr ShapeKindPhysics kRow{
+    [](const geometry::Shape& shape, ConvexStore&) {
+      return std::vector<PartGeom>{{dCreateCylinder(nullptr, shape.radius(), kCollisionHeight)}};
+    },
+    [](const geometry::Shape& shape, double mass) {
+      dMass m;
+      dMassSetCylinderTotal(&m, mass, 3, shape.radius(), kCollisionHeight);
+      return m;
+    },
+    // Exact for a disc.
+    [](const geometry::Shape& shape, double floor_force) { return floor_force * (2.0 / 3.0) * shape.radius(); },
+};
+
+}  // namespace circle
+
+namespace polygon {
+
+std::vector<PartGeom> geoms(const geometry::Shape& shape, ConvexStore& store) {
   std::vector<PartGeom> geoms;
   // A convex body's one part is about its centroid already, the body's centre; a fixed body's parts each
   // about their own.
@@ -73,20 +113,8 @@ std::vector<PartGeom> make_geoms(const geometry::Shape& shape, ConvexStore& stor
   return geoms;
 }
 
-dMass body_mass(const geometry::Shape& shape, double mass) {
-  dMass m;
-  switch (shape.kind()) {
-    case geometry::Shape::Kind::kBox: {
-      const Vec2 size = 2.0 * shape.half_extents();
-      dMassSetBoxTotal(&m, mass, size.x(), size.y(), kCollisionHeight);
-      return m;
-    }
-    case geometry::Shape::Kind::kCircle:
-      dMassSetCylinderTotal(&m, mass, 3, shape.radius(), kCollisionHeight);
-      return m;
-    case geometry::Shape::Kind::kPolygon: break;
-  }
-  // The prism's second moments about its centroid (the body's origin).
+// The prism's second moments about its centroid (the body's origin).
+dMass mass(const geometry::Shape& shape, double mass) {
   double area = 0.0, xx = 0.0, yy = 0.0, xy = 0.0;
   for (const geometry::Polygon& part : shape.parts()) {
     area += integrate(part, [](const Vec2&) { return 1.0; });
@@ -94,17 +122,13 @@ dMass body_mass(const geometry::Shape& shape, double mass) {
     yy += integrate(part, [](const Vec2& p) { return p.y() * p.y(); });
     xy += integrate(part, [](const Vec2& p) { return p.x() * p.y(); });
   }
+  dMass m;
   const double density = mass / area, z2 = mass * kCollisionHeight * kCollisionHeight / 12.0;
   dMassSetParameters(&m, mass, 0, 0, 0, density * yy + z2, density * xx + z2, density * (xx + yy), -density * xy, 0, 0);
   return m;
 }
 
 double floor_torque(const geometry::Shape& shape, double floor_force) {
-  switch (shape.kind()) {
-    case geometry::Shape::Kind::kBox: return floor_force * (2.0 / 3.0) * shape.half_extents().mean();
-    case geometry::Shape::Kind::kCircle: return floor_force * (2.0 / 3.0) * shape.radius();  // exact for a disc
-    case geometry::Shape::Kind::kPolygon: break;
-  }
   double area = 0.0, moment = 0.0;
   for (const geometry::Polygon& part : shape.parts()) {
     area += integrate(part, [](const Vec2&) { return 1.0; });
@@ -112,5 +136,22 @@ double floor_torque(const geometry::Shape& shape, double floor_force) {
   }
   return floor_force * moment / area;
 }
+
+constexpr ShapeKindPhysics kRow{geoms, mass, floor_torque};
+
+}  // namespace polygon
+
+// geometry::Shape::Kind order.
+constexpr std::array<const ShapeKindPhysics*, 3> kKinds = {&box::kRow, &circle::kRow, &polygon::kRow};
+
+const ShapeKindPhysics& kind_of(const geometry::Shape& shape) { return *kKinds[static_cast<std::size_t>(shape.kind())]; }
+
+}  // namespace
+
+std::vector<PartGeom> make_geoms(const geometry::Shape& shape, ConvexStore& store) { return kind_of(shape).geoms(shape, store); }
+
+dMass body_mass(const geometry::Shape& shape, double mass) { return kind_of(shape).mass(shape, mass); }
+
+double floor_torque(const geometry::Shape& shape, double floor_force) { return kind_of(shape).floor_torque(shape, floor_force); }
 
 }  // namespace physltl::physics

@@ -3,6 +3,7 @@
 #include "physltl/ltl/parser.h"
 
 #include "read_expectations.h"
+#include "shape_kinds.h"
 #include "table_reader.h"
 
 #include "physltl/geometry/convex_partition.h"
@@ -23,13 +24,6 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 // stay well under a second: a script looping over constructors must not turn loading into a hang.
 constexpr int kMaxBodiesOfAKind = 2000;        // fixed, movable
 constexpr std::size_t kMaxRegionCorners = 10'000;  // all regions together
-
-std::optional<Side> parse_side(const std::string& text) {
-  static const std::map<std::string, Side> sides = {
-      {"-x", Side::kMinusX}, {"+x", Side::kPlusX}, {"-y", Side::kMinusY}, {"+y", Side::kPlusY}};
-  auto it = sides.find(text);
-  return it == sides.end() ? std::nullopt : std::optional<Side>(it->second);
-}
 
 bool is_singleton(const std::string& kind) { return kind != "fixed" && kind != "movable" && kind != "region"; }
 
@@ -174,29 +168,7 @@ MovableBody read_movable(TableReader& r, const std::string& default_name) {
   body.mass = r.number("mass", body.mass);
   body.friction = r.number("friction", body.friction);
   const geometry::Shape& shape = body.footprint.shape;
-  if (shape.kind() == geometry::Shape::Kind::kPolygon && r.has("push_from")) {
-    const int faces = face_count(shape);
-    for (int face : r.integers("push_from")) {
-      if (face >= 1 && face <= faces) {
-        body.push_from.push_back(face - 1);
-      } else {
-        r.error("'push_from' faces of a polygon are 1 to " + std::to_string(faces) + " (face k runs from corner k to " +
-                "the next), got " + std::to_string(face));
-      }
-    }
-  } else if (shape.kind() == geometry::Shape::Kind::kCircle && r.has("push_from")) {
-    r.strings("push_from");
-    r.error("'push_from' is for boxes and polygons: a cylinder is pushed from wherever the robot touches it, towards "
-            "its axis");
-  } else {
-    for (const auto& text : r.strings("push_from")) {
-      if (auto side = parse_side(text)) {
-        body.push_from.push_back(static_cast<int>(*side));
-      } else {
-        r.error("'push_from' sides are \"-x\", \"+x\", \"-y\" or \"+y\" (in the body's frame), got \"" + text + "\"");
-      }
-    }
-  }
+  if (r.has("push_from")) body.push_from = kind_of(shape).read_push_from(r, shape);
   body.mregion_depth = r.optional_number("mregion_depth");
   if (auto u = r.nested("uncertainty")) {
     body.uncertainty = {u->optional_number("mass"), u->optional_number("friction"), u->optional_number("pose"),
@@ -301,6 +273,46 @@ void place_meshes(World& world, std::vector<Diagnostic>& diagnostics) {
   }
 }
 
+// One element of the script into `world`, by its kind; `index` counts the elements of that kind so far.
+void read_element(TableReader& r, const Element& e, int index, const std::string& script_dir, World& world,
+                  std::size_t& region_corners) {
+  if (e.kind == "workspace") {
+    read_workspace(r, world.workspace);
+    world.workspace.where = e.where;
+  } else if (e.kind == "robot") {
+    read_robot(r, world.robot);
+    world.robot.where = e.where;
+  } else if (e.kind == "fixed") {
+    world.fixed_bodies.push_back(read_fixed(r, "fixed_" + std::to_string(index), script_dir));
+    world.fixed_bodies.back().where = e.where;
+  } else if (e.kind == "movable") {
+    world.movable_bodies.push_back(read_movable(r, "movable_" + std::to_string(index)));
+    world.movable_bodies.back().where = e.where;
+  } else if (e.kind == "region") {
+    world.regions.push_back(read_region(r));
+    world.regions.back().where = e.where;
+    region_corners += world.regions.back().polygon.vertices.size();
+    if (region_corners > kMaxRegionCorners) {
+      r.error("the regions have more than " + std::to_string(kMaxRegionCorners) + " corners together");
+    }
+  } else if (e.kind == "task") {
+    read_task(r, world.task);
+    world.task.where = e.where;
+  } else if (e.kind == "planner") {
+    read_planner(r, world.planner);
+    world.planner.where = e.where;
+  } else if (e.kind == "render") {
+    read_render(r, world.render);
+    world.render.where = e.where;
+  } else if (e.kind == "uncertainty") {
+    read_uncertainty(r, world.uncertainty);
+    world.uncertainty.where = e.where;
+  } else if (e.kind == "expect") {
+    world.expect = read_expectations(r);
+    world.expect->where = e.where;
+  }
+}
+
 }  // namespace
 
 World read_world(const std::vector<Element>& elements, const std::string& path, std::vector<Diagnostic>& diagnostics) {
@@ -335,41 +347,7 @@ World read_world(const std::vector<Element>& elements, const std::string& path, 
     if (e.kind == "region" && region_corners > kMaxRegionCorners) continue;  // reported once, at the first too many
     first_of.emplace(e.kind, &e);
     TableReader r(e.table, element_label(e, index), e.where, diagnostics);
-    if (e.kind == "workspace") {
-      read_workspace(r, world.workspace);
-      world.workspace.where = e.where;
-    } else if (e.kind == "robot") {
-      read_robot(r, world.robot);
-      world.robot.where = e.where;
-    } else if (e.kind == "fixed") {
-      world.fixed_bodies.push_back(read_fixed(r, "fixed_" + std::to_string(index), script_dir));
-      world.fixed_bodies.back().where = e.where;
-    } else if (e.kind == "movable") {
-      world.movable_bodies.push_back(read_movable(r, "movable_" + std::to_string(index)));
-      world.movable_bodies.back().where = e.where;
-    } else if (e.kind == "region") {
-      world.regions.push_back(read_region(r));
-      world.regions.back().where = e.where;
-      region_corners += world.regions.back().polygon.vertices.size();
-      if (region_corners > kMaxRegionCorners) {
-        r.error("the regions have more than " + std::to_string(kMaxRegionCorners) + " corners together");
-      }
-    } else if (e.kind == "task") {
-      read_task(r, world.task);
-      world.task.where = e.where;
-    } else if (e.kind == "planner") {
-      read_planner(r, world.planner);
-      world.planner.where = e.where;
-    } else if (e.kind == "render") {
-      read_render(r, world.render);
-      world.render.where = e.where;
-    } else if (e.kind == "uncertainty") {
-      read_uncertainty(r, world.uncertainty);
-      world.uncertainty.where = e.where;
-    } else if (e.kind == "expect") {
-      world.expect = read_expectations(r);
-      world.expect->where = e.where;
-    }
+    read_element(r, e, index, script_dir, world, region_corners);
     r.finish();
   }
   place_meshes(world, diagnostics);

@@ -1,5 +1,7 @@
 #include "physltl/scenario/load.h"
 
+#include "shape_kinds.h"
+
 #include "physltl/ltl/object_atom.h"
 #include "physltl/ltl/parser.h"
 
@@ -124,23 +126,12 @@ class Validator {
   void check_body_shape(const std::string& what, const geometry::Footprint& footprint, double height,
                         const Location& where) {
     const geometry::Shape& shape = footprint.shape;
-    switch (shape.kind()) {
-      case geometry::Shape::Kind::kBox:
-        check_range(where, what + ": 'size' x", 2 * shape.half_extents().x(), 0.0, kMaxLength);
-        check_range(where, what + ": 'size' y", 2 * shape.half_extents().y(), 0.0, kMaxLength);
-        break;
-      case geometry::Shape::Kind::kCircle:
-        check_range(where, what + ": 'radius'", shape.radius(), 0.0, kMaxLength);
-        break;
-      case geometry::Shape::Kind::kPolygon:
-        // Corners, convexity and area were checked as the polygon was read.
-        if (shape.bound_radius() > kMaxLength) error(where, what + " is too large");
-        break;
-    }
+    kind_of(shape).check_size(
+        shape, [&](const std::string& length, double value) { check_range(where, what + ": " + length, value, 0.0, kMaxLength); },
+        [&] { error(where, what + " is too large"); }, kMaxLength);
     check_range(where, what + ": 'height'", height, 0.0, kMaxLength);
     if (footprint.pose.position.cwiseAbs().maxCoeff() > kMaxLength) error(where, what + ": 'center' is too far away");
-    const bool has_outline = shape.kind() == geometry::Shape::Kind::kCircle || !shape.parts().empty();
-    if (workspace_ok() && has_outline && !geometry::inside(shape, footprint.pose, world_.workspace.bounds, 1e-6)) {
+    if (workspace_ok() && kind_of(shape).placeable(shape) && !geometry::inside(shape, footprint.pose, world_.workspace.bounds, 1e-6)) {
       error(where, what + " reaches outside the workspace");
     }
   }

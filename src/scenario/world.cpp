@@ -1,4 +1,5 @@
-// The World's own helpers (world.h): names of sides, faces, shapes and drives, and names to indices.
+// The World's own helpers (world.h): names of sides and drives, and names to indices (a shape's faces and
+// names are its kind's: shape_kinds.cpp).
 
 #include "physltl/scenario/world.h"
 
@@ -23,33 +24,6 @@ const char* side_name(Side side) {
     case Side::kPlusY: return "+y";
   }
   return "?";
-}
-
-int face_count(const geometry::Shape& shape) {
-  switch (shape.kind()) {
-    case geometry::Shape::Kind::kBox: return 4;
-    case geometry::Shape::Kind::kCircle: return kCylinderSectors;
-    case geometry::Shape::Kind::kPolygon: break;
-  }
-  return static_cast<int>(shape.outline().vertices.size());
-}
-
-std::string face_name(const geometry::Shape& shape, int face) {
-  switch (shape.kind()) {
-    case geometry::Shape::Kind::kBox: return side_name(static_cast<Side>(face));
-    case geometry::Shape::Kind::kCircle: return "sector " + std::to_string(face + 1);
-    case geometry::Shape::Kind::kPolygon: break;
-  }
-  return "face " + std::to_string(face + 1);
-}
-
-const char* shape_name(const geometry::Shape& shape) {
-  switch (shape.kind()) {
-    case geometry::Shape::Kind::kBox: return "box";
-    case geometry::Shape::Kind::kCircle: return "cylinder";
-    case geometry::Shape::Kind::kPolygon: break;
-  }
-  return "polygon";
 }
 
 const char* drive_name(Drive drive) {

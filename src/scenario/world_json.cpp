@@ -1,5 +1,7 @@
 #include "physltl/scenario/world_json.h"
 
+#include "shape_kinds.h"
+
 #include <cmath>
 #include <numbers>
 
@@ -8,28 +10,7 @@ namespace {
 
 nlohmann::ordered_json point(const Vec2& p) { return {p.x(), p.y()}; }
 
-// A box as it always was ({center, size, yaw_deg}); other shapes say which they are and their outline.
-nlohmann::ordered_json footprint(const geometry::Footprint& f) {
-  const double yaw_deg = f.pose.yaw * 180.0 / std::numbers::pi;
-  const geometry::Shape& shape = f.shape;
-  switch (shape.kind()) {
-    case geometry::Shape::Kind::kBox:
-      return {{"center", point(f.pose.position)}, {"size", point(2.0 * shape.half_extents())}, {"yaw_deg", yaw_deg}};
-    case geometry::Shape::Kind::kCircle:
-      return {{"shape", "cylinder"}, {"center", point(f.pose.position)}, {"radius", shape.radius()}};
-    case geometry::Shape::Kind::kPolygon: break;
-  }
-  nlohmann::ordered_json parts = nlohmann::ordered_json::array();
-  for (const geometry::Polygon& part : shape.parts()) {
-    nlohmann::ordered_json corners = nlohmann::ordered_json::array();
-    for (const Vec2& v : part.vertices) corners.push_back(point(v));
-    parts.push_back(std::move(corners));
-  }
-  nlohmann::ordered_json outline = nlohmann::ordered_json::array();
-  for (const Vec2& v : shape.outline().vertices) outline.push_back(point(v));
-  return {{"shape", "polygon"}, {"center", point(f.pose.position)}, {"yaw_deg", yaw_deg},
-          {"points", outline}, {"convex_parts", parts}};
-}
+nlohmann::ordered_json footprint(const geometry::Footprint& f) { return kind_of(f.shape).to_json(f); }
 
 nlohmann::ordered_json robot_json(const Robot& robot) {
   constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;

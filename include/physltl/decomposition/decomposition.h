@@ -7,6 +7,7 @@
 // wholly where the robot's centre would touch it, and lanes between rows of boxes are triangles of their
 // own (planning/route_choice).
 
+#include "physltl/geometry/uniform_grid.h"
 #include "physltl/scenario/world.h"
 
 #include <array>
@@ -49,10 +50,10 @@ class Decomposition {
  private:
   std::vector<Triangle> triangles_;
   // A uniform grid of buckets listing the triangles overlapping each cell, for locate().
-  scenario::Vec2 grid_origin_ = Vec2::Zero();
-  double cell_ = 1.0;
-  int columns_ = 0, rows_ = 0;
-  std::vector<std::vector<int>> buckets_;
+  // Buckets of triangles on a grid about one triangle edge wide, for locate().
+  void bucket_triangles(const geometry::Rect& bounds, double cell);
+  geometry::UniformGrid grid_;
+  std::vector<std::vector<int>> buckets_;  // per cell of grid_, the triangles whose bounds reach into it
 };
 
 }  // namespace physltl::decomposition

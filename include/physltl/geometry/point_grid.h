@@ -4,6 +4,7 @@
 // INFERENCE which boxes stand near a contact segment; moving a point moves it between buckets.
 
 #include "physltl/geometry/shapes.h"
+#include "physltl/geometry/uniform_grid.h"
 
 #include <span>
 #include <vector>
@@ -26,14 +27,9 @@ class PointGrid {
   void near(const Vec2& centre, double radius, std::vector<int>& out) const;
 
  private:
-  int column(double x) const;
-  int row(double y) const;
-  int cell_of(const Vec2& p) const { return row(p.y()) * columns_ + column(p.x()); }
+  int cell_of(const Vec2& p) const { return static_cast<int>(grid_.index_of(p)); }
 
-  Vec2 origin_ = Vec2::Zero();
-  double cell_ = 1.0;
-  int columns_ = 1;
-  int rows_ = 1;
+  UniformGrid grid_;
   std::vector<std::vector<int>> cells_;
   std::vector<int> cell_of_point_;
   std::vector<Vec2> points_;

@@ -4,6 +4,7 @@
 // every step, and a World with many rooms has a hundred walls or more.
 
 #include "physltl/geometry/shapes.h"
+#include "physltl/geometry/uniform_grid.h"
 
 #include <span>
 #include <vector>
@@ -20,10 +21,7 @@ class RectGrid {
   std::span<const int> near(const Vec2& p) const;
 
  private:
-  Vec2 origin_ = Vec2::Zero();
-  double cell_ = 1.0;
-  int columns_ = 0;
-  int rows_ = 0;
+  UniformGrid grid_;
   std::vector<int> first_;  // per cell, where its indices start in items_; one more entry at the end
   std::vector<int> items_;
   std::vector<int> all_;    // for points off the grid

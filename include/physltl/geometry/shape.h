@@ -79,6 +79,10 @@ inline constexpr int kCircleCorners = 24;
 // The placed shape's convex parts in the world frame (a circle as one polygon).
 std::vector<Polygon> convex_parts_at(const Shape& shape, const Pose2& pose, CircleAs circle);
 
+// Whether `p` lies in the placed shape as convex_parts_at(shape, pose, circle) outlines it: the shape
+// itself, a circle as its polygon.
+bool contains_as_parts(const Shape& shape, const Pose2& pose, const Vec2& p, CircleAs circle);
+
 // The shape grown outwards by `by` metres: a box's half extents and a circle's radius longer by it, a
 // polygon's sides moved out by it (the corners mitred, so the grown polygon holds the rounded one).
 Shape grown(const Shape& shape, double by);

@@ -58,6 +58,8 @@ int face_count(const geometry::Shape& shape);
 std::string face_name(const geometry::Shape& shape, int face);
 // "box", "cylinder", "polygon".
 const char* shape_name(const geometry::Shape& shape);
+// Its size in words: "0.5 x 0.5 m", "cylinder r = 0.3 m", "polygon of 5 corners, 0.42 m2".
+std::string shape_size_text(const geometry::Shape& shape);
 
 struct FixedBody {
   std::string name;

@@ -34,14 +34,13 @@ bool run_units(const std::vector<std::unique_ptr<BenchCase>>& cases, const std::
                                                  progress.total, unit.key, left).substr(0, 79));
     }
     const auto unit_started = clock::now();
-    BenchRun run = measure(*c.problem, *planner.planner,
-                           {.seed = unit.seed,
-                            .time_limit = c.world.planner.time_limit,
-                            .stop = &stop,
-                            .threads = planner.threads,
-                            .improve = settings.improve,
-                            .parameters = settings.parameters},
-                           settings.robustness);
+    planning::PlannerOptions options = planning::options_for(c.world);
+    options.seed = unit.seed;
+    options.stop = &stop;
+    options.threads = planner.threads;
+    options.improve = settings.improve;
+    options.parameters = settings.parameters;
+    BenchRun run = measure(*c.problem, *planner.planner, options, settings.robustness);
     if (stop) {
       if (progress.show) fmt::print(stderr, "\n");
       return false;

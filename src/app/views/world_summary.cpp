@@ -24,10 +24,7 @@ void print_world_summary(std::ostream& out, const scenario::World& world) {
   for (const auto& b : world.movable_bodies) {
     const auto& f = b.footprint;
     const geometry::Shape& shape = f.shape;
-    const std::string size = shape.is_box()   ? fmt::format("{:g} x {:g} m", 2 * shape.half_extents().x(), 2 * shape.half_extents().y())
-                             : shape.kind() == geometry::Shape::Kind::kCircle
-                                 ? fmt::format("cylinder r = {:g} m", shape.radius())
-                                 : fmt::format("polygon of {} corners, {:.3g} m2", shape.outline().vertices.size(), shape.area());
+    const std::string size = scenario::shape_size_text(shape);
     fmt::print(out, "movable    {:<8} {}, {:g} kg, friction {:g}, at ({:g}, {:g})\n", b.name, size, b.mass, b.friction,
                f.pose.position.x(), f.pose.position.y());
   }

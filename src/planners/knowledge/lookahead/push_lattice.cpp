@@ -28,6 +28,23 @@ std::optional<PushLattice> PushLattice::build(const scenario::World& world, cons
   }
   std::vector<geometry::Footprint> walls;
   for (const auto& f : knowledge.fixed_bodies) walls.push_back(f.footprint);
+  if (!lattice.take_bodies(knowledge, walls, why_not)) return std::nullopt;
+  const int anchor = labelling.named_bodies().front().body;
+  if (knowledge.movable_bodies[static_cast<std::size_t>(anchor)].body_class == knowledge::BodyClass::kFixed) {
+    why_not = knowledge.movable_bodies[static_cast<std::size_t>(anchor)].name + " is too heavy to push";
+    return std::nullopt;
+  }
+  lattice.push_force_ = knowledge.robot.push_force;
+  lattice.anchor_at(knowledge.movable_bodies[static_cast<std::size_t>(anchor)].footprint.pose.position, knowledge.workspace);
+  lattice.mark_robot_places(walls, knowledge.workspace, knowledge.robot.radius);
+  for (std::size_t k = 0; k < lattice.bodies_.size(); ++k) {
+    if (!lattice.add_body(k, world, knowledge, labelling, walls, why_not)) return std::nullopt;
+  }
+  return lattice;
+}
+
+bool PushLattice::take_bodies(const knowledge::AbstractKnowledge& knowledge, std::vector<geometry::Footprint>& walls,
+                              std::string& why_not) {
   double largest_side = 0.0;
   for (std::size_t b = 0; b < knowledge.movable_bodies.size(); ++b) {
     const auto& body = knowledge.movable_bodies[b];
@@ -37,92 +54,91 @@ std::optional<PushLattice> PushLattice::build(const scenario::World& world, cons
     }
     if (!body.footprint.shape.is_box() || !square(body.footprint.pose.yaw)) {
       why_not = body.name + " is not a box standing square";
-      return std::nullopt;
+      return false;
     }
     largest_side = std::max(largest_side, 2 * body.footprint.shape.half_extents().maxCoeff());
-    lattice.bodies_.push_back(static_cast<int>(b));
+    bodies_.push_back(static_cast<int>(b));
   }
-  const int anchor = labelling.named_bodies().front().body;
-  if (knowledge.movable_bodies[static_cast<std::size_t>(anchor)].body_class == knowledge::BodyClass::kFixed) {
-    why_not = knowledge.movable_bodies[static_cast<std::size_t>(anchor)].name + " is too heavy to push";
-    return std::nullopt;
-  }
-  lattice.step_ = largest_side + kLatticeGap;
-  lattice.push_force_ = knowledge.robot.push_force;
-  const double s = lattice.step_;
-  const geometry::Rect& ws = knowledge.workspace;
-  const geometry::Vec2 a = knowledge.movable_bodies[static_cast<std::size_t>(anchor)].footprint.pose.position;
-  lattice.origin_ = {a.x() - std::floor((a.x() - ws.min.x()) / s) * s, a.y() - std::floor((a.y() - ws.min.y()) / s) * s};
-  lattice.columns_ = static_cast<int>(std::floor((ws.max.x() - lattice.origin_.x()) / s)) + 1;
-  lattice.rows_ = static_cast<int>(std::floor((ws.max.y() - lattice.origin_.y()) / s)) + 1;
+  step_ = largest_side + kLatticeGap;
+  return true;
+}
 
-  const double r = knowledge.robot.radius;
+void PushLattice::anchor_at(const geometry::Vec2& a, const geometry::Rect& ws) {
+  const double s = step_;
+  origin_ = {a.x() - std::floor((a.x() - ws.min.x()) / s) * s, a.y() - std::floor((a.y() - ws.min.y()) / s) * s};
+  places_ = geometry::UniformGrid(origin_, s, static_cast<int>(std::floor((ws.max.x() - origin_.x()) / s)) + 1,
+                                  static_cast<int>(std::floor((ws.max.y() - origin_.y()) / s)) + 1);
+}
+
+void PushLattice::mark_robot_places(const std::vector<geometry::Footprint>& walls, const geometry::Rect& ws, double r) {
   const auto disc_free = [&](const geometry::Vec2& p) {
     if (p.x() - r < ws.min.x() || p.y() - r < ws.min.y() || p.x() + r > ws.max.x() || p.y() + r > ws.max.y()) return false;
     return std::none_of(walls.begin(), walls.end(),
                         [&](const geometry::Footprint& w) { return geometry::overlap(w.shape, w.pose, p, r, kTouch); });
   };
-  const int n = lattice.cells();
-  lattice.robot_free_.resize(static_cast<std::size_t>(n));
-  for (int c = 0; c < n; ++c) lattice.robot_free_[static_cast<std::size_t>(c)] = disc_free(lattice.centre(c));
-  lattice.robot_passes_.assign(static_cast<std::size_t>(n) * kDirections, false);
+  const int n = cells();
+  robot_free_.resize(static_cast<std::size_t>(n));
+  for (int c = 0; c < n; ++c) robot_free_[static_cast<std::size_t>(c)] = disc_free(centre(c));
+  robot_passes_.assign(static_cast<std::size_t>(n) * kDirections, false);
   for (int c = 0; c < n; ++c) {
     for (int d = 0; d < kDirections; ++d) {
-      const int next = lattice.neighbour(c, d);
-      lattice.robot_passes_[static_cast<std::size_t>(c) * kDirections + static_cast<std::size_t>(d)] =
-          next >= 0 && lattice.robot_fits(c) && lattice.robot_fits(next) &&
-          disc_free(0.5 * (lattice.centre(c) + lattice.centre(next)));
+      const int next = neighbour(c, d);
+      robot_passes_[static_cast<std::size_t>(c) * kDirections + static_cast<std::size_t>(d)] =
+          next >= 0 && robot_fits(c) && robot_fits(next) && disc_free(0.5 * (centre(c) + centre(next)));
     }
   }
+}
 
-  for (std::size_t k = 0; k < lattice.bodies_.size(); ++k) {
-    const int b = lattice.bodies_[k];
-    const auto& body = knowledge.movable_bodies[static_cast<std::size_t>(b)];
-    const int at = lattice.cell_at(body.footprint.pose.position);
-    if (at < 0 || (lattice.centre(at) - body.footprint.pose.position).norm() > kSnapShare * s) {
-      why_not = body.name + " stands between the lattice's places (step " + std::to_string(s).substr(0, 4) + " m)";
-      return std::nullopt;
+bool PushLattice::add_body(std::size_t k, const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
+                           const knowledge::Labelling& labelling, const std::vector<geometry::Footprint>& walls,
+                           std::string& why_not) {
+  const int b = bodies_[k];
+  const auto& body = knowledge.movable_bodies[static_cast<std::size_t>(b)];
+  const int at = cell_at(body.footprint.pose.position);
+  if (at < 0 || (centre(at) - body.footprint.pose.position).norm() > kSnapShare * step_) {
+    why_not = body.name + " stands between the lattice's places (step " + std::to_string(step_).substr(0, 4) + " m)";
+    return false;
+  }
+  const int n = cells();
+  std::vector<bool> fits(static_cast<std::size_t>(n));
+  for (int c = 0; c < n; ++c) {
+    const geometry::Pose2 pose{centre(c), body.footprint.pose.yaw};
+    fits[static_cast<std::size_t>(c)] =
+        geometry::inside(body.footprint.shape, pose, knowledge.workspace, kTouch) &&
+        std::none_of(walls.begin(), walls.end(), [&](const geometry::Footprint& w) {
+          return geometry::overlap(body.footprint.shape, pose, w.shape, w.pose, kTouch);
+        });
+  }
+  body_free_.push_back(std::move(fits));
+  std::vector<bool> pushable(kDirections, false);
+  for (const auto& m : body.mregions) {
+    const geometry::Vec2 push = knowledge::push_direction(m, body.footprint.pose);
+    for (int d = 0; d < kDirections; ++d) {
+      if (push.dot(geometry::Vec2(kDx[d], kDy[d])) >= kAlongAxis) pushable[static_cast<std::size_t>(d)] = true;
     }
-    std::vector<bool> fits(static_cast<std::size_t>(n));
+  }
+  pushable_.push_back(std::move(pushable));
+  friction_force_.push_back(body.floor_friction_force);
+  const geometry::Rect extent = geometry::bounds(body.footprint.shape, body.footprint.pose);
+  half_along_.push_back({extent.size().x() / 2, extent.size().y() / 2});
+  int named = -1;
+  for (std::size_t i = 0; i < labelling.named_bodies().size(); ++i) {
+    if (labelling.named_bodies()[i].body == b) named = static_cast<int>(i);
+  }
+  named_.push_back(named);
+  std::vector<int> place(static_cast<std::size_t>(n), 0);
+  if (named >= 0) {
+    const auto& regions = labelling.named_bodies()[static_cast<std::size_t>(named)].regions;
     for (int c = 0; c < n; ++c) {
-      const geometry::Pose2 pose{lattice.centre(c), body.footprint.pose.yaw};
-      fits[static_cast<std::size_t>(c)] =
-          geometry::inside(body.footprint.shape, pose, ws, kTouch) &&
-          std::none_of(walls.begin(), walls.end(), [&](const geometry::Footprint& w) {
-            return geometry::overlap(body.footprint.shape, pose, w.shape, w.pose, kTouch);
-          });
-    }
-    lattice.body_free_.push_back(std::move(fits));
-    std::vector<bool> pushable(kDirections, false);
-    for (const auto& m : body.mregions) {
-      const geometry::Vec2 push = knowledge::push_direction(m, body.footprint.pose);
-      for (int d = 0; d < kDirections; ++d) {
-        if (push.dot(geometry::Vec2(kDx[d], kDy[d])) >= kAlongAxis) pushable[static_cast<std::size_t>(d)] = true;
-      }
-    }
-    lattice.pushable_.push_back(std::move(pushable));
-    lattice.friction_force_.push_back(body.floor_friction_force);
-    const geometry::Rect extent = geometry::bounds(body.footprint.shape, body.footprint.pose);
-    lattice.half_along_.push_back({extent.size().x() / 2, extent.size().y() / 2});
-    int named = -1;
-    for (std::size_t i = 0; i < labelling.named_bodies().size(); ++i) {
-      if (labelling.named_bodies()[i].body == b) named = static_cast<int>(i);
-    }
-    lattice.named_.push_back(named);
-    std::vector<int> place(static_cast<std::size_t>(n), 0);
-    if (named >= 0) {
-      const auto& regions = labelling.named_bodies()[static_cast<std::size_t>(named)].regions;
-      for (int c = 0; c < n; ++c) {
-        for (std::size_t i = 0; i < regions.size(); ++i) {
-          if (world.regions[static_cast<std::size_t>(regions[i])].polygon.contains(lattice.centre(c))) {
-            place[static_cast<std::size_t>(c)] = static_cast<int>(i) + 1;
-          }
+      for (std::size_t i = 0; i < regions.size(); ++i) {
+        if (world.regions[static_cast<std::size_t>(regions[i])].polygon.contains(centre(c))) {
+          place[static_cast<std::size_t>(c)] = static_cast<int>(i) + 1;
         }
       }
     }
-    lattice.place_.push_back(std::move(place));
   }
-  return lattice;
+  place_.push_back(std::move(place));
+  return true;
 }
 
 std::optional<std::vector<double>> PushLattice::line_shortfalls(const std::vector<int>& line, int d) const {
@@ -140,21 +156,19 @@ std::optional<std::vector<double>> PushLattice::line_shortfalls(const std::vecto
 }
 
 geometry::Vec2 PushLattice::centre(int cell) const {
-  return origin_ + step_ * geometry::Vec2(cell % columns_, cell / columns_);
+  const auto at = static_cast<std::size_t>(cell);
+  return origin_ + step_ * geometry::Vec2(places_.column_of(at), places_.row_of(at));
 }
 
 int PushLattice::cell_at(const geometry::Vec2& p) const {
+  // The nearest place: the lattice's places are its grid's cell corners, not their centres.
   const int column = static_cast<int>(std::lround((p.x() - origin_.x()) / step_));
   const int row = static_cast<int>(std::lround((p.y() - origin_.y()) / step_));
-  if (column < 0 || row < 0 || column >= columns_ || row >= rows_) return -1;
-  return row * columns_ + column;
+  return places_.contains(column, row) ? static_cast<int>(places_.index(column, row)) : -1;
 }
 
 int PushLattice::neighbour(int cell, int d) const {
-  const int column = cell % columns_ + kDx[d];
-  const int row = cell / columns_ + kDy[d];
-  if (column < 0 || row < 0 || column >= columns_ || row >= rows_) return -1;
-  return row * columns_ + column;
+  return static_cast<int>(places_.neighbour(static_cast<std::size_t>(cell), kDx[d], kDy[d]));
 }
 
 std::optional<std::vector<int>> PushLattice::arrangement(const scenario::EnvironmentState& state) const {

@@ -5,6 +5,7 @@
 // bodies on neighbouring places do not touch and a push of one step leaves the robot in the place the
 // body left.
 
+#include "physltl/geometry/uniform_grid.h"
 #include "physltl/knowledge/abstract_knowledge.h"
 #include "physltl/knowledge/labelling.h"
 #include "physltl/scenario/state.h"
@@ -36,7 +37,7 @@ class PushLattice {
                                           const knowledge::Labelling& labelling, std::string& why_not);
 
   double step() const { return step_; }
-  int cells() const { return columns_ * rows_; }
+  int cells() const { return static_cast<int>(places_.size()); }
   geometry::Vec2 centre(int cell) const;
   // The place nearest `p`, or -1 outside the lattice.
   int cell_at(const geometry::Vec2& p) const;
@@ -68,10 +69,20 @@ class PushLattice {
 
  private:
   PushLattice() = default;
+  // The pushable bodies (fixed ones join `walls`) and the step; false, with why_not, when one is not a
+  // box standing square.
+  bool take_bodies(const knowledge::AbstractKnowledge& knowledge, std::vector<geometry::Footprint>& walls, std::string& why_not);
+  // The places: one at `anchor`, the others a step apart from it across the workspace.
+  void anchor_at(const geometry::Vec2& anchor, const geometry::Rect& workspace);
+  void mark_robot_places(const std::vector<geometry::Footprint>& walls, const geometry::Rect& workspace, double robot_radius);
+  // Where lattice body k fits, how it may be pushed, its places for the task; false, with why_not, when
+  // it stands between places.
+  bool add_body(std::size_t k, const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
+                const knowledge::Labelling& labelling, const std::vector<geometry::Footprint>& walls, std::string& why_not);
 
   double step_ = 0.0;
   geometry::Vec2 origin_ = geometry::Vec2::Zero();  // the centre of place 0
-  int columns_ = 0, rows_ = 0;
+  geometry::UniformGrid places_;  // row by row: a place's column and row
   std::vector<int> bodies_;
   std::vector<int> named_;
   std::vector<std::vector<bool>> body_free_;   // per lattice body, per place
