@@ -1,9 +1,9 @@
 #include "physltl/ltl/analysis.h"
 
 #include "physltl/ltl/co_safety.h"
-#include "physltl/ltl/exclusivity.h"
+#include "exclusivity.h"
 #include "physltl/ltl/lasso.h"
-#include "physltl/ltl/normal_form.h"
+#include "normal_form.h"
 #include "physltl/ltl/parser.h"
 #include "physltl/ltl/translate.h"
 

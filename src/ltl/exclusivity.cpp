@@ -1,4 +1,4 @@
-#include "physltl/ltl/exclusivity.h"
+#include "exclusivity.h"
 
 #include "physltl/ltl/object_atom.h"
 

@@ -1,4 +1,4 @@
-#include "physltl/ltl/normal_form.h"
+#include "normal_form.h"
 
 #include <algorithm>
 

@@ -1,6 +1,6 @@
 #include "physltl/ltl/simplify.h"
 
-#include "physltl/ltl/normal_form.h"
+#include "normal_form.h"
 
 #include <algorithm>
 #include <array>

@@ -1,7 +1,7 @@
 #include "physltl/ltl/translate.h"
 
 #include "decision_diagram.h"
-#include "physltl/ltl/normal_form.h"
+#include "normal_form.h"
 #include "physltl/ltl/task_class.h"
 
 #include <algorithm>

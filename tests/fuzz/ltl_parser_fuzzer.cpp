@@ -2,7 +2,7 @@
 // a sanitizer report or a hang; and every formula it accepts must print and parse back to itself.
 // Short co-safe inputs also go through normal form, class check, both simplifications and translation.
 
-#include "physltl/ltl/normal_form.h"
+#include "normal_form.h"
 #include "physltl/ltl/parser.h"
 #include "physltl/ltl/simplify.h"
 #include "physltl/ltl/translate.h"

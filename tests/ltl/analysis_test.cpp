@@ -1,6 +1,6 @@
 #include "physltl/ltl/analysis.h"
 #include "physltl/ltl/co_safety.h"
-#include "physltl/ltl/normal_form.h"
+#include "normal_form.h"
 #include "physltl/ltl/parser.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 #include "physltl/ltl/co_safety.h"
-#include "physltl/ltl/normal_form.h"
+#include "normal_form.h"
 #include "physltl/ltl/parser.h"
 
 #include <gtest/gtest.h>

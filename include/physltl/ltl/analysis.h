@@ -25,7 +25,7 @@ struct Analysis {
   std::optional<Simplification> semantic;  // the planner's, when `invalid` or `always_true` is not empty
   std::optional<Dfa> dfa;                  // of the task the planner gets; empty when infeasible
   // Set when no run can satisfy the task because the robot, and each body, is in at most one region at a
-  // time (the propositions are disjoint regions; exclusivity.h), found on the automaton without any
+  // time (the propositions are disjoint regions; src/ltl/exclusivity.h), found on the automaton without any
   // search, or (set by whoever knows the World, accepts_after) because its first letter already loses
   // it: why, for people.
   std::optional<std::string> unsatisfiable;

@@ -3,7 +3,7 @@
 // REGION". The LTL layer knows only how such an atom is spelled; what it means is the World's business.
 //
 // Atoms without '@' are about the robot. The robot is in at most one region at a time and so is each body
-// (regions are disjoint), which decides which letters can occur (exclusivity.h).
+// (regions are disjoint), which decides which letters can occur (src/ltl/exclusivity.h).
 
 #include <optional>
 #include <string>

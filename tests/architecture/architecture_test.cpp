@@ -1,0 +1,369 @@
+// The layout docs/architecture.md draws, held against the code: every include points down the layers (the
+// planning core names no planner, no planner includes another), and no function in src/ or render/ runs
+// over kMaxFunctionLines. Both read the sources as text; nothing is compiled.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kSource = PHYSLTL_SOURCE_DIR;
+
+// Each module with the modules it may include, directly or through another (docs/architecture.md).
+const std::map<std::string, std::set<std::string>>& allowed() {
+  static const std::map<std::string, std::set<std::string>> table = [] {
+    std::map<std::string, std::set<std::string>> direct = {
+        {"geometry", {}},
+        {"ltl", {}},
+        {"scenario", {"geometry", "ltl"}},
+        {"knowledge", {"scenario"}},
+        {"physics", {"scenario"}},
+        {"decomposition", {"scenario"}},
+        {"render", {"scenario"}},
+        {"planning", {"knowledge", "physics", "decomposition"}},
+        {"knowledge_planner", {"planning"}},
+        {"ompl_planner", {"planning"}},
+        {"planners", {"knowledge_planner", "ompl_planner"}},
+        {"execution", {"planning"}},
+        {"app", {"planners", "execution", "render"}},
+    };
+    // The closure: a module may include whatever the modules below it may.
+    std::map<std::string, std::set<std::string>> closure;
+    for (const auto& [module, below] : direct) {
+      std::vector<std::string> open(below.begin(), below.end());
+      std::set<std::string>& reach = closure[module];
+      while (!open.empty()) {
+        const std::string next = open.back();
+        open.pop_back();
+        if (!reach.insert(next).second) continue;
+        for (const std::string& further : direct.at(next)) open.push_back(further);
+      }
+    }
+    return closure;
+  }();
+  return table;
+}
+
+// The module a path of the repository (or a public header's include path) belongs to; empty for none.
+std::string module_of(const std::string& path) {
+  static const std::vector<std::pair<std::string, std::string>> prefixes = {
+      {"src/planners/knowledge/", "knowledge_planner"}, {"physltl/planners/knowledge/", "knowledge_planner"},
+      {"src/planners/ompl/", "ompl_planner"},           {"physltl/planners/ompl/", "ompl_planner"},
+      {"src/planners/", "planners"},                    {"physltl/planners/", "planners"},
+      {"render/", "render"},
+  };
+  for (const auto& [prefix, module] : prefixes) {
+    if (path.rfind(prefix, 0) == 0) return module;
+  }
+  for (const std::string root : {"src/", "include/physltl/", "physltl/"}) {
+    if (path.rfind(root, 0) != 0) continue;
+    const std::string rest = path.substr(root.size());
+    return rest.substr(0, rest.find('/'));
+  }
+  return "";
+}
+
+std::vector<fs::path> sources_under(const std::vector<std::string>& roots) {
+  std::vector<fs::path> files;
+  for (const std::string& root : roots) {
+    for (const auto& entry : fs::recursive_directory_iterator(kSource / root)) {
+      const std::string extension = entry.path().extension().string();
+      if (entry.is_regular_file() && (extension == ".cpp" || extension == ".h")) files.push_back(entry.path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::string read(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(Layers, EveryIncludeOfAModulePointsToItselfOrALowerModule) {
+  const std::regex include(R"re(^\s*#include\s+"(physltl/[^"]+)")re");
+  std::vector<std::string> wrong;
+  for (const fs::path& file : sources_under({"src", "include", "render"})) {
+    const std::string path = fs::relative(file, kSource).generic_string();
+    const std::string module = module_of(path);
+    ASSERT_TRUE(allowed().contains(module)) << path << " belongs to no module of the table";
+    std::istringstream lines(read(file));
+    int number = 0;
+    for (std::string line; std::getline(lines, line);) {
+      ++number;
+      std::smatch m;
+      if (!std::regex_search(line, m, include)) continue;
+      const std::string to = module_of(m[1]);
+      if (to != module && !allowed().at(module).contains(to)) {
+        wrong.push_back(path + ":" + std::to_string(number) + ": " + module + " includes " + m[1].str() + " (" + to + ")");
+      }
+    }
+  }
+  EXPECT_TRUE(wrong.empty()) << [&] {
+    std::string text;
+    for (const std::string& w : wrong) text += w + "\n";
+    return text;
+  }();
+}
+
+TEST(Layers, ThePlanningCoreNamesNoPlannerAndNoPlannerAnother) {
+  EXPECT_FALSE(allowed().at("planning").contains("knowledge_planner"));
+  EXPECT_FALSE(allowed().at("planning").contains("ompl_planner"));
+  EXPECT_FALSE(allowed().at("knowledge_planner").contains("ompl_planner"));
+  EXPECT_FALSE(allowed().at("ompl_planner").contains("knowledge_planner"));
+  EXPECT_FALSE(allowed().at("execution").contains("planners"));
+  // Private headers are reached by quoted names relative to their own folder, never by climbing out of it.
+  const std::regex climbing(R"re(^\s*#include\s+"\.\./)re");
+  for (const fs::path& file : sources_under({"src", "render"})) {
+    std::istringstream lines(read(file));
+    for (std::string line; std::getline(lines, line);) {
+      EXPECT_FALSE(std::regex_search(line, climbing)) << file << ": " << line;
+    }
+  }
+}
+
+// The physltl/... headers a file includes.
+std::vector<std::string> public_includes(const fs::path& file) {
+  static const std::regex include(R"re(^\s*#include\s+"(physltl/[^"]+)")re");
+  std::vector<std::string> found;
+  std::istringstream lines(read(file));
+  for (std::string line; std::getline(lines, line);) {
+    std::smatch m;
+    if (std::regex_search(line, m, include)) found.push_back(m[1]);
+  }
+  return found;
+}
+
+// A public header is one another module uses: included from another module's code, or from a public
+// header that is itself needed. The rest belong in their module's own folder.
+TEST(Layers, EveryPublicHeaderIsOneAnotherModuleUses) {
+  std::map<std::string, std::vector<std::string>> headers;  // physltl/... -> its own physltl/... includes
+  for (const fs::path& file : sources_under({"include"})) {
+    headers[fs::relative(file, kSource / "include").generic_string()] = public_includes(file);
+  }
+  std::set<std::string> needed;
+  for (const fs::path& file : sources_under({"src", "render"})) {
+    const std::string module = module_of(fs::relative(file, kSource).generic_string());
+    for (const std::string& header : public_includes(file)) {
+      if (module_of(header) != module) needed.insert(header);
+    }
+  }
+  for (const auto& [header, includes] : headers) {
+    for (const std::string& other : includes) {
+      if (module_of(other) != module_of(header)) needed.insert(other);
+    }
+  }
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (const std::string& header : std::vector<std::string>(needed.begin(), needed.end())) {
+      for (const std::string& other : headers[header]) grew = needed.insert(other).second || grew;
+    }
+  }
+  std::string unused;
+  for (const auto& [header, includes] : headers) {
+    if (!needed.contains(header)) unused += header + "\n";
+  }
+  EXPECT_TRUE(unused.empty()) << "public headers no other module uses:\n" << unused;
+}
+
+// src/app's folders, each with the folders it may include (docs/architecture.md): no two include each
+// other.
+const std::map<std::string, std::set<std::string>> kAppFolders = {
+    {"common", {}},
+    {"run", {"common"}},
+    {"import", {"common"}},
+    {"bench", {"run", "common"}},
+    {"views", {"bench", "run", "common"}},
+    {"pipeline", {"views", "run", "common"}},
+    {"scenario_test", {"pipeline", "views", "bench", "run", "common"}},
+    {"cli", {"run", "common"}},
+    {"commands", {"cli", "scenario_test", "pipeline", "views", "bench", "import", "run", "common"}},
+    {"", {"cli"}},  // main.cpp
+};
+
+TEST(Layers, EveryAppFolderIncludesOnlyTheFoldersBelowIt) {
+  const std::regex include(R"re(^\s*#include\s+"([^"]+)")re");
+  std::string wrong;
+  for (const fs::path& file : sources_under({"src/app"})) {
+    const fs::path relative = fs::relative(file, kSource / "src/app");
+    const std::string folder = relative.has_parent_path() ? relative.begin()->string() : "";
+    ASSERT_TRUE(kAppFolders.contains(folder)) << file << ": a folder of src/app the table does not know";
+    std::istringstream lines(read(file));
+    for (std::string line; std::getline(lines, line);) {
+      std::smatch m;
+      if (!std::regex_search(line, m, include) || m[1].str().rfind("physltl/", 0) == 0) continue;
+      const std::string target = m[1].str();
+      const auto slash = target.find('/');
+      // A bare name is a file of the same folder.
+      const std::string to = slash == std::string::npos ? folder : target.substr(0, slash);
+      if (to != folder && !kAppFolders.at(folder).contains(to)) wrong += relative.generic_string() + " includes " + target + "\n";
+    }
+  }
+  EXPECT_TRUE(wrong.empty()) << wrong;
+}
+
+// The text with comments, string and character literals blanked (newlines kept), so that braces count.
+std::string code_only(const std::string& text) {
+  std::string code = text;
+  enum class In { kCode, kLineComment, kBlockComment, kString, kChar, kRawString } in = In::kCode;
+  std::string raw_end;
+  for (std::size_t i = 0; i < code.size(); ++i) {
+    const char c = text[i];
+    const char next = i + 1 < text.size() ? text[i + 1] : '\0';
+    const auto blank = [&](std::size_t at) {
+      if (code[at] != '\n') code[at] = ' ';
+    };
+    switch (in) {
+      case In::kCode:
+        if (c == '/' && next == '/') in = In::kLineComment, blank(i);
+        else if (c == '/' && next == '*') in = In::kBlockComment, blank(i);
+        else if (c == 'R' && next == '"' && (i == 0 || !std::isalnum(static_cast<unsigned char>(text[i - 1])))) {
+          const std::size_t open = text.find('(', i);
+          raw_end = ")" + text.substr(i + 2, open - i - 2) + "\"";
+          in = In::kRawString;
+        } else if (c == '"') in = In::kString;
+        else if (c == '\'' && !(i > 0 && std::isalnum(static_cast<unsigned char>(text[i - 1])))) in = In::kChar;
+        break;
+      case In::kLineComment:
+        if (c == '\n') in = In::kCode;
+        else blank(i);
+        break;
+      case In::kBlockComment:
+        blank(i);
+        if (c == '*' && next == '/') blank(i + 1), ++i, in = In::kCode;
+        break;
+      case In::kString:
+      case In::kChar:
+        if (c == '\\') {
+          blank(i), blank(i + 1), ++i;
+        } else if (c == (in == In::kString ? '"' : '\'')) {
+          in = In::kCode;
+        } else {
+          blank(i);
+        }
+        break;
+      case In::kRawString:
+        if (text.compare(i, raw_end.size(), raw_end) == 0) {
+          for (std::size_t k = 0; k + 1 < raw_end.size(); ++k) blank(i + k);
+          i += raw_end.size() - 1;
+          in = In::kCode;
+        } else {
+          blank(i);
+        }
+        break;
+    }
+  }
+  return code;
+}
+
+// Whether `head` assigns outside its parentheses (`const int k[] = {`): an initializer, not a function.
+bool assigns_outside_parentheses(const std::string& head) {
+  int depth = 0;
+  for (std::size_t i = 0; i < head.size(); ++i) {
+    const char c = head[i];
+    if (c == '(' || c == '[') ++depth;
+    else if (c == ')' || c == ']') --depth;
+    else if (c == '=' && depth == 0) {
+      const char before = i > 0 ? head[i - 1] : ' ', after = i + 1 < head.size() ? head[i + 1] : ' ';
+      const bool comparison = before == '=' || before == '!' || before == '<' || before == '>' || after == '=';
+      if (!comparison && head.rfind("operator", i) == std::string::npos) return true;
+    }
+  }
+  return false;
+}
+
+struct FunctionLength {
+  std::string where;  // file:line of its first line
+  std::string head;   // its signature, shortened
+  int lines = 0;      // from the signature's first line to the closing brace
+};
+
+// The functions of a source file (namespace or class scope; lambdas and blocks count with the function
+// around them), by brace matching over the code without comments and literals.
+std::vector<FunctionLength> functions_of(const fs::path& file) {
+  const std::string code = code_only(read(file));
+  enum class Scope { kNamespace, kType, kFunction, kOther };
+  std::vector<Scope> scopes;
+  std::vector<std::size_t> starts;  // where each open scope's head began
+  std::vector<FunctionLength> found;
+  std::size_t head_start = 0;
+  const auto line_at = [&](std::size_t at) { return static_cast<int>(std::count(code.begin(), code.begin() + static_cast<long>(at), '\n')) + 1; };
+  const std::regex type_head(R"(^\s*(template\s*<.*>\s*)?(namespace|class|struct|union|enum)\b|^\s*extern\s*$)");
+  for (std::size_t i = 0; i < code.size(); ++i) {
+    const char c = code[i];
+    if (c == ';') {
+      if (scopes.empty() || scopes.back() != Scope::kFunction) head_start = i + 1;
+    } else if (c == '{') {
+      const bool in_function = std::find(scopes.begin(), scopes.end(), Scope::kFunction) != scopes.end();
+      std::string head = code.substr(head_start, i - head_start);
+      while (!head.empty() && std::isspace(static_cast<unsigned char>(head.front()))) head.erase(0, 1), ++head_start;
+      Scope scope = Scope::kOther;
+      if (in_function) scope = Scope::kOther;  // a block or a lambda: part of the function around it
+      else if (std::regex_search(head, type_head)) scope = head.rfind("namespace", 0) == 0 || head.rfind("extern", 0) == 0 ? Scope::kNamespace : Scope::kType;
+      else if (head.find(')') != std::string::npos && !assigns_outside_parentheses(head)) scope = Scope::kFunction;
+      scopes.push_back(scope);
+      starts.push_back(head_start);
+      head_start = i + 1;
+    } else if (c == '}') {
+      if (scopes.empty()) continue;
+      if (scopes.back() == Scope::kFunction) {
+        const int first = line_at(starts.back());
+        std::string head = code.substr(starts.back(), std::min<std::size_t>(120, code.find('{', starts.back()) - starts.back()));
+        std::replace(head.begin(), head.end(), '\n', ' ');
+        found.push_back({fs::relative(file, kSource).generic_string() + ":" + std::to_string(first), head, line_at(i) - first + 1});
+      }
+      scopes.pop_back();
+      starts.pop_back();
+      if (scopes.empty() || scopes.back() != Scope::kFunction) head_start = i + 1;
+    }
+  }
+  return found;
+}
+
+// A function longer than a screen is a sign to split it (docs/architecture.md, "How the code is kept").
+constexpr int kMaxFunctionLines = 80;
+
+TEST(FunctionSize, TheScannerFindsFunctionsAndTheirLength) {
+  const fs::path file = fs::path(PHYSLTL_TEST_OUTPUT_DIR) / "scanned.cpp";
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << "namespace a {\n"
+                         "struct S { int f() const { return 1; } };\n"
+                         "// not() { a function }\n"
+                         "int g(int x) {\n"
+                         "  auto h = [&](int y) { return \"}\" + y; };\n"
+                         "  if (x) { return h(x); }\n"
+                         "  return 0;\n"
+                         "}\n"
+                         "const int kTable[] = {1, 2};\n"
+                         "}  // namespace a\n";
+  const std::vector<FunctionLength> found = functions_of(file);
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_EQ(found[0].lines, 1);
+  EXPECT_EQ(found[1].lines, 5);
+  EXPECT_NE(found[1].head.find("int g(int x)"), std::string::npos) << found[1].head;
+}
+
+TEST(FunctionSize, NoFunctionInTheProgramRunsOverEightyLines) {
+  std::string longest;
+  for (const fs::path& file : sources_under({"src", "render"})) {
+    for (const FunctionLength& f : functions_of(file)) {
+      if (f.lines > kMaxFunctionLines) longest += f.where + ": " + std::to_string(f.lines) + " lines: " + f.head + "\n";
+    }
+  }
+  EXPECT_TRUE(longest.empty()) << longest;
+}
+
+}  // namespace
