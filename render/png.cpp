@@ -61,10 +61,12 @@ void write_png(const Image& image, const std::filesystem::path& path) {
 }
 
 Image read_png(const std::filesystem::path& path) {
+  // A pipe or a device named for a picture would be waited on for ever.
+  if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("cannot read " + path.string() + ": not a regular file");
   int width = 0, height = 0, channels = 0;
   std::unique_ptr<unsigned char, decltype(&stbi_image_free)> pixels(
       stbi_load(path.c_str(), &width, &height, &channels, 3), &stbi_image_free);
-  if (!pixels) throw std::runtime_error("cannot read " + path.string() + ": " + stbi_failure_reason());
+  if (!pixels) throw std::runtime_error("cannot read " + path.string() + ": not a PNG picture this program reads (" + stbi_failure_reason() + ")");
   Image image(width, height);
   std::copy(pixels.get(), pixels.get() + image.rgb.size(), image.rgb.begin());
   return image;

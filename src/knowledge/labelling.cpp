@@ -41,9 +41,10 @@ Labelling::Labelling(const scenario::World& world, const ltl::Dfa& dfa)
     n.stride = fact_sets_;
     fact_sets_ *= static_cast<int>(n.regions.size()) + 1;
     if (fact_sets_ > kMaxFactSets) {
-      throw std::invalid_argument("the task names " + std::to_string(named_.size()) + " bodies in " +
-                                  "more places together than the planner can tell apart (over " +
-                                  std::to_string(kMaxFactSets) + "): name fewer bodies or regions");
+      // A task the scenario may write but the planner cannot take: the author's to change (exit 2).
+      throw scenario::ScenarioError({{world.task.where, "the task names " + std::to_string(named_.size()) + " bodies in " +
+                                                            "more places together than the planner can tell apart (over " +
+                                                            std::to_string(kMaxFactSets) + "): name fewer bodies or regions"}});
     }
   }
 }

@@ -21,9 +21,10 @@ TaskAutomaton TaskAutomaton::make(const ltl::Formula& formula, const ltl::Dfa& d
   TaskAutomaton task{formula, dfa, knowledge::Labelling(world, dfa), {}};
   const auto letters = static_cast<std::size_t>(task.labelling.letters());
   if (dfa.size() * letters > kMaxTableEntries) {
-    throw std::invalid_argument("the task's automaton has " + std::to_string(dfa.size()) + " states over " +
-                                std::to_string(letters) + " letters (the robot's regions times where the bodies it " +
-                                "names can be): more than the planner tabulates; name fewer bodies or regions");
+    throw scenario::ScenarioError({{world.task.where, "the task's automaton has " + std::to_string(dfa.size()) + " states over " +
+                                                          std::to_string(letters) + " letters (the robot's regions times where the " +
+                                                          "bodies it names can be): more than the planner tabulates; name fewer " +
+                                                          "bodies or regions"}});
   }
   task.successors.resize(dfa.size() * letters);
   for (std::size_t state = 0; state < dfa.size(); ++state) {

@@ -275,6 +275,34 @@ int setmetatable_without_finalizer(lua_State* L) {
   return 1;
 }
 
+// xpcall(f, handler, ...) with the handler run after f's error unwound, in a protected call of its own,
+// and not at all once the instruction budget is spent: Lua runs a message handler again for every error
+// raised inside it, so an endless handler outlived the budget, the hook raising in it for ever.
+int xpcall_within_budget(lua_State* L) {
+  luaL_checktype(L, 2, LUA_TFUNCTION);
+  lua_pushvalue(L, 2);
+  lua_insert(L, 1);  // the handler, below f
+  lua_remove(L, 3);
+  const int base = 1;
+  if (lua_pcall(L, lua_gettop(L) - 2, LUA_MULTRET, 0) == LUA_OK) {
+    lua_pushboolean(L, 1);
+    lua_replace(L, base);  // true in the handler's place
+    return lua_gettop(L);
+  }
+  const Sandbox& box = sandbox_of(L);
+  const auto spent = [&box] { return box.instructions > box.options.instruction_budget; };
+  if (spent()) return lua_error(L);  // the budget's error goes on up, where it says where the loop was
+  lua_pushvalue(L, base);
+  lua_insert(L, -2);
+  if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
+    if (spent()) return lua_error(L);
+    lua_pushliteral(L, "error in the message handler");
+  }
+  lua_pushboolean(L, 0);
+  lua_insert(L, -2);
+  return 2;
+}
+
 void open_safe_libraries(lua_State* L) {
   static const luaL_Reg libs[] = {{LUA_GNAME, luaopen_base},         {LUA_TABLIBNAME, luaopen_table},
                                   {LUA_STRLIBNAME, luaopen_string},  {LUA_MATHLIBNAME, luaopen_math},
@@ -291,6 +319,8 @@ void open_safe_libraries(lua_State* L) {
   lua_getglobal(L, "setmetatable");
   lua_pushcclosure(L, setmetatable_without_finalizer, 1);
   lua_setglobal(L, "setmetatable");
+  lua_pushcfunction(L, xpcall_within_budget);
+  lua_setglobal(L, "xpcall");
   // Lua seeds math.random from the clock; a scenario must describe the same world every time.
   lua_getglobal(L, "math");
   lua_getfield(L, -1, "randomseed");

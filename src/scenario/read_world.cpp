@@ -22,7 +22,6 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 
 // Far beyond any world the planner can take, and small enough that validation's pairwise overlap checks
 // stay well under a second: a script looping over constructors must not turn loading into a hang.
-constexpr int kMaxBodiesOfAKind = 2000;        // fixed, movable
 constexpr std::size_t kMaxRegionCorners = 10'000;  // all regions together
 
 bool is_singleton(const std::string& kind) { return kind != "fixed" && kind != "movable" && kind != "region"; }

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <cmath>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -119,9 +120,10 @@ constexpr ShapeKindScenario kRow{
     [](const geometry::Shape& s) { return fmt::format("polygon of {} corners, {:.3g} m2", s.outline().vertices.size(), s.area()); },
     to_json,
     // Corners, convexity and area were checked as the polygon was read.
-    [](const geometry::Shape& s, const std::function<void(const std::string&, double)>&, const std::function<void()>& too_large,
+    [](const geometry::Shape& s, const std::function<void(const std::string&, double)>& range, const std::function<void()>& too_large,
        double longest) {
       if (s.bound_radius() > longest) too_large();
+      if (!s.parts().empty()) range("the square root of its area", std::sqrt(s.area()));
     },
     [](const geometry::Shape& s) { return !s.parts().empty(); },
     read_push_from,

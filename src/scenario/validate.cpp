@@ -21,6 +21,10 @@ namespace {
 // Beyond these a scenario is a typo, not a world: SI units for a mobile robot in rooms.
 constexpr double kMaxLength = 1e4;  // m
 constexpr double kMaxMass = 1e6;    // kg
+// Below these the physics engine fails (ODE asserts on a denormal mass, and on the contact matrix of a
+// millimetre's body pressed between others): ten grams and a centimetre are no body a mobile robot pushes.
+constexpr double kMinMass = 0.01;    // kg
+constexpr double kMinLength = 0.01;  // m
 constexpr double kMaxForce = 1e6;   // N
 constexpr double kMaxFriction = 100.0;
 constexpr double kMaxSpeed = 20.0;  // m/s: a mobile robot among boxes, and a bound on tunnelling per step
@@ -64,12 +68,13 @@ class Validator {
   // One range check for every scalar: finite, inside [lo, hi], with `lo` itself allowed or not.
   void check_range(const Location& where, const std::string& what, double value, double lo, double hi,
                    bool lo_allowed = false) {
-    if (!std::isfinite(value)) {
-      error(where, what + " must be finite");
-    } else if (value < lo || (value == lo && !lo_allowed)) {
-      error(where, what + " must be " + (lo_allowed ? "at least " : "greater than ") + fmt(lo) + ", got " + fmt(value));
-    } else if (value > hi) {
-      error(where, what + " is too large (" + fmt(value) + " > " + fmt(hi) + ")");
+    if (const auto problem = number_problem(value, lo, hi, lo_allowed)) error(where, what + " " + *problem);
+  }
+
+  // A positive, finite value that must not be smaller than `smallest` (checked after its range).
+  void check_not_tiny(const Location& where, const std::string& what, double value, double smallest, const char* unit) {
+    if (std::isfinite(value) && value > 0.0 && value < smallest) {
+      error(where, what + " is too small for the physics (" + fmt(value) + " < " + fmt(smallest) + " " + unit + ")");
     }
   }
 
@@ -101,7 +106,9 @@ class Validator {
     const auto& r = world_.robot;
     if (r.where.file.empty()) return;
     check_range(r.where, "robot: 'radius'", r.radius, 0.0, kMaxLength);
+    check_not_tiny(r.where, "robot: 'radius'", r.radius, kMinLength, "m");
     check_range(r.where, "robot: 'mass'", r.mass, 0.0, kMaxMass);
+    check_not_tiny(r.where, "robot: 'mass'", r.mass, kMinMass, "kg");
     check_range(r.where, "robot: 'max_force'", r.max_force, 0.0, kMaxForce);
     check_range(r.where, "robot: 'max_speed'", r.max_speed, 0.0, kMaxSpeed);
     check_range(r.where, "robot: 'max_turn_rate_deg'", r.max_turn_rate / kDegree, 0.0, kMaxTurnRateDeg);
@@ -127,9 +134,14 @@ class Validator {
                         const Location& where) {
     const geometry::Shape& shape = footprint.shape;
     kind_of(shape).check_size(
-        shape, [&](const std::string& length, double value) { check_range(where, what + ": " + length, value, 0.0, kMaxLength); },
+        shape,
+        [&](const std::string& length, double value) {
+          check_range(where, what + ": " + length, value, 0.0, kMaxLength);
+          check_not_tiny(where, what + ": " + length, value, kMinLength, "m");
+        },
         [&] { error(where, what + " is too large"); }, kMaxLength);
     check_range(where, what + ": 'height'", height, 0.0, kMaxLength);
+    check_not_tiny(where, what + ": 'height'", height, kMinLength, "m");
     if (footprint.pose.position.cwiseAbs().maxCoeff() > kMaxLength) error(where, what + ": 'center' is too far away");
     if (workspace_ok() && kind_of(shape).placeable(shape) && !geometry::inside(shape, footprint.pose, world_.workspace.bounds, 1e-6)) {
       error(where, what + " reaches outside the workspace");
@@ -140,6 +152,7 @@ class Validator {
     const std::string what = "movable '" + b.name + "'";
     check_body_shape(what, b.footprint, b.height, b.where);
     check_range(b.where, what + ": 'mass'", b.mass, 0.0, kMaxMass);
+    check_not_tiny(b.where, what + ": 'mass'", b.mass, kMinMass, "kg");
     check_range(b.where, what + ": 'friction'", b.friction, 0.0, kMaxFriction, true);
     if (b.mregion_depth) check_range(b.where, what + ": 'mregion_depth'", *b.mregion_depth, 0.0, kMaxLength);
     // The same ranges as uncertainty { ... }.

@@ -4,6 +4,8 @@
 #include "physltl/scenario/world.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 namespace physltl::scenario {
 namespace {
@@ -32,6 +34,18 @@ const char* drive_name(Drive drive) {
     case Drive::kDifferential: return "differential";
   }
   return "?";
+}
+
+std::optional<std::string> number_problem(double value, double lo, double hi, bool lo_allowed) {
+  const auto text = [](double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return std::string(buf);
+  };
+  if (!std::isfinite(value)) return "must be finite";
+  if (value < lo || (value == lo && !lo_allowed)) return std::string("must be ") + (lo_allowed ? "at least " : "greater than ") + text(lo) + ", got " + text(value);
+  if (value > hi) return "is too large (" + text(value) + " > " + text(hi) + ")";
+  return std::nullopt;
 }
 
 int movable_body_index(const World& world, std::string_view name) { return index_by_name(world.movable_bodies, name); }

@@ -74,7 +74,7 @@ TEST(Registry, ATaskAPlannerCannotTakeIsRefusedWithItsReasonInRunBenchAndExecute
   const std::string delivery = kSource + "/scenarios/delivery.lua";
   const std::string reason =
       "test-robot-only cannot take tasks about where bodies are (BODY@REGION): this test's planner reads the robot's "
-      "region only: use knowledge, baseline, ompl-rrt, ompl-kpiece, ompl-sst, ompl-pdst, test-planner or test-annotated";
+      "region only: use knowledge, baseline, ompl-rrt, ompl-kpiece, ompl-sst, ompl-pdst, test-planner, test-annotated or test-throws";
   for (const std::string& command : {delivery + " --planner test-robot-only",
                                      "bench " + delivery + " --planners test-robot-only --runs 1",
                                      "execute " + delivery + " --planner test-robot-only --worlds 1"}) {
@@ -87,7 +87,7 @@ TEST(Registry, ATaskAPlannerCannotTakeIsRefusedWithItsReasonInRunBenchAndExecute
                                           " --planner test-robot-only --worlds 1 --out " + out.string());
   EXPECT_EQ(e.exit_code, 2);
   EXPECT_NE(e.err.find("test-robot-only cannot take a budget of propagations: this test's planner stops at a time "
-                       "limit only: use knowledge, baseline, test-planner or test-annotated"),
+                       "limit only: use knowledge, baseline, test-planner, test-annotated or test-throws"),
             std::string::npos)
       << e.err;
   EXPECT_FALSE(fs::exists(out / "delivery"));

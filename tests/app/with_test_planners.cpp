@@ -6,6 +6,7 @@
 #include "physltl/planners/registry.h"
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace {
@@ -75,5 +76,13 @@ int main(int argc, char** argv) {
   robot_only.can.propagation_budget = {false, "this test's planner stops at a time limit only"};
   registry.add(std::move(robot_only));
   registry.add(annotated(baseline));
+  // One whose search fails as a fault of ours would: the program must say it is an internal error.
+  PlannerEntry throws = baseline;
+  throws.name = "test-throws";
+  throws.summary = "a planner that throws (a test's)";
+  throws.plan = [](const Problem&, const PlannerData*, const PlannerOptions&) -> PlanResult {
+    throw std::logic_error("the test's planner failed on purpose");
+  };
+  registry.add(std::move(throws));
   return physltl::app::run_command_line(argc, argv);
 }

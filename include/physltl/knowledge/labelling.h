@@ -41,7 +41,8 @@ class Labelling {
     int stride;                 // the body's digit in a fact set
   };
 
-  // Throws std::invalid_argument when the named bodies' places together exceed kMaxFactSets.
+  // Throws scenario::ScenarioError (at the task's line) when the named bodies' places together exceed
+  // kMaxFactSets, std::invalid_argument for a proposition naming no body and region of `world`.
   Labelling(const scenario::World& world, const ltl::Dfa& dfa);
   static constexpr int kMaxFactSets = 1 << 16;
 

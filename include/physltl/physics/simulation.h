@@ -14,11 +14,19 @@
 #include <cstddef>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace physltl::physics {
 
 using scenario::Vec2;
+
+// What happens when the physics engine meets a world it cannot simulate (an error or a failed assertion of
+// ODE's, which cannot be unwound): `handler` is called with the engine's message and must end the process
+// (the program says so and exits with its own code); without one, the message is printed and the process
+// aborts. Validation refuses the worlds known to cause it (bodies too light or too small).
+using EngineFailureHandler = void (*)(const std::string& message);
+void set_engine_failure_handler(EngineFailureHandler handler);
 
 // Everything ODE integrates, for every dynamic body (robot first, then movables in World order).
 // Restoring it is exact: a restored run continues bit for bit as the original one.

@@ -19,7 +19,8 @@ struct TaskAutomaton {
   // and for every edge of its lead search. Indexed [state * letters + letter].
   std::vector<int> successors;
 
-  // Throws std::invalid_argument when the task names more body facts than a table can hold.
+  // Throws scenario::ScenarioError (at the task's line) when the task names more body facts than a table
+  // can hold.
   static TaskAutomaton make(const ltl::Formula& formula, const ltl::Dfa& dfa, const scenario::World& world);
   static TaskAutomaton make(const ltl::Formula& formula, const scenario::World& world);  // translates it
   // Whether a plan must end with the robot and the boxes at rest: tasks read as "stop and stay".

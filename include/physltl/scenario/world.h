@@ -163,6 +163,15 @@ struct World {
   std::optional<Expectations> expect;  // the top-level file's expect { ... }, for `physltl-studio test`
 };
 
+// The most bodies of a kind (fixed, movable) a scenario may hold: far beyond any world the planner can take,
+// and few enough that validation's pairwise checks stay under a second.
+inline constexpr int kMaxBodiesOfAKind = 2000;
+
+// What is wrong with `value` as a number from lo to hi (lo itself allowed or not), in words ("must be
+// finite", "must be greater than 0, got -1", "is too large (1e+309 > 10000)"); nothing when it is fine.
+// Scenarios, the command line and the files the program reads back all check numbers with it.
+std::optional<std::string> number_problem(double value, double lo, double hi, bool lo_allowed = false);
+
 // Where a body or region is among the World's, by name: World::movable_bodies or World::regions index,
 // or -1 when it has none of that name. Every name the task or a picture uses is turned into an index here.
 int movable_body_index(const World& world, std::string_view name);

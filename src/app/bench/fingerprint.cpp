@@ -1,13 +1,17 @@
 #include "fingerprint.h"
 
 #include "common/bad_input.h"
+#include "common/files.h"
 
 #include <fmt/format.h>
 
-#include <fstream>
-#include <iterator>
-
 namespace physltl::app {
+namespace {
+
+// A scenario and what it reads (modules, meshes): far below this.
+constexpr std::size_t kMaxInputBytes = std::size_t{256} << 20;
+
+}  // namespace
 
 std::uint64_t fnv1a64(std::string_view bytes) {
   std::uint64_t hash = 0xcbf29ce484222325ull;
@@ -19,10 +23,7 @@ std::uint64_t fnv1a64(std::string_view bytes) {
 }
 
 std::string file_fingerprint(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw BadInput("cannot read " + path);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return fmt::format("fnv1a64:{:016x}", fnv1a64(bytes));
+  return fmt::format("fnv1a64:{:016x}", fnv1a64(read_input_file(path, kMaxInputBytes)));
 }
 
 }  // namespace physltl::app

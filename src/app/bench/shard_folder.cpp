@@ -1,7 +1,7 @@
 #include "shard_folder.h"
 
 #include "common/bad_input.h"
-#include "common/json_file.h"
+#include "common/files.h"
 #include "manifest.h"
 
 #include <fmt/format.h>
@@ -12,6 +12,9 @@
 namespace physltl::app {
 namespace fs = std::filesystem;
 namespace {
+
+// A manifest lists a campaign's cases and units, a unit record one run: far below this.
+constexpr std::size_t kMaxRecordBytes = std::size_t{64} << 20;
 
 // The parts of a manifest that say what the results are, not what this shard measured along the way;
 // null for a manifest without them (made by hand or by another version), which then differs from any.
@@ -32,13 +35,8 @@ fs::path shard_folder_path(const fs::path& out_dir, const std::string& campaign,
 
 nlohmann::json read_manifest(const fs::path& folder) {
   const fs::path file = folder / "manifest.json";
-  std::ifstream in(file);
-  if (!in) throw BadInput(file.string() + ": missing (not a shard folder)");
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw BadInput(file.string() + ": not a manifest (" + e.what() + ")");
-  }
+  if (!fs::exists(file)) throw BadInput(file.string() + ": missing (not a shard folder)");
+  return read_json_file(file, kMaxRecordBytes, "a manifest");
 }
 
 std::map<size_t, UnitRecord> read_unit_records(const fs::path& folder) {
@@ -46,13 +44,7 @@ std::map<size_t, UnitRecord> read_unit_records(const fs::path& folder) {
   if (!fs::is_directory(folder / "units")) return records;
   for (const auto& entry : fs::directory_iterator(folder / "units")) {
     if (entry.path().extension() != ".json") continue;
-    std::ifstream in(entry.path());
-    nlohmann::json json;
-    try {
-      json = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-      throw BadInput(entry.path().string() + ": not a unit result (" + e.what() + ")");
-    }
+    const nlohmann::json json = read_json_file(entry.path(), kMaxRecordBytes, "a unit result");
     UnitRecord record = unit_record_from_json(json, entry.path().string());
     if (entry.path().stem() != std::to_string(record.index)) {
       throw BadInput(fmt::format("{}: holds unit {}", entry.path().string(), record.index));

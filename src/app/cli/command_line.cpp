@@ -1,12 +1,16 @@
 #include "command_line.h"
 
-#include "common/build_version.h"
 #include "command.h"
+#include "common/build_version.h"
+#include "common/output_folder.h"
 #include "physltl/execution/perturbation.h"
+#include "physltl/physics/simulation.h"
 #include "physltl/scenario/diagnostic.h"
 
 #include <fmt/format.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -28,7 +32,16 @@ Command make_command(const std::string& name, const std::string& description,
   return {std::move(app), std::move(run)};
 }
 
+// The physics engine's failure cannot be unwound: say it as an internal error, remove the outputs under
+// way, and end at once.
+[[noreturn]] void end_on_engine_failure(const std::string& message) {
+  std::fprintf(stderr, "physltl-studio: internal error: %s (please report it with the command line)\n", message.c_str());
+  remove_unfinished_outputs();
+  std::_Exit(kExitInternalError);
+}
+
 int parse_and_run(Command& command, int argc, char** argv) {
+  physltl::physics::set_engine_failure_handler(end_on_engine_failure);
   try {
     command.app->parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -52,6 +65,13 @@ int parse_and_run(Command& command, int argc, char** argv) {
   } catch (const std::filesystem::filesystem_error& e) {
     // An --out folder that cannot be made or written (a file in the way, no permission, a full disk).
     std::cerr << "physltl-studio: cannot write the outputs: " << e.what() << "\n";
+  } catch (const std::exception& e) {
+    // Anything else is a fault of ours, never the user's input: said as such, with an exit code of its own.
+    std::cerr << "physltl-studio: internal error: " << e.what() << " (please report it with the command line)\n";
+    return kExitInternalError;
+  } catch (...) {
+    std::cerr << "physltl-studio: internal error: an unknown exception (please report it with the command line)\n";
+    return kExitInternalError;
   }
   return kExitBadInput;
 }
@@ -101,7 +121,8 @@ int run_command_line(int argc, char** argv) {
       add_run_command);
   std::string footer = "\nCommands (each has --help):\n";
   for (const auto& [name, command] : subcommands) footer += fmt::format("  {:<9}{}\n", name, command.app->get_description());
-  footer += "\nExit codes: 0 ok, 1 no plan found (or task infeasible), 2 bad input or usage.";
+  footer += "\nExit codes: 0 ok, 1 no plan found (or task infeasible), 2 bad input or usage, 3 internal error (a fault of\n"
+            "ours: please report it), 130 interrupted.";
   main_job.app->footer(footer);
   main_job.app->set_version_flag("--version", build_version());
   return parse_and_run(main_job, argc, argv);

@@ -8,6 +8,7 @@
 #include "bench/shard_folder.h"
 #include "bench/unit_runner.h"
 #include "cli/command.h"
+#include "cli/number_args.h"
 #include "cli/planner_args.h"
 #include "run/planner_names.h"
 #include "cli/stop_signal.h"
@@ -206,9 +207,9 @@ CommandRunner add_bench_command(CLI::App& app) {
   app.add_option("--set", args->settings, "Pass key=value to every script's `params` table (repeatable)")
       ->allow_extra_args(false);
   app.add_option("--runs", args->runs, "Number of seeds per planner")->check(CLI::PositiveNumber)->capture_default_str();
-  app.add_option("--seed", args->seed, "First seed; runs use S, S+1, ... (default: each scenario's)");
+  app.add_option("--seed", args->seed, "First seed; runs use S, S+1, ... (default: each scenario's)")->check(seed_number());
   app.add_option("--time-limit", args->time_limit, "Planning time limit per run in seconds (default: the scenario's)")
-      ->check(CLI::PositiveNumber);
+      ->check(number_in(0.0, 1e6));
   app.add_option("--planners", args->planners,
                  "Planners to measure, interleaved seed by seed (default: knowledge): " + planner_names());
   args->parameters.add_to(app);

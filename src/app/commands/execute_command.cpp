@@ -2,9 +2,10 @@
 // replanning from the observed state when it leaves the plan's tolerance (docs/robustness.md).
 
 #include "cli/command.h"
+#include "cli/number_args.h"
 #include "cli/planner_args.h"
 #include "cli/scenario_args.h"
-#include "common/json_file.h"
+#include "common/files.h"
 #include "common/output_folder.h"
 #include "physltl/execution/executor.h"
 #include "physltl/execution/perturbation.h"
@@ -134,7 +135,7 @@ CommandRunner add_execute_command(CLI::App& app) {
   app.add_option("--replans", args->replans, "Replannings allowed per world")->check(CLI::Range(0, 1000))->capture_default_str();
   app.add_option("--tolerance", args->tolerance,
                  "Metres the robot or a body the plan moves may be from its planned position before replanning")
-      ->check(CLI::Range(0.001, 10.0))
+      ->check(number_in(0.001, 10.0, true))
       ->capture_default_str();
   app.add_option("--budget", args->budget, "Propagations each replanning may spend")
       ->check(CLI::Range(1000LL, 100'000'000LL))
@@ -145,7 +146,7 @@ CommandRunner add_execute_command(CLI::App& app) {
                      planners.names(&planning::Capabilities::propagation_budget) + " (default: " +
                      planners.default_planner().name + ")");
   args->parameters.add_to(app, &planning::Capabilities::propagation_budget);
-  app.add_option("--seed", args->seed, "Seed of the plan and of the perturbed worlds (default: the scenario's)");
+  app.add_option("--seed", args->seed, "Seed of the plan and of the perturbed worlds (default: the scenario's)")->check(seed_number());
   app.add_option("--out", args->out_dir, "Folder for outputs; writes <out>/<scenario>/execution.json")->capture_default_str();
   app.add_flag("--quiet", args->quiet, "Print only errors");
   app.add_flag("--render", args->render,

@@ -1,5 +1,6 @@
 #include "cli/command.h"
-#include "common/json_file.h"
+#include "cli/number_args.h"
+#include "common/files.h"
 #include "import/sokoban_level.h"
 #include "import/sokoban_scenario.h"
 
@@ -34,13 +35,20 @@ int run_import(const ImportArgs& args) {
   const std::filesystem::path out(args.out_dir);
   std::filesystem::create_directories(out);
   const std::string stem = std::filesystem::path(args.file).stem().string();
+  // A level `check` would refuse is not written; the others are, and the import then exits 2.
+  int refused = 0;
   for (const import::SokobanLevel& level : levels) {
+    if (const auto why = import::beyond_limits(level)) {
+      std::cerr << args.file << ":" << level.line << ": level " << level.number << " not imported: " << *why << "\n";
+      ++refused;
+      continue;
+    }
     const std::filesystem::path file = out / (stem + "_" + std::to_string(level.number) + ".lua");
     write_text_file(file, import::sokoban_scenario(level, std::filesystem::path(args.file).filename().string(), args.sizes));
     const std::size_t boxes = level.boxes.size();
     std::cout << "wrote      " << file.string() << " (" << boxes << (boxes == 1 ? " box" : " boxes") << ")\n";
   }
-  return kExitOk;
+  return refused > 0 ? kExitBadInput : kExitOk;
 }
 
 }  // namespace
@@ -50,10 +58,11 @@ CommandRunner add_import_command(CLI::App& app) {
   app.add_option("format", args->format, "The file's format: sokoban (the standard Sokoban text format)")->required();
   app.add_option("file", args->file, "The file of levels")->required()->check(CLI::ExistingFile);
   app.add_option("--level", args->level, "Import only level N (numbered from 1 in file order)")->check(CLI::PositiveNumber);
-  app.add_option("--cell", args->sizes.cell, "Cell size in metres")->check(CLI::PositiveNumber)->capture_default_str();
-  app.add_option("--box", args->sizes.box, "A box's side in metres")->check(CLI::PositiveNumber)->capture_default_str();
+  // The smallest a scenario may hold (a centimetre) to a building's length.
+  app.add_option("--cell", args->sizes.cell, "Cell size in metres")->check(number_in(0.01, 100.0, true))->capture_default_str();
+  app.add_option("--box", args->sizes.box, "A box's side in metres")->check(number_in(0.01, 100.0, true))->capture_default_str();
   app.add_option("--robot-radius", args->sizes.robot_radius, "The robot's radius in metres")
-      ->check(CLI::PositiveNumber)
+      ->check(number_in(0.01, 100.0, true))
       ->capture_default_str();
   app.add_option("--out", args->out_dir, "Folder for the scenarios, one <file stem>_<N>.lua per level")->capture_default_str();
   return [args] { return run_import(*args); };

@@ -2,10 +2,11 @@
 // improve it, write report.json and plan.json, and with --render tree.png, the frames and plan.mp4.
 
 #include "cli/command.h"
+#include "cli/number_args.h"
 #include "cli/planner_args.h"
 #include "cli/scenario_args.h"
 #include "cli/stop_signal.h"
-#include "common/json_file.h"
+#include "common/files.h"
 #include "common/output_folder.h"
 #include "physltl/ltl/formula.h"
 #include "run/main_job.h"
@@ -191,9 +192,9 @@ CommandRunner add_run_command(CLI::App& app) {
   auto args = std::make_shared<RunArgs>();
   args->scenario.add_to(app);
   app.add_flag("--render", args->render, "Also write frames/, tree.png and plan.mp4");
-  app.add_option("--seed", args->seed, "Seed of the planner's random generator (default: the scenario's)");
+  app.add_option("--seed", args->seed, "Seed of the planner's random generator (default: the scenario's)")->check(seed_number());
   app.add_option("--time-limit", args->time_limit, "Planning time limit in seconds (default: the scenario's)")
-      ->check(CLI::PositiveNumber);
+      ->check(number_in(0.0, 1e6));
   app.add_option("--out", args->out_dir, "Folder for outputs; each scenario writes <out>/<name>/")->capture_default_str();
   app.add_option("--planner", args->planner, "Planner: " + planner_names() + " (default: " + registry().default_planner().name + ")");
   args->parameters.add_to(app);

@@ -13,6 +13,7 @@ enum ExitCode : int {
   kExitOk = 0,
   kExitNoPlan = 1,    // planning failed, or the task is infeasible
   kExitBadInput = 2,  // bad scenario, bad formula, bad usage
+  kExitInternalError = 3,  // a fault of ours (an exception no input should cause): please report
   kExitInterrupted = 130,  // Ctrl-C or SIGTERM: 128 + SIGINT, as shells report it
 };
 

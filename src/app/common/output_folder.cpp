@@ -1,7 +1,12 @@
 #include "output_folder.h"
 
+#include <signal.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstdlib>
+#include <mutex>
+#include <set>
 #include <string>
 #include <system_error>
 
@@ -32,16 +37,57 @@ void replace(const fs::path& from, const fs::path& to) {
 // inside the final one.
 fs::path without_trailing_slash(const fs::path& path) { return path.has_filename() ? path : path.parent_path(); }
 
+// The temporary folders of this process not yet committed or removed, for remove_unfinished_outputs().
+std::mutex& open_folders_mutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+std::set<fs::path>& open_folders() {
+  static std::set<fs::path> folders;
+  return folders;
+}
+
+// `<final>.tmp-PID` and `.old-PID` siblings whose process has ended: a run killed before it could clean up.
+void remove_leftovers_of_ended_runs(const fs::path& final_path) {
+  const fs::path parent = final_path.has_parent_path() ? final_path.parent_path() : fs::path(".");
+  std::error_code error;
+  for (const fs::directory_entry& entry : fs::directory_iterator(parent, error)) {
+    const std::string name = entry.path().filename().string();
+    for (const std::string tag : {".tmp-", ".old-"}) {
+      const std::string prefix = final_path.filename().string() + tag;
+      if (name.rfind(prefix, 0) != 0 || name.size() == prefix.size()) continue;
+      const std::string digits = name.substr(prefix.size());
+      if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
+      const pid_t pid = static_cast<pid_t>(std::stol(digits));
+      if (pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH) fs::remove_all(entry.path(), error);
+    }
+  }
+}
+
 }  // namespace
+
+void remove_unfinished_outputs() {
+  const std::lock_guard lock(open_folders_mutex());
+  std::error_code ignored;
+  for (const fs::path& folder : open_folders()) fs::remove_all(folder, ignored);
+  open_folders().clear();
+}
 
 OutputFolder::OutputFolder(const fs::path& final_path)
     : final_(without_trailing_slash(final_path)), temp_(sibling(final_, ".tmp-")) {
   if (final_.has_parent_path()) fs::create_directories(final_.parent_path());
+  remove_leftovers_of_ended_runs(final_);
   fs::remove_all(temp_);
   fs::create_directory(temp_);
+  const std::lock_guard lock(open_folders_mutex());
+  open_folders().insert(temp_);
 }
 
 OutputFolder::~OutputFolder() {
+  {
+    const std::lock_guard lock(open_folders_mutex());
+    open_folders().erase(temp_);
+  }
   if (committed_) return;
   std::error_code ignored;  // nothing useful to do about a failure while unwinding
   fs::remove_all(temp_, ignored);

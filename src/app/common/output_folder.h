@@ -7,10 +7,15 @@
 
 namespace physltl::app {
 
+// Removes the temporary folders of every OutputFolder of this process not yet committed: for a process that
+// must end at once, without unwinding (the physics engine's failure).
+void remove_unfinished_outputs();
+
 class OutputFolder {
  public:
-  // Creates the empty folder `<final_path>.tmp-<pid>` (and the parents of `final_path`). A leftover of that
-  // name, from a crashed run that had the same pid, is removed first. Throws std::filesystem::filesystem_error.
+  // Creates the empty folder `<final_path>.tmp-<pid>` (and the parents of `final_path`). Leftovers of runs
+  // that were killed (`.tmp-` and `.old-` siblings whose process has ended, or of this pid) are removed
+  // first. Throws std::filesystem::filesystem_error.
   explicit OutputFolder(const std::filesystem::path& final_path);
   // Removes the temporary folder unless committed.
   ~OutputFolder();

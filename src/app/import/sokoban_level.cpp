@@ -1,9 +1,13 @@
 #include "sokoban_level.h"
 
 #include "common/bad_input.h"
+#include "common/files.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
-#include <fstream>
+#include <cctype>
+#include <sstream>
 
 namespace physltl::app::import {
 namespace {
@@ -13,6 +17,25 @@ constexpr const char* kLevelCharacters = "#@+$*. -_";
 bool is_level_row(const std::string& line) {
   const auto first = line.find_first_not_of(' ');
   return first != std::string::npos && line[first] == '#';
+}
+
+// A row written run-length encoded ("5#", "#3 #"): digits among the cells, a wall in it.
+bool is_run_length_row(const std::string& line) {
+  const auto first = line.find_first_not_of(' ');
+  return first != std::string::npos && std::isdigit(static_cast<unsigned char>(line[first])) != 0 &&
+         line.find('#') != std::string::npos && line.find_first_not_of("0123456789#@+$*. -_|") == std::string::npos;
+}
+
+// The largest collections in use are a few megabytes; a file beyond this is not a collection of levels.
+constexpr std::size_t kMaxFileBytes = std::size_t{16} << 20;
+// Rows and columns of a level: beyond any published one, and far beyond what a scenario can hold.
+constexpr std::size_t kMaxLevelSide = 500;
+
+// A character as a message shows it: printable as itself, anything else by its code.
+std::string shown(char c) {
+  const auto byte = static_cast<unsigned char>(c);
+  if (byte >= 0x20 && byte < 0x7f) return std::string("'") + c + "'";
+  return fmt::format("the byte 0x{:02x}", byte);
 }
 
 [[noreturn]] void refuse(const std::filesystem::path& file, int line, const std::string& message) {
@@ -75,8 +98,9 @@ int SokobanLevel::width() const {
 }
 
 std::vector<SokobanLevel> read_sokoban_levels(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw BadInput("cannot read " + file.string());
+  std::string text = read_input_file(file, kMaxFileBytes);
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // a UTF-8 byte-order mark
+  std::istringstream in(text);
   std::vector<SokobanLevel> levels;
   SokobanLevel current;
   std::string line;
@@ -88,14 +112,22 @@ std::vector<SokobanLevel> read_sokoban_levels(const std::filesystem::path& file)
   while (std::getline(in, line)) {
     ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    // A comment inside a level (some collections put one between its rows) does not end it.
+    if (!current.rows.empty() && line.rfind(";", 0) == 0) continue;
+    if (is_run_length_row(line)) refuse(file, number, "a run-length encoded row (digits before the cells): write the level out cell by cell");
     if (!is_level_row(line)) {
       close();
       continue;
     }
     const auto bad = line.find_first_not_of(kLevelCharacters);
     if (bad != std::string::npos) {
-      refuse(file, number, std::string("'") + line[bad] + "' at column " + std::to_string(bad + 1) +
-                               " is no Sokoban cell (# @ + $ * . space - _)");
+      const bool run_length = std::isdigit(static_cast<unsigned char>(line[bad])) != 0;
+      refuse(file, number, run_length ? "a run-length encoded row (digits before the cells): write the level out cell by cell"
+                                      : shown(line[bad]) + " at column " + std::to_string(bad + 1) +
+                                            " is no Sokoban cell (# @ + $ * . space - _)");
+    }
+    if (line.size() > kMaxLevelSide || current.rows.size() >= kMaxLevelSide) {
+      refuse(file, number, "a level wider or taller than " + std::to_string(kMaxLevelSide) + " cells");
     }
     if (current.rows.empty()) {
       current.number = static_cast<int>(levels.size()) + 1;

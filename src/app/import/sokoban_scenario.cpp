@@ -1,7 +1,11 @@
 #include "sokoban_scenario.h"
 
+#include "physltl/knowledge/labelling.h"
+#include "physltl/scenario/world.h"
+
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <numeric>
 
@@ -76,6 +80,24 @@ std::string task_formula(const SokobanLevel& level) {
 }
 
 }  // namespace
+
+std::optional<std::string> beyond_limits(const SokobanLevel& level) {
+  const std::size_t walls = wall_rectangles(level).size(), boxes = level.boxes.size();
+  if (walls > scenario::kMaxBodiesOfAKind) {
+    return fmt::format("its walls make {} rectangles, more than the {} fixed bodies a scenario may hold", walls,
+                       scenario::kMaxBodiesOfAKind);
+  }
+  if (boxes > scenario::kMaxBodiesOfAKind) {
+    return fmt::format("{} boxes, more than the {} movable bodies a scenario may hold", boxes, scenario::kMaxBodiesOfAKind);
+  }
+  // The task names each box with every goal up to kMaxAnyBoxAnyGoal boxes, with one goal beyond.
+  const double places = boxes <= static_cast<std::size_t>(kMaxAnyBoxAnyGoal) ? static_cast<double>(boxes) + 1 : 2.0;
+  if (std::pow(places, static_cast<double>(boxes)) > knowledge::Labelling::kMaxFactSets) {
+    return fmt::format("its {} boxes on their goals are more places together than the planner tells apart (over {})", boxes,
+                       knowledge::Labelling::kMaxFactSets);
+  }
+  return std::nullopt;
+}
 
 std::string sokoban_scenario(const SokobanLevel& level, const std::string& source, const GridSizes& sizes) {
   const int rows = static_cast<int>(level.rows.size());

@@ -4,6 +4,7 @@
 
 #include "sokoban_level.h"
 
+#include <optional>
 #include <string>
 
 namespace physltl::app::import {
@@ -21,5 +22,11 @@ struct GridSizes {
 inline constexpr int kMaxAnyBoxAnyGoal = 5;
 
 std::string sokoban_scenario(const SokobanLevel& level, const std::string& source, const GridSizes& sizes);
+
+// Why `check` would refuse the scenario of `level`, with the limit it shares with the scenario reader and
+// the planner: more wall rectangles or boxes than a scenario may hold (scenario::kMaxBodiesOfAKind), a task
+// naming its boxes in more places together than the planner tells apart (knowledge::Labelling); nothing
+// when it would not.
+std::optional<std::string> beyond_limits(const SokobanLevel& level);
 
 }  // namespace physltl::app::import

@@ -1,6 +1,6 @@
 #include "goldens.h"
 
-#include "common/json_file.h"
+#include "common/files.h"
 
 #include "physltl/render/png.h"
 
@@ -25,12 +25,8 @@ void write_picture(const render::Image& image, const std::filesystem::path& file
   std::filesystem::rename(temp, file);
 }
 
-std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+// A golden plan holds the plan's states at each control's end: far below this.
+constexpr std::size_t kMaxGoldenBytes = std::size_t{64} << 20;
 
 // plan.json's per-step arrays (states, traces) at the start and at each control's end, and of the bodies
 // only those the plan moves: for the same controls the replay between is the same physics, and a golden of
@@ -94,10 +90,20 @@ CaseResult Goldens::missing(const std::string& file_name) const {
 
 CaseResult Goldens::picture(const std::string& file_name, const render::Image& actual, const render::Tolerance& tolerance) {
   const std::filesystem::path golden = folder_ / file_name;
+  if (const auto why = unusable_folder()) return {file_name, Outcome::kFailed, *why};
   const bool exists = std::filesystem::exists(golden);
   if (!exists && !update_) return missing(file_name);
+  std::optional<render::Image> readable;
   if (exists) {
-    const render::Image expected = render::read_png(golden);
+    try {
+      readable = render::read_png(golden);
+    } catch (const std::runtime_error& e) {
+      // A golden that cannot be read is one --update rewrites.
+      if (!update_) return {file_name, Outcome::kFailed, std::string(e.what()) + "; rewrite it with: " + update_line_};
+    }
+  }
+  if (readable) {
+    const render::Image& expected = *readable;
     const render::Comparison result = render::compare_images(expected, actual, tolerance);
     if (result.within(tolerance)) return {file_name, Outcome::kPassed, ""};
     if (!update_) {
@@ -123,15 +129,23 @@ CaseResult Goldens::picture(const std::string& file_name, const render::Image& a
   return {file_name, Outcome::kUpdated, (exists ? "updated " : "wrote ") + golden.string()};
 }
 
+std::optional<std::string> Goldens::unusable_folder() const {
+  if (std::filesystem::exists(folder_) && !std::filesystem::is_directory(folder_)) {
+    return folder_.string() + " is a file, not a folder of goldens";
+  }
+  return std::nullopt;
+}
+
 CaseResult Goldens::plan(nlohmann::ordered_json plan) {
   const std::string file_name = "plan.json";
   // The same scenario tested from another folder plans the same: where its file lay is no part of the plan.
   const std::string text = golden_plan_text(std::move(plan));
   const std::filesystem::path golden = folder_ / file_name;
+  if (const auto why = unusable_folder()) return {file_name, Outcome::kFailed, *why};
   const bool exists = std::filesystem::exists(golden);
   if (!exists && !update_) return missing(file_name);
   if (exists) {
-    const std::string expected_text = read_text(golden);
+    const std::string expected_text = read_input_file(golden, kMaxGoldenBytes);
     if (expected_text == text) return {file_name, Outcome::kPassed, ""};
     if (!update_) {
       const std::filesystem::path actual_path = actual_folder_ / "plan.actual.json";

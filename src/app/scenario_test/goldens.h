@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,8 @@ class Goldens {
 
  private:
   CaseResult missing(const std::string& file_name) const;
+  // Why the goldens' folder cannot hold goldens (a file in its place); nothing when it can.
+  std::optional<std::string> unusable_folder() const;
 
   std::filesystem::path folder_;
   std::filesystem::path actual_folder_;

@@ -1,6 +1,6 @@
 #include "junit_report.h"
 
-#include "common/json_file.h"
+#include "common/files.h"
 
 #include <fmt/format.h>
 #include <pugixml.hpp>

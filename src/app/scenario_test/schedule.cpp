@@ -1,21 +1,25 @@
 #include "schedule.h"
 
-#include "common/json_file.h"
+#include "common/bad_input.h"
+#include "common/files.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <fstream>
 #include <numeric>
 
 namespace physltl::app::scenario_test {
 namespace {
 
+// Last runs' times only order the scenarios: a missing or unreadable file orders them by size alone.
 nlohmann::json read_times(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) return nlohmann::json::object();
-  nlohmann::json times = nlohmann::json::parse(in, nullptr, false);
-  return times.is_object() ? times : nlohmann::json::object();
+  if (!std::filesystem::exists(file)) return nlohmann::json::object();
+  try {
+    const nlohmann::json times = nlohmann::json::parse(read_input_file(file, std::size_t{16} << 20), nullptr, false);
+    return times.is_object() ? times : nlohmann::json::object();
+  } catch (const BadInput&) {
+    return nlohmann::json::object();
+  }
 }
 
 }  // namespace

@@ -2,7 +2,7 @@
 
 #include "common/bad_input.h"
 #include "bench/campaign.h"
-#include "common/json_file.h"
+#include "common/files.h"
 #include "common/output_folder.h"
 #include "physltl/render/png.h"
 #include "sweep_results.h"

@@ -1,6 +1,6 @@
 #include "failed_search.h"
 
-#include "common/json_file.h"
+#include "common/files.h"
 #include "common/output_folder.h"
 #include "plan_pictures.h"
 #include "run/planner_names.h"

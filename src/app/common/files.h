@@ -1,7 +1,9 @@
 #pragma once
-// The one way the program writes a file of its own: whole or not at all. The text goes to a temporary
-// file beside the final one, which a rename puts in place; a failure leaves the final file as it was and
-// removes the temporary one. JSON is written indented by two, with a final newline.
+// The one way the program reads a file it is given and writes a file of its own. Reading takes regular
+// files only, up to a size: a folder, a FIFO or a device given for a file is refused, not waited on or
+// read until memory runs out. Writing is whole or not at all: the text goes to a temporary file beside the
+// final one, which a rename puts in place; a failure leaves the final file as it was and removes the
+// temporary one. JSON is written indented by two, with a final newline.
 
 #include <nlohmann/json.hpp>
 
@@ -14,6 +16,12 @@ enum class Durability {
   kRenamed,  // the rename makes it whole; enough for outputs a failed run replaces anyway
   kSynced,   // also flushed to the disk before the rename: campaign records that outlive a killed machine
 };
+
+// The bytes of `file`, a regular file of at most `max_bytes`; BadInput naming it otherwise ("is a folder,
+// not a file", "is not a regular file", "is larger than 16 MiB", "cannot be read").
+std::string read_input_file(const std::filesystem::path& file, std::size_t max_bytes);
+// The same parsed as JSON; BadInput naming the file and `what` it should be when it is not.
+nlohmann::json read_json_file(const std::filesystem::path& file, std::size_t max_bytes, const std::string& what);
 
 // Whether `file` is what a writer killed before its rename left behind (NAME.tmp-PID).
 bool is_unfinished_write(const std::filesystem::path& file);

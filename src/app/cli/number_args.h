@@ -1,0 +1,15 @@
+#pragma once
+// The checks of numbers given on the command line: finite and in range, with the same words as a
+// scenario's numbers (scenario::number_problem), and seeds as whole numbers written as such.
+
+#include <CLI/CLI.hpp>
+
+namespace physltl::app {
+
+// A number from lo to hi (lo itself allowed or not): NaN, infinities and numbers out of range refused.
+CLI::Validator number_in(double lo, double hi, bool lo_allowed = false);
+
+// A seed: a whole number from 0 to 2^64 - 1, digits only ("-1" is refused, not wrapped round).
+CLI::Validator seed_number();
+
+}  // namespace physltl::app
