@@ -4,10 +4,14 @@
 #include "command_runner.h"
 
 #include <gtest/gtest.h>
+#include <pugixml.hpp>
 #include <sys/stat.h>
 
+#include <cctype>
 #include <fstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 namespace {
 
@@ -112,6 +116,157 @@ TEST(Nonsense, NumbersOnTheCommandLineMustBeFiniteAndInRange) {
     EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
   }
   EXPECT_FALSE(fs::exists(out));
+}
+
+// An infeasible scenario that expects to be: `test` passes it in a fraction of a second.
+fs::path quick_test_scenario(const fs::path& dir, const std::string& name = "enclosed.lua") {
+  fs::create_directories(dir);
+  std::ofstream(dir / name) << slurp(fs::path(kSource) / "tests/app/enclosed_goal.lua")
+                            << "expect { solved = false, infeasible = \"enclosed\" }\n";
+  return dir / name;
+}
+
+TEST(DestroyedFile, AnOutputPathThatIsAnInputAFolderOrEmptyIsRefusedBeforeAnyWork) {
+  const fs::path dir = test_dir();
+  const fs::path scenario = quick_test_scenario(dir);
+  const std::string original = slurp(scenario);
+  fs::remove(dir / "link.lua");
+  fs::create_symlink(scenario, dir / "link.lua");
+  fs::create_directories(dir / "folder");
+  const fs::path out = fresh_out_dir();
+  const std::string s = scenario.string();
+  const struct {
+    std::string args, message;
+  } cases[] = {
+      {"test " + s + " --junit " + s, "--junit " + s + ": is " + s + ", an input of this command"},
+      {"test " + s + " --junit " + (dir / "link.lua").string(), ", an input of this command"},
+      {"test " + s + " --junit " + (dir / "." / "enclosed.lua").string(), ", an input of this command"},
+      {"test " + s + " --junit ''", "--junit: an empty path"},
+      {"test " + s + " --junit " + (dir / "folder").string(), "folder: is a folder; give a file name"},
+      {"test " + s + " --junit " + (scenario / "report.xml").string(), "enclosed.lua is a file, not a folder"},
+      {"bench " + s + " --runs 1 --log " + s, "--log " + s + ": is " + s + ", an input of this command"},
+  };
+  for (const auto& c : cases) {
+    const Result r = run(c.args + " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << c.args;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_EQ(r.out.find("passed"), std::string::npos) << c.args << ": ran before refusing";
+  }
+  EXPECT_EQ(slurp(scenario), original);
+  EXPECT_TRUE(fs::is_symlink(dir / "link.lua"));
+  EXPECT_TRUE(fs::is_empty(dir / "folder"));
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
+  }
+}
+
+TEST(DestroyedFile, BenchMergeRefusesToWriteIntoAShardItReads) {
+  const fs::path out = fresh_out_dir();
+  const std::string avoid = kSource + "/scenarios/avoid.lua";
+  ASSERT_EQ(run("bench " + avoid + " --runs 1 --campaign c --shard 1/1 --quiet --out " + out.string()).exit_code, 0);
+  const fs::path shard = out / "c" / "shard-1-of-1";
+  std::vector<std::string> before;
+  for (const auto& entry : fs::recursive_directory_iterator(shard)) before.push_back(entry.path().string() + slurp(entry.path()));
+  for (const fs::path& into : {shard, shard / "units"}) {
+    const Result r = run("bench merge " + (out / "c").string() + " --out " + into.string());
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("an input of this command; give another folder"), std::string::npos) << r.err;
+  }
+  std::vector<std::string> after;
+  for (const auto& entry : fs::recursive_directory_iterator(shard)) after.push_back(entry.path().string() + slurp(entry.path()));
+  EXPECT_EQ(after, before);
+}
+
+TEST(DestroyedFile, AJUnitReportIsWrittenIntoAPipeAndThroughASymlinkNeverReplacingThem) {
+  const fs::path dir = test_dir();
+  const std::string scenario = quick_test_scenario(dir).string();
+  const fs::path out = fresh_out_dir();
+  const fs::path pipe = dir / "report.pipe";
+  fs::remove(pipe);
+  ASSERT_EQ(mkfifo(pipe.c_str(), 0644), 0);
+  std::string through_pipe;
+  std::thread reader([&] { through_pipe = slurp(pipe); });
+  const Result piped = run("test " + scenario + " --update --junit " + pipe.string() + " --out " + out.string());
+  reader.join();
+  EXPECT_EQ(piped.exit_code, 0) << piped.out << piped.err;
+  EXPECT_TRUE(fs::is_fifo(pipe));
+  EXPECT_NE(through_pipe.find("<testsuites"), std::string::npos) << through_pipe;
+
+  fs::remove(dir / "link.xml");
+  fs::remove(dir / "real.xml");
+  fs::create_symlink("real.xml", dir / "link.xml");
+  const Result linked = run("test " + scenario + " --update --junit " + (dir / "link.xml").string() + " --out " + out.string());
+  EXPECT_EQ(linked.exit_code, 0) << linked.err;
+  EXPECT_TRUE(fs::is_symlink(dir / "link.xml"));
+  EXPECT_NE(slurp(dir / "real.xml").find("<testsuites"), std::string::npos);
+
+  // A pipe nobody reads is an error, not a wait.
+  const Result unread = run_program("timeout 60 " + std::string(PHYSLTL_BINARY),
+                                    "test " + scenario + " --junit " + pipe.string() + " --out " + out.string());
+  EXPECT_EQ(unread.exit_code, 2) << unread.err;
+  EXPECT_NE(unread.err.find("report.pipe: a pipe nobody reads"), std::string::npos) << unread.err;
+}
+
+TEST(Leftover, WhatAKilledWriterLeftBesideAFileIsRemovedByTheNextWriteOfIt) {
+  const fs::path dir = test_dir();
+  const std::string scenario = quick_test_scenario(dir).string();
+  const fs::path out = fresh_out_dir();
+  // pid 2^22 + 1 is above Linux's largest pid: no such process can be running.
+  std::ofstream(dir / "report.xml.tmp-4194305") << "half";
+  std::ofstream(dir / "report.xml.tmp-1") << "init's: running, so kept";
+  const Result r = run("test " + scenario + " --update --junit " + (dir / "report.xml").string() + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "report.xml"));
+  EXPECT_FALSE(fs::exists(dir / "report.xml.tmp-4194305"));
+  EXPECT_TRUE(fs::exists(dir / "report.xml.tmp-1"));
+}
+
+TEST(DestroyedFile, ScenariosOfOneNameInTwoFoldersKeepTheirMismatchPicturesApart) {
+  const fs::path dir = test_dir();
+  const fs::path a = small_ordered(dir / "a"), b = small_ordered(dir / "b");
+  std::ofstream(b, std::ios::app) << "expect { frames = { 0 } }\n";
+  const fs::path out = fresh_out_dir();
+  fs::remove_all(dir / "a" / "goldens");
+  fs::remove_all(dir / "b" / "goldens");
+  ASSERT_EQ(run("test " + a.string() + " " + b.string() + " --update --out " + out.string()).exit_code, 0);
+  // Each scenario's golden swapped for another picture: both mismatch and leave their pictures.
+  const fs::path golden_a = dir / "a" / "goldens" / "ordered", golden_b = dir / "b" / "goldens" / "ordered";
+  fs::copy_file(golden_b / "frame_0s.png", golden_a / "preview.png", fs::copy_options::overwrite_existing);
+  fs::copy_file(golden_b / "preview.png", golden_b / "frame_0s.png", fs::copy_options::overwrite_existing);
+  const Result r = run("test " + a.string() + " " + b.string() + " --jobs 2 --out " + out.string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  std::string folder_a = (dir / "a/").string(), folder_b = (dir / "b/").string();
+  for (std::string* name : {&folder_a, &folder_b}) {
+    for (char& c : *name) c = std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_' ? c : '_';
+  }
+  EXPECT_TRUE(fs::exists(out / "test" / (folder_a + "ordered") / "preview.actual.png")) << r.out;
+  EXPECT_TRUE(fs::exists(out / "test" / (folder_b + "ordered") / "frame_0s.actual.png")) << r.out;
+  EXPECT_FALSE(fs::exists(out / "test" / (folder_a + "ordered") / "frame_0s.actual.png"));
+  EXPECT_FALSE(fs::exists(out / "test" / "ordered"));
+}
+
+TEST(Nonsense, AJUnitReportStaysWellFormedXmlWhatEverAFailureTextHolds) {
+  const fs::path dir = test_dir();
+  // A file name with control characters and a byte that is not UTF-8, an expectation that fails.
+  const std::string name = std::string("ctl\x01\x1b") + "\xff.lua";
+  const fs::path scenario = quick_test_scenario(dir, name);
+  std::ofstream(scenario, std::ios::app) << "\n";
+  std::string text = slurp(scenario);
+  const std::string expected = "infeasible = \"enclosed\"";
+  text.replace(text.find(expected), expected.size(), "infeasible = \"not\x02this\"");
+  std::ofstream(scenario) << text;
+  const fs::path junit = dir / "report.xml";
+  const Result r = run("test '" + scenario.string() + "' --update --junit " + junit.string() + " --out " + fresh_out_dir().string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  pugi::xml_document doc;
+  ASSERT_TRUE(doc.load_file(junit.c_str())) << slurp(junit);
+  const std::string xml = slurp(junit);
+  for (const char c : xml) {
+    const auto byte = static_cast<unsigned char>(c);
+    EXPECT_TRUE(byte >= 0x20 || c == '\n' || c == '\t' || c == '\r') << "byte " << int(byte) << " in " << xml;
+  }
+  EXPECT_NE(xml.find("ctl\\x01\\x1b\\xff.lua"), std::string::npos) << xml;
+  EXPECT_NE(xml.find("not\\x02this"), std::string::npos) << xml;
 }
 
 // A fault of ours, here a planner that throws: said as an internal error, with its own exit code, by every

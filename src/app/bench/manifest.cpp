@@ -3,6 +3,7 @@
 #include "run/planner_names.h"
 
 #include "common/build_version.h"
+#include "common/files.h"
 #include "fingerprint.h"
 #include "results.h"
 #include "physltl/scenario/load.h"
@@ -41,7 +42,7 @@ json entry_inputs(const std::vector<std::unique_ptr<BenchCase>>& cases, size_t e
 }
 
 std::string value_text(const nlohmann::json& value) {
-  std::string text = value.dump();
+  std::string text = json_text(value);
   return text.size() > 80 ? text.substr(0, 77) + "..." : text;
 }
 

@@ -173,6 +173,7 @@ MergedCampaign merge_checked(std::vector<Shard> shards) {
   merged.name = campaign.at("name").get<std::string>();
   merged.results = skeleton(campaign, shards.front().manifest.at("shard"));
   merged.folder = shards.front().folder.parent_path();
+  for (const auto& shard : shards) merged.shard_folders.push_back(shard.folder);
   const std::vector<CaseUnits> cases = case_units(merged.results);
   const std::vector<Unit> units = campaign_units(cases, campaign.at("settings").at("runs").get<int>());
   std::vector<std::string> keys;

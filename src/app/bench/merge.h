@@ -13,6 +13,7 @@ namespace physltl::app {
 struct MergedCampaign {
   std::string name;
   std::filesystem::path folder;  // the campaign folder holding the shards
+  std::vector<std::filesystem::path> shard_folders;
   CampaignResults results;
 };
 

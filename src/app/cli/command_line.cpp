@@ -3,6 +3,7 @@
 #include "command.h"
 #include "common/build_version.h"
 #include "common/output_folder.h"
+#include "common/printable.h"
 #include "physltl/execution/perturbation.h"
 #include "physltl/physics/simulation.h"
 #include "physltl/scenario/diagnostic.h"
@@ -50,24 +51,27 @@ int parse_and_run(Command& command, int argc, char** argv) {
   try {
     return command.run();
   } catch (const physltl::scenario::ScenarioError& e) {
-    for (const auto& d : e.diagnostics()) std::cerr << d.str() << "\n";
+    for (const auto& d : e.diagnostics()) std::cerr << printable(d.str()) << "\n";
   } catch (const InfeasibleTask& e) {
-    std::cerr << "physltl-studio: the task is infeasible: " << e.what() << "\n";
+    std::cerr << "physltl-studio: the task is infeasible: " << printable(e.what()) << "\n";
     return kExitNoPlan;
   } catch (const Interrupted& e) {
     std::cerr << "physltl-studio: " << e.what() << "\n";
     return kExitInterrupted;
   } catch (const BadInput& e) {
-    std::cerr << "physltl-studio: " << e.what() << "\n";
+    std::cerr << "physltl-studio: " << printable(e.what()) << "\n";
   } catch (const physltl::execution::PerturbationError& e) {
     // An uncertainty too wide for the world (--robustness, execute): the user's to narrow.
-    std::cerr << "physltl-studio: " << e.what() << "\n";
+    std::cerr << "physltl-studio: " << printable(e.what()) << "\n";
   } catch (const std::filesystem::filesystem_error& e) {
     // An --out folder that cannot be made or written (a file in the way, no permission, a full disk).
-    std::cerr << "physltl-studio: cannot write the outputs: " << e.what() << "\n";
+    // Said as the path and the system's reason ("Too many levels of symbolic links"), not as the library's
+    // "filesystem error: cannot create directories".
+    std::cerr << "physltl-studio: cannot write the outputs: " << (e.path1().empty() ? "" : printable(e.path1().string()) + ": ")
+              << e.code().message() << "\n";
   } catch (const std::exception& e) {
     // Anything else is a fault of ours, never the user's input: said as such, with an exit code of its own.
-    std::cerr << "physltl-studio: internal error: " << e.what() << " (please report it with the command line)\n";
+    std::cerr << "physltl-studio: internal error: " << printable(e.what()) << " (please report it with the command line)\n";
     return kExitInternalError;
   } catch (...) {
     std::cerr << "physltl-studio: internal error: an unknown exception (please report it with the command line)\n";

@@ -12,6 +12,7 @@
 #include "cli/planner_args.h"
 #include "run/planner_names.h"
 #include "cli/stop_signal.h"
+#include "common/output_paths.h"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -36,7 +37,7 @@ struct BenchArgs {
   PlannerParameterArgs parameters;
   std::vector<int> threads{1};
   std::optional<std::string> sweep;  // key=v1,v2,...
-  std::string log_file;
+  std::optional<std::string> log_file;
   std::string out_dir = "out/bench";
   bool quiet = false;
   int improve = 0;
@@ -89,22 +90,34 @@ std::vector<ScenarioEntry> scenario_entries(const BenchArgs& args) {
   return entries;
 }
 
+std::vector<std::filesystem::path> entry_files(const std::vector<ScenarioEntry>& entries) {
+  std::vector<std::filesystem::path> files;
+  for (const ScenarioEntry& entry : entries) files.emplace_back(entry.path);
+  return files;
+}
+
 // --log FILE: one case writes FILE; the values of one swept scenario write FILE's stem-key-value; several
-// scenarios write FILE's stem-<case folder>.
-std::vector<std::filesystem::path> log_files(const std::string& file, const std::vector<ScenarioEntry>& entries,
-                                             const CampaignResults& results) {
+// scenarios write FILE's stem-<case folder>. Each is checked before any run: none may be an input.
+std::vector<std::filesystem::path> log_files(const std::optional<std::string>& file, const std::vector<ScenarioEntry>& entries,
+                                             const std::vector<std::unique_ptr<BenchCase>>& cases) {
   std::vector<std::filesystem::path> logs;
-  if (file.empty()) return logs;
-  const std::filesystem::path path(file);
-  for (const auto& c : results.cases) {
+  if (!file) return logs;
+  const std::vector<std::filesystem::path> inputs = entry_files(entries);
+  const std::filesystem::path path = checked_output_file("--log", *file, inputs);
+  // The logs are written last, after minutes of runs: a folder that is not there fails now.
+  const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : ".";
+  if (!std::filesystem::is_directory(folder)) throw BadInput("--log " + *file + ": no folder " + folder.string());
+  for (const auto& c : cases) {
     std::string part;
     if (entries.size() > 1) {
-      part = folder_name(c.results.scenario, c.results.settings);
+      part = folder_name(c->results.scenario, c->results.settings);
     } else if (entries.front().sweep) {
-      part = entries.front().sweep->key + "-" + c.swept_value;
+      part = entries.front().sweep->key + "-" + c->swept_value;
     }
     logs.push_back(part.empty() ? path
-                                : path.parent_path() / (path.stem().string() + "-" + part + path.extension().string()));
+                                : checked_output_file("--log", (path.parent_path() / (path.stem().string() + "-" + part +
+                                                                                    path.extension().string())).string(),
+                                                      inputs));
   }
   return logs;
 }
@@ -115,7 +128,8 @@ int list_units(const std::vector<Unit>& units, const std::vector<size_t>& which)
 }
 
 int run_whole(const BenchArgs& args, const std::vector<ScenarioEntry>& entries, const CampaignSettings& settings,
-              const std::vector<std::unique_ptr<BenchCase>>& cases, const std::vector<Unit>& units) {
+              const std::vector<std::unique_ptr<BenchCase>>& cases, const std::vector<Unit>& units,
+              const std::vector<std::filesystem::path>& logs) {
   std::vector<size_t> all(units.size());
   for (size_t i = 0; i < all.size(); ++i) all[i] = i;
   std::map<size_t, UnitRecord> records;
@@ -129,7 +143,7 @@ int run_whole(const BenchArgs& args, const std::vector<ScenarioEntry>& entries, 
   const CampaignResults results = collect_results(entries, cases, units, records);
   // --quiet prints only errors; the files are written all the same.
   std::ostringstream silenced;
-  write_campaign_outputs(results, args.out_dir, log_files(args.log_file, entries, results),
+  write_campaign_outputs(results, args.out_dir, logs,
                          args.quiet ? silenced : std::cout);
   return kExitOk;
 }
@@ -174,13 +188,16 @@ int bench(const BenchArgs& args) {
   if (args.campaign && !args.shard && !args.list) {
     throw BadInput("--campaign names the campaign of a shard: give --shard K/N too (1/1 runs it all as one shard)");
   }
-  if (args.shard && !args.log_file.empty()) {
+  if (args.shard && args.log_file) {
     throw BadInput("--log: a shard writes its OMPL logs into its folder, one per scenario (docs/campaigns.md)");
   }
   const std::optional<ShardSpec> shard = args.shard ? std::optional(parse_shard(*args.shard)) : std::nullopt;
   const CampaignSettings settings = campaign_settings(args);
   const std::vector<ScenarioEntry> entries = scenario_entries(args);
+  // Checked before the cases load, which may take long or find a task infeasible.
+  if (args.log_file) checked_output_file("--log", *args.log_file, entry_files(entries));
   const std::vector<std::unique_ptr<BenchCase>> cases = load_cases(entries, settings);
+  const std::vector<std::filesystem::path> logs = log_files(args.log_file, entries, cases);
   const std::vector<CaseUnits> described = case_units(cases);
   const std::vector<Unit> units = campaign_units(described, settings.runs);
   if (!shard) {
@@ -189,7 +206,7 @@ int bench(const BenchArgs& args) {
       for (size_t i = 0; i < all.size(); ++i) all[i] = i;
       return list_units(units, all);
     }
-    return run_whole(args, entries, settings, cases, units);
+    return run_whole(args, entries, settings, cases, units, logs);
   }
   const std::vector<size_t> mine = shard_units(units, described, *args.campaign, *shard);
   if (args.list) return list_units(units, mine);

@@ -3,6 +3,7 @@
 #include "bench/campaign.h"
 #include "bench/merge.h"
 #include "cli/command.h"
+#include "common/output_paths.h"
 #include "views/bench_outputs.h"
 
 #include <memory>
@@ -19,7 +20,9 @@ struct MergeArgs {
 
 int merge(const MergeArgs& args) {
   const MergedCampaign merged = merge_shards({args.dirs.begin(), args.dirs.end()});
-  const std::filesystem::path out = args.out_dir ? std::filesystem::path(*args.out_dir) : merged.folder / "merged";
+  // Written into a shard, the merged logs would be read as that shard's by the statistics recipe.
+  const std::filesystem::path out =
+      args.out_dir ? checked_output_folder("--out", *args.out_dir, merged.shard_folders) : merged.folder / "merged";
   std::vector<std::filesystem::path> logs;
   for (const auto& c : merged.results.cases) logs.push_back(out / (folder_name(c.results.scenario, c.results.settings) + ".log"));
   std::ostringstream silenced;

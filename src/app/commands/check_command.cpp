@@ -3,6 +3,7 @@
 #include "views/planner_views.h"
 #include "physltl/planning/planning_problem.h"
 #include "cli/command.h"
+#include "common/files.h"
 #include "common/output_folder.h"
 #include "views/overlays.h"
 #include "physltl/render/preview.h"
@@ -59,7 +60,7 @@ CommandRunner add_check_command(CLI::App& app) {
     if (args->json) {
       nlohmann::ordered_json report = check_report_json(world, reasoning);
       add_planner_keys(report, registry().report_keys(), prepared.report);
-      std::cout << report.dump(2) << "\n";
+      std::cout << json_text(report, 2) << "\n";
     } else {
       print_check_report(std::cout, world, reasoning);
       for (const std::string& line : prepared.lines) std::cout << line << "\n";

@@ -6,6 +6,7 @@
 #include "scenario_test/summary.h"
 #include "scenario_test/test_entries.h"
 #include "cli/stop_signal.h"
+#include "common/output_paths.h"
 
 #include <fmt/format.h>
 
@@ -54,13 +55,19 @@ int run_tests(const TestArgs& args) {
   settings.update = args.update;
   settings.stop = &stop.flag();
   refuse_shared_goldens(entries, settings);
+  const std::filesystem::path times = settings.out_dir / "times.json";
+  std::optional<std::filesystem::path> junit;
+  if (args.junit) {
+    std::vector<std::filesystem::path> inputs{times};
+    for (const TestEntry& entry : entries) inputs.push_back(entry.file);
+    junit = checked_output_file("--junit", *args.junit, inputs);
+  }
   // Every scenario is loaded before any is run: a bad one (an unknown expectation key) stops the command
   // with its file:line before anything is planned or written.
   std::vector<scenario::World> worlds;
   for (const TestEntry& entry : entries) worlds.push_back(load_with_settings(entry.file.string(), entry.settings));
 
   std::vector<ScenarioResult> results(entries.size());
-  const std::filesystem::path times = settings.out_dir / "times.json";
   const std::vector<std::size_t> order = longest_first(entries, worlds, times);
   std::atomic<std::size_t> next{0};
   std::mutex print;
@@ -83,9 +90,9 @@ int run_tests(const TestArgs& args) {
   }
   record_times(results, times);
   print_summary(std::cout, results, std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
-  if (args.junit) {
-    write_junit(results, *args.junit);
-    std::cout << "junit      " << *args.junit << "\n";
+  if (junit) {
+    write_junit(results, *junit);
+    std::cout << "junit      " << junit->string() << "\n";
   }
   for (const ScenarioResult& r : results) {
     if (!r.passed()) return kExitNoPlan;

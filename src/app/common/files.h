@@ -23,10 +23,20 @@ std::string read_input_file(const std::filesystem::path& file, std::size_t max_b
 // The same parsed as JSON; BadInput naming the file and `what` it should be when it is not.
 nlohmann::json read_json_file(const std::filesystem::path& file, std::size_t max_bytes, const std::string& what);
 
+// Removes the `NAME.tmp-PID` and `NAME.old-PID` siblings of `final_path` whose process has ended: what a
+// run killed before it could clean up left. Every writer calls it before writing.
+void remove_leftovers_of_ended_runs(const std::filesystem::path& final_path);
+
 // Whether `file` is what a writer killed before its rename left behind (NAME.tmp-PID).
 bool is_unfinished_write(const std::filesystem::path& file);
 
-// Throws BadInput "cannot write FILE" when the file cannot be written.
+// JSON as text, compact (indent -1) or indented. A name from the user's input (a file name) need not be
+// UTF-8, which JSON must be: such bytes become U+FFFD instead of an exception.
+std::string json_text(const nlohmann::ordered_json& json, int indent = -1);
+std::string json_text(const nlohmann::json& json, int indent = -1);
+
+// Throws BadInput "cannot write FILE" when the file cannot be written. A FIFO or a device is written
+// into; a symbolic link is written through (the file it ends at is replaced, the link kept).
 void write_text_file(const std::filesystem::path& file, std::string_view text, Durability durability = Durability::kRenamed);
 void write_json_file(const std::filesystem::path& file, const nlohmann::ordered_json& json,
                      Durability durability = Durability::kRenamed);

@@ -1,5 +1,7 @@
 #include "output_folder.h"
 
+#include "files.h"
+
 #include <signal.h>
 #include <unistd.h>
 
@@ -45,23 +47,6 @@ std::mutex& open_folders_mutex() {
 std::set<fs::path>& open_folders() {
   static std::set<fs::path> folders;
   return folders;
-}
-
-// `<final>.tmp-PID` and `.old-PID` siblings whose process has ended: a run killed before it could clean up.
-void remove_leftovers_of_ended_runs(const fs::path& final_path) {
-  const fs::path parent = final_path.has_parent_path() ? final_path.parent_path() : fs::path(".");
-  std::error_code error;
-  for (const fs::directory_entry& entry : fs::directory_iterator(parent, error)) {
-    const std::string name = entry.path().filename().string();
-    for (const std::string tag : {".tmp-", ".old-"}) {
-      const std::string prefix = final_path.filename().string() + tag;
-      if (name.rfind(prefix, 0) != 0 || name.size() == prefix.size()) continue;
-      const std::string digits = name.substr(prefix.size());
-      if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
-      const pid_t pid = static_cast<pid_t>(std::stol(digits));
-      if (pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH) fs::remove_all(entry.path(), error);
-    }
-  }
 }
 
 }  // namespace

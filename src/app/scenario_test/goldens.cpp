@@ -63,14 +63,14 @@ std::string golden_plan_text(nlohmann::ordered_json plan) {
   std::string text = "{\n";
   bool first = true;
   for (const auto& [key, value] : golden.items()) {
-    text += (first ? "" : ",\n") + nlohmann::ordered_json(key).dump() + ": ";
+    text += (first ? "" : ",\n") + json_text(nlohmann::ordered_json(key)) + ": ";
     first = false;
     if (!value.is_array() || value.empty()) {
-      text += value.dump();
+      text += json_text(value);
       continue;
     }
     text += "[\n";
-    for (std::size_t i = 0; i < value.size(); ++i) text += "  " + value[i].dump() + (i + 1 < value.size() ? ",\n" : "\n");
+    for (std::size_t i = 0; i < value.size(); ++i) text += "  " + json_text(value[i]) + (i + 1 < value.size() ? ",\n" : "\n");
     text += "]";
   }
   return text + "\n}\n";

@@ -186,7 +186,7 @@ ScenarioResult test_scenario(const TestEntry& entry, const scenario::World& worl
   ScenarioResult result{entry.label, {}, 0.0, false};
   std::vector<CaseResult>& cases = result.cases;
   const scenario::Expectations e = world.expect.value_or(scenario::Expectations{});
-  const std::filesystem::path actual_folder = settings.out_dir / entry.golden_name;
+  const std::filesystem::path actual_folder = settings.out_dir / entry.output_name;
   std::filesystem::remove_all(actual_folder);  // what an earlier run left describes that run
   Goldens goldens(goldens_folder(entry, settings), actual_folder, settings.update, update_line(entry, settings));
 

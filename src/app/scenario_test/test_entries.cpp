@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
 
 namespace physltl::app::scenario_test {
 namespace {
@@ -34,10 +35,25 @@ TestEntry parse_entry(const std::string& text) {
     entry.settings.push_back(setting);
     entry.golden_name += "." + folder_safe(setting);
   }
-  if (entry.file.extension() != ".lua" || !std::filesystem::is_regular_file(entry.file)) {
+  std::error_code error;
+  if (!std::filesystem::exists(entry.file, error)) throw BadInput(entry.file.string() + ": no such file");
+  if (entry.file.extension() != ".lua" || !std::filesystem::is_regular_file(entry.file, error)) {
     throw BadInput("'" + entry.file.string() + "' is not a scenario file (.lua)");
   }
+  entry.output_name = entry.golden_name;
   return entry;
+}
+
+// Scenarios of one name in different folders would share out/test/<name>/: each such one's outputs go to
+// a folder named after its path instead ("a/x/rooms.lua" -> "a_x_rooms").
+void name_outputs_apart(std::vector<TestEntry>& entries) {
+  std::map<std::string, int> count;
+  for (const TestEntry& e : entries) ++count[e.golden_name];
+  for (TestEntry& e : entries) {
+    if (count[e.golden_name] < 2) continue;
+    const std::string folder = e.file.parent_path().lexically_normal().string();
+    e.output_name = folder_safe(folder.empty() || folder == "." ? "" : folder + "/") + e.golden_name;
+  }
 }
 
 }  // namespace
@@ -57,6 +73,7 @@ std::vector<TestEntry> expand_test_paths(const std::vector<std::string>& paths) 
       entries.push_back(parse_entry(path));
     }
   }
+  name_outputs_apart(entries);
   return entries;
 }
 

@@ -1,6 +1,5 @@
 #include "bench_outputs.h"
 
-#include "common/bad_input.h"
 #include "bench/campaign.h"
 #include "common/files.h"
 #include "common/output_folder.h"
@@ -9,12 +8,11 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
-#include <unistd.h>
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <memory>
+#include <sstream>
 
 namespace physltl::app {
 namespace {
@@ -34,33 +32,23 @@ std::string property_type(const CampaignResults& campaign, size_t entry) {
   return integers ? "INTEGER" : numbers ? "REAL" : "TEXT";
 }
 
-// Logs appear whole or not at all, like the output folders: each is written beside its final name and
-// renamed into place by commit(); those not committed are removed.
+// Logs appear whole or not at all, like the output folders: each is kept in memory until commit() writes
+// them all, after every folder was written.
 class PendingLogs {
  public:
-  PendingLogs() = default;
-  PendingLogs(const PendingLogs&) = delete;
-  PendingLogs& operator=(const PendingLogs&) = delete;
-  ~PendingLogs() {
-    std::error_code ignored;
-    for (const auto& [temp, file] : logs_) std::filesystem::remove(temp, ignored);
-  }
-
   void write(const std::filesystem::path& file, const OmplExperiment& experiment) {
-    const std::filesystem::path temp = file.string() + ".tmp";
-    logs_.emplace_back(temp, file);
-    std::ofstream out(temp);
-    write_ompl_log(out, experiment);
-    if (!out) throw BadInput("cannot write " + file.string());
+    std::ostringstream text;
+    write_ompl_log(text, experiment);
+    logs_.emplace_back(file, text.str());
   }
 
   void commit() {
-    for (const auto& [temp, file] : logs_) std::filesystem::rename(temp, file);
+    for (const auto& [file, text] : logs_) write_text_file(file, text);
     logs_.clear();
   }
 
  private:
-  std::vector<std::pair<std::filesystem::path, std::filesystem::path>> logs_;  // temporary, final
+  std::vector<std::pair<std::filesystem::path, std::string>> logs_;
 };
 
 }  // namespace
