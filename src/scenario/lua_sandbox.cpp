@@ -1,5 +1,7 @@
 #include "lua_sandbox.h"
 
+#include "table_reader.h"
+
 extern "C" {
 #include <lauxlib.h>
 #include <lua.h>
@@ -13,6 +15,8 @@ extern "C" {
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <set>
 #include <string_view>
 
 namespace physltl::scenario {
@@ -20,6 +24,9 @@ namespace {
 
 constexpr int kHookEvery = 1000;  // instructions between budget checks
 constexpr int kMaxTableDepth = 32;
+// What the sandbox leaves out of the standard globals, named as such when a script reaches for it.
+const std::vector<std::string> kLeftOut = {"io",      "os",      "debug",          "package", "dofile", "loadfile",
+                                           "load",    "collectgarbage", "rawset",  "rawequal", "rawlen"};
 
 struct Sandbox {
   std::string path;
@@ -31,6 +38,7 @@ struct Sandbox {
   int last_line = 0;
   std::vector<Element> elements;
   std::vector<std::string> modules;  // the files `require` read
+  std::set<std::string> params_read;  // the keys of `params` a script looked up
   // The message of the Lua error being raised. It lives here, not on the C stack, because pushing it may
   // itself fail for lack of memory, and that error longjmps too.
   std::string raised_message;
@@ -208,49 +216,61 @@ bool is_module_name(std::string_view name) {
   return !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) && std::all_of(name.begin(), name.end(), word_char);
 }
 
+// The file `require name` loads, pushed on the stack: the helpers first, then the scenario's own folder
+// (variants of a world share its file that way); a Lua error when neither has one.
+int load_module(lua_State* L, const char* name) {
+  const Sandbox& box = sandbox_of(L);
+  for (const std::string& folder : {box.options.lua_dir, box.script_dir}) {
+    lua_pushfstring(L, "%s/%s.lua", folder.c_str(), name);
+    const int status = luaL_loadfilex(L, lua_tostring(L, -1), "t");
+    if (status != LUA_ERRFILE) {
+      if (status != LUA_OK) return lua_error(L);
+      return 1;
+    }
+    lua_pop(L, 2);  // the message and the file name
+  }
+  return guarded(L, [&]() -> int {
+    raise_at(caller_location(L), "require: no helper module '" + std::string(name) + "' in " +
+                                     sandbox_of(L).options.lua_dir + " or " + sandbox_of(L).script_dir);
+  });
+}
+
 // Only Lua-owned strings here: loading and running the helper may raise (memory, budget) at any point.
 int sandboxed_require(lua_State* L) {
-  const char* name = luaL_checkstring(L, 1);
-  if (!is_module_name(name)) {
-    return guarded(L, [&]() -> int { raise_at(caller_location(L), "require: '" + std::string(name) + "' is not a helper module name"); });
-  }
-  lua_getfield(L, LUA_REGISTRYINDEX, "physltl.loaded");
-  lua_getfield(L, -1, name);
-  if (!lua_isnil(L, -1)) return 1;
-  lua_pop(L, 1);
-  // The helpers first, then the scenario's own folder: variants of a world share its file that way.
-  const Sandbox& box = sandbox_of(L);
-  lua_pushfstring(L, "%s/%s.lua", box.options.lua_dir.c_str(), name);
-  lua_pushfstring(L, "%s/%s.lua", box.script_dir.c_str(), name);
-  int status = LUA_ERRFILE;
-  int file = 0;  // the stack index of the file that loaded, once the chunk is on top
-  for (int candidate = -2; candidate <= -1 && status == LUA_ERRFILE; ++candidate) {
-    status = luaL_loadfilex(L, lua_tostring(L, candidate), "t");
-    if (status == LUA_ERRFILE) lua_pop(L, 1);
-    file = candidate - 1;
-  }
-  if (status == LUA_ERRFILE) {
+  std::size_t length = 0;
+  const char* name = luaL_checklstring(L, 1, &length);
+  if (!is_module_name(std::string_view(name, length))) {
     return guarded(L, [&]() -> int {
-      raise_at(caller_location(L), "require: no helper module '" + std::string(name) + "' in " +
-                                       sandbox_of(L).options.lua_dir + " or " + sandbox_of(L).script_dir);
+      raise_at(caller_location(L), "require: '" + std::string(name, length) + "' is not a helper module name");
     });
   }
-  if (status != LUA_OK) return lua_error(L);
+  lua_settop(L, 1);
+  lua_getfield(L, LUA_REGISTRYINDEX, "physltl.loaded");  // 2
+  lua_getfield(L, 2, name);
+  if (lua_toboolean(L, -1) && !lua_islightuserdata(L, -1)) return 1;
+  if (lua_islightuserdata(L, -1)) {
+    // Marked while its file runs: the module requires itself, directly or through others.
+    return guarded(L, [&]() -> int {
+      raise_at(caller_location(L), "require: '" + std::string(name) + "' requires itself (a cycle of requires)");
+    });
+  }
+  lua_pop(L, 1);
+  load_module(L, name);  // 3: the file name, 4: the chunk
   // Which file it was, for whoever must know what a World was made of (bench's campaign manifests).
-  const char* loaded = lua_tostring(L, file);
+  const char* loaded = lua_tostring(L, 3);
   guarded(L, [&]() -> int {
     sandbox_of(L).modules.emplace_back(loaded);
     return 0;
   });
-  lua_replace(L, -3);  // the chunk in place of the first file name
-  lua_pop(L, 1);   // the second file name
+  lua_pushlightuserdata(L, &sandbox_of(L));
+  lua_setfield(L, 2, name);
   lua_call(L, 0, 1);
   if (lua_isnil(L, -1)) {
     lua_pop(L, 1);
     lua_pushboolean(L, 1);
   }
   lua_pushvalue(L, -1);
-  lua_setfield(L, -3, name);  // below: the module, the loaded table
+  lua_setfield(L, 2, name);
   return 1;
 }
 
@@ -312,9 +332,9 @@ void open_safe_libraries(lua_State* L) {
     lua_pop(L, 1);
   }
   // Anything that reads files, runs bytecode or steers the collector is out of a scenario's reach.
-  for (const char* name : {"dofile", "loadfile", "load", "collectgarbage", "rawset", "rawequal", "rawlen"}) {
+  for (const std::string& name : kLeftOut) {
     lua_pushnil(L);
-    lua_setglobal(L, name);
+    lua_setglobal(L, name.c_str());
   }
   lua_getglobal(L, "setmetatable");
   lua_pushcclosure(L, setmetatable_without_finalizer, 1);
@@ -335,8 +355,101 @@ void open_safe_libraries(lua_State* L) {
   lua_pop(L, 1);
 }
 
-void push_params(lua_State* L, const std::map<std::string, std::string>& params) {
+// The file and line of the Lua code running at `level` or the nearest caller of it with a line: C
+// functions (error itself) have none.
+Location lua_location(lua_State* L, int level) {
+  lua_Debug ar;
+  for (; lua_getstack(L, level, &ar); ++level) {
+    lua_getinfo(L, "Sl", &ar);
+    if (ar.currentline > 0) return {ar.source[0] == '@' ? ar.source + 1 : ar.short_src, ar.currentline};
+  }
+  return {sandbox_of(L).path, sandbox_of(L).last_line};
+}
+
+// The names a misspelt `word` may have meant: the globals, and the locals of the function at `level`.
+std::vector<std::string> visible_names(lua_State* L, int level) {
+  std::vector<std::string> names;
+  lua_Debug ar;
+  if (lua_getstack(L, level, &ar)) {
+    for (int n = 1; const char* local = lua_getlocal(L, &ar, n); ++n) {
+      lua_pop(L, 1);
+      if (local[0] != '(') names.emplace_back(local);
+    }
+  }
+  lua_pushglobaltable(L);
+  lua_pushnil(L);
+  while (lua_next(L, -2) != 0) {
+    if (lua_type(L, -2) == LUA_TSTRING) names.emplace_back(lua_tostring(L, -2));
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  return names;
+}
+
+// The globals' __index: reading a variable nobody defined is a misspelling (`radius = robot_raduis`), not a
+// nil to use silently. Raised where it is read, helpers included.
+int undefined_variable(lua_State* L) {
+  if (lua_type(L, 2) != LUA_TSTRING) return 0;
+  return guarded(L, [L]() -> int {
+    const std::string name = lua_tostring(L, 2);
+    if (std::find(kLeftOut.begin(), kLeftOut.end(), name) != kLeftOut.end()) {
+      raise_at(lua_location(L, 1), "global '" + name + "' is not available to scenarios (the sandbox has no files, "
+                                   "processes, debugging or code loading)");
+    }
+    const std::string suggestion = closest_match(name, visible_names(L, 1));
+    raise_at(lua_location(L, 1), "undefined variable '" + name + "'" +
+                                     (suggestion.empty() ? "" : " (did you mean '" + suggestion + "'?)"));
+  });
+}
+
+void make_globals_strict(lua_State* L) {
+  lua_pushglobaltable(L);
   lua_newtable(L);
+  lua_pushcfunction(L, undefined_variable);
+  lua_setfield(L, -2, "__index");
+  lua_setmetatable(L, -2);
+  lua_pop(L, 1);
+}
+
+// params' __index (the values are upvalue 1): every key looked up is recorded, so that a setting no
+// script reads (`--set boxs=6`) is an error rather than a silent default.
+int read_param(lua_State* L) {
+  if (lua_type(L, 2) == LUA_TSTRING) {
+    const char* key = lua_tostring(L, 2);
+    guarded(L, [&]() -> int {
+      sandbox_of(L).params_read.insert(key);
+      return 0;
+    });
+  }
+  lua_settop(L, 2);
+  lua_gettable(L, lua_upvalueindex(1));
+  return 1;
+}
+
+// params' __pairs: a script that walks them reads them all.
+int walk_params(lua_State* L) {
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_pushnil(L);
+  while (lua_next(L, -2) != 0) {
+    lua_pop(L, 1);
+    if (lua_type(L, -1) == LUA_TSTRING) {
+      const char* key = lua_tostring(L, -1);
+      guarded(L, [&]() -> int {
+        sandbox_of(L).params_read.insert(key);
+        return 0;
+      });
+    }
+  }
+  lua_getglobal(L, "next");
+  lua_insert(L, -2);
+  lua_pushnil(L);
+  return 3;
+}
+
+void push_params(lua_State* L, const std::map<std::string, std::string>& params) {
+  lua_newtable(L);  // the proxy scripts see
+  lua_newtable(L);  // its metatable
+  lua_newtable(L);  // the values
   for (const auto& [key, text] : params) {
     char* end = nullptr;
     const double number = std::strtod(text.c_str(), &end);
@@ -351,7 +464,55 @@ void push_params(lua_State* L, const std::map<std::string, std::string>& params)
     }
     lua_setfield(L, -2, key.c_str());
   }
+  lua_pushvalue(L, -1);
+  lua_pushcclosure(L, read_param, 1);
+  lua_setfield(L, -3, "__index");
+  lua_pushcclosure(L, walk_params, 1);
+  lua_setfield(L, -2, "__pairs");
+  lua_setmetatable(L, -2);
   lua_setglobal(L, "params");
+}
+
+// Where Lua's "file:line: " prefix of `message` ends, if it has one. (No std::regex: it recurses per
+// character and overflows the stack on long messages.)
+std::optional<std::pair<std::size_t, int>> location_prefix(const std::string& message) {
+  for (std::size_t colon = message.find(':'); colon != std::string::npos; colon = message.find(':', colon + 1)) {
+    const char* digits = message.data() + colon + 1;
+    const char* end = message.data() + message.size();
+    int line = 0;
+    const auto [after, error] = std::from_chars(digits, end, line);
+    if (colon > 0 && error == std::errc() && after != digits && line > 0 && end - after >= 2 && after[0] == ':' &&
+        after[1] == ' ') {
+      return std::pair{colon, line};
+    }
+  }
+  return std::nullopt;
+}
+
+// The message handler of the script's run: whatever was raised (`error("text", 0)`, `error(nil)`,
+// `error({})`, an object whose __tostring loops) becomes a message with the file:line it was raised at.
+// No __tostring is called: it could loop or raise again, inside the handler.
+int locate_error(lua_State* L) {
+  const int type = lua_type(L, 1);
+  if (type == LUA_TNUMBER) lua_tostring(L, 1);  // converted here, where a memory error may still longjmp
+  {
+    const Location where = lua_location(L, 1);
+    std::size_t length = 0;
+    const char* text = type == LUA_TSTRING || type == LUA_TNUMBER ? lua_tolstring(L, 1, &length) : "";
+    const std::string raised(text, length);
+    std::string& message = sandbox_of(L).raised_message;
+    if (type == LUA_TSTRING && location_prefix(raised)) {
+      message = raised;
+    } else if (type == LUA_TSTRING || type == LUA_TNUMBER) {
+      message = where.str() + ": " + (type == LUA_TNUMBER ? "error " : "") + raised;
+    } else {
+      message = where.str() + ": an error was raised with " + (type == LUA_TNIL ? "nil" : std::string("a ") + lua_typename(L, type)) +
+                " instead of a message";
+    }
+  }
+  const std::string& message = sandbox_of(L).raised_message;
+  lua_pushlstring(L, message.data(), message.size());
+  return 1;
 }
 
 // Lua shortens long file names in its messages to "..." and their last 56 characters; the user named the
@@ -369,17 +530,11 @@ Diagnostic diagnostic_from_lua_message(const Sandbox& box, const std::string& me
     return {{box.path, box.last_line},
             "memory limit of " + std::to_string(box.options.memory_limit_bytes >> 20) + " MiB exceeded"};
   }
-  // Lua puts "file:line: " in front; the first such prefix is the location. (No std::regex: it recurses per
-  // character and overflows the stack on long messages.)
-  for (std::size_t colon = message.find(':'); colon != std::string::npos; colon = message.find(':', colon + 1)) {
-    const char* digits = message.data() + colon + 1;
-    const char* end = message.data() + message.size();
-    int line = 0;
-    const auto [after, error] = std::from_chars(digits, end, line);
-    if (colon > 0 && error == std::errc() && after != digits && line > 0 && end - after >= 2 && after[0] == ':' &&
-        after[1] == ' ') {
-      return {{script_file_named(box, message.substr(0, colon)), line}, std::string(after + 2, end)};
-    }
+  // Lua puts "file:line: " in front; the first such prefix is the location.
+  if (const auto prefix = location_prefix(message)) {
+    const auto [colon, line] = *prefix;
+    const std::size_t text = message.find(": ", colon + 1) + 2;
+    return {{script_file_named(box, message.substr(0, colon)), line}, message.substr(text)};
   }
   return {{box.path, box.last_line}, message};
 }
@@ -413,18 +568,25 @@ ScriptRun run_scenario_script(const std::string& path, const LoadOptions& option
     lua_setglobal(L, kind.c_str());
   }
   push_params(L, options.params);
+  make_globals_strict(L);
   lua_sethook(L, budget_hook, LUA_MASKCOUNT, kHookEvery);
 
+  lua_pushcfunction(L, locate_error);
   int status = luaL_loadfilex(L, path.c_str(), "t");
-  if (status == LUA_OK) status = lua_pcall(L, 0, 0, 0);
+  if (status == LUA_OK) status = lua_pcall(L, 0, 0, 1);
   if (status != LUA_OK) {
     // Only a string is read as is: converting a number would allocate, outside any protected call.
-    const std::string message = lua_type(L, -1) == LUA_TSTRING   ? lua_tostring(L, -1)
-                                : lua_type(L, -1) == LUA_TNUMBER ? std::to_string(lua_tonumber(L, -1))
-                                                                 : "error object is not a string";
+    std::size_t length = 0;
+    const char* text = lua_type(L, -1) == LUA_TSTRING ? lua_tolstring(L, -1, &length) : nullptr;
+    const std::string message = text != nullptr ? std::string(text, length) : "error object is not a string";
     throw ScenarioError({diagnostic_from_lua_message(*box, message)});
   }
-  return {std::move(box->elements), std::move(box->modules)};
+  std::vector<std::string> unread;
+  for (const auto& [key, value] : options.params) {
+    if (!box->params_read.count(key)) unread.push_back(key);
+  }
+  return {std::move(box->elements), std::move(box->modules), std::move(unread),
+          {box->params_read.begin(), box->params_read.end()}};
 }
 
 }  // namespace physltl::scenario

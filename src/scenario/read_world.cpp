@@ -186,7 +186,9 @@ Region read_region(TableReader& r) {
   }
   if (has_rect) {
     const auto corners = r.points("rect");
-    if (corners.size() == 2) {
+    if (corners.size() == 2 && (corners[1].array() <= corners[0].array()).any()) {
+      r.error("'rect' must go from the smaller corner to the larger one, {{min_x, min_y}, {max_x, max_y}}");
+    } else if (corners.size() == 2) {
       region.polygon = geometry::Polygon::from_rect({corners[0], corners[1]});
     } else {
       r.error("'rect' must be two corners {{min_x, min_y}, {max_x, max_y}}");

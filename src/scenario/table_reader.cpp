@@ -1,5 +1,7 @@
 #include "table_reader.h"
 
+#include "physltl/scenario/world.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -71,7 +73,7 @@ const LuaValue* TableReader::take(const std::string& key, LuaValue::Kind kind, c
     return nullptr;
   }
   if (kind == LuaValue::Kind::kNumber && !std::isfinite(value->number)) {
-    error("'" + key + "' must be a finite number, got " + std::to_string(value->number));
+    error("'" + key + "' must be a finite number, got " + number_text(value->number));
     return nullptr;
   }
   return value;
@@ -99,7 +101,7 @@ int TableReader::integer(const std::string& key, int fallback) {
   const LuaValue* v = take(key, LuaValue::Kind::kNumber, "a whole number");
   if (v == nullptr) return fallback;
   if (v->number != std::floor(v->number) || std::abs(v->number) > 1e9) {
-    error("'" + key + "' must be a whole number, got " + std::to_string(v->number));
+    error("'" + key + "' must be a whole number from -1e9 to 1e9, got " + number_text(v->number));
     return fallback;
   }
   return static_cast<int>(v->number);

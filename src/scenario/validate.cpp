@@ -78,11 +78,7 @@ class Validator {
     }
   }
 
-  static std::string fmt(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-  }
+  static std::string fmt(double v) { return number_text(v); }
 
   bool workspace_ok() const {
     const auto& b = world_.workspace.bounds;

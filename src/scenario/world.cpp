@@ -36,12 +36,14 @@ const char* drive_name(Drive drive) {
   return "?";
 }
 
+std::string number_text(double value) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", value);
+  return buf;
+}
+
 std::optional<std::string> number_problem(double value, double lo, double hi, bool lo_allowed) {
-  const auto text = [](double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return std::string(buf);
-  };
+  const auto text = number_text;
   if (!std::isfinite(value)) return "must be finite";
   if (value < lo || (value == lo && !lo_allowed)) return std::string("must be ") + (lo_allowed ? "at least " : "greater than ") + text(lo) + ", got " + text(value);
   if (value > hi) return "is too large (" + text(value) + " > " + text(hi) + ")";

@@ -95,7 +95,9 @@ TEST(Bench, QuietPrintsNothingAndStillWritesTheResults) {
 // A setting names the output folder, but never leaves it: no separators, no "..", no spaces.
 TEST(Bench, ASettingWithSeparatorsStaysOneFolderInsideOut) {
   const fs::path out = fresh_out_dir();
-  const Result r = run("bench " + kSource + "/scenarios/avoid.lua --runs 1 --quiet --set \"task=!hazard U goal\" --set x=../.. --out " +
+  const fs::path avoid = test_dir() / "avoid.lua";
+  std::ofstream(avoid) << slurp(kSource + "/scenarios/avoid.lua") << "local x = params.x\n";
+  const Result r = run("bench " + avoid.string() + " --runs 1 --quiet --set \"task=!hazard U goal\" --set x=../.. --out " +
                        out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(out / "avoid-task-_hazard_U_goal-x-.._.." / "bench.json"));

@@ -195,7 +195,7 @@ TEST(Cli, BadScenarioExitsTwoWithFileLineAndWritesNothing) {
 TEST(Cli, MissingScenarioIsExitTwo) {
   const Result r = run("check /no/such/scenario.lua");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("/no/such/scenario.lua: cannot read the scenario file"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("/no/such/scenario.lua: no such file"), std::string::npos) << r.err;
 }
 
 TEST(Cli, UnknownOptionIsExitTwoAndHelpIsExitZero) {
@@ -207,8 +207,12 @@ TEST(Cli, UnknownOptionIsExitTwoAndHelpIsExitZero) {
 }
 
 TEST(Cli, SetPassesParametersToTheScript) {
-  const Result r = run("check --set unused=1 " + kSource + "/scenarios/ordered.lua --json --no-preview");
+  const Result r = run("check --set 'task=F goal' " + kSource + "/scenarios/avoid.lua --json --no-preview");
   EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"F goal\""), std::string::npos) << r.out;
+  const Result unread = run("check --set unused=1 " + kSource + "/scenarios/ordered.lua --no-preview");
+  EXPECT_EQ(unread.exit_code, 2);
+  EXPECT_NE(unread.err.find("ordered.lua: the setting unused=1 is read by no script"), std::string::npos) << unread.err;
   const Result bad = run("check --set novalue " + kSource + "/scenarios/ordered.lua --no-preview");
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("--set expects key=value"), std::string::npos);

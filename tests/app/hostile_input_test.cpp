@@ -4,6 +4,7 @@
 #include "command_runner.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <pugixml.hpp>
 #include <sys/stat.h>
 
@@ -267,6 +268,62 @@ TEST(Nonsense, AJUnitReportStaysWellFormedXmlWhatEverAFailureTextHolds) {
   }
   EXPECT_NE(xml.find("ctl\\x01\\x1b\\xff.lua"), std::string::npos) << xml;
   EXPECT_NE(xml.find("not\\x02this"), std::string::npos) << xml;
+}
+
+TEST(Nonsense, ASettingNoScriptReadsOrOneGivenTwiceIsRefusedByEveryCommand) {
+  const std::string rooms_n = kSource + "/scenarios/rooms_n.lua";
+  const fs::path out = fresh_out_dir();
+  const struct {
+    std::string args, message;
+  } cases[] = {
+      {rooms_n + " --set room=8", "the setting room=8 is read by no script: did you mean 'rooms'?"},
+      {"check " + rooms_n + " --set nosuchkey=1", "the setting nosuchkey=1 is read by no script"},
+      {"execute " + rooms_n + " --set nosuchkey=1", "the setting nosuchkey=1 is read by no script"},
+      {"bench " + rooms_n + " --set nosuchkey=1", "the setting nosuchkey=1 is read by no script"},
+      {"bench " + rooms_n + " --sweep nosuchkey=1,2", "the setting nosuchkey=1 is read by no script"},
+      {"test " + rooms_n + "::nosuchkey=1", "the setting nosuchkey=1 is read by no script"},
+      {"test " + rooms_n + "::rooms=2::rooms=4", "'rooms' is set twice: rooms=2 and rooms=4"},
+      {rooms_n + " --set rooms=2 --set rooms=4", "'rooms' is set twice: rooms=2 and rooms=4"},
+      {"bench " + rooms_n + " --uncertainty mass=0.1,mass=0.2", "--uncertainty: mass is given twice"},
+  };
+  for (const auto& c : cases) {
+    const Result r = run(c.args + " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << c.args;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Nonsense, BenchMergeRefusesNumbersNoRunMakesNamingTheFileAndTheKey) {
+  const fs::path out = fresh_out_dir();
+  const std::string avoid = kSource + "/scenarios/avoid.lua";
+  ASSERT_EQ(run("bench " + avoid + " --runs 1 --campaign c --shard 1/1 --quiet --out " + out.string()).exit_code, 0);
+  const fs::path shard = out / "c" / "shard-1-of-1";
+  const std::string unit = slurp(shard / "units" / "0.json"), manifest = slurp(shard / "manifest.json");
+  const auto edited = [](std::string text, const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    return at == std::string::npos ? std::string("not found: ") + from : text.replace(at, from.size(), to);
+  };
+  const auto pushes = nlohmann::json::parse(unit)["pushes"].dump();
+  const struct {
+    fs::path file;
+    std::string text, message;
+  } cases[] = {
+      {shard / "units" / "0.json", edited(unit, "\"pushes\": " + pushes, "\"pushes\": -3"), "'pushes' must be a whole number from 0"},
+      {shard / "units" / "0.json", edited(unit, "\"wall_s\": ", "\"wall_s\": 1e999, \"x\": "), "not a unit result"},
+      {shard / "units" / "0.json", edited(unit, "\"elapsed_s\": ", "\"elapsed_s\": -1, \"x\": "), "'elapsed_s' must be at least 0"},
+      {shard / "manifest.json", edited(manifest, "\"shards\": 1", "\"shards\": 2000000000"), "'shards' must be a whole number from 1 to 10000"},
+      {shard / "manifest.json", edited(manifest, "\"runs\": 1", "\"runs\": 1e12"), "'runs' must be a whole number from 1 to 100000"},
+  };
+  for (const auto& c : cases) {
+    std::ofstream(c.file) << c.text;
+    const Result r = run("bench merge " + (out / "c").string() + " --out " + (out / "merged").string());
+    EXPECT_EQ(r.exit_code, 2) << c.message << ": " << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    std::ofstream(shard / "units" / "0.json") << unit;
+    std::ofstream(shard / "manifest.json") << manifest;
+  }
+  EXPECT_FALSE(fs::exists(out / "merged"));
 }
 
 // A fault of ours, here a planner that throws: said as an internal error, with its own exit code, by every

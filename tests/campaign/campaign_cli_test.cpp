@@ -249,19 +249,19 @@ TEST(Campaign, ListPrintsEachShardsUnitsAndRunsNothing) {
 // The README's own figures: the 200-box warehouse beside a rooms_n sweep, in one campaign.
 TEST(Campaign, EachScenarioTakesItsOwnSettingsAndSweep) {
   const fs::path out = fresh_out_dir();
-  const Result r = run("bench " + kSource + "/scenarios/ordered.lua::seed=2 " + kSource +
+  const Result r = run("bench " + kSource + "/scenarios/avoid.lua::task=F\\ goal " + kSource +
                        "/scenarios/rooms_n.lua::sweep:rooms=2,4 --runs 1 --seed 3 --quiet --campaign c --shard 1/1 --out " +
                        out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const fs::path shard = out / "c" / "shard-1-of-1";
-  EXPECT_TRUE(fs::exists(shard / "ordered-seed-2.log"));
+  EXPECT_TRUE(fs::exists(shard / "avoid-task-F_goal.log")) << r.out;
   // One experiment for the sweep, the swept value a typed property of each log.
   const std::string log = slurp(shard / "rooms_n-rooms-4.log");
   EXPECT_NE(log.find("\nExperiment rooms_n\n1 experiment properties\nrooms INTEGER = 4\n"), std::string::npos) << log.substr(0, 200);
   const Result merged = run("bench merge " + (out / "c").string());
   ASSERT_EQ(merged.exit_code, 0) << merged.err;
   const fs::path m = out / "c" / "merged";
-  EXPECT_EQ(nlohmann::json::parse(slurp(m / "ordered-seed-2" / "bench.json"))["settings"], nlohmann::json::array({"seed=2"}));
+  EXPECT_EQ(nlohmann::json::parse(slurp(m / "avoid-task-F_goal" / "bench.json"))["settings"], nlohmann::json::array({"task=F goal"}));
   EXPECT_TRUE(fs::exists(m / "rooms_n-sweep-rooms" / "sweep.png"));
   EXPECT_EQ(nlohmann::json::parse(slurp(m / "rooms_n-sweep-rooms" / "sweep.json"))["planners"][0]["points"].size(), 2u);
 }

@@ -47,6 +47,34 @@ TEST_F(Sandbox, ParamsFromTheCommandLineReachTheScript) {
   EXPECT_EQ(load_scenario(path, options).regions.size(), 3u);
 }
 
+TEST_F(Sandbox, ASettingNoScriptReadsIsAnErrorNamingItAndWhatIsRead) {
+  const std::string path = write(minimal_world("local n = params.boxes or 4\nlocal w = params.width\n"));
+  LoadOptions options;
+  options.params = {{"boxs", "6"}, {"width", "2"}};
+  EXPECT_EQ(first_message(path, options),
+            path + ": the setting boxs=6 is read by no script: did you mean 'boxes'? the scenario reads params boxes, width");
+  options.params = {{"boxes", "6"}};
+  EXPECT_EQ(first_message(path, options), "accepted");
+}
+
+TEST_F(Sandbox, ASettingTheScriptOverwritesBeforeReadingIsUnreadButOneWalkedWithPairsIsRead) {
+  const std::string overwritten = write(minimal_world("params.drive = 'differential'\nlocal d = params.drive\n"));
+  LoadOptions options;
+  options.params = {{"drive", "car"}};
+  EXPECT_NE(first_message(overwritten, options).find("the setting drive=car is read by no script"), std::string::npos);
+  const std::string walked = write(minimal_world("for k, v in pairs(params) do assert(k == 'drive' and v == 'car') end\n"));
+  EXPECT_EQ(first_message(walked, options), "accepted");
+}
+
+TEST_F(Sandbox, UndefinedVariablesAreErrorsWhereTheyAreReadButRawgetMayProbeForThem) {
+  const std::string path = write(minimal_world("local size = 0.5\nlocal s = sise\n"));
+  EXPECT_EQ(first_message(path), path + ":5: undefined variable 'sise' (did you mean 'size'?)");
+  const std::string probing = write(minimal_world("if rawget(_G, 'optional') == nil then made = 1 end\nlocal m = made\n"));
+  EXPECT_EQ(first_message(probing), "accepted");
+  const std::string sandboxed = write(minimal_world("os.exit(1)\n"));
+  EXPECT_NE(first_message(sandboxed).find(":4: global 'os' is not available to scenarios"), std::string::npos);
+}
+
 TEST_F(Sandbox, MathRandomGivesTheSameWorldEveryTime) {
   const std::string path = write(minimal_world(
       "movable { name = 'B', center = { 2 + 6 * math.random(), 2 + 6 * math.random() }, size = { 0.5, 0.5 } }\n"));
@@ -115,7 +143,7 @@ TEST_F(Sandbox, RuntimeErrorsNameTheWholePathHoweverLong) {
 
 TEST_F(Sandbox, MissingScenarioFileIsAClearError) {
   EXPECT_EQ(first_message("no/such/file.lua"),
-            "no/such/file.lua: cannot read the scenario file (missing, a folder, or not readable)");
+            "no/such/file.lua: no such file");
 }
 
 }  // namespace

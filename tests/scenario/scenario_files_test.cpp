@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <stdexcept>
 
 namespace physltl::scenario {
@@ -40,6 +41,29 @@ TEST(ScenarioFiles, EveryShippedScenarioLoadsAndValidates) {
     }
   }
   EXPECT_GE(count, 2);
+}
+
+// Every scenario of the project, and so every lua/ helper they use, runs under the strict globals: none
+// reads a variable it never defined (docs/scenarios.md, "The sandbox").
+TEST(ScenarioFiles, EveryScenarioAndHelperLoadsUnderStrictGlobals) {
+  std::set<std::string> helpers_used;
+  int count = 0;
+  for (const std::string folder : {"scenarios", "tests"}) {
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(std::string(PHYSLTL_SOURCE_DIR) + "/" + folder)) {
+      const std::string path = entry.path().string();
+      if (entry.path().extension() != ".lua" || path.find("bad_scenarios") != std::string::npos) continue;
+      ++count;
+      try {
+        for (const std::string& input : load_scenario(path).inputs) helpers_used.insert(std::filesystem::path(input).filename());
+      } catch (const ScenarioError& e) {
+        EXPECT_EQ(std::string(e.what()).find("undefined variable"), std::string::npos) << e.what();
+      }
+    }
+  }
+  EXPECT_GE(count, 50);
+  for (const auto& helper : std::filesystem::directory_iterator(std::string(PHYSLTL_SOURCE_DIR) + "/lua")) {
+    EXPECT_TRUE(helpers_used.count(helper.path().filename())) << helper.path() << " is used by no scenario";
+  }
 }
 
 // rooms_deliver.lua requires rooms.lua, whose own expect { } is for rooms.lua's test: the tested file's

@@ -167,6 +167,9 @@ struct World {
 // and few enough that validation's pairwise checks stay under a second.
 inline constexpr int kMaxBodiesOfAKind = 2000;
 
+// A number as messages show it: six significant digits, 1e+300 rather than 301 of them.
+std::string number_text(double value);
+
 // What is wrong with `value` as a number from lo to hi (lo itself allowed or not), in words ("must be
 // finite", "must be greater than 0, got -1", "is too large (1e+309 > 10000)"); nothing when it is fine.
 // Scenarios, the command line and the files the program reads back all check numbers with it.

@@ -106,7 +106,9 @@ ShardSpec parse_shard(const std::string& text) {
   const auto slash = text.find('/');
   if (slash == std::string::npos) throw BadInput("--shard expects K/N (e.g. 2/5), got '" + text + "'");
   const ShardSpec shard{parse_positive(text.substr(0, slash), "K"), parse_positive(text.substr(slash + 1), "N")};
-  if (shard.count < 1) throw BadInput(fmt::format("--shard {}: N must be at least 1", text));
+  if (shard.count < 1 || shard.count > kMaxShards) {
+    throw BadInput(fmt::format("--shard {}: N must be from 1 to {}", text, kMaxShards));
+  }
   if (shard.index < 1 || shard.index > shard.count) {
     throw BadInput(fmt::format("--shard {}: K must be between 1 and N = {}", text, shard.count));
   }

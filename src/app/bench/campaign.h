@@ -61,7 +61,12 @@ struct ShardSpec {
   int count = 1;  // N
 };
 
-// "K/N" with 1 <= K <= N; BadInput otherwise.
+// Limits of a campaign, which the command line and the manifests read back share: far beyond a real one,
+// and small enough that a typo (--runs 1e9) or an edited manifest is refused rather than exhausting memory.
+constexpr int kMaxRuns = 100'000;
+constexpr int kMaxShards = 10'000;
+
+// "K/N" with 1 <= K <= N <= kMaxShards; BadInput otherwise.
 ShardSpec parse_shard(const std::string& text);
 
 // The canonical indices of the units shard K runs, ascending. Units are grouped by planner and thread

@@ -1,6 +1,7 @@
 #include "merge.h"
 
 #include "common/bad_input.h"
+#include "common/json_fields.h"
 #include "campaign.h"
 #include "manifest.h"
 #include "run/planner_names.h"
@@ -48,40 +49,45 @@ std::vector<fs::path> shard_folders(const std::vector<fs::path>& dirs) {
   return folders;
 }
 
-double number_or_infinity(const nlohmann::json& value) {
-  return value.is_null() ? std::numeric_limits<double>::infinity() : value.get<double>();
+double number_or_infinity(const JsonFields& facts, const std::string& key) {
+  return facts.at(key).is_null() ? std::numeric_limits<double>::infinity() : facts.number(key, 0.0, 1e12);
 }
 
-// The cases as the manifest describes them, with the facts the first shard found.
-CampaignResults skeleton(const nlohmann::json& campaign, const nlohmann::json& first_shard) {
+// The cases as the manifest describes them, with the facts the first shard found; every number checked.
+CampaignResults skeleton(const JsonFields& campaign, const JsonFields& first_shard) {
   CampaignResults results;
-  for (const auto& entry : campaign.at("scenarios")) {
+  for (const auto& item : campaign.array("scenarios")) {
+    const JsonFields entry(item, campaign.source() + " scenarios");
     const auto& sweep = entry.at("sweep");
-    results.entries.push_back({entry.at("settings").get<std::vector<std::string>>(),
-                               sweep.is_null() ? std::nullopt : std::optional(sweep.at("key").get<std::string>())});
+    results.entries.push_back({entry.texts("settings"), sweep.is_null() ? std::nullopt
+                                                                        : std::optional(JsonFields(sweep, "sweep").text("key"))});
   }
-  const auto& settings = campaign.at("settings");
-  const auto& facts = first_shard.at("cases");
-  for (size_t c = 0; c < campaign.at("cases").size(); ++c) {
-    const auto& description = campaign.at("cases")[c];
-    CaseResults result{description.at("entry").get<size_t>(), description.at("swept_value").get<std::string>(), {}};
+  const JsonFields settings = campaign.object("settings");
+  const auto& facts = first_shard.array("cases");
+  const auto& cases = campaign.array("cases");
+  if (facts.size() != cases.size()) first_shard.refuse("cases", "must list as many cases as the campaign");
+  for (size_t c = 0; c < cases.size(); ++c) {
+    const JsonFields description(cases[c], campaign.source() + " cases"), fact(facts[c], first_shard.source() + " cases");
+    CaseResults result{static_cast<size_t>(description.whole("entry", 0, static_cast<long long>(results.entries.size()) - 1)),
+                       description.text("swept_value"), {}};
     BenchResults& r = result.results;
-    r.scenario = description.at("scenario").get<std::string>();
-    r.scenario_file = description.at("scenario_file").get<std::string>();
-    r.settings = description.at("settings").get<std::vector<std::string>>();
-    r.first_seed = description.at("first_seed").get<std::uint64_t>();
-    r.time_limit_s = description.at("time_limit_s").get<double>();
-    r.runs = settings.at("runs").get<int>();
-    r.threads = settings.at("threads").get<std::vector<int>>();
-    r.improve = settings.at("improve").get<int>();
-    r.robustness = settings.at("robustness").get<int>();
-    r.parameter_notes = parameter_notes(parameter_values(manifest_parameters(settings)));
-    r.started_at = facts.at(c).at("started_at").get<std::string>();
-    r.preparation_s = facts.at(c).at("preparation_s").get<double>();
-    r.shortest_free_path_m = number_or_infinity(facts.at(c).at("shortest_free_path_m"));
-    r.shortest_push_free_path_m = number_or_infinity(facts.at(c).at("shortest_push_free_path_m"));
-    for (const auto& p : description.at("planners")) {
-      r.planners.push_back({&parse_planner(p.at("name").get<std::string>()), p.at("threads").get<int>(), {}});
+    r.scenario = description.text("scenario");
+    r.scenario_file = description.text("scenario_file");
+    r.settings = description.texts("settings");
+    r.first_seed = description.seed("first_seed");
+    r.time_limit_s = description.number("time_limit_s", 0.0, 1e6);
+    r.runs = static_cast<int>(settings.whole("runs", 1, kMaxRuns));
+    for (const long long threads : settings.wholes("threads", 1, 64)) r.threads.push_back(static_cast<int>(threads));
+    r.improve = static_cast<int>(settings.whole("improve", 0, 1'000'000));
+    r.robustness = static_cast<int>(settings.whole("robustness", 0, 100'000));
+    r.parameter_notes = parameter_notes(parameter_values(manifest_parameters(campaign.at("settings"))));
+    r.started_at = fact.text("started_at");
+    r.preparation_s = fact.number("preparation_s", 0.0, 1e9);
+    r.shortest_free_path_m = number_or_infinity(fact, "shortest_free_path_m");
+    r.shortest_push_free_path_m = number_or_infinity(fact, "shortest_push_free_path_m");
+    for (const auto& p : description.array("planners")) {
+      const JsonFields planner(p, description.source() + " planners");
+      r.planners.push_back({&parse_planner(planner.text("name")), static_cast<int>(planner.whole("threads", 1, 64)), {}});
     }
     results.cases.push_back(std::move(result));
   }
@@ -107,7 +113,7 @@ std::string some(const std::vector<std::string>& items) {
 void check_shard_set(const std::vector<Shard>& shards) {
   std::vector<std::string> problems;
   const nlohmann::json& reference = shards.front().manifest.at("campaign");
-  const int count = reference.at("shards").get<int>();
+  const int count = static_cast<int>(JsonFields(reference, shards.front().folder.string() + " campaign").whole("shards", 1, kMaxShards));
   std::map<int, fs::path> seen;
   for (const auto& shard : shards) {
     if (const auto difference = first_difference(reference, shard.manifest.at("campaign"),
@@ -171,11 +177,12 @@ MergedCampaign merge_checked(std::vector<Shard> shards) {
   const nlohmann::json& campaign = shards.front().manifest.at("campaign");
   MergedCampaign merged;
   merged.name = campaign.at("name").get<std::string>();
-  merged.results = skeleton(campaign, shards.front().manifest.at("shard"));
+  const std::string source = (shards.front().folder / "manifest.json").string();
+  merged.results = skeleton(JsonFields(campaign, source + " campaign"), JsonFields(shards.front().manifest.at("shard"), source + " shard"));
   merged.folder = shards.front().folder.parent_path();
   for (const auto& shard : shards) merged.shard_folders.push_back(shard.folder);
   const std::vector<CaseUnits> cases = case_units(merged.results);
-  const std::vector<Unit> units = campaign_units(cases, campaign.at("settings").at("runs").get<int>());
+  const std::vector<Unit> units = campaign_units(cases, merged.results.cases.empty() ? 1 : merged.results.cases.front().results.runs);
   std::vector<std::string> keys;
   for (const auto& unit : units) keys.push_back(unit.key);
   if (campaign.at("units").get<std::vector<std::string>>() != keys) {
@@ -210,7 +217,8 @@ MergedCampaign merge_shards(const std::vector<fs::path>& dirs) {
   for (const auto& folder : shard_folders(dirs)) {
     Shard shard{folder, read_manifest(folder), 0, read_unit_records(folder)};
     try {
-      shard.index = shard.manifest.at("shard").at("index").get<int>();
+      shard.index = static_cast<int>(JsonFields(shard.manifest.at("shard"), (folder / "manifest.json").string() + " shard")
+                                         .whole("index", 1, kMaxShards));
     } catch (const nlohmann::json::exception& e) {
       throw BadInput((folder / "manifest.json").string() + ": not a shard manifest (" + e.what() + ")");
     }

@@ -1,6 +1,7 @@
 #include "unit_record.h"
 
 #include "common/bad_input.h"
+#include "common/json_fields.h"
 #include "run/planner_names.h"
 
 namespace physltl::app {
@@ -39,40 +40,58 @@ nlohmann::ordered_json to_json(const UnitRecord& record) {
           {"settings", std::move(settings)}};
 }
 
-UnitRecord unit_record_from_json(const nlohmann::json& json, const std::string& source) {
-  try {
-    UnitRecord record;
-    record.index = json.at("index").get<size_t>();
-    record.key = json.at("unit").get<std::string>();
-    record.elapsed_s = json.at("elapsed_s").get<double>();
-    BenchRun& run = record.run;
-    run.seed = json.at("seed").get<std::uint64_t>();
-    run.solved = json.at("solved").get<bool>();
-    run.stop_reason = json.at("stop_reason").get<std::string>();
-    run.wall_s = json.at("wall_s").get<double>();
-    run.improve_s = json.at("improve_s").get<double>();
-    run.tree_nodes = json.at("tree_nodes").get<long long>();
-    run.propagations = json.at("propagations").get<long long>();
-    run.physics_steps = json.at("physics_steps").get<long long>();
-    run.controls = json.at("controls").get<int>();
-    run.pushes = json.at("pushes").get<int>();
-    run.bodies_moved = json.at("bodies_moved").get<int>();
-    run.solution_duration_s = json.at("solution_duration_s").get<double>();
-    run.path_length_m = json.at("path_length_m").get<double>();
-    run.first_pushes = json.at("first_pushes").get<int>();
-    run.first_duration_s = json.at("first_duration_s").get<double>();
-    run.cell_skips_refused = json.at("cell_skips_refused").get<long long>();
-    // Results of builds before the refusals were counted have none.
-    run.refused = named_refusals(registry(), json.contains("refused") ? json.at("refused").get<std::vector<long long>>()
-                                                                      : std::vector<long long>{});
-    run.robust_worlds = json.at("robust_worlds").get<int>();
-    run.robust_succeeded = json.at("robust_succeeded").get<int>();
-    run.robust_failures = json.at("robust_failures").get<std::map<std::string, int>>();
-    for (const auto& pair : json.at("settings")) run.settings.emplace_back(pair.at(0).get<std::string>(), pair.at(1).get<std::string>());
-    return record;
-  } catch (const nlohmann::json::exception& e) {
-    throw BadInput(source + ": not a unit result of this version (" + e.what() + ")");
+namespace {
+
+// Far beyond any run, small enough that sums over a campaign stay exact.
+constexpr long long kMaxCount = 1'000'000'000'000'000;
+constexpr long long kMaxSmallCount = 1'000'000'000;
+constexpr double kMaxSeconds = 1e9;
+
+BenchRun run_from_json(const JsonFields& json) {
+  BenchRun run;
+  run.seed = json.seed("seed");
+  run.solved = json.flag("solved");
+  run.stop_reason = json.text("stop_reason");
+  run.wall_s = json.number("wall_s", 0.0, kMaxSeconds);
+  run.improve_s = json.number("improve_s", 0.0, kMaxSeconds);
+  run.tree_nodes = json.whole("tree_nodes", 0, kMaxCount);
+  run.propagations = json.whole("propagations", 0, kMaxCount);
+  run.physics_steps = json.whole("physics_steps", 0, kMaxCount);
+  run.controls = static_cast<int>(json.whole("controls", 0, kMaxSmallCount));
+  run.pushes = static_cast<int>(json.whole("pushes", 0, kMaxSmallCount));
+  run.bodies_moved = static_cast<int>(json.whole("bodies_moved", 0, kMaxSmallCount));
+  run.solution_duration_s = json.number("solution_duration_s", 0.0, kMaxSeconds);
+  run.path_length_m = json.number("path_length_m", 0.0, 1e12);
+  run.first_pushes = static_cast<int>(json.whole("first_pushes", 0, kMaxSmallCount));
+  run.first_duration_s = json.number("first_duration_s", 0.0, kMaxSeconds);
+  run.cell_skips_refused = json.whole("cell_skips_refused", 0, kMaxCount);
+  // Results of builds before the refusals were counted have none.
+  run.refused = named_refusals(registry(), json.has("refused") ? json.wholes("refused", 0, kMaxCount) : std::vector<long long>{});
+  run.robust_worlds = static_cast<int>(json.whole("robust_worlds", 0, kMaxSmallCount));
+  run.robust_succeeded = static_cast<int>(json.whole("robust_succeeded", 0, run.robust_worlds));
+  const JsonFields failures = json.object("robust_failures");
+  for (const auto& [kind, unused] : json.at("robust_failures").items()) {
+    run.robust_failures[kind] = static_cast<int>(failures.whole(kind, 0, run.robust_worlds));
   }
+  for (const auto& pair : json.array("settings")) {
+    if (!pair.is_array() || pair.size() != 2 || !pair[0].is_string() || !pair[1].is_string()) {
+      json.refuse("settings", "must be a list of [name, value] pairs of strings");
+    }
+    run.settings.emplace_back(pair[0].get<std::string>(), pair[1].get<std::string>());
+  }
+  return run;
+}
+
+}  // namespace
+
+UnitRecord unit_record_from_json(const nlohmann::json& json, const std::string& source) {
+  const JsonFields fields(json, source, "a unit result (an object)");
+  UnitRecord record;
+  record.index = static_cast<size_t>(fields.whole("index", 0, kMaxSmallCount));
+  record.key = fields.text("unit");
+  record.elapsed_s = fields.number("elapsed_s", 0.0, kMaxSeconds);
+  record.run = run_from_json(fields);
+  return record;
 }
 
 }  // namespace physltl::app

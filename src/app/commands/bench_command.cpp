@@ -223,7 +223,7 @@ CommandRunner add_bench_command(CLI::App& app) {
       ->required();
   app.add_option("--set", args->settings, "Pass key=value to every script's `params` table (repeatable)")
       ->allow_extra_args(false);
-  app.add_option("--runs", args->runs, "Number of seeds per planner")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--runs", args->runs, "Number of seeds per planner")->check(CLI::Range(1, kMaxRuns))->capture_default_str();
   app.add_option("--seed", args->seed, "First seed; runs use S, S+1, ... (default: each scenario's)")->check(seed_number());
   app.add_option("--time-limit", args->time_limit, "Planning time limit per run in seconds (default: the scenario's)")
       ->check(number_in(0.0, 1e6));

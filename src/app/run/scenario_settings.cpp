@@ -10,7 +10,10 @@ scenario::World load_with_settings(const std::string& path, const std::vector<st
   for (const auto& setting : settings) {
     const auto eq = setting.find('=');
     if (eq == std::string::npos || eq == 0) throw BadInput("--set expects key=value, got '" + setting + "'");
-    options.params[setting.substr(0, eq)] = setting.substr(eq + 1);
+    const auto [at, fresh] = options.params.emplace(setting.substr(0, eq), setting.substr(eq + 1));
+    if (!fresh) {
+      throw BadInput("'" + at->first + "' is set twice: " + at->first + "=" + at->second + " and " + setting);
+    }
   }
   return scenario::load_scenario(path, options);
 }

@@ -7,11 +7,13 @@
 
 #include <charconv>
 #include <cmath>
+#include <set>
 
 namespace physltl::app {
 
 scenario::Uncertainty override_uncertainty(const scenario::Uncertainty& declared, const std::string& text) {
   scenario::Uncertainty u = declared;
+  std::set<std::string> given;
   size_t from = 0;
   while (from <= text.size()) {
     const size_t comma = text.find(',', from);
@@ -34,6 +36,7 @@ scenario::Uncertainty override_uncertainty(const scenario::Uncertainty& declared
     if (field == nullptr) {
       throw BadInput(fmt::format("--uncertainty: unknown key '{}' (mass, friction, start, body_pose, body_yaw_deg)", key));
     }
+    if (!given.insert(key).second) throw BadInput(fmt::format("--uncertainty: {} is given twice", key));
     *field = value;
     if (comma == std::string::npos) break;
     from = comma + 1;
