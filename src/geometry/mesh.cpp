@@ -4,13 +4,20 @@
 
 #include <tiny_obj_loader.h>
 
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
 
 namespace physltl::geometry {
 namespace {
 
 using Eigen::Vector3d;
+
+constexpr std::uintmax_t kMaxObjBytes = std::uintmax_t{64} << 20;
 
 // The part of a triangle at or below z = top, as a polygon projected on the floor (empty when none).
 Polygon below(const std::array<Vector3d, 3>& corners, double top) {
@@ -29,15 +36,71 @@ Polygon below(const std::array<Vector3d, 3>& corners, double top) {
   return out;
 }
 
+// The text of the OBJ file at `path`, at most kMaxObjBytes: a device or a huge file is refused, not read
+// until memory runs out.
+std::string obj_text(const std::string& path) {
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (!std::filesystem::exists(status)) throw MeshError("mesh '" + path + "' does not exist");
+  if (!std::filesystem::is_regular_file(status)) throw MeshError("mesh '" + path + "' is not a regular file");
+  if (std::filesystem::file_size(path, error) > kMaxObjBytes) {
+    throw MeshError("mesh '" + path + "' is larger than " + std::to_string(kMaxObjBytes >> 20) + " MiB");
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw MeshError("mesh '" + path + "' cannot be read");
+  return text.str();
+}
+
+// tinyobjloader reads leniently: "nan" or a missing coordinate as 0, a face of two corners or with an
+// index past the vertices as nothing, silently. The lines this program uses (v, f) are checked first,
+// so that a broken file is an error naming its line, not another shape.
+void check_obj_lines(const std::string& text, const std::string& path) {
+  std::istringstream lines(text);
+  std::string line;
+  long long vertices = 0;
+  for (int number = 1; std::getline(lines, line); ++number) {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    const auto refuse = [&](const std::string& why) {
+      throw MeshError("mesh '" + path + "' line " + std::to_string(number) + ": " + why);
+    };
+    if (keyword == "v") {
+      std::vector<std::string> coordinates{std::istream_iterator<std::string>(words), {}};
+      if (coordinates.size() != 3 && coordinates.size() != 4 && coordinates.size() != 6) refuse("a vertex needs x, y and z");
+      for (const std::string& c : coordinates) {
+        char* end = nullptr;
+        const double value = std::strtod(c.c_str(), &end);
+        if (end != c.c_str() + c.size() || !std::isfinite(value)) refuse("a vertex coordinate '" + c + "' is not a finite number");
+      }
+      ++vertices;
+    } else if (keyword == "f") {
+      std::vector<std::string> corners{std::istream_iterator<std::string>(words), {}};
+      if (corners.size() < 3) refuse("a face needs at least 3 corners");
+      for (const std::string& corner : corners) {
+        const std::string index = corner.substr(0, corner.find('/'));
+        long long k = 0;
+        const auto [end, error] = std::from_chars(index.data(), index.data() + index.size(), k);
+        const bool defined = error == std::errc() && end == index.data() + index.size() && k != 0 &&
+                             (k > 0 ? k <= vertices : -k <= vertices);
+        if (!defined) refuse("a face corner '" + corner + "' names no vertex defined before it");
+      }
+    }
+  }
+}
+
 }  // namespace
 
 Mesh read_obj(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw MeshError("mesh '" + path + "' does not exist");
+  const std::string text = obj_text(path);
+  check_obj_lines(text, path);
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, config)) {
+  if (!reader.ParseFromString(text, "", config)) {
     std::string why = reader.Error();
     while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();
     throw MeshError("mesh '" + path + "' cannot be read: " + (why.empty() ? "not an OBJ file" : why));

@@ -1,6 +1,10 @@
 #include "read_expectations.h"
 
+#include "physltl/scenario/world.h"
+
+#include <charconv>
 #include <cmath>
+#include <map>
 
 namespace physltl::scenario {
 namespace {
@@ -24,17 +28,35 @@ PictureTolerance read_tolerance(TableReader& r) {
   return t;
 }
 
+// All the digits that tell `value` apart: 12.5000000001, where messages otherwise round to six.
+std::string shortest_text(double value) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  return std::string(buffer, end);
+}
+
 std::vector<FrameMoment> read_frames(TableReader& r) {
   std::vector<FrameMoment> frames;
   const LuaValue* list = r.list("frames");
   if (list == nullptr) return frames;
+  std::map<std::string, const LuaValue*> named;
   for (const LuaValue& item : list->array) {
-    if (item.kind == LuaValue::Kind::kNumber && item.number >= 0 && std::isfinite(item.number)) {
+    if (item.kind == LuaValue::Kind::kNumber && item.number >= 0 && item.number <= 1e6) {
       frames.push_back({item.number, false});
     } else if (item.kind == LuaValue::Kind::kString && item.string == "last") {
       frames.push_back({0.0, true});
     } else {
-      r.error("'frames' lists seconds of motion (0 or more) or \"last\", e.g. frames = { 0, 12.5, \"last\" }");
+      r.error("'frames' lists seconds of motion (0 to 1e6) or \"last\", e.g. frames = { 0, 12.5, \"last\" }");
+      return {};
+    }
+    // Two moments of one golden name would be one golden compared twice, and two JUnit cases of one name.
+    const auto [at, fresh] = named.emplace(frames.back().file_name(), &item);
+    if (!fresh) {
+      r.error("'frames' lists " + frames.back().file_name() + " twice" +
+              (item.kind == LuaValue::Kind::kNumber && at->second->number != item.number
+                   ? " (" + shortest_text(at->second->number) + " s and " + shortest_text(item.number) +
+                         " s name one golden: times must differ in their first six digits)"
+                   : ""));
       return {};
     }
   }
@@ -53,10 +75,18 @@ std::optional<int> read_bound(TableReader& r, const std::string& key) {
 
 }  // namespace
 
+std::string FrameMoment::file_name() const {
+  return last ? "frame_last.png" : "frame_" + number_text(time_s) + "s.png";
+}
+
 Expectations read_expectations(TableReader& r) {
   Expectations e;
   const std::optional<bool> solved = r.has("solved") ? std::optional<bool>(r.boolean("solved", true)) : std::nullopt;
-  if (r.has("infeasible")) e.infeasible = r.string("infeasible");
+  if (r.has("infeasible")) {
+    e.infeasible = r.string("infeasible");
+    // Every reason contains the empty text: the expectation would pass any infeasible task.
+    if (e.infeasible->empty()) r.error("'infeasible' is the text the reason must contain, and may not be empty");
+  }
   if (solved && *solved == bool(e.infeasible)) {
     r.error(e.infeasible ? "'solved = true' and 'infeasible' contradict each other"
                          : "'solved = false' needs 'infeasible = \"...\"', the text the reason must contain");
@@ -77,6 +107,11 @@ Expectations read_expectations(TableReader& r) {
       if (auto picture = t->nested(key)) {
         *slot = read_tolerance(*picture);
         picture->finish();
+        const bool compared = key == std::string("preview") || (key == std::string("tree") ? e.tree : !e.frames.empty());
+        if (!compared) {
+          t->error(std::string("a tolerance for ") + key + " is given, but " +
+                   (key == std::string("tree") ? "tree.png is not compared ('tree = true')" : "no frame is compared ('frames')"));
+        }
       }
     }
     t->finish();

@@ -136,6 +136,11 @@ FixedBody read_fixed(TableReader& r, const std::string& default_name, const std:
   FixedBody body;
   body.name = r.string("name", default_name);
   body.mesh = r.string("mesh", "");
+  if (body.mesh.empty() && r.has("mesh")) {
+    r.error("'mesh' must name an OBJ file, got an empty string");
+    r.skip_unread();
+    return body;
+  }
   if (body.mesh.empty()) {
     body.footprint = read_footprint(r, false);
   } else {

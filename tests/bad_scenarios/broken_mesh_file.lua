@@ -1,4 +1,4 @@
--- expect: 4: has a face with a vertex it does not define
+-- expect: 4: line 3: a face corner '7' names no vertex defined before it
 workspace { bounds = { { 0, 0 }, { 10, 10 } } }
 robot { radius = 0.25, start = { 1, 1 } }
 fixed { name = "desk", mesh = "../geometry/data/broken_index.obj", center = { 5, 5 } }

@@ -25,8 +25,9 @@ class MeshError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The file's faces as triangles. Throws MeshError when it cannot be read, has no triangles or holds
-// coordinates that are not finite.
+// The file's faces as triangles. Throws MeshError when it cannot be read (not a regular file, over 64 MiB),
+// has no triangles, or has a vertex that is not three finite numbers or a face of fewer than three corners
+// or naming a vertex not defined before it (with the line).
 Mesh read_obj(const std::string& path);
 
 // The mesh scaled by `scale` about its origin, its floor projection of everything at or below height `top`

@@ -21,6 +21,10 @@ struct PictureTolerance {
 struct FrameMoment {
   double time_s = 0.0;
   bool last = false;
+
+  // Its golden's and its JUnit case's name: "frame_12.5s.png" (six significant digits), "frame_last.png".
+  // Two moments of one name are refused by the reader.
+  std::string file_name() const;
 };
 
 struct Expectations {

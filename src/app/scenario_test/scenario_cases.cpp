@@ -69,10 +69,6 @@ CaseResult check_case(const knowledge::Reasoning& reasoning, const scenario::Exp
   return {};
 }
 
-std::string frame_file(const scenario::FrameMoment& moment) {
-  return moment.last ? "frame_last.png" : fmt::format("frame_{:g}s.png", moment.time_s);
-}
-
 // The cases that need the plan, after it was found and validated.
 struct SolvedPlan {
   const PlanningRun& run;
@@ -123,7 +119,7 @@ void picture_cases(const SolvedPlan& plan, const scenario::Expectations& e, Gold
   if (e.frames.empty()) return;
   PlanAnimation animation(world, reasoning, replay, static_cast<int>(problem.as_written().dfa.size()));
   for (const scenario::FrameMoment& moment : e.frames) {
-    const std::string file = frame_file(moment);
+    const std::string file = moment.file_name();
     cases.push_back(timed(file, [&] {
       if (!moment.last && moment.time_s > animation.duration_s() + 1e-9) {
         return failed(fmt::format("the plan moves for {:.2f} s only: it has no frame at {:g} s", animation.duration_s(),
@@ -164,7 +160,7 @@ void skip(const scenario::Expectations& e, bool after_preview, const std::string
     names.push_back("plan.json");
   } else {
     if (e.tree) names.push_back("tree.png");
-    for (const auto& frame : e.frames) names.push_back(frame_file(frame));
+    for (const auto& frame : e.frames) names.push_back(frame.file_name());
   }
   for (const std::string& name : names) cases.push_back({name, Outcome::kSkipped, "skipped: " + why});
 }
