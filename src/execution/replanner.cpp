@@ -18,9 +18,11 @@ Replanned replan(const scenario::World& from_here, const planning::PlannerEntry&
     out.stop_reason = "refused: " + *why;
     return out;
   }
-  // The budget, not the clock, ends the search: the time limit only guards against a budget too large.
+  // The budget, not the clock, ends the search: the time limit only guards against a budget too large,
+  // and of the run's deadline only its stop flag (Ctrl-C) holds.
   planning::PlannerOptions budgeted = options;
   budgeted.time_limit = 3600.0;
+  budgeted.deadline = Deadline(Deadline::Clock::time_point::max(), options.deadline.stop());
   budgeted.max_propagations = budget;
   budgeted.threads = 1;
   budgeted.improve = 0;

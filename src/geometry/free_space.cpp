@@ -121,7 +121,8 @@ double distance(const Polygon& a, const Polygon& b, Vec2& closest_a, Vec2& close
   return best;
 }
 
-FreeSpace::FreeSpace(std::vector<Polygon> obstacles, const Rect& bounds) : obstacles_(std::move(obstacles)), bounds_(bounds) {
+FreeSpace::FreeSpace(std::vector<Polygon> obstacles, const Rect& bounds, const Deadline& deadline)
+    : obstacles_(std::move(obstacles)), bounds_(bounds) {
   for (Polygon& o : obstacles_) {
     if (o.signed_area() < 0) std::reverse(o.vertices.begin(), o.vertices.end());
     obstacle_bounds_.push_back(o.bounds());
@@ -144,6 +145,7 @@ FreeSpace::FreeSpace(std::vector<Polygon> obstacles, const Rect& bounds) : obsta
   // Each corner with its polygon's neighbouring corners, for the tangency test below.
   std::vector<std::pair<Vec2, Vec2>> sides;
   for (const Polygon& o : obstacles_) {
+    deadline.check();
     const auto& vs = o.vertices;
     for (size_t k = 0; k < vs.size(); ++k) {
       const Vec2& v = vs[k];
@@ -166,6 +168,7 @@ FreeSpace::FreeSpace(std::vector<Polygon> obstacles, const Rect& bounds) : obsta
   };
   edges_.resize(corners_.size());
   for (size_t i = 0; i < corners_.size(); ++i) {
+    deadline.check();
     for (size_t j = i + 1; j < corners_.size(); ++j) {
       if (!tangent(i, corners_[j]) || !tangent(j, corners_[i]) || !free(corners_[i], corners_[j])) continue;
       const double d = (corners_[i] - corners_[j]).norm();

@@ -56,7 +56,7 @@ geometry::Polygon start_place(const geometry::FreeSpace& space, const geometry::
 }  // namespace
 
 geometry::FreeSpace robot_free_space(const scenario::World& world, RobotObstacles obstacles, double clearance,
-                                     const std::vector<geometry::Polygon>& avoided) {
+                                     const std::vector<geometry::Polygon>& avoided, const Deadline& deadline) {
   const double r = world.robot.radius + clearance / 2.0;
   std::vector<geometry::Polygon> grown = avoided;
   const auto add = [&](const geometry::Footprint& f) {
@@ -68,7 +68,7 @@ geometry::FreeSpace robot_free_space(const scenario::World& world, RobotObstacle
   }
   const geometry::Rect bounds{world.workspace.bounds.min + geometry::Vec2::Constant(r),
                               world.workspace.bounds.max - geometry::Vec2::Constant(r)};
-  return geometry::FreeSpace(std::move(grown), bounds);
+  return geometry::FreeSpace(std::move(grown), bounds, deadline);
 }
 
 std::vector<std::vector<double>> place_distances(const scenario::World& world, const geometry::FreeSpace& space) {
@@ -84,14 +84,14 @@ std::vector<std::vector<double>> place_distances(const scenario::World& world, c
   return leg;
 }
 
-double shortest_free_path_length(const scenario::World& world, const TaskAutomaton& task) {
-  return shortest_accepted_route(world, task, place_distances(world, robot_free_space(world, RobotObstacles::kFixedBodies)),
-                                 false);
+double shortest_free_path_length(const scenario::World& world, const TaskAutomaton& task, const Deadline& deadline) {
+  const geometry::FreeSpace space = robot_free_space(world, RobotObstacles::kFixedBodies, 0.0, {}, deadline);
+  return shortest_accepted_route(world, task, place_distances(world, space), false);
 }
 
-double shortest_push_free_path_length(const scenario::World& world, const TaskAutomaton& task) {
-  return shortest_accepted_route(world, task, place_distances(world, robot_free_space(world, RobotObstacles::kAllBodies)),
-                                 true);
+double shortest_push_free_path_length(const scenario::World& world, const TaskAutomaton& task, const Deadline& deadline) {
+  const geometry::FreeSpace space = robot_free_space(world, RobotObstacles::kAllBodies, 0.0, {}, deadline);
+  return shortest_accepted_route(world, task, place_distances(world, space), true);
 }
 
 }  // namespace physltl::planning

@@ -28,13 +28,13 @@ const TaskAutomaton& PlanningProblem::search_task(const PlannerEntry& planner) c
   return planner.uses_knowledge ? prepared_->simplified : prepared_->as_written;
 }
 
-const PlannerData* PlanningProblem::preparation(const PlannerEntry& planner) const {
+const PlannerData* PlanningProblem::preparation(const PlannerEntry& planner, const Deadline& deadline) const {
   const std::lock_guard lock(planners_mutex_);
   auto known = planners_.find(&planner);
   if (known == planners_.end()) {
     const auto started = std::chrono::steady_clock::now();
     PlannerPreparation made;
-    if (planner.prepare) made.data = planner.prepare(for_planner(planner));
+    if (planner.prepare) made.data = planner.prepare(for_planner(planner), deadline);
     made.seconds = seconds_since(started);
     known = planners_.emplace(&planner, std::move(made)).first;
   }
@@ -59,7 +59,16 @@ Problem PlanningProblem::for_planner(const PlannerEntry& planner) const {
 }
 
 ValidatedPlan solve(const PlanningProblem& problem, const PlannerEntry& planner, const PlannerOptions& options) {
-  return plan_and_validate(problem.for_planner(planner), planner, problem.preparation(planner), options);
+  const PlannerData* prepared = nullptr;
+  try {
+    prepared = problem.preparation(planner, options.deadline);
+  } catch (const DeadlineReached& reached) {
+    // Cut short before any search: no plan, for the reason the deadline gives.
+    ValidatedPlan cut;
+    cut.result.stop_reason = reached.what();
+    return cut;
+  }
+  return plan_and_validate(problem.for_planner(planner), planner, prepared, options);
 }
 
 }  // namespace physltl::planning

@@ -3,7 +3,15 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <spawn.h>
 #include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <thread>
+#include <vector>
 
 #include <cstdlib>
 #include <filesystem>
@@ -78,5 +86,35 @@ inline Result run_program(const std::string& binary, const std::string& args) {
 }
 
 inline Result run(const std::string& args) { return run_program(PHYSLTL_BINARY, args); }
+
+// physltl-studio with `args` (no shell), sent SIGINT `after` it started: its exit code (-1 for a signal)
+// and the seconds it took to end after the signal.
+struct Interruption {
+  int exit_code = -1;
+  double seconds_to_end = 0.0;
+};
+inline Interruption interrupt(const std::vector<std::string>& args, std::chrono::milliseconds after) {
+  std::vector<std::string> words{PHYSLTL_BINARY};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  const fs::path dir = test_dir();
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, (dir / "stdout").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 2, (dir / "stderr").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return {};
+  std::this_thread::sleep_for(after);
+  const auto sent = std::chrono::steady_clock::now();
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count()};
+}
 
 }  // namespace physltl::testing_support

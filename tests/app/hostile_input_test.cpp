@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 
 #include <cctype>
+#include <chrono>
 #include <fstream>
 #include <string>
 #include <thread>
@@ -324,6 +325,82 @@ TEST(Nonsense, BenchMergeRefusesNumbersNoRunMakesNamingTheFileAndTheKey) {
     std::ofstream(shard / "manifest.json") << manifest;
   }
   EXPECT_FALSE(fs::exists(out / "merged"));
+}
+
+// 1000 small movable boxes beside 1000 fixed ones: the route choice's free spaces take seconds to prepare.
+fs::path crowded_world(const fs::path& dir) {
+  fs::create_directories(dir);
+  std::ofstream(dir / "crowded.lua") << R"(
+workspace { bounds = { { 0, 0 }, { 100, 100 } } }
+robot { radius = 0.25, start = { 1, 1 } }
+for i = 0, 999 do
+  local x, y = 5 + 2 * (i % 45), 5 + 2 * (i // 45)
+  movable { name = "M" .. i, center = { x, y }, size = { 0.2, 0.2 } }
+  fixed { name = "F" .. i, center = { x + 1, y + 1 }, size = { 0.2, 0.2 } }
+end
+region { name = "p1", rect = { { 97, 97 }, { 99, 99 } } }
+task { formula = "F p1" }
+)";
+  return dir / "crowded.lua";
+}
+
+// The time rule (docs/reliability.md): the time limit bounds the whole planning run, preparation included.
+TEST(Hang, APreparationLongerThanTheTimeLimitEndsWithinASecondOfIt) {
+  const fs::path scenario = crowded_world(test_dir());
+  const fs::path out = fresh_out_dir();
+  const auto started = std::chrono::steady_clock::now();
+  const Result r = run(scenario.string() + " --time-limit 1 --quiet --out " + out.string());
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("no plan found (time limit)"), std::string::npos) << r.err;
+  EXPECT_LT(elapsed, 1.0 + 1.0 + 0.5);  // the limit, the rule's second, and loading the 2000 bodies
+  EXPECT_FALSE(fs::exists(out / "crowded" / "plan.json"));
+}
+
+TEST(Hang, CtrlCEndsEveryPhaseWithinASecondPreparationAndRenderingIncluded) {
+  const fs::path crowded = crowded_world(test_dir());
+  const fs::path out = fresh_out_dir();
+  const Interruption preparing =
+      interrupt({crowded.string(), "--time-limit", "60", "--quiet", "--out", out.string()}, std::chrono::milliseconds(800));
+  EXPECT_EQ(preparing.exit_code, 130);
+  EXPECT_LT(preparing.seconds_to_end, 1.0);
+  // rooms.lua at 60 frames a second renders for seconds after it plans.
+  std::string rooms = slurp(kSource + "/scenarios/rooms.lua");
+  rooms = rooms.substr(0, rooms.find("render {")) + "render { width = 640, height = 480, fps = 60 }\n";
+  std::ofstream(test_dir() / "rooms.lua") << rooms;
+  const Interruption rendering = interrupt({(test_dir() / "rooms.lua").string(), "--render", "--threads", "1", "--quiet",
+                                            "--out", out.string()},
+                                           std::chrono::milliseconds(3000));
+  EXPECT_EQ(rendering.exit_code, 130);
+  EXPECT_LT(rendering.seconds_to_end, 1.0);
+  EXPECT_FALSE(fs::exists(out / "crowded"));
+  EXPECT_FALSE(fs::exists(out / "rooms"));
+  for (const auto& entry : fs::directory_iterator(out)) ADD_FAILURE() << "left behind: " << entry.path();
+}
+
+TEST(Nonsense, ACorruptGoldenIsNamedAndRewrittenByUpdateAndAGoldensFolderThatIsAFileIsRefused) {
+  const fs::path dir = test_dir();
+  const std::string scenario = quick_test_scenario(dir).string();
+  const fs::path out = fresh_out_dir();
+  fs::remove_all(dir / "goldens");
+  ASSERT_EQ(run("test " + scenario + " --update --out " + out.string()).exit_code, 0);
+  std::ofstream(dir / "goldens" / "enclosed" / "preview.png") << "not a picture";
+  const Result corrupt = run("test " + scenario + " --out " + out.string());
+  EXPECT_EQ(corrupt.exit_code, 1);
+  EXPECT_NE(corrupt.out.find("not a PNG picture this program reads"), std::string::npos) << corrupt.out;
+  EXPECT_NE(corrupt.out.find("rewrite it with: physltl-studio test " + scenario + " --update"), std::string::npos) << corrupt.out;
+  ASSERT_EQ(run("test " + scenario + " --update --out " + out.string()).exit_code, 0);
+  EXPECT_EQ(run("test " + scenario + " --out " + out.string()).exit_code, 0);
+
+  std::ofstream(dir / "a-file") << "x";
+  for (const std::string update : {"", " --update"}) {
+    const Result r = run("test " + scenario + " --goldens " + (dir / "a-file").string() + update + " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << r.out;
+    EXPECT_NE(r.err.find("--goldens " + (dir / "a-file" / "enclosed").string() + ": " + (dir / "a-file").string() +
+                         " is a file, not a folder"),
+              std::string::npos)
+        << r.err;
+  }
 }
 
 // A fault of ours, here a planner that throws: said as an internal error, with its own exit code, by every

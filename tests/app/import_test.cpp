@@ -70,6 +70,9 @@ TEST(ImportSokoban, AMalformedLevelIsRefusedWithFileLineAndNothingIsWritten) {
       {"#####\n#@$$.#\n######\n", ":1: level 1: 2 boxes but 1 goals"},
       {"#####\n#@@$.#\n######\n", ":1: level 1: needs exactly one player"},
       {"#####\n#@$.  \n#####\n", ":1: level 1: the player is not walled in"},
+      {"5#\n#@$.#\n5#\n", ":1: a run-length encoded row (digits before the cells): write the level out cell by cell"},
+      {"#####\n#@$.#\t\n#####\n", ":2: the byte 0x09 at column 6 is no Sokoban cell"},
+      {"#####\n#@$\x01#\n#####\n", ":2: the byte 0x01 at column 4 is no Sokoban cell"},
   };
   for (const Case& c : cases) {
     const fs::path file = dir / "bad.txt";
@@ -80,6 +83,17 @@ TEST(ImportSokoban, AMalformedLevelIsRefusedWithFileLineAndNothingIsWritten) {
     EXPECT_NE(r.err.find(file.string() + c.message), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out)) << c.text;
   }
+}
+
+// What editors and collections add around levels is read as they mean it: a byte-order mark before the
+// first row, a ';' comment line inside a level.
+TEST(ImportSokoban, AByteOrderMarkAndACommentInsideALevelAreReadAsTheyMean) {
+  const fs::path dir = test_dir("levels");
+  std::ofstream(dir / "marked.txt") << "\xEF\xBB\xBF#####\n; the first row above\n#@$.#\n#####\n";
+  const fs::path out = fresh_out_dir();
+  const Result r = run("import sokoban " + (dir / "marked.txt").string() + " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(run("check " + (out / "marked_1.lua").string() + " --no-preview --out " + out.string()).exit_code, 0);
 }
 
 }  // namespace

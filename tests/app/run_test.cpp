@@ -236,23 +236,10 @@ TEST(Run, ASearchCutShortWritesFailedReportAndTreeAndLeavesTheEarlierPlanAlone) 
 TEST(Run, CtrlCStopsPlanningPromptlyAndWritesNothing) {
   const fs::path scenario = rooms_laps(test_dir("scenario"));
   const fs::path out = fresh_out_dir();
-
-  const std::string binary = PHYSLTL_BINARY;
-  const std::string scenario_arg = scenario.string(), out_arg = out.string();
-  std::vector<char*> argv = {const_cast<char*>(binary.c_str()), const_cast<char*>(scenario_arg.c_str()),
-                             const_cast<char*>("--time-limit"), const_cast<char*>("60"),
-                             const_cast<char*>("--quiet"), const_cast<char*>("--out"),
-                             const_cast<char*>(out_arg.c_str()), nullptr};
-  pid_t pid = 0;
-  ASSERT_EQ(posix_spawn(&pid, binary.c_str(), nullptr, nullptr, argv.data(), environ), 0);
-  std::this_thread::sleep_for(std::chrono::milliseconds(700));
-  const auto sent = std::chrono::steady_clock::now();
-  kill(pid, SIGINT);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  EXPECT_LT(std::chrono::steady_clock::now() - sent, std::chrono::seconds(2));
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 130);
+  const Interruption stopped =
+      interrupt({scenario.string(), "--time-limit", "60", "--quiet", "--out", out.string()}, std::chrono::milliseconds(700));
+  EXPECT_LT(stopped.seconds_to_end, 1.0);
+  EXPECT_EQ(stopped.exit_code, 130);
   EXPECT_FALSE(fs::exists(out / "laps"));
 }
 

@@ -24,7 +24,8 @@ const fs::path kSource = PHYSLTL_SOURCE_DIR;
 const std::map<std::string, std::set<std::string>>& allowed() {
   static const std::map<std::string, std::set<std::string>> table = [] {
     std::map<std::string, std::set<std::string>> direct = {
-        {"geometry", {}},
+        {"base", {}},
+        {"geometry", {"base"}},
         {"ltl", {}},
         {"scenario", {"geometry", "ltl"}},
         {"knowledge", {"scenario"}},

@@ -53,7 +53,7 @@ struct TestProblem {
     auto known = prepared_.find(planner);
     if (known == prepared_.end()) {
       const PlannerEntry& entry = planner_named(planner);
-      known = prepared_.emplace(planner, entry.prepare ? entry.prepare(problem()) : nullptr).first;
+      known = prepared_.emplace(planner, entry.prepare ? entry.prepare(problem(), {}) : nullptr).first;
     }
     return known->second.get();
   }

@@ -3,6 +3,7 @@
 // obstacles' corners. With each obstacle the configuration-space obstacle of a disc robot (a fixed body
 // grown by the robot's radius), these are shortest paths of the robot's centre.
 
+#include "physltl/base/deadline.h"
 #include "physltl/geometry/shape.h"
 #include "physltl/geometry/shapes.h"
 #include "physltl/geometry/uniform_grid.h"
@@ -22,8 +23,9 @@ std::vector<Polygon> grown_from_inside(const Shape& shape, const Pose2& pose, do
 
 class FreeSpace {
  public:
-  // `obstacles` convex; `bounds` where the point may go.
-  FreeSpace(std::vector<Polygon> obstacles, const Rect& bounds);
+  // `obstacles` convex; `bounds` where the point may go. Its visibility graph costs the square of the
+  // corners: the construction checks `deadline` as it goes and throws DeadlineReached.
+  FreeSpace(std::vector<Polygon> obstacles, const Rect& bounds, const Deadline& deadline = {});
 
   // Whether the segment stays out of every obstacle's interior (touching a boundary is allowed).
   bool free(const Vec2& a, const Vec2& b) const;

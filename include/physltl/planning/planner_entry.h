@@ -86,8 +86,9 @@ struct PlannerEntry {
   std::vector<std::string> diagnosis_keys;
 
   // Run once per problem and kept (PlanningProblem::preparation): what the planner makes of the problem
-  // before any search, as OMPL's setup(). Empty: nothing.
-  std::function<std::shared_ptr<const PlannerData>(const Problem&)> prepare;
+  // before any search, as OMPL's setup(). Empty: nothing. Long loops check `deadline` (the first run's)
+  // and throw DeadlineReached; nothing is kept then.
+  std::function<std::shared_ptr<const PlannerData>(const Problem&, const Deadline& deadline)> prepare;
   // The search; `prepared` is what prepare made (null without it).
   std::function<PlanResult(const Problem&, const PlannerData* prepared, const PlannerOptions&)> plan;
   // Its own data, from prepare or from PlanResult::own, in the program's forms. Empty: it shows none.

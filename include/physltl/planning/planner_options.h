@@ -1,6 +1,7 @@
 #pragma once
 // What every planner takes and gives (registry.h): the options of one search and its result.
 
+#include "physltl/base/deadline.h"
 #include "physltl/planning/plan.h"
 #include "physltl/planning/refusal.h"
 #include "physltl/scenario/world.h"
@@ -19,8 +20,11 @@ class PlannerData;
 
 struct PlannerOptions {
   std::uint64_t seed = 1;
-  double time_limit = scenario::kDefaultTimeLimit;  // s of wall-clock planning
-  const std::atomic<bool>* stop = nullptr;      // set from elsewhere (Ctrl-C, another thread's success)
+  double time_limit = scenario::kDefaultTimeLimit;  // s of wall-clock search, from its start
+  // When the whole run must end (its time limit from the run's start, preparation included) and the stop
+  // flag (Ctrl-C): the search ends at the sooner of this and its own time_limit, and the preparation,
+  // replay and improvement of the run stop at it (validated_plan.h). Default: never, no stop flag.
+  Deadline deadline;
   std::size_t max_tree_nodes = 2'000'000;       // memory bound: ~0.5 KiB per node
   // The knowledge planner and the baseline stop with "budget" after this many propagations (0: no bound),
   // checked between batches, so a seed gives the same plan or the same failure on any machine and load

@@ -37,8 +37,9 @@ class PlanningProblem {
   // The formula as written, which every replay checks.
   const TaskAutomaton& as_written() const { return prepared_->as_written; }
   const decomposition::Decomposition& decomposition() const { return prepared_->decomposition; }
-  // What `planner` prepared of this problem (null when it prepares nothing), made on the first call.
-  const PlannerData* preparation(const PlannerEntry& planner) const;
+  // What `planner` prepared of this problem (null when it prepares nothing), made on the first call;
+  // throws DeadlineReached when `deadline` comes first (nothing kept: a later call prepares again).
+  const PlannerData* preparation(const PlannerEntry& planner, const Deadline& deadline = {}) const;
   // Seconds the reasoning and the decomposition took, once per World and task, and what `planner`
   // prepared of them; without a planner, what every planner prepared so far.
   double preparation_s(const PlannerEntry& planner) const;
@@ -66,7 +67,9 @@ class PlanningProblem {
   mutable std::map<const PlannerEntry*, PlannerPreparation> planners_;
 };
 
-// Plans with `planner` (options.threads threads growing one search) and validates the plan by replay.
+// Plans with `planner` (options.threads threads growing one search) and validates the plan by replay; the
+// planner's preparation, when this is its first run, is within options.deadline too (a result with stop
+// reason "time limit" or "interrupted" when it comes first).
 ValidatedPlan solve(const PlanningProblem& problem, const PlannerEntry& planner, const PlannerOptions& options);
 
 }  // namespace physltl::planning

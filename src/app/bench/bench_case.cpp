@@ -4,6 +4,7 @@
 #include "run/planner_names.h"
 #include "physltl/planning/validation/improve.h"
 #include "physltl/planning/path_lower_bound.h"
+#include "common/stop_signal.h"
 #include "physltl/execution/robustness.h"
 #include "run/uncertainty_args.h"
 #include "run/scenario_settings.h"
@@ -53,12 +54,15 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   results.robustness = settings.robustness;
   results.parameter_notes = parameter_notes(settings.parameters);
   results.started_at = local_time_now();
-  results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->problem->as_written());
-  results.shortest_push_free_path_m = planning::shortest_push_free_path_length(c->world, c->problem->as_written());
+  // Before any unit and outside their time limits; Ctrl-C stops it.
+  const Deadline interruptible(Deadline::Clock::time_point::max(), &stop_flag());
+  results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->problem->as_written(), interruptible);
+  results.shortest_push_free_path_m =
+      planning::shortest_push_free_path_length(c->world, c->problem->as_written(), interruptible);
   for (const auto planner : settings.planners) {
     if (const auto why = registry().refusal(*planner, c->problem->search_task(*planner))) throw BadInput(*why);
     // Each planner prepares the problem before its first run, outside every run's time.
-    c->problem->preparation(*planner);
+    c->problem->preparation(*planner, interruptible);
     // A planner that grows its search on one thread runs once, with the first thread count.
     for (const int threads : settings.threads) {
       if (planner->can.threads || threads == settings.threads.front()) results.planners.push_back({planner, threads, {}});
@@ -128,7 +132,9 @@ BenchRun measure(const planning::PlanningProblem& problem, const planning::Plann
   run.seed = options.seed;
   const planning::PlanResult& result = solution.result;
   run.solved = solution.solved();
-  run.stop_reason = solution.solved() || !result.solved ? result.stop_reason : "failed replay";
+  run.stop_reason = solution.solved() || !result.solved      ? result.stop_reason
+                    : !solution.replay->cut_short.empty() ? solution.replay->cut_short
+                                                          : "failed replay";
   run.tree_nodes = result.stats.tree_nodes;
   run.propagations = result.stats.propagations;
   run.physics_steps = result.stats.physics_steps;

@@ -36,7 +36,8 @@ bool run_units(const std::vector<std::unique_ptr<BenchCase>>& cases, const std::
     const auto unit_started = clock::now();
     planning::PlannerOptions options = planning::options_for(c.world);
     options.seed = unit.seed;
-    options.stop = &stop;
+    // Each unit's deadline starts with it: the case was prepared before any unit, outside their time.
+    options.deadline = Deadline::in(c.world.planner.time_limit, &stop);
     options.threads = planner.threads;
     options.improve = settings.improve;
     options.parameters = settings.parameters;

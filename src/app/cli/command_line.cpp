@@ -4,6 +4,8 @@
 #include "common/build_version.h"
 #include "common/output_folder.h"
 #include "common/printable.h"
+#include "common/stop_signal.h"
+#include "physltl/base/deadline.h"
 #include "physltl/execution/perturbation.h"
 #include "physltl/physics/simulation.h"
 #include "physltl/scenario/diagnostic.h"
@@ -41,24 +43,23 @@ Command make_command(const std::string& name, const std::string& description,
   std::_Exit(kExitInternalError);
 }
 
-int parse_and_run(Command& command, int argc, char** argv) {
-  physltl::physics::set_engine_failure_handler(end_on_engine_failure);
-  try {
-    command.app->parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return command.app->exit(e) == 0 ? kExitOk : kExitBadInput;
-  }
+// The command's own exit code, or the error it ended with reported on stderr and turned into one.
+int run_reporting_errors(Command& command) {
   try {
     return command.run();
   } catch (const physltl::scenario::ScenarioError& e) {
+    if (stop_received()) throw Interrupted();
     for (const auto& d : e.diagnostics()) std::cerr << printable(d.str()) << "\n";
   } catch (const InfeasibleTask& e) {
     std::cerr << "physltl-studio: the task is infeasible: " << printable(e.what()) << "\n";
     return kExitNoPlan;
-  } catch (const Interrupted& e) {
-    std::cerr << "physltl-studio: " << e.what() << "\n";
-    return kExitInterrupted;
+  } catch (const Interrupted&) {
+    throw;
+  } catch (const physltl::DeadlineReached&) {
+    // Only an interruption reaches here: a run's time limit is its own result.
+    throw Interrupted();
   } catch (const BadInput& e) {
+    if (stop_received()) throw Interrupted();
     std::cerr << "physltl-studio: " << printable(e.what()) << "\n";
   } catch (const physltl::execution::PerturbationError& e) {
     // An uncertainty too wide for the world (--robustness, execute): the user's to narrow.
@@ -70,6 +71,7 @@ int parse_and_run(Command& command, int argc, char** argv) {
     std::cerr << "physltl-studio: cannot write the outputs: " << (e.path1().empty() ? "" : printable(e.path1().string()) + ": ")
               << e.code().message() << "\n";
   } catch (const std::exception& e) {
+    if (stop_received()) throw Interrupted();
     // Anything else is a fault of ours, never the user's input: said as such, with an exit code of its own.
     std::cerr << "physltl-studio: internal error: " << printable(e.what()) << " (please report it with the command line)\n";
     return kExitInternalError;
@@ -78,6 +80,26 @@ int parse_and_run(Command& command, int argc, char** argv) {
     return kExitInternalError;
   }
   return kExitBadInput;
+}
+
+int parse_and_run(Command& command, int argc, char** argv) {
+  physltl::physics::set_engine_failure_handler(end_on_engine_failure);
+  try {
+    command.app->parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return command.app->exit(e) == 0 ? kExitOk : kExitBadInput;
+  }
+  install_stop_signal();
+  try {
+    const int code = run_reporting_errors(command);
+    // A command that ended on its own after Ctrl-C ended because of it (a failure it reported meanwhile
+    // was the interruption's doing).
+    if (!stop_received() || code == kExitOk || code == kExitInterrupted) return code;
+    throw Interrupted();
+  } catch (const Interrupted& e) {
+    std::cerr << "physltl-studio: " << e.what() << "\n";
+    return kExitInterrupted;
+  }
 }
 
 }  // namespace

@@ -11,7 +11,7 @@
 #include "cli/number_args.h"
 #include "cli/planner_args.h"
 #include "run/planner_names.h"
-#include "cli/stop_signal.h"
+#include "common/stop_signal.h"
 #include "common/output_paths.h"
 
 #include <fmt/format.h>
@@ -133,9 +133,8 @@ int run_whole(const BenchArgs& args, const std::vector<ScenarioEntry>& entries, 
   std::vector<size_t> all(units.size());
   for (size_t i = 0; i < all.size(); ++i) all[i] = i;
   std::map<size_t, UnitRecord> records;
-  StopSignal stop;
   const UnitProgress progress{!args.quiet && isatty(STDERR_FILENO), "", 0, units.size()};
-  if (!run_units(cases, units, all, settings, progress, stop.flag(),
+  if (!run_units(cases, units, all, settings, progress, stop_flag(),
                  [&](const UnitRecord& record) { records.emplace(record.index, record); })) {
     std::cerr << "physltl-studio: interrupted; nothing written\n";
     return kExitInterrupted;
@@ -162,10 +161,9 @@ int run_shard(const BenchArgs& args, const std::vector<ScenarioEntry>& entries, 
     fmt::print(stderr, "physltl-studio: started {} afresh: {} earlier results deleted (--resume keeps them)\n",
                folder.path().string(), folder.discarded());
   }
-  StopSignal stop;
   const UnitProgress progress{!args.quiet && isatty(STDERR_FILENO), fmt::format("shard {}/{}: ", shard.index, shard.count),
                               mine.size() - left.size(), mine.size()};
-  if (!run_units(cases, units, left, settings, progress, stop.flag(),
+  if (!run_units(cases, units, left, settings, progress, stop_flag(),
                  [&](const UnitRecord& record) { folder.record(record); })) {
     std::cerr << fmt::format("physltl-studio: interrupted; {} of {} units have results in {}, --resume runs the rest\n",
                              folder.records().size(), mine.size(), folder.path().string());

@@ -4,6 +4,7 @@
 #include "physltl/planning/planning_problem.h"
 #include "cli/command.h"
 #include "common/files.h"
+#include "common/stop_signal.h"
 #include "common/output_folder.h"
 #include "views/overlays.h"
 #include "physltl/render/preview.h"
@@ -55,8 +56,11 @@ CommandRunner add_check_command(CLI::App& app) {
     if (!args->no_preview) preview = write_preview(world, reasoning, args->out_dir);
     // What the planner a run uses would prepare: the knowledge planner's look-ahead.
     const planning::PlannerEntry& planner = registry().default_planner();
-    const planning::PlannerAccount prepared =
-        problem.feasible() ? account_of(planner, problem.preparation(planner), world) : planning::PlannerAccount{};
+    // Not a planning run: no time limit, but Ctrl-C.
+    const Deadline interruptible(Deadline::Clock::time_point::max(), &stop_flag());
+    const planning::PlannerAccount prepared = problem.feasible()
+                                                  ? account_of(planner, problem.preparation(planner, interruptible), world)
+                                                  : planning::PlannerAccount{};
     if (args->json) {
       nlohmann::ordered_json report = check_report_json(world, reasoning);
       add_planner_keys(report, registry().report_keys(), prepared.report);

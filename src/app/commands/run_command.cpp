@@ -5,7 +5,7 @@
 #include "cli/number_args.h"
 #include "cli/planner_args.h"
 #include "cli/scenario_args.h"
-#include "cli/stop_signal.h"
+#include "common/stop_signal.h"
 #include "common/files.h"
 #include "common/output_folder.h"
 #include "physltl/ltl/formula.h"
@@ -84,16 +84,26 @@ void say_task(const PlanningRun& run, const Say& say) {
   say(fmt::format("task       {} ({} automaton states, {} planner, seed {})",
                   planner.uses_knowledge ? ltl::to_string(*problem.reasoning().simplified_formula()) : world.task.formula,
                   problem.search_task(planner).dfa.size(), planner.name, world.planner.seed));
+  const planning::PlannerData* prepared = nullptr;
+  try {
+    prepared = run.preparation();
+  } catch (const DeadlineReached& reached) {
+    if (reached.interrupted()) throw;
+    // The search then ends at once with the same reason: "no plan found (time limit)".
+    say(fmt::format("prepare    cut short by the time limit ({:g} s)", world.planner.time_limit));
+    return;
+  }
   say(fmt::format("prepare    {:.2f} s: reasoning, decomposition, and where the lead goes round the bodies",
                   problem.preparation_s(planner)));
-  for (const std::string& line : account_of(planner, problem.preparation(planner), world).lines) say(line);
+  for (const std::string& line : account_of(planner, prepared, world).lines) say(line);
 }
 
 void say_solution(const planning::ValidatedPlan& solution, const scenario::World& world, const Say& say) {
   if (const auto& improved = solution.improvement) {
-    say(fmt::format("improve    {} of {} candidates kept in {:.2f} s: {:.1f} -> {:.1f} s of motion, {} -> {} pushes",
+    say(fmt::format("improve    {} of {} candidates kept in {:.2f} s: {:.1f} -> {:.1f} s of motion, {} -> {} pushes{}",
                     improved->accepted, improved->candidates, improved->time_s, improved->first.duration_s,
-                    improved->improved.duration_s, improved->first.pushes, improved->improved.pushes));
+                    improved->improved.duration_s, improved->first.pushes, improved->improved.pushes,
+                    improved->stopped.empty() ? "" : " (cut short: " + improved->stopped + ")"));
   }
   const planning::Plan& plan = solution.result.plan;
   say(fmt::format("plan       {} controls, {:.1f} s of motion, {} pushes, validated by replay", plan.controls.size(),
@@ -159,10 +169,8 @@ int run(const RunArgs& args) {
   OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
   say_task(run, say);
 
-  StopSignal stop;  // Ctrl-C and SIGTERM end the search; nothing is written then
   ProgressLine progress(args.quiet);
   progress.show(fmt::format("planning (up to {:g} s) ...", world.planner.time_limit));
-  options.stop = &stop.flag();
   options.threads = args.threads;
   options.improve = args.improve;
   const planning::ValidatedPlan solution = run.solve(options);
@@ -171,7 +179,7 @@ int run(const RunArgs& args) {
   say(fmt::format("search     {}: {:.2f} s, {} nodes, {} propagations, {} physics steps{}", solution.result.stop_reason,
                   stats.planning_time_s, stats.tree_nodes, stats.propagations, stats.physics_steps,
                   args.threads > 1 && planner.can.threads ? fmt::format(" ({} threads)", args.threads) : ""));
-  if (stop.received()) throw Interrupted();
+  if (stop_received()) throw Interrupted();
   if (const auto failure = run.failure(solution, out.final_path() / "failed", args.render)) {
     if (failure->diagnosed) say("outputs    " + (out.final_path() / "failed").string() + "/");
     std::cerr << "physltl-studio: " << failure->line << (solution.result.solved ? "; nothing written" : "") << "\n";
@@ -180,7 +188,7 @@ int run(const RunArgs& args) {
   say_solution(solution, world, say);
   write_plan_files(run, solution, args, out, say);
   if (args.render) render_plan(run, solution, out, progress, say);
-  if (stop.received()) throw Interrupted();
+  if (stop_received()) throw Interrupted();
   out.commit();
   say("outputs    " + out.final_path().string() + "/");
   return kExitOk;

@@ -5,7 +5,7 @@
 #include "scenario_test/schedule.h"
 #include "scenario_test/summary.h"
 #include "scenario_test/test_entries.h"
-#include "cli/stop_signal.h"
+#include "common/stop_signal.h"
 #include "common/output_paths.h"
 
 #include <fmt/format.h>
@@ -48,13 +48,16 @@ void refuse_shared_goldens(const std::vector<TestEntry>& entries, const TestSett
 int run_tests(const TestArgs& args) {
   const auto started = std::chrono::steady_clock::now();
   const std::vector<TestEntry> entries = expand_test_paths(args.paths);
-  StopSignal stop;
   TestSettings settings;
   if (args.goldens) settings.goldens_dir = *args.goldens;
   settings.out_dir = std::filesystem::path(args.out_dir) / "test";
   settings.update = args.update;
-  settings.stop = &stop.flag();
+  settings.stop = &stop_flag();
   refuse_shared_goldens(entries, settings);
+  // A goldens folder under a regular file can be neither read nor written (--update): said once, up front.
+  for (const TestEntry& entry : entries) {
+    checked_output_folder(args.goldens ? "--goldens" : "goldens folder", goldens_folder(entry, settings).string(), {});
+  }
   const std::filesystem::path times = settings.out_dir / "times.json";
   std::optional<std::filesystem::path> junit;
   if (args.junit) {
@@ -72,7 +75,7 @@ int run_tests(const TestArgs& args) {
   std::atomic<std::size_t> next{0};
   std::mutex print;
   const auto work = [&] {
-    for (std::size_t n = next++; n < entries.size() && !stop.received(); n = next++) {
+    for (std::size_t n = next++; n < entries.size() && !stop_received(); n = next++) {
       const std::size_t i = order[n];
       results[i] = test_scenario(entries[i], worlds[i], settings);
       const std::lock_guard<std::mutex> lock(print);
@@ -84,7 +87,7 @@ int run_tests(const TestArgs& args) {
   for (int j = 1; j < std::min<int>(args.jobs, static_cast<int>(entries.size())); ++j) workers.emplace_back(work);
   work();
   for (std::thread& w : workers) w.join();
-  if (stop.received()) {
+  if (stop_received()) {
     std::cerr << "physltl-studio: interrupted; no summary or JUnit file written\n";
     return kExitInterrupted;
   }

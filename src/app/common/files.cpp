@@ -7,6 +7,8 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <mutex>
+#include <set>
 
 #include <string>
 
@@ -76,6 +78,36 @@ bool write_all(int fd, std::string_view text) {
   return true;
 }
 
+// The temporary files of writes under way, for remove_unfinished_writes(). Never destroyed: the stop
+// signal's watchdog may use them while the process exits.
+std::mutex& writes_mutex() {
+  static auto* mutex = new std::mutex;
+  return *mutex;
+}
+std::set<std::filesystem::path>& unfinished_writes() {
+  static auto* files = new std::set<std::filesystem::path>;
+  return *files;
+}
+
+// A temporary file known to remove_unfinished_writes() while it exists.
+class TemporaryFile {
+ public:
+  explicit TemporaryFile(std::filesystem::path path) : path_(std::move(path)) {
+    const std::lock_guard lock(writes_mutex());
+    unfinished_writes().insert(path_);
+  }
+  ~TemporaryFile() {
+    const std::lock_guard lock(writes_mutex());
+    unfinished_writes().erase(path_);
+  }
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
 // A FIFO or a device (--junit /dev/stdout) is written into: it is no file to replace. A FIFO nobody
 // reads is an error rather than a wait.
 void write_into_stream(const std::filesystem::path& file, std::string_view text) {
@@ -89,6 +121,12 @@ void write_into_stream(const std::filesystem::path& file, std::string_view text)
 }
 
 }  // namespace
+
+void remove_unfinished_writes() {
+  const std::lock_guard lock(writes_mutex());
+  std::error_code ignored;
+  for (const std::filesystem::path& file : unfinished_writes()) std::filesystem::remove(file, ignored);
+}
 
 void remove_leftovers_of_ended_runs(const std::filesystem::path& final_path) {
   const std::filesystem::path parent = final_path.has_parent_path() ? final_path.parent_path() : std::filesystem::path(".");
@@ -117,7 +155,8 @@ void write_text_file(const std::filesystem::path& file, std::string_view text, D
   }
   const std::filesystem::path target = link_target(file);
   remove_leftovers_of_ended_runs(target);
-  const std::filesystem::path temp = target.string() + ".tmp-" + std::to_string(::getpid());
+  const TemporaryFile temporary(target.string() + ".tmp-" + std::to_string(::getpid()));
+  const std::filesystem::path& temp = temporary.path();
   const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw BadInput("cannot write " + file.string());
   bool ok = write_all(fd, text) && (durability != Durability::kSynced || ::fsync(fd) == 0);

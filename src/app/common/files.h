@@ -27,6 +27,9 @@ nlohmann::json read_json_file(const std::filesystem::path& file, std::size_t max
 // run killed before it could clean up left. Every writer calls it before writing.
 void remove_leftovers_of_ended_runs(const std::filesystem::path& final_path);
 
+// Removes the temporary files of writes under way in this process: for a process that must end at once.
+void remove_unfinished_writes();
+
 // Whether `file` is what a writer killed before its rename left behind (NAME.tmp-PID).
 bool is_unfinished_write(const std::filesystem::path& file);
 

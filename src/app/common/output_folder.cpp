@@ -40,18 +40,20 @@ void replace(const fs::path& from, const fs::path& to) {
 fs::path without_trailing_slash(const fs::path& path) { return path.has_filename() ? path : path.parent_path(); }
 
 // The temporary folders of this process not yet committed or removed, for remove_unfinished_outputs().
+// Never destroyed: the stop signal's watchdog may use them while the process exits.
 std::mutex& open_folders_mutex() {
-  static std::mutex mutex;
-  return mutex;
+  static auto* mutex = new std::mutex;
+  return *mutex;
 }
 std::set<fs::path>& open_folders() {
-  static std::set<fs::path> folders;
-  return folders;
+  static auto* folders = new std::set<fs::path>;
+  return *folders;
 }
 
 }  // namespace
 
 void remove_unfinished_outputs() {
+  remove_unfinished_writes();
   const std::lock_guard lock(open_folders_mutex());
   std::error_code ignored;
   for (const fs::path& folder : open_folders()) fs::remove_all(folder, ignored);

@@ -7,8 +7,9 @@
 
 namespace physltl::app {
 
-// Removes the temporary folders of every OutputFolder of this process not yet committed: for a process that
-// must end at once, without unwinding (the physics engine's failure).
+// Removes the temporary folders of every OutputFolder of this process not yet committed, and the temporary
+// files of writes under way: for a process that must end at once, without unwinding (the physics engine's
+// failure, the stop signal's watchdog).
 void remove_unfinished_outputs();
 
 class OutputFolder {

@@ -1,6 +1,7 @@
 #include "planning_run.h"
 
 #include "common/bad_input.h"
+#include "common/stop_signal.h"
 #include "run/planner_names.h"
 #include "run/scenario_settings.h"
 #include "run/uncertainty_args.h"
@@ -17,7 +18,13 @@ scenario::World load_world(const std::string& path, const std::vector<std::strin
 }
 
 PlanningRun::PlanningRun(const scenario::World& world, const planning::PlannerEntry& planner)
-    : problem_(world), planner_(planner) {}
+    : deadline_(Deadline::in(world.planner.time_limit, &stop_flag())), problem_(world), planner_(planner) {}
+
+planning::PlannerOptions PlanningRun::options() const {
+  planning::PlannerOptions options = planning::options_for(problem_.world());
+  options.deadline = deadline_;
+  return options;
+}
 
 void PlanningRun::require_plannable(planning::Needs needs) const {
   if (!problem_.feasible()) throw InfeasibleTask(problem_.reasoning().task.infeasibility());
@@ -32,6 +39,11 @@ std::optional<PlanningRun::Failure> PlanningRun::failure(const planning::Validat
     const bool diagnosed = failed_folder && search_was_cut_short(result);
     if (diagnosed) write_failed_search(summary(solution), problem_.decomposition(), *failed_folder, render);
     return Failure{no_plan_line(planner_, result), diagnosed};
+  }
+  // The run's deadline came while the plan the search found was replayed: it is not known to be valid.
+  if (!solution.replay->cut_short.empty()) {
+    return Failure{"no plan found (" + solution.replay->cut_short + "): the run's time ran out while replaying the plan "
+                   "the search found, so it is not validated"};
   }
   // The search and the replay disagree: a bug, never a result.
   if (!solution.replay->validated()) return Failure{"BUG: the plan failed validation on replay: " + solution.replay->failure};

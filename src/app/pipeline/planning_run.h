@@ -28,7 +28,9 @@ scenario::World load_world(const std::string& path, const std::vector<std::strin
 
 class PlanningRun {
  public:
-  // Reasons about `world` (which must outlive the run) and prepares it for `planner`.
+  // Reasons about `world` (which must outlive the run) and prepares it for `planner`. The run's deadline
+  // starts now: the world's time limit from here, preparation, search, replay and improvement included,
+  // and Ctrl-C (docs/reliability.md, "The time rule").
   PlanningRun(const scenario::World& world, const planning::PlannerEntry& planner);
 
   const planning::PlanningProblem& problem() const { return problem_; }
@@ -36,8 +38,12 @@ class PlanningRun {
   // Throws InfeasibleTask when the reasoning finds the task infeasible, BadInput when the planner cannot
   // take it (or `needs`), naming the planners that can.
   void require_plannable(planning::Needs needs = {}) const;
-  // The World's seed and time limit as options (planning::options_for), for the caller to complete.
-  planning::PlannerOptions options() const { return planning::options_for(problem_.world()); }
+  // The World's seed and time limit, and the run's deadline, as options (planning::options_for), for the
+  // caller to complete.
+  planning::PlannerOptions options() const;
+  const Deadline& deadline() const { return deadline_; }
+  // What the planner prepared of the problem, within the run's deadline (throws DeadlineReached).
+  const planning::PlannerData* preparation() const { return problem_.preparation(planner_, deadline_); }
   planning::ValidatedPlan solve(const planning::PlannerOptions& options) const { return planning::solve(problem_, planner_, options); }
 
   // Why a solution is not a validated plan.
@@ -53,6 +59,7 @@ class PlanningRun {
   RunSummary summary(const planning::ValidatedPlan& solution) const;
 
  private:
+  Deadline deadline_;  // before problem_: the reasoning counts too
   planning::PlanningProblem problem_;
   const planning::PlannerEntry& planner_;
 };

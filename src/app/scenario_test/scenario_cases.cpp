@@ -137,10 +137,9 @@ CaseResult solve_case(const PlanningRun& run, const TestSettings& settings, cons
                       std::optional<planning::ValidatedPlan>& solution) {
   const scenario::World& world = run.problem().world();
   planning::PlannerOptions options = run.options();
-  options.stop = settings.stop;
   options.improve = kMainJobImprove;
   solution = run.solve(options);
-  if (settings.stop != nullptr && settings.stop->load()) return CaseResult{"", Outcome::kSkipped, "interrupted"};
+  if (run.deadline().interrupted()) return CaseResult{"", Outcome::kSkipped, "interrupted"};
   const std::filesystem::path failed_folder = actual_folder / "failed";
   const auto failure = run.failure(*solution, failed_folder, true);
   if (!failure) return CaseResult{};

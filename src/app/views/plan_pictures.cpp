@@ -1,5 +1,8 @@
 #include "plan_pictures.h"
 
+#include "common/bad_input.h"
+#include "common/stop_signal.h"
+
 #include "overlays.h"
 #include "physltl/knowledge/kappa.h"
 #include "physltl/ltl/formula.h"
@@ -114,6 +117,7 @@ PlanFrames write_plan_frames(const scenario::World& world, const knowledge::Reas
   render::FrameWriter writer(folder);
   render::VideoEncoder encoder(video, world.render.width, world.render.height, world.render.fps);
   for (int f = 0; f < frames; ++f) {
+    if (stop_received()) throw Interrupted();
     const auto frame = std::make_shared<const render::Image>(animation.draw(static_cast<double>(f) / world.render.fps));
     encoder.add(frame);
     writer.add(frame);

@@ -70,8 +70,11 @@ json report_json(const RunSummary& run) {
         return json{{"duration_s", m.duration_s}, {"pushes", m.pushes}, {"bodies_moved", m.bodies_moved},
                     {"path_length_m", m.path_length_m}};
       };
+      // "stopped_by": the run's deadline ended it before its budget; the plan then depends on the
+      // machine's speed, not only on the seed.
       report["improvement"] = {{"candidates", run.improvement->candidates},
                                {"accepted", run.improvement->accepted},
+                               {"stopped_by", run.improvement->stopped.empty() ? json(nullptr) : json(run.improvement->stopped)},
                                {"time_s", run.improvement->time_s},
                                {"first", measures(run.improvement->first)},
                                {"improved", measures(run.improvement->improved)}};

@@ -13,10 +13,10 @@ using planning::KnowledgePreparation;
 using planning::PlannerData;
 using planning::Problem;
 
-std::shared_ptr<const PlannerData> prepare_knowledge(const Problem& problem) {
+std::shared_ptr<const PlannerData> prepare_knowledge(const Problem& problem, const Deadline& deadline) {
   auto prepared = std::make_shared<KnowledgePreparation>();
-  prepared->routes = planning::choose_routes(problem.world, problem.task, problem.decomposition);
-  prepared->lookahead = planning::lookahead::look_ahead(problem.world, problem.knowledge, problem.task);
+  prepared->routes = planning::choose_routes(problem.world, problem.task, problem.decomposition, deadline);
+  prepared->lookahead = planning::lookahead::look_ahead(problem.world, problem.knowledge, problem.task, deadline);
   prepared->task_names_bodies = problem.task.names_bodies();
   return prepared;
 }

@@ -117,15 +117,15 @@ struct PlaceWays {
   std::vector<std::vector<double>> through, push_free;
 };
 
-PlaceWays place_ways(const scenario::World& world, const std::vector<int>& avoided_regions) {
+PlaceWays place_ways(const scenario::World& world, const std::vector<int>& avoided_regions, const Deadline& deadline) {
   std::vector<geometry::Polygon> avoided;
   for (int region : avoided_regions) {
     for (geometry::Polygon& part : geometry::convex_partition(world.regions[static_cast<size_t>(region)].polygon)) {
       avoided.push_back(std::move(part));
     }
   }
-  return {place_distances(world, robot_free_space(world, RobotObstacles::kFixedBodies, 0.0, avoided)),
-          place_distances(world, robot_free_space(world, RobotObstacles::kAllBodies, kMinFreeWidth, avoided))};
+  return {place_distances(world, robot_free_space(world, RobotObstacles::kFixedBodies, 0.0, avoided, deadline)),
+          place_distances(world, robot_free_space(world, RobotObstacles::kAllBodies, kMinFreeWidth, avoided, deadline))};
 }
 
 // Whether stage `s` goes round: from every place it is entered at, a push-free way to a region that brings
@@ -148,7 +148,7 @@ bool stage_goes_round(const std::set<int>& entries, const std::vector<int>& targ
 }  // namespace
 
 RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& task,
-                          const decomposition::Decomposition& decomposition) {
+                          const decomposition::Decomposition& decomposition, const Deadline& deadline) {
   const StageGraph stages(task);
   const int count = stages.stages();
   RouteChoice choice{std::vector<bool>(static_cast<size_t>(count), false), {}};
@@ -168,7 +168,7 @@ RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& tas
     if (targets.empty() || entries[static_cast<size_t>(s)].empty()) continue;
     const std::vector<int>& avoided = forbidden[static_cast<size_t>(s)];
     auto found = ways.find(avoided);
-    if (found == ways.end()) found = ways.emplace(avoided, place_ways(world, avoided)).first;
+    if (found == ways.end()) found = ways.emplace(avoided, place_ways(world, avoided, deadline)).first;
     choice.going_round[static_cast<size_t>(s)] = stage_goes_round(entries[static_cast<size_t>(s)], targets, found->second);
   }
   if (std::none_of(choice.going_round.begin(), choice.going_round.end(), [](bool b) { return b; })) return choice;
@@ -179,6 +179,7 @@ RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& tas
   choice.lead_factor.assign(static_cast<size_t>(decomposition.size()) * static_cast<size_t>(count), 1.0f);
   for (int s = 0; s < count; ++s) {
     if (!choice.going_round[static_cast<size_t>(s)]) continue;
+    deadline.check();
     const std::vector<int>& avoided = forbidden[static_cast<size_t>(s)];
     std::vector<bool> clear(under.size());
     for (size_t t = 0; t < under.size(); ++t) {

@@ -14,6 +14,7 @@
 // lead more the longer a way through its triangle is than that shortest way, so that the search does not
 // wander into every aisle of a warehouse once the first way has been explored a little.
 
+#include "physltl/base/deadline.h"
 #include "physltl/decomposition/decomposition.h"
 #include "physltl/planning/task.h"
 
@@ -39,9 +40,9 @@ struct RouteChoice {
 };
 
 // For the stages of `task` (stage_graph.h). Depends on the World and the task only, like the
-// decomposition: a run prepares it once for every search (Problem::routes).
+// decomposition: a run prepares it once for every search (Problem::routes). Throws DeadlineReached.
 RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& task,
-                          const decomposition::Decomposition& decomposition);
+                          const decomposition::Decomposition& decomposition, const Deadline& deadline = {});
 
 // Per triangle: the robot's centre at the triangle's centroid would overlap a movable body as the World
 // places it, other than the bodies the task names (those are moved on purpose).

@@ -187,8 +187,9 @@ class Search {
 
  private:
   const char* should_stop(std::chrono::steady_clock::time_point started) const {
-    if (options_.stop != nullptr && options_.stop->load(std::memory_order_relaxed)) return "interrupted";
-    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >= options_.time_limit) {
+    if (options_.deadline.interrupted()) return "interrupted";
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >= options_.time_limit ||
+        options_.deadline.passed()) {
       return "time limit";
     }
     if (motions_.size() >= options_.max_tree_nodes) return "tree full";
@@ -433,7 +434,7 @@ class Search {
       if (!cells || robot < 0) continue;
       ++lookahead_replans_;
       const lookahead::PushSearch search =
-          lookahead::PushSearcher(lattice, stages_, task_.labelling).search(node.stage, *cells, robot, kReplanArrangements);
+          lookahead::PushSearcher(lattice, stages_, task_.labelling).search(node.stage, *cells, robot, {}, kReplanArrangements);
       if (!search.found) return;
       push_lead_.emplace(lattice, *cells, search.steps, knowledge_);
       best_push_remaining_ = std::numeric_limits<double>::infinity();

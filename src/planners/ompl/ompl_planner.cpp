@@ -259,13 +259,13 @@ PlanResult plan_with_ompl(const Problem& problem, const PlannerOptions& options,
 
   const ob::PlannerTerminationCondition ptc = ob::plannerOrTerminationCondition(
       ob::timedPlannerTerminationCondition(options.time_limit),
-      ob::PlannerTerminationCondition([&] { return options.stop != nullptr && options.stop->load(std::memory_order_relaxed); }));
+      ob::PlannerTerminationCondition([&] { return options.deadline.reached(); }));
   const ob::PlannerStatus status = planner->solve(ptc);
 
   PlanResult result;
   result.solved = search.definition->hasExactSolution();
   result.stop_reason = result.solved                                                   ? "solved"
-                       : options.stop != nullptr && options.stop->load()               ? "interrupted"
+                       : options.deadline.interrupted()                                ? "interrupted"
                        : status == ob::PlannerStatus::TIMEOUT || status == ob::PlannerStatus::APPROXIMATE_SOLUTION
                            ? "time limit"
                            : "no solution";

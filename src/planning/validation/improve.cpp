@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace physltl::planning {
 namespace {
@@ -41,13 +42,16 @@ std::vector<Control> direct_controls(const scenario::World& world, const scenari
 }
 
 // `plan`'s first `kept` controls followed by `rest`, the latter run in `simulation` from where the kept
-// ones end (restoring is exact, so this is the plan run from the start), with the state after each control.
-Plan splice(physics::Simulation& simulation, const Plan& plan, std::size_t kept, const std::vector<Control>& rest) {
+// ones end (restoring is exact, so this is the plan run from the start), with the state after each control;
+// nothing when `deadline` comes first.
+std::optional<Plan> splice(physics::Simulation& simulation, const Plan& plan, std::size_t kept,
+                           const std::vector<Control>& rest, const Deadline& deadline) {
   Plan spliced;
   spliced.controls.assign(plan.controls.begin(), plan.controls.begin() + static_cast<std::ptrdiff_t>(kept));
   spliced.states.assign(plan.states.begin(), plan.states.begin() + static_cast<std::ptrdiff_t>(kept));
   std::vector<scenario::RobotContact> contacts;
   for (const Control& c : rest) {
+    if (deadline.reached()) return std::nullopt;
     for (int s = 0; s < c.steps; ++s) simulation.step(c.setpoint, contacts);
     spliced.controls.push_back(c);
     spliced.states.push_back(simulation.save());
@@ -80,7 +84,7 @@ PlanMeasures measure(const scenario::World& world, const Plan& plan, const Repla
 }
 
 Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::uint64_t seed, int budget, Plan& plan,
-                    Replay& replay) {
+                    Replay& replay, const Deadline& deadline) {
   const auto started = std::chrono::steady_clock::now();
   Improvement result;
   result.first = result.improved = measure(problem.world, plan, replay);
@@ -89,6 +93,10 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
   physics::Simulation simulation(problem.world);
   const physics::PhysicsState start = simulation.save();
   for (; result.candidates < budget; ++result.candidates) {
+    if (deadline.reached()) {
+      result.stopped = deadline.reason();
+      break;
+    }
     const int n = static_cast<int>(plan.controls.size());
     if (n < 2) break;
     // Replace controls [first, last) by a direct way from the state before `first` to the one after `last - 1`.
@@ -99,12 +107,14 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
     std::vector<Control> rest = direct_controls(problem.world, from, to);
     rest.insert(rest.end(), plan.controls.begin() + last, plan.controls.end());
     simulation.restore(first > 0 ? plan.states[static_cast<std::size_t>(first) - 1] : start);
-    Plan candidate = splice(simulation, plan, static_cast<std::size_t>(first), rest);
+    std::optional<Plan> spliced = splice(simulation, plan, static_cast<std::size_t>(first), rest, deadline);
+    if (!spliced) continue;  // the deadline: said at the loop's head
+    Plan candidate = std::move(*spliced);
     if (candidate.total_steps() > plan.total_steps()) continue;  // longer: not worth a replay
     // Most candidates fail a check early (a shortcut through a wall or past a needed push): stop there.
     // The kept controls were checked in the current plan's replay: start after them.
     const ReplayedPrefix kept{replay, static_cast<std::size_t>(first)};
-    Replay checked = planning::replay(problem.world, candidate, problem.formula, problem.knowledge, {.mode = mode, .stop_at_first_failure = true, .prefix = &kept});
+    Replay checked = planning::replay(problem.world, candidate, problem.formula, problem.knowledge, {.mode = mode, .stop_at_first_failure = true, .prefix = &kept, .deadline = deadline});
     if (!checked.validated()) continue;
     const PlanMeasures measures = measure(problem.world, candidate, checked);
     if (!better(measures, result.improved)) continue;

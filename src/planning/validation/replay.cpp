@@ -78,7 +78,15 @@ class Replayer {
     check = false;
   }
 
-  bool stopping() const { return options_.stop_at_first_failure && !r_.failure.empty(); }
+  bool stopping() const { return (options_.stop_at_first_failure && !r_.failure.empty()) || !r_.cut_short.empty(); }
+
+  // Every few steps: a clock read costs little beside a step of physics, even in a small world.
+  void check_deadline() {
+    if (options_.deadline.reached()) {
+      r_.cut_short = options_.deadline.reason();
+      r_.failure = "the replay was cut short (" + r_.cut_short + ")";
+    }
+  }
 
   // The prefix's steps passed every check in its replay; the plan continues from the state they reached
   // (restoring a state is exact), with kappa inferred there as at every step. Returns the next control.
@@ -117,6 +125,7 @@ class Replayer {
       pushed |= touching_movable;
       record(r_.automaton_trace.back(), touching_movable);
       check_step(c);
+      if ((r_.states.size() & 15) == 0) check_deadline();
       if (stopping()) return false;
       knowledge::infer(knowledge_, r_.states.back(), kappa_);
     }

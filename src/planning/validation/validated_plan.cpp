@@ -10,9 +10,10 @@ ValidatedPlan plan_and_validate(const Problem& p, const PlannerEntry& planner, c
   if (validated.result.solved) {
     const knowledge::ValidityMode mode =
         planner.uses_knowledge ? knowledge::ValidityMode::kKnowledge : knowledge::ValidityMode::kBaseline;
-    validated.replay = replay(p.world, validated.result.plan, p.formula, p.knowledge, {.mode = mode});
+    validated.replay = replay(p.world, validated.result.plan, p.formula, p.knowledge, {.mode = mode, .deadline = options.deadline});
     if (options.improve > 0 && validated.replay->validated()) {
-      validated.improvement = improve(p, mode, options.seed, options.improve, validated.result.plan, *validated.replay);
+      validated.improvement =
+          improve(p, mode, options.seed, options.improve, validated.result.plan, *validated.replay, options.deadline);
     }
   }
   return validated;

@@ -41,7 +41,7 @@ TEST(Threads, AnOutsideStopEndsEveryThreadPromptly) {
   const TestProblem p("rooms_n.lua", {{"rooms", "16"}});
   std::atomic<bool> stop{false};
   PlannerOptions options = options_with(1, 2);
-  options.stop = &stop;
+  options.deadline = physltl::Deadline(physltl::Deadline::Clock::time_point::max(), &stop);
   std::jthread stopper([&stop] {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
     stop.store(true);

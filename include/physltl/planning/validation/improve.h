@@ -16,8 +16,9 @@ namespace physltl::planning {
 PlanMeasures measure(const scenario::World& world, const Plan& plan, const Replay& replay);
 
 // Improves `plan` (validated, with `replay` its replay) in place, trying `budget` candidates drawn from
-// `seed`. Budget 0 leaves both untouched.
+// `seed`. Budget 0 leaves both untouched. `deadline` ends it early, keeping the best plan so far
+// (Improvement::stopped says so: the plan then depends on the machine's speed, not only on the seed).
 Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::uint64_t seed, int budget, Plan& plan,
-                    Replay& replay);
+                    Replay& replay, const Deadline& deadline = {});
 
 }  // namespace physltl::planning

@@ -2,6 +2,7 @@
 // The proof of a plan: run its controls again from the start in a fresh physics world and check what
 // happens, independently of the search that produced it.
 
+#include "physltl/base/deadline.h"
 #include "physltl/knowledge/abstract_knowledge.h"
 #include "physltl/knowledge/validity.h"
 #include "physltl/planning/plan.h"
@@ -42,7 +43,12 @@ struct Replay {
   bool within_limits = false;
   double peak_speed = 0.0;       // m/s, the robot's fastest step
   std::string failure;           // why not, for people; empty when validated
-  bool validated() const { return reproduces_plan && valid && accepted && within_limits && ends_at_rest; }
+  // "time limit" or "interrupted" when ReplayOptions::deadline stopped the replay before the plan's end:
+  // nothing is known of the rest, so the plan is not validated.
+  std::string cut_short;
+  bool validated() const {
+    return cut_short.empty() && reproduces_plan && valid && accepted && within_limits && ends_at_rest;
+  }
 };
 
 // The first `controls` controls of a plan that `replay` validated, for a plan that begins with the same
@@ -58,6 +64,7 @@ struct ReplayOptions {
   // validates (the replay then holds the steps up to that one).
   bool stop_at_first_failure = false;
   const ReplayedPrefix* prefix = nullptr;  // steps already replayed, taken as they are
+  Deadline deadline;  // checked every few physics steps (Replay::cut_short)
 };
 
 // Replays `plan` and checks it against `formula` (the task as written, not the simplified one the search

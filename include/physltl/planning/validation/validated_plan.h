@@ -7,8 +7,8 @@
 #include "physltl/planning/validation/replay.h"
 
 #include <cstdint>
-
 #include <optional>
+#include <string>
 
 namespace physltl::planning {
 
@@ -23,6 +23,9 @@ struct PlanMeasures {
 struct Improvement {
   int candidates = 0;  // tried
   int accepted = 0;    // each better than the plan before
+  // "time limit" or "interrupted" when the run's deadline ended it before its budget of candidates;
+  // empty when it spent the budget.
+  std::string stopped;
   PlanMeasures first;
   PlanMeasures improved;
   double time_s = 0.0;
@@ -38,7 +41,8 @@ struct ValidatedPlan {
 };
 
 // Plans with `planner` (`prepared`: what its entry prepared of the problem) and replays its plan: with
-// kappa's validity rules for a planner that uses knowledge.
+// kappa's validity rules for a planner that uses knowledge. options.deadline holds in all three: a replay
+// it cuts short validates nothing (Replay::cut_short), an improvement it cuts short keeps its best plan.
 ValidatedPlan plan_and_validate(const Problem& problem, const PlannerEntry& planner, const PlannerData* prepared,
                                 const PlannerOptions& options);
 

@@ -82,7 +82,8 @@ std::vector<PlannedPush> runs_of(const PushLattice& lattice, const std::vector<P
   return runs;
 }
 
-Lookahead look_ahead(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge, const TaskAutomaton& task) {
+Lookahead look_ahead(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge, const TaskAutomaton& task,
+                     const Deadline& deadline) {
   Lookahead result;
   PushPlan& plan = result.plan;
   if (!task.names_bodies()) {
@@ -118,7 +119,7 @@ Lookahead look_ahead(const scenario::World& world, const knowledge::AbstractKnow
     plan.outcome = "the task's first move is the robot's";
     return result;
   }
-  const PushSearch search = PushSearcher(*result.lattice, stages, task.labelling).search(result.stage, result.start_cells, robot);
+  const PushSearch search = PushSearcher(*result.lattice, stages, task.labelling).search(result.stage, result.start_cells, robot, deadline);
   plan.arrangements = search.settled;
   plan.outcome = search.outcome;
   plan.found = search.found;

@@ -20,7 +20,9 @@ struct Lookahead {
   std::vector<PushStep> steps;         // one lattice step each; plan.pushes joins them into runs
 };
 
-Lookahead look_ahead(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge, const TaskAutomaton& task);
+// Throws DeadlineReached.
+Lookahead look_ahead(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge, const TaskAutomaton& task,
+                     const Deadline& deadline = {});
 
 // Steps of one body in one direction after each other, as one push each.
 std::vector<PlannedPush> runs_of(const PushLattice& lattice, const std::vector<PushStep>& steps);

@@ -297,7 +297,7 @@ class ArrangementSearch {
   long long order_ = 0;
 };
 
-PushSearch PushSearcher::search(int stage, const std::vector<int>& cells, int robot_cell,
+PushSearch PushSearcher::search(int stage, const std::vector<int>& cells, int robot_cell, const Deadline& deadline,
                                 long long max_arrangements) const {
   PushSearch result;
   const Goals goals = goals_from(stage);
@@ -313,6 +313,7 @@ PushSearch PushSearcher::search(int stage, const std::vector<int>& cells, int ro
       result.outcome = "search limit";
       return result;
     }
+    if (result.settled % 256 == 0) deadline.check();
     solution = search.settle();
   }
   if (solution < 0) return result;

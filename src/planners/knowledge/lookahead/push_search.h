@@ -9,6 +9,7 @@
 // not yet where the task needs it (none of them can move again).
 
 #include "push_lattice.h"
+#include "physltl/base/deadline.h"
 #include "physltl/planning/stage_graph.h"
 
 #include <string>
@@ -47,8 +48,9 @@ class PushSearcher {
  public:
   PushSearcher(const PushLattice& lattice, const StageGraph& stages, const knowledge::Labelling& labelling);
 
-  // From `stage` with the lattice bodies on `cells` and the robot on `robot_cell`.
-  PushSearch search(int stage, const std::vector<int>& cells, int robot_cell,
+  // From `stage` with the lattice bodies on `cells` and the robot on `robot_cell`. The arrangements are
+  // its work budget (the same order on any machine); `deadline` only ends it early (DeadlineReached).
+  PushSearch search(int stage, const std::vector<int>& cells, int robot_cell, const Deadline& deadline = {},
                     long long max_arrangements = kMaxArrangements) const;
   // Whether body k on `cell` can still get to where the task needs it, pushed alone; always true for a
   // body the task leaves free.
