@@ -30,6 +30,15 @@ MovableBodyKnowledge movable_knowledge(const scenario::MovableBody& body, const 
   k.friction = body.friction;
   k.floor_friction_force =
       combined_friction(body.friction, world.workspace.floor_friction) * body.mass * settings.gravity;
+  const double depth = body.mregion_depth.value_or(2.0 * robot.radius + settings.mregion_margin);
+  FaceSet pushable;
+  for (int face : body.push_from) pushable.insert(face);
+  const bool authored = !body.push_from.empty() && !(pushable == FaceSet::first(k.faces));
+  for (int face = 0; face < k.faces && authored; ++face) {
+    if (pushable.contains(face)) {
+      k.authored_sides.push_back(kind_of(body.footprint.shape).face_template(body.footprint.shape, face, depth, robot.radius));
+    }
+  }
   if (k.floor_friction_force >= robot.push_force) {
     k.body_class = BodyClass::kFixed;
     k.class_reason = fmt::format(
@@ -38,19 +47,16 @@ MovableBodyKnowledge movable_knowledge(const scenario::MovableBody& body, const 
         k.floor_friction_force, robot.push_force);
     return k;
   }
-  FaceSet pushable;
-  for (int face : body.push_from) pushable.insert(face);
-  if (body.push_from.empty() || pushable == FaceSet::first(k.faces)) {
-    pushable = FaceSet::first(k.faces);
+  if (!authored) {
     k.body_class = BodyClass::kFreelyMovable;
     k.class_reason = "pushable from every side";
+    for (int face = 0; face < k.faces; ++face) {
+      k.mregions.push_back(kind_of(body.footprint.shape).face_template(body.footprint.shape, face, depth, robot.radius));
+    }
   } else {
     k.body_class = BodyClass::kConstraintOriented;
     k.class_reason = "pushable only from the authored sides " + face_list(body.footprint.shape, body.push_from);
-  }
-  const double depth = body.mregion_depth.value_or(2.0 * robot.radius + settings.mregion_margin);
-  for (int face = 0; face < k.faces; ++face) {
-    if (pushable.contains(face)) k.mregions.push_back(kind_of(body.footprint.shape).face_template(body.footprint.shape, face, depth, robot.radius));
+    k.mregions = k.authored_sides;
   }
   for (const MRegionTemplate& m : k.mregions) {
     k.contact_reach = std::max({k.contact_reach, m.contact_from.norm(), m.contact_to.norm()});

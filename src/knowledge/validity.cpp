@@ -1,6 +1,10 @@
 #include "physltl/knowledge/validity.h"
 
+#include "shape_kinds.h"
+
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace physltl::knowledge {
@@ -14,15 +18,26 @@ bool robot_inside_workspace(const AbstractKnowledge& k, const geometry::Vec2& ce
 // The robot's centre, not the contact point, decides the side: the contact point lies on the body's
 // outline, where the strips of two sides meet at every corner. A centre up to `slack` beyond the ends of
 // an active side's strip still pushes from that side (kPushSideSlack).
+bool in_strip(const MRegionTemplate& m, const geometry::Pose2& pose, const geometry::Vec2& robot_centre, double slack) {
+  geometry::OrientedBox strip = mregion_at(m, pose);
+  strip.half_extents += geometry::Vec2::Constant(slack);
+  return strip.contains(robot_centre);
+}
+
 bool pushes_from_active_mregion(const MovableBodyKnowledge& body, const BodyKappa& kappa,
                                 const geometry::Pose2& pose, const geometry::Vec2& robot_centre, double slack) {
-  for (const MRegionTemplate& m : body.mregions) {
-    if (!kappa.active_faces.contains(m.face)) continue;
-    geometry::OrientedBox strip = mregion_at(m, pose);
-    strip.half_extents += geometry::Vec2::Constant(slack);
-    if (strip.contains(robot_centre)) return true;
-  }
-  return false;
+  return std::any_of(body.mregions.begin(), body.mregions.end(), [&](const MRegionTemplate& m) {
+    return kappa.active_faces.contains(m.face) && in_strip(m, pose, robot_centre, slack);
+  });
+}
+
+// The world's rule (push_from), for a planner without knowledge: a face the author did not list is one the
+// robot may not push from. With knowledge, the rule on kappa's active mRegions (a subset of these) implies it.
+bool pushes_from_authored_side(const MovableBodyKnowledge& body, const geometry::Pose2& pose,
+                               const geometry::Vec2& robot_centre, double slack) {
+  return body.authored_sides.empty() ||
+         std::any_of(body.authored_sides.begin(), body.authored_sides.end(),
+                     [&](const MRegionTemplate& m) { return in_strip(m, pose, robot_centre, slack); });
 }
 
 // A robot that starts a step against a wall or a box (at rest after braking there, or placed there by the
@@ -72,8 +87,15 @@ Validity check(const AbstractKnowledge& knowledge, const Kappa& kappa, const sce
       return {Violation::kTouchesFixedBody, contact.index};
     }
     // Backing away from a body is no push, from whichever side.
-    if (!uses_kappa || leaves_contact(state, contact)) continue;
+    if (leaves_contact(state, contact)) continue;
     const auto i = static_cast<size_t>(contact.index);
+    if (!uses_kappa) {
+      if (!pushes_from_authored_side(knowledge.movable_bodies[i], state.movable_poses[i], state.robot_position,
+                                     kPushSideSlack)) {
+        return {Violation::kPushesFromForbiddenSide, contact.index};
+      }
+      continue;
+    }
     const BodyKappa& body_kappa = kappa.bodies.at(i);
     if (body_kappa.type == BodyType::kImmovable) return {Violation::kTouchesImmovableBody, contact.index};
     if (body_kappa.type == BodyType::kConstraintOriented &&
@@ -118,6 +140,22 @@ bool within_robot_limits(const RobotCapabilities& robot, const scenario::Environ
   const bool turns_within = robot.drive == scenario::Drive::kHolonomic ||
                             std::abs(state.robot_turn_rate) <= robot.max_turn_rate * slack;
   return state.robot_velocity.norm() <= robot.max_speed * slack && turns_within;
+}
+
+int face_pushed_from(const AbstractKnowledge& knowledge, int body, const geometry::Pose2& pose,
+                     const geometry::Vec2& robot_centre) {
+  const MovableBodyKnowledge& b = knowledge.movable_bodies.at(static_cast<size_t>(body));
+  int nearest = -1;
+  double best = std::numeric_limits<double>::infinity();
+  for (int face = 0; face < b.faces; ++face) {
+    const MRegionTemplate m = kind_of(b.footprint.shape).face_template(b.footprint.shape, face, 0.0, knowledge.robot.radius);
+    const geometry::Vec2 from = geometry::to_world(pose, m.contact_from), to = geometry::to_world(pose, m.contact_to);
+    const geometry::Vec2 along = to - from;
+    const double t = along.squaredNorm() > 0 ? std::clamp((robot_centre - from).dot(along) / along.squaredNorm(), 0.0, 1.0) : 0.0;
+    const double distance = (robot_centre - (from + t * along)).norm();
+    if (distance < best) best = distance, nearest = face;
+  }
+  return nearest;
 }
 
 bool is_valid(const AbstractKnowledge& knowledge, const Kappa& kappa, const scenario::EnvironmentState& state,

@@ -1,8 +1,8 @@
-// libFuzzer target: the bytes steer a generator of Lua scenario scripts (constructors with known, misspelled
-// and made-up keys; numbers including NaN, inf, huge and negative ones; formulas; helper calls; loops, deep
-// tables, runaway scripts and now and then raw garbage). Each script is loaded from a file, as the program
-// does, with small limits. load_scenario must return a World or throw ScenarioError; anything else (a crash,
-// a sanitizer report, another exception, a hang) is a bug.
+// libFuzzer target: the bytes steer a generator of Lua scenario scripts (constructors, `expect` blocks among
+// them, with known, misspelled and made-up keys; numbers including NaN, inf, huge and negative ones;
+// formulas; helper calls; loops, deep tables, runaway scripts and now and then raw garbage). Each script is
+// loaded from a file, as the program does, with small limits. load_scenario must return a World or throw
+// ScenarioError; anything else (a crash, a sanitizer report, another exception, a hang) is a bug.
 
 #include "physltl/scenario/load.h"
 #include "physltl/scenario/world_json.h"
@@ -29,7 +29,7 @@ struct Constructor {
 };
 
 // What the reader accepts (src/scenario/read_world.cpp); the generator also misspells and invents keys.
-const std::array<Constructor, 9> kConstructors = {{
+const std::array<Constructor, 10> kConstructors = {{
     {"workspace", {"bounds", "floor_friction"}},
     {"robot", {"drive", "radius", "mass", "max_force", "max_speed", "max_turn_rate_deg", "start_yaw_deg", "friction", "start"}},
     {"fixed", {"name", "shape", "center", "size", "radius", "points", "polygon", "yaw_deg", "height", "mesh", "scale"}},
@@ -40,7 +40,10 @@ const std::array<Constructor, 9> kConstructors = {{
     {"planner", {"time_limit", "step_size", "min_steps", "max_steps", "seed"}},
     {"render", {"width", "height", "fps", "camera"}},
     {"uncertainty", {"mass", "friction", "start", "body_pose", "body_yaw_deg"}},
+    {"expect", {"solved", "infeasible", "unreachable", "max_pushes", "max_motion_s", "max_bodies_moved", "tree", "frames",
+                "tolerance"}},
 }};
+const std::vector<const char*> kToleranceKeys = {"max_channel_difference", "max_share_beyond", "preview", "tree", "frames"};
 const std::vector<const char*> kCameraKeys = {"target", "distance", "elevation_deg", "azimuth_deg", "fov_deg"};
 const std::vector<const char*> kBodyUncertaintyKeys = {"mass", "friction", "pose", "yaw_deg"};
 
@@ -198,6 +201,11 @@ class ScriptWriter {
     if (key == "formula") return "\"" + formula(0) + "\"";
     if (key == "push_from") return "{ \"-x\", \"+y\", " + string_value() + " }";
     if (key == "camera") return table(kCameraKeys, depth);
+    if (key == "tolerance" || ((key == "preview" || key == "tree") && depth > 1)) return table(kToleranceKeys, depth);
+    if (key == "frames") return "{ " + number() + ", \"last\", " + number() + ", " + number() + " }";
+    if (key == "solved" || key == "tree") return in_.ConsumeBool() ? "true" : "false";
+    if (key == "infeasible") return string_value();
+    if (key == "unreachable") return "{ " + string_value() + ", \"p1\" }";
     if (key == "uncertainty") return table(kBodyUncertaintyKeys, depth);
     return number();
   }

@@ -360,6 +360,24 @@ TEST(Deadline, APreparationCutShortEndsTheRunWithNoPlanAndKeepsNothing) {
   EXPECT_TRUE(solve(problem, knowledge, options).solved());  // nothing was kept: prepared afresh
 }
 
+// push_from is the world's rule, not knowledge (docs/scenarios.md): a plan that pushes a body from a face
+// its push_from does not list fails validation for every planner, and the replay names the body, the face
+// and the time.
+TEST(Replay, APushFromAFaceThePushFromDoesNotListFailsForEveryPlannerNamingBodyFaceAndTime) {
+  const TestProblem p("ordered.lua");
+  // B1 (push_from -x and +y) from below: the robot drives under it, then up into its -y face.
+  Plan plan;
+  plan.controls = {{Vec2(1.0, 0.0), 24}, {Vec2(0.0, 1.0), 30}, {Vec2(0.0, 1.0), 30}};
+  for (const auto mode : {knowledge::ValidityMode::kBaseline, knowledge::ValidityMode::kKnowledge}) {
+    const Replay r = replay(p.world, plan, p.original, p.knowledge, {.mode = mode});
+    EXPECT_FALSE(r.valid);
+    ASSERT_FALSE(r.violation_messages.empty());
+    const std::string& why = r.violation_messages.front();
+    EXPECT_NE(why.find("s): the robot pushes 'B1' from its -y face, which its push_from does not list"), std::string::npos) << why;
+    EXPECT_EQ(why.rfind("step 60 (control 2, 3.00 s): ", 0), 0u) << why;
+  }
+}
+
 TEST(Replay, AnEmptyPlanDoesNotSatisfyAVisitTask) {
   const TestProblem p("ordered.lua");
   const Replay r = p.check(Plan{});

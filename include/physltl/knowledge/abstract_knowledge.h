@@ -66,6 +66,10 @@ struct MovableBodyKnowledge {
   double friction = 0.0;            // the body's own coefficient
   double floor_friction_force = 0.0;  // N needed to start it sliding
   std::vector<MRegionTemplate> mregions;  // the pushable faces; empty for class kFixed
+  // The world's rule, not knowledge: the faces the author listed in push_from, as mRegions, whatever the
+  // body's class (empty when it lists none: every face). Every planner keeps it (check_validity, both
+  // modes); which of them kappa switches off, and the classes, are knowledge.
+  std::vector<MRegionTemplate> authored_sides;
   // How far from the body's centre the robot's centre can be while it touches a pushable face.
   double contact_reach = 0.0;
 };

@@ -12,8 +12,9 @@ namespace physltl::knowledge {
 
 enum class ValidityMode {
   kKnowledge,  // every rule below
-  kBaseline,   // plain physics-based planning (--baseline): only the robot's limits, fixed-body contacts
-               // and leaving the workspace count, and kappa is not read (an empty Kappa will do)
+  kBaseline,   // plain physics-based planning (--baseline): only the world's rules count (the robot's
+               // limits, fixed-body contacts, leaving the workspace, and a push from a face the body's
+               // push_from does not list), and kappa is not read (an empty Kappa will do)
 };
 
 enum class Violation {
@@ -23,6 +24,7 @@ enum class Violation {
   kTouchesFixedBody,            // a wall or other fixed body
   kTouchesImmovableBody,        // a movable body kappa types immovable (blocked on all sides, or too heavy)
   kPushesFromForbiddenSide,     // a constraint-oriented body, robot centre outside its active mRegions
+                                // (baseline: outside every face its push_from lists)
 };
 const char* violation_name(Violation violation);
 
@@ -54,6 +56,11 @@ Validity check_validity(const AbstractKnowledge& knowledge, const Kappa& kappa,
                         const scenario::EnvironmentState& state,
                         std::span<const scenario::RobotContact> contacts,
                         ValidityMode mode = ValidityMode::kKnowledge);
+
+// The face of movable body `body` (scenario::face_count numbers them) at `pose` that the robot's centre is
+// nearest to touching: the face a push from there comes through, for messages.
+int face_pushed_from(const AbstractKnowledge& knowledge, int body, const geometry::Pose2& pose,
+                     const geometry::Vec2& robot_centre);
 
 bool is_valid(const AbstractKnowledge& knowledge, const Kappa& kappa, const scenario::EnvironmentState& state,
               std::span<const scenario::RobotContact> contacts, ValidityMode mode = ValidityMode::kKnowledge);

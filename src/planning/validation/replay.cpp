@@ -151,13 +151,28 @@ class Replayer {
     }
     const auto validity = knowledge::check_validity(knowledge_, kappa_, state, contacts_, options_.mode);
     if (!validity.valid()) {
-      std::string why = fmt::format("step {} (control {}): {}", step, c, knowledge::violation_name(validity.violation));
+      std::string why = fmt::format("step {} (control {}, {:.2f} s): {}", step, c, step * world_.planner.step_size,
+                                    violation_words(validity, state));
       if (std::find(r_.violations.begin(), r_.violations.end(), validity.violation) == r_.violations.end()) {
         r_.violations.push_back(validity.violation);
         r_.violation_messages.push_back(why);
       }
       fail(r_.valid, std::move(why));
     }
+  }
+
+  // What the step broke, naming the body and, for a push from a side it may not be pushed from, the face.
+  std::string violation_words(const knowledge::Validity& validity, const scenario::EnvironmentState& state) const {
+    if (validity.violation != knowledge::Violation::kPushesFromForbiddenSide || validity.body_index < 0) {
+      return knowledge::violation_name(validity.violation);
+    }
+    const auto body = static_cast<size_t>(validity.body_index);
+    const scenario::MovableBody& authored = world_.movable_bodies[body];
+    const int face = knowledge::face_pushed_from(knowledge_, validity.body_index, state.movable_poses[body], state.robot_position);
+    const bool listed = std::find(authored.push_from.begin(), authored.push_from.end(), face) != authored.push_from.end();
+    return fmt::format("the robot pushes '{}' from its {} face, {}", authored.name,
+                       scenario::face_name(authored.footprint.shape, face),
+                       listed ? "whose mRegion kappa has switched off" : "which its push_from does not list");
   }
 
   // The trace against the formula as written, rest at the end, and the bodies moved.

@@ -52,8 +52,29 @@ INSTANTIATE_TEST_SUITE_P(
                       FamilyWorld{"grid_round_the_pillars.lua", {}, {1, 2, 3}},
                       FamilyWorld{"narrow_sliver.lua", {}, {1, 2, 3}},
                       FamilyWorld{"fetch_past.lua", {}, {1, 2}},
-                      FamilyWorld{"grid_corner_turn.lua", {}, {1, 2}}),
+                      FamilyWorld{"grid_corner_turn.lua", {}, {1, 2}},
+                      FamilyWorld{"authored_side_door.lua", {}, {1, 2}},
+                      FamilyWorld{"authored_side_door.lua", {{"drive", "differential"}}, {1, 2}}),
     family_world_name);
+
+// push_from is the world's rule (docs/scenarios.md): the baseline, free of knowledge's guidance, keeps it
+// too, and still pushes a body through a doorway from the face its author listed.
+TEST(Baseline, PushesABodyOnlyFromAFaceItsPushFromListsAndStillSolves) {
+  for (const std::string drive : {"holonomic", "differential"}) {
+    const TestProblem p("../tests/planning/data/regression/authored_side_door.lua", {{"drive", drive}});
+    for (std::uint64_t seed : {1, 2}) {
+      PlannerOptions options;
+      options.seed = seed;
+      options.time_limit = 20;
+      const PlanResult result = p.plan_task(p.original, options, "baseline");
+      ASSERT_TRUE(result.solved) << drive << " seed " << seed << ": " << result.stop_reason;
+      const Replay replay =
+          planning::replay(p.world, result.plan, p.original, p.knowledge, {.mode = knowledge::ValidityMode::kBaseline});
+      EXPECT_TRUE(replay.validated()) << drive << " seed " << seed << ": " << replay.failure;
+      EXPECT_GT(replay.pushes, 0);
+    }
+  }
+}
 
 }  // namespace
 }  // namespace physltl::planning
