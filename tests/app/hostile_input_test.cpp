@@ -36,6 +36,19 @@ fs::path many_named_boxes(const fs::path& dir, int boxes) {
   return dir / "many.lua";
 }
 
+// Each command line of `cases` ends with exit 2 and its message, before running anything.
+struct Refusal {
+  std::string args, message;
+};
+void expect_each_refused(const std::vector<Refusal>& cases, const fs::path& out) {
+  for (const Refusal& c : cases) {
+    const Result r = run(c.args + " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << c.args;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_EQ(r.out.find("passed"), std::string::npos) << c.args << ": ran before refusing";
+  }
+}
+
 TEST(Crash, ATaskOfTwentyNamedBodiesIsRefusedWithExitTwoByEveryCommandAndNeverAborts) {
   const fs::path out = fresh_out_dir();
   const std::string scenario = many_named_boxes(test_dir(), 20).string();
@@ -101,9 +114,7 @@ TEST(Crash, BenchMergeOfAShardWhoseUnitResultIsAFolderIsBadInput) {
 TEST(Nonsense, NumbersOnTheCommandLineMustBeFiniteAndInRange) {
   const std::string rooms = kSource + "/scenarios/rooms.lua";
   const fs::path out = fresh_out_dir();
-  const struct {
-    std::string args, message;
-  } cases[] = {
+  const std::vector<Refusal> cases = {
       {rooms + " --time-limit nan", "--time-limit: 'nan' must be finite"},
       {rooms + " --time-limit 1e309", "--time-limit: '1e309' must be finite"},
       {rooms + " --seed -1", "a seed is a whole number"},
@@ -112,11 +123,7 @@ TEST(Nonsense, NumbersOnTheCommandLineMustBeFiniteAndInRange) {
       {"import sokoban " + kSource + "/tests/planning/data/sokoban/microban.txt --cell nan", "--cell: 'nan' must be finite"},
       {"import sokoban " + kSource + "/tests/planning/data/sokoban/microban.txt --box 1e300", "--box: '1e300' is too large"},
   };
-  for (const auto& c : cases) {
-    const Result r = run(c.args + " --out " + out.string());
-    EXPECT_EQ(r.exit_code, 2) << c.args;
-    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
-  }
+  expect_each_refused(cases, out);
   EXPECT_FALSE(fs::exists(out));
 }
 
@@ -137,9 +144,7 @@ TEST(DestroyedFile, AnOutputPathThatIsAnInputAFolderOrEmptyIsRefusedBeforeAnyWor
   fs::create_directories(dir / "folder");
   const fs::path out = fresh_out_dir();
   const std::string s = scenario.string();
-  const struct {
-    std::string args, message;
-  } cases[] = {
+  const std::vector<Refusal> cases = {
       {"test " + s + " --junit " + s, "--junit " + s + ": is " + s + ", an input of this command"},
       {"test " + s + " --junit " + (dir / "link.lua").string(), ", an input of this command"},
       {"test " + s + " --junit " + (dir / "." / "enclosed.lua").string(), ", an input of this command"},
@@ -148,12 +153,7 @@ TEST(DestroyedFile, AnOutputPathThatIsAnInputAFolderOrEmptyIsRefusedBeforeAnyWor
       {"test " + s + " --junit " + (scenario / "report.xml").string(), "enclosed.lua is a file, not a folder"},
       {"bench " + s + " --runs 1 --log " + s, "--log " + s + ": is " + s + ", an input of this command"},
   };
-  for (const auto& c : cases) {
-    const Result r = run(c.args + " --out " + out.string());
-    EXPECT_EQ(r.exit_code, 2) << c.args;
-    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
-    EXPECT_EQ(r.out.find("passed"), std::string::npos) << c.args << ": ran before refusing";
-  }
+  expect_each_refused(cases, out);
   EXPECT_EQ(slurp(scenario), original);
   EXPECT_TRUE(fs::is_symlink(dir / "link.lua"));
   EXPECT_TRUE(fs::is_empty(dir / "folder"));
@@ -274,9 +274,7 @@ TEST(Nonsense, AJUnitReportStaysWellFormedXmlWhatEverAFailureTextHolds) {
 TEST(Nonsense, ASettingNoScriptReadsOrOneGivenTwiceIsRefusedByEveryCommand) {
   const std::string rooms_n = kSource + "/scenarios/rooms_n.lua";
   const fs::path out = fresh_out_dir();
-  const struct {
-    std::string args, message;
-  } cases[] = {
+  const std::vector<Refusal> cases = {
       {rooms_n + " --set room=8", "the setting room=8 is read by no script: did you mean 'rooms'?"},
       {"check " + rooms_n + " --set nosuchkey=1", "the setting nosuchkey=1 is read by no script"},
       {"execute " + rooms_n + " --set nosuchkey=1", "the setting nosuchkey=1 is read by no script"},
@@ -287,11 +285,7 @@ TEST(Nonsense, ASettingNoScriptReadsOrOneGivenTwiceIsRefusedByEveryCommand) {
       {rooms_n + " --set rooms=2 --set rooms=4", "'rooms' is set twice: rooms=2 and rooms=4"},
       {"bench " + rooms_n + " --uncertainty mass=0.1,mass=0.2", "--uncertainty: mass is given twice"},
   };
-  for (const auto& c : cases) {
-    const Result r = run(c.args + " --out " + out.string());
-    EXPECT_EQ(r.exit_code, 2) << c.args;
-    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
-  }
+  expect_each_refused(cases, out);
   EXPECT_FALSE(fs::exists(out));
 }
 
