@@ -10,8 +10,6 @@
 namespace physltl::geometry {
 namespace {
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 Polygon counter_clockwise(Polygon p) {
   if (p.signed_area() < 0) std::reverse(p.vertices.begin(), p.vertices.end());
   return p;

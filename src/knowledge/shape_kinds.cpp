@@ -114,7 +114,7 @@ void closer_than(const Obstacle& obstacle, const Vec2& origin, const Vec2& direc
   Hull hull;
   hull.include(inside_rectangle(o, u, {h.x() + radius, h.y()}));
   hull.include(inside_rectangle(o, u, {h.x(), h.y() + radius}));
-  for (const Vec2 corner : {Vec2(h.x(), h.y()), Vec2(-h.x(), h.y()), Vec2(h.x(), -h.y()), Vec2(-h.x(), -h.y())}) {
+  for (const Vec2& corner : {Vec2(h.x(), h.y()), Vec2(-h.x(), h.y()), Vec2(h.x(), -h.y()), Vec2(-h.x(), -h.y())}) {
     hull.include(inside_disc(o, u, corner, radius));
   }
   keep(hull.interval, out);

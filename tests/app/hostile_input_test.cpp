@@ -397,6 +397,26 @@ TEST(Nonsense, ACorruptGoldenIsNamedAndRewrittenByUpdateAndAGoldensFolderThatIsA
   }
 }
 
+TEST(Leftover, AWriteBlockedByAFolderOrALoopOfLinksSaysSoAndLeavesNothing) {
+  const fs::path dir = test_dir();
+  std::ofstream(dir / "level.txt") << "#####\n#@$.#\n#####\n";
+  const fs::path imported = dir / "imported";
+  fs::remove_all(imported);
+  fs::create_directories(imported / "level_1.lua");  // a folder where the scenario must go
+  const Result r = run("import sokoban " + (dir / "level.txt").string() + " --out " + imported.string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("cannot write " + (imported / "level_1.lua").string() + ": it is a folder"), std::string::npos) << r.err;
+  for (const auto& entry : fs::directory_iterator(imported)) EXPECT_EQ(entry.path().filename(), "level_1.lua");
+
+  fs::remove(dir / "loop_a");
+  fs::remove(dir / "loop_b");
+  fs::create_symlink("loop_b", dir / "loop_a");
+  fs::create_symlink("loop_a", dir / "loop_b");
+  const Result looped = run(kSource + "/scenarios/avoid.lua --quiet --out " + (dir / "loop_a").string());
+  EXPECT_EQ(looped.exit_code, 2) << looped.err;
+  EXPECT_NE(looped.err.find("loop_a: Too many levels of symbolic links"), std::string::npos) << looped.err;
+}
+
 // A fault of ours, here a planner that throws: said as an internal error, with its own exit code, by every
 // command that runs a planner; never an abort.
 TEST(Internal, AFaultInAPlannerIsAnInternalErrorWithExitThreeInRunBenchAndExecute) {

@@ -133,7 +133,7 @@ void picture_cases(const SolvedPlan& plan, const scenario::Expectations& e, Gold
 
 // The main job's plan, as the main job makes it on one thread; a search without a validated plan fails the
 // case, a search cut short with its diagnosis in `actual_folder`/failed/.
-CaseResult solve_case(const PlanningRun& run, const TestSettings& settings, const std::filesystem::path& actual_folder,
+CaseResult solve_case(const PlanningRun& run, const std::filesystem::path& actual_folder,
                       std::optional<planning::ValidatedPlan>& solution) {
   const scenario::World& world = run.problem().world();
   planning::PlannerOptions options = run.options();
@@ -202,7 +202,7 @@ ScenarioResult test_scenario(const TestEntry& entry, const scenario::World& worl
 
   std::optional<planning::ValidatedPlan> solution;
   if (checked && !e.infeasible) {
-    cases.push_back(timed("solves", [&] { return solve_case(*run, settings, actual_folder, solution); }));
+    cases.push_back(timed("solves", [&] { return solve_case(*run, actual_folder, solution); }));
     if (settings.stop != nullptr && settings.stop->load()) {
       result.interrupted = true;
       result.time_s = seconds_since(start);

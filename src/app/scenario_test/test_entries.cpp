@@ -20,7 +20,7 @@ std::string folder_safe(const std::string& text) {
 }
 
 TestEntry parse_entry(const std::string& text) {
-  TestEntry entry{text, {}, {}, {}};
+  TestEntry entry{text, {}, {}, {}, {}};
   std::size_t start = 0;
   std::size_t sep = text.find("::");
   entry.file = text.substr(0, sep);
