@@ -12,7 +12,7 @@ namespace {
 PictureTolerance read_tolerance(TableReader& r) {
   PictureTolerance t;
   if (auto channel = r.optional_number("max_channel_difference")) {
-    if (*channel < 0 || *channel > 255 || *channel != static_cast<int>(*channel)) {
+    if (!(*channel >= 0 && *channel <= 255 && *channel == std::floor(*channel))) {  // NaN fails too
       r.error("'max_channel_difference' must be a whole number from 0 to 255");
     } else {
       t.max_channel_difference = static_cast<int>(*channel);
@@ -66,8 +66,8 @@ std::vector<FrameMoment> read_frames(TableReader& r) {
 std::optional<int> read_bound(TableReader& r, const std::string& key) {
   const std::optional<double> v = r.optional_number(key);
   if (!v) return std::nullopt;
-  if (*v < 0 || *v != static_cast<int>(*v)) {
-    r.error("'" + key + "' must be a whole number, 0 or more");
+  if (!(*v >= 0 && *v <= 1e9 && *v == std::floor(*v))) {  // checked before the cast: 1e308 is no int
+    r.error("'" + key + "' must be a whole number from 0 to 1e9, got " + number_text(*v));
     return std::nullopt;
   }
   return static_cast<int>(*v);
