@@ -29,7 +29,9 @@ TEST(Bench, CompareOnOrderedWritesBenchJsonWithBothPlannersOnTheSameSeeds) {
     ASSERT_EQ(planner["times_s"].size(), 2u);
     EXPECT_EQ(planner["per_run"][0]["seed"], 5);
     EXPECT_TRUE(planner["bodies_moved_median"].is_number());
-    if (planner["per_run"][0]["solved"] == true) EXPECT_GE(planner["per_run"][0]["bodies_moved"].get<int>(), 1);  // p1 and p3 are under boxes
+    if (planner["per_run"][0]["solved"] == true) {
+      EXPECT_GE(planner["per_run"][0]["bodies_moved"].get<int>(), 1);  // p1 and p3 are under boxes
+    }
     EXPECT_EQ(planner["per_run"][1]["seed"], 6);
   }
   EXPECT_TRUE(j["ratio_of_medians"].is_number());

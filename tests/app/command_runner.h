@@ -25,6 +25,9 @@ namespace fs = std::filesystem;
 
 // The source tree, where the scenarios are.
 inline const std::string kSource = PHYSLTL_SOURCE_DIR;
+// How many times slower this build runs the program than a plain one (10 under sanitizers): a time budget
+// given to a run, or allowed for work outside the time limit, is scaled by it.
+inline constexpr double kSlowdown = PHYSLTL_TEST_SLOWDOWN;
 
 struct Result {
   int exit_code = -1;

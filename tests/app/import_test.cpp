@@ -96,5 +96,59 @@ TEST(ImportSokoban, AByteOrderMarkAndACommentInsideALevelAreReadAsTheyMean) {
   EXPECT_EQ(run("check " + (out / "marked_1.lua").string() + " --no-preview --out " + out.string()).exit_code, 0);
 }
 
+// Collections as Debian's cavepacker-data ships them: the level, then Author, Title and a Comment block
+// (which may hold a line starting with '#' that is no row), and the solution in a file of its own.
+TEST(ImportSokoban, ALevelWithItsAuthorTitleAndCommentBlockImportsAndItsSolutionReplaysOnTheGrid) {
+  const fs::path dir = test_dir("levels");
+  std::ofstream(dir / "walk.sok") << "#######\n#@  $.#\n#######\nAuthor: a tester\nTitle: Walk and push\n"
+                                     "Comment:\n# one box, one goal\nComment-End:\n";
+  std::ofstream(dir / "walk.sol") << "2(rl)\n2rR\n";
+  const fs::path out = fresh_out_dir();
+  const Result r = run("import sokoban " + (dir / "walk.sok").string() + " --solution " + (dir / "walk.sol").string() +
+                       " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("walk.sol replays: 7 moves, 1 pushes"), std::string::npos) << r.out;
+  const std::string scenario = slurp(out / "walk_1.lua");
+  EXPECT_NE(scenario.find("-- Reference solution (walk.sol), replayed on this grid: 7 moves, 1 pushes."), std::string::npos)
+      << scenario;
+  EXPECT_EQ(run("check " + (out / "walk_1.lua").string() + " --no-preview --out " + out.string()).exit_code, 0);
+}
+
+// A solution that does not fit its level says which move fails and why, and nothing is written: the
+// import and the solution disagree, so one of them is not what the user thinks.
+TEST(ImportSokoban, ASolutionThatDoesNotReplayOrCannotBeReadIsRefusedNamingTheMoveOrTheLine) {
+  const fs::path dir = test_dir("levels");
+  std::ofstream(dir / "walk.sok") << "#######\n#@  $.#\n#######\n";
+  struct Case {
+    std::string solution, message;
+  };
+  const std::vector<Case> cases = {
+      {"u", "walk.sol: move 1 ('u') of level 1 walks into a wall"},
+      {"rrRR", "walk.sol: move 4 ('R') of level 1 pushes a box into a wall"},
+      {"R", "walk.sol: move 1 ('R') of level 1 is a push (a capital) but there is no box to push"},
+      {"rr", "walk.sol: the solution of level 1 ends with 1 of its 1 goals without a box"},
+      {"rr\nx", "walk.sol:2: 'x' is no move"},
+      {"2(rl", "walk.sol:1: the '(' of line 1 is never closed"},
+      {"rl)", "walk.sol:1: a ')' with no '(' before it"},
+      {"0r", "walk.sol:1: a count of 0"},
+      {"rrr3", "walk.sol:1: a count with no move after it"},
+      {"", "walk.sol: no moves in it"},
+      {"9999999(9999999(9999999(r)))", "walk.sol:1: more than 10000000 moves"},
+      {"99999999999r", "walk.sol:1: a count over 10000000 moves"},
+  };
+  for (const Case& c : cases) {
+    std::ofstream(dir / "walk.sol") << c.solution;
+    const fs::path out = fresh_out_dir();
+    const Result r = run("import sokoban " + (dir / "walk.sok").string() + " --solution " + (dir / "walk.sol").string() +
+                         " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << c.solution;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.solution << "\n" << r.err;
+    EXPECT_FALSE(fs::exists(out)) << c.solution;
+  }
+  const Result many = run("import sokoban " + kLevels + " --solution " + (dir / "walk.sol").string());
+  EXPECT_EQ(many.exit_code, 2);
+  EXPECT_NE(many.err.find("has 4 levels, so name one with --level N"), std::string::npos) << many.err;
+}
+
 }  // namespace
 }  // namespace physltl::testing_support

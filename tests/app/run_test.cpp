@@ -150,7 +150,7 @@ TEST(Run, ABadPlannerChoiceIsExitTwoAndWritesNothing) {
 TEST(Run, AnOmplPlannerCutShortWritesItsRefusalsAndTreeWithoutStages) {
   const fs::path out = fresh_out_dir();
   const std::string delivery = kSource + "/scenarios/delivery.lua";
-  const Result r = run(delivery + " --planner ompl-rrt --time-limit 0.3 --render --quiet --out " + out.string());
+  const Result r = run(delivery + " --planner ompl-rrt --time-limit " + std::to_string(0.3 * kSlowdown) + " --render --quiet --out " + out.string());
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("no plan found (time limit); most refused: "), std::string::npos) << r.err;
   const auto failed = nlohmann::json::parse(slurp(out / "delivery" / "failed" / "report.json"));
@@ -197,7 +197,7 @@ TEST(Run, ASearchCutShortWritesFailedReportAndTreeAndLeavesTheEarlierPlanAlone) 
                "task { formula = 'F(" + formula + close + ")' }");
   const fs::path long_task = test_dir("long") / "ordered.lua";
   std::ofstream(long_task) << text;
-  const Result r = run(long_task.string() + " --time-limit 0.02 --render --quiet --out " + out.string());
+  const Result r = run(long_task.string() + " --time-limit " + std::to_string(0.02 * kSlowdown) + " --render --quiet --out " + out.string());
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_TRUE(r.out.empty()) << r.out;
   // The last line says why, under --quiet too.

@@ -41,7 +41,9 @@ class Executing : public OrderedPlanPushingBoxes {
       }
     }
     EXPECT_EQ(judge_in_world(truth, executed, nullptr, problem_.original).succeeded, succeeds);
-    if (succeeds) EXPECT_TRUE(again.accepted) << again.failure;
+    if (succeeds) {
+      EXPECT_TRUE(again.accepted) << again.failure;
+    }
   }
 
 };

@@ -108,7 +108,7 @@ TEST(Simulation, TheStrongestControlHeldForFiveSecondsNeverExceedsMaxSpeed) {
   auto world = small_world();
   world.movable_bodies.clear();
   world.robot.max_speed = 0.5;
-  for (const Vec2 direction : {Vec2(0, 1), Vec2(-1, 0), Vec2(1, 1).normalized(), Vec2(-3, 1).normalized()}) {
+  for (const Vec2& direction : {Vec2(0, 1), Vec2(-1, 0), Vec2(1, 1).normalized(), Vec2(-3, 1).normalized()}) {
     Simulation sim(world);
     double fastest = 0.0;
     for (int i = 0; i < 100; ++i) {  // 5 s

@@ -22,7 +22,7 @@ using geometry::Vec2;
 struct Workspace {
   geometry::Rect bounds;
   double floor_friction = 0.5;
-  Location where;
+  Location where{};
 };
 
 // How the robot moves. Both drives track a velocity set-point with a force bounded by max_force
@@ -42,7 +42,7 @@ struct Robot {
   double friction = 0.5;
   Vec2 start = Vec2::Zero();
   double start_yaw = 0.0;  // rad, differential only
-  Location where;
+  Location where{};
 };
 
 // One side of a box in its own frame: the robot stands on this side to push towards the opposite one.
@@ -68,7 +68,7 @@ struct FixedBody {
   double height = 0.5;
   std::string mesh;  // optional OBJ file: drawn, and its footprint collides
   double mesh_scale = 1.0;
-  Location where;
+  Location where{};
 };
 
 // A movable body's own ranges (movable { uncertainty = { ... } }), each replacing the world's for it.
@@ -89,20 +89,20 @@ struct MovableBody {
   std::vector<int> push_from;
   std::optional<double> mregion_depth;  // m; default derived from the robot's size
   BodyUncertainty uncertainty;
-  Location where;
+  Location where{};
 };
 
 struct Region {
   std::string name;  // the proposition, used in the formula
   geometry::Polygon polygon;
-  Location where;
+  Location where{};
 };
 
 struct Task {
   std::string formula;  // as written
   // The formula, parsed once as the scenario is read: everything downstream takes it from here.
   ltl::Formula parsed = ltl::Formula::tt();
-  Location where;
+  Location where{};
 };
 
 // Seconds of planning when a scenario does not say.
@@ -114,7 +114,7 @@ struct PlannerSettings {
   int min_steps = 2;         // physics steps per control
   int max_steps = 30;
   std::uint64_t seed = 1;
-  Location where;
+  Location where{};
 };
 
 struct Camera {
@@ -130,7 +130,7 @@ struct RenderSettings {
   int height = 480;
   int fps = 30;
   Camera camera;
-  Location where;
+  Location where{};
 };
 
 // How far reality may differ from the model (docs/robustness.md): what `--robustness` and `execute` draw
@@ -141,7 +141,7 @@ struct Uncertainty {
   double start = 0.0;         // m: the robot's start, uniform in a disc of this radius
   double body_pose = 0.0;     // m: each movable body's position, uniform in a disc of this radius
   double body_yaw_deg = 0.0;  // deg: each movable body's heading, uniform in [-body_yaw_deg, body_yaw_deg]
-  Location where;
+  Location where{};
 
   bool none() const { return mass == 0 && friction == 0 && start == 0 && body_pose == 0 && body_yaw_deg == 0; }
 };

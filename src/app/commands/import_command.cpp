@@ -3,6 +3,7 @@
 #include "common/files.h"
 #include "import/sokoban_level.h"
 #include "import/sokoban_scenario.h"
+#include "import/sokoban_solution.h"
 
 #include <iostream>
 #include <memory>
@@ -15,9 +16,22 @@ struct ImportArgs {
   std::string format;
   std::string file;
   std::optional<int> level;
+  std::optional<std::string> solution;
   import::GridSizes sizes;
   std::string out_dir = "scenarios/imported";
 };
+
+// The solution of the one level imported, replayed on its grid before anything is written.
+import::ReferenceSolution replayed_solution(const ImportArgs& args, const std::vector<import::SokobanLevel>& levels) {
+  if (levels.size() != 1) {
+    throw BadInput("--solution replays the solution of one level: " + args.file + " has " + std::to_string(levels.size()) +
+                   " levels, so name one with --level N");
+  }
+  const std::filesystem::path file(*args.solution);
+  const import::SolutionReplay replay = import::replay_solution(levels.front(), import::read_sokoban_solution(file), file.string());
+  std::cout << "solution   " << file.string() << " replays: " << replay.moves << " moves, " << replay.pushes << " pushes\n";
+  return {file.filename().string(), replay};
+}
 
 int run_import(const ImportArgs& args) {
   if (args.format != "sokoban") throw BadInput("import knows the format 'sokoban', not '" + args.format + "'");
@@ -32,6 +46,8 @@ int run_import(const ImportArgs& args) {
     }
     levels = {levels[static_cast<size_t>(*args.level - 1)]};
   }
+  std::optional<import::ReferenceSolution> reference;
+  if (args.solution) reference = replayed_solution(args, levels);
   const std::filesystem::path out(args.out_dir);
   std::filesystem::create_directories(out);
   const std::string stem = std::filesystem::path(args.file).stem().string();
@@ -44,7 +60,7 @@ int run_import(const ImportArgs& args) {
       continue;
     }
     const std::filesystem::path file = out / (stem + "_" + std::to_string(level.number) + ".lua");
-    write_text_file(file, import::sokoban_scenario(level, std::filesystem::path(args.file).filename().string(), args.sizes));
+    write_text_file(file, import::sokoban_scenario(level, std::filesystem::path(args.file).filename().string(), args.sizes, reference));
     const std::size_t boxes = level.boxes.size();
     std::cout << "wrote      " << file.string() << " (" << boxes << (boxes == 1 ? " box" : " boxes") << ")\n";
   }
@@ -58,6 +74,10 @@ CommandRunner add_import_command(CLI::App& app) {
   app.add_option("format", args->format, "The file's format: sokoban (the standard Sokoban text format)")->required();
   app.add_option("file", args->file, "The file of levels")->required()->check(CLI::ExistingFile);
   app.add_option("--level", args->level, "Import only level N (numbered from 1 in file order)")->check(CLI::PositiveNumber);
+  app.add_option("--solution", args->solution,
+                 "A solution of the level (LURD moves, as collections ship them) to replay on its grid before import: "
+                 "proves the import and gives the reference moves and pushes")
+      ->check(CLI::ExistingFile);
   // The smallest a scenario may hold (a centimetre) to a building's length.
   app.add_option("--cell", args->sizes.cell, "Cell size in metres")->check(number_in(0.01, 100.0, true))->capture_default_str();
   app.add_option("--box", args->sizes.box, "A box's side in metres")->check(number_in(0.01, 100.0, true))->capture_default_str();

@@ -109,9 +109,17 @@ std::vector<SokobanLevel> read_sokoban_levels(const std::filesystem::path& file)
     if (!current.rows.empty()) levels.push_back(finish_level(file, std::move(current)));
     current = SokobanLevel{};
   };
+  bool in_comment_block = false;
   while (std::getline(in, line)) {
     ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    // "Comment:" alone on its line opens a block of free text up to "Comment-End:" (the format of
+    // collections such as cavepacker's): a line of it that starts with '#' is no row.
+    if (in_comment_block || line == "Comment:") {
+      in_comment_block = line != "Comment-End:";
+      close();
+      continue;
+    }
     // A comment inside a level (some collections put one between its rows) does not end it.
     if (!current.rows.empty() && line.rfind(";", 0) == 0) continue;
     if (is_run_length_row(line)) refuse(file, number, "a run-length encoded row (digits before the cells): write the level out cell by cell");

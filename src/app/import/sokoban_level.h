@@ -1,6 +1,7 @@
 #pragma once
 // Levels of the standard Sokoban text format (# wall, @ player, + player on goal, $ box, * box on goal,
-// . goal, space, - or _ floor); lines of other text (titles, ';' comments, blank lines) separate levels.
+// . goal, space, - or _ floor); lines of other text (titles, ';' comments, blank lines, a block from a
+// line "Comment:" to a line "Comment-End:") separate levels.
 
 #include <filesystem>
 #include <string>

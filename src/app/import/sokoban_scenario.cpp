@@ -99,7 +99,8 @@ std::optional<std::string> beyond_limits(const SokobanLevel& level) {
   return std::nullopt;
 }
 
-std::string sokoban_scenario(const SokobanLevel& level, const std::string& source, const GridSizes& sizes) {
+std::string sokoban_scenario(const SokobanLevel& level, const std::string& source, const GridSizes& sizes,
+                             const std::optional<ReferenceSolution>& reference) {
   const int rows = static_cast<int>(level.rows.size());
   const double c = sizes.cell;
   // Row 0 is the top of the drawing: y grows upwards, so it is the highest row of cells.
@@ -112,6 +113,10 @@ std::string sokoban_scenario(const SokobanLevel& level, const std::string& sourc
       "-- Level {} of {}, imported by `physltl-studio import sokoban` (docs/scenarios.md#importing-sokoban-levels):\n"
       "-- cells of {:g} m, boxes of {:g} m, the robot a disc of radius {:g} m.\n",
       level.number, source, c, sizes.box, sizes.robot_radius);
+  if (reference) {
+    lua += fmt::format("-- Reference solution ({}), replayed on this grid: {} moves, {} pushes.\n", reference->file,
+                       reference->replay.moves, reference->replay.pushes);
+  }
   for (const std::string& row : level.rows) lua += "--   " + row + "\n";
   lua += fmt::format("workspace {{ bounds = {{ {{ 0, 0 }}, {{ {:.4f}, {:.4f} }} }} }}\n", x_of(level.width()), y_of(0));
   lua += fmt::format("robot {{ radius = {:g}, start = {} }}\n", sizes.robot_radius, centre(level.player));

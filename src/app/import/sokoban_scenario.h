@@ -3,6 +3,7 @@
 // rectangles, boxes as movable bodies M1.., goals as regions goal1.., the player as the robot.
 
 #include "sokoban_level.h"
+#include "sokoban_solution.h"
 
 #include <optional>
 #include <string>
@@ -21,7 +22,14 @@ struct GridSizes {
 // F G(M1@goalk & ...): a stronger task, which a level may need another assignment for.
 inline constexpr int kMaxAnyBoxAnyGoal = 5;
 
-std::string sokoban_scenario(const SokobanLevel& level, const std::string& source, const GridSizes& sizes);
+// `reference`, when given, is the level's solution as replayed on its grid (sokoban_solution.h), named by
+// its file: the scenario's comment gives its moves and pushes, what a plan's pushes compare with.
+struct ReferenceSolution {
+  std::string file;
+  SolutionReplay replay;
+};
+std::string sokoban_scenario(const SokobanLevel& level, const std::string& source, const GridSizes& sizes,
+                             const std::optional<ReferenceSolution>& reference = std::nullopt);
 
 // Why `check` would refuse the scenario of `level`, with the limit it shares with the scenario reader and
 // the planner: more wall rectangles or boxes than a scenario may hold (scenario::kMaxBodiesOfAKind), a task

@@ -64,7 +64,7 @@ struct ReplayOptions {
   // validates (the replay then holds the steps up to that one).
   bool stop_at_first_failure = false;
   const ReplayedPrefix* prefix = nullptr;  // steps already replayed, taken as they are
-  Deadline deadline;  // checked every few physics steps (Replay::cut_short)
+  Deadline deadline{};  // checked every few physics steps (Replay::cut_short)
 };
 
 // Replays `plan` and checks it against `formula` (the task as written, not the simplified one the search
