@@ -72,43 +72,67 @@ int PushSearcher::facts_of(int stage, const std::vector<int>& cells) const {
   return facts;
 }
 
+std::vector<int> PushSearcher::pushes_to(int k, const std::set<int>& places) const {
+  // Backwards from the wanted places: the body comes to `c` from `c - d`, pushed by a robot at `c - 2d`.
+  std::vector<int> left(static_cast<std::size_t>(lattice_.cells()), kNever);
+  std::vector<int> queue;
+  for (int c = 0; c < lattice_.cells(); ++c) {
+    if (lattice_.body_fits(k, c) && places.count(lattice_.place(k, c)) > 0) left[static_cast<std::size_t>(c)] = 0, queue.push_back(c);
+  }
+  for (std::size_t i = 0; i < queue.size(); ++i) {
+    const int c = queue[i];
+    for (int d = 0; d < kDirections; ++d) {
+      if (!lattice_.can_push(k, d)) continue;
+      const int before = lattice_.neighbour(c, opposite(d));
+      if (before < 0 || !lattice_.body_fits(k, before) || left[static_cast<std::size_t>(before)] != kNever) continue;
+      const int stand = lattice_.neighbour(before, opposite(d));
+      if (stand < 0 || !lattice_.robot_fits(stand)) continue;
+      left[static_cast<std::size_t>(before)] = left[static_cast<std::size_t>(c)] + 1;
+      queue.push_back(before);
+    }
+  }
+  return left;
+}
+
 PushSearcher::Goals PushSearcher::goals_from(int stage) const {
   const int bodies = static_cast<int>(lattice_.bodies().size());
-  // The places each named body has in some fact set that would end the pushing from `stage`.
-  std::vector<std::set<int>> wanted(static_cast<std::size_t>(bodies));
+  // The places of the named bodies in each fact set that would end the pushing from `stage`.
+  std::set<std::vector<int>> endings;
   for (int facts = 0; facts < labelling_.fact_sets(); ++facts) {
     if (!ends_pushing(stages_.after_letter(stage, labelling_.letter(facts, -1)))) continue;
+    std::vector<int> ending(static_cast<std::size_t>(bodies), 0);
     for (int k = 0; k < bodies; ++k) {
-      if (lattice_.named(k) >= 0) wanted[static_cast<std::size_t>(k)].insert(labelling_.place(facts, lattice_.named(k)));
+      if (lattice_.named(k) >= 0) ending[static_cast<std::size_t>(k)] = labelling_.place(facts, lattice_.named(k));
     }
+    endings.insert(std::move(ending));
   }
   Goals goals;
   goals.pushes_left.resize(static_cast<std::size_t>(bodies));
+  std::vector<std::set<int>> wanted(static_cast<std::size_t>(bodies));
+  for (const std::vector<int>& ending : endings) {
+    for (int k = 0; k < bodies; ++k) wanted[static_cast<std::size_t>(k)].insert(ending[static_cast<std::size_t>(k)]);
+  }
   for (int k = 0; k < bodies; ++k) {
     const std::set<int>& places = wanted[static_cast<std::size_t>(k)];
     if (lattice_.named(k) < 0 || places.empty() || places.count(0) > 0) continue;  // free: anywhere will do
-    // Backwards from the wanted places: the body comes to `c` from `c - d`, pushed by a robot at `c - 2d`.
-    std::vector<int> left(static_cast<std::size_t>(lattice_.cells()), kNever);
-    std::vector<int> queue;
-    for (int c = 0; c < lattice_.cells(); ++c) {
-      if (lattice_.body_fits(k, c) && places.count(lattice_.place(k, c)) > 0) left[static_cast<std::size_t>(c)] = 0, queue.push_back(c);
+    goals.pushes_left[static_cast<std::size_t>(k)] = pushes_to(k, places);
+  }
+  if (endings.size() > static_cast<std::size_t>(kMaxEndings)) return goals;
+  goals.endings.assign(endings.begin(), endings.end());
+  goals.pushes_to_place.resize(static_cast<std::size_t>(bodies));
+  for (int k = 0; k < bodies; ++k) {
+    if (lattice_.named(k) < 0) continue;
+    for (int place : wanted[static_cast<std::size_t>(k)]) {
+      auto& tables = goals.pushes_to_place[static_cast<std::size_t>(k)];
+      if (tables.size() <= static_cast<std::size_t>(place)) tables.resize(static_cast<std::size_t>(place) + 1);
+      // Place 0 is outside the body's regions: being there costs no push this bound counts.
+      if (place > 0) tables[static_cast<std::size_t>(place)] = pushes_to(k, {place});
     }
-    for (std::size_t i = 0; i < queue.size(); ++i) {
-      const int c = queue[i];
-      for (int d = 0; d < kDirections; ++d) {
-        if (!lattice_.can_push(k, d)) continue;
-        const int before = lattice_.neighbour(c, opposite(d));
-        if (before < 0 || !lattice_.body_fits(k, before) || left[static_cast<std::size_t>(before)] != kNever) continue;
-        const int stand = lattice_.neighbour(before, opposite(d));
-        if (stand < 0 || !lattice_.robot_fits(stand)) continue;
-        left[static_cast<std::size_t>(before)] = left[static_cast<std::size_t>(c)] + 1;
-        queue.push_back(before);
-      }
-    }
-    goals.pushes_left[static_cast<std::size_t>(k)] = std::move(left);
   }
   return goals;
 }
+
+int PushSearcher::estimate(int stage, const std::vector<int>& cells) const { return goals_from(stage).estimate(cells); }
 
 bool PushSearcher::alive(int stage, int k, int cell) const {
   return goals_from(stage).left(k, cell) != kNever;
@@ -120,9 +144,22 @@ int PushSearcher::Goals::left(int k, int cell) const {
 }
 
 int PushSearcher::Goals::estimate(const std::vector<int>& cells) const {
-  int sum = 0;
-  for (std::size_t k = 0; k < cells.size(); ++k) sum += left(static_cast<int>(k), cells[k]);
-  return sum;
+  int apart = 0;
+  for (std::size_t k = 0; k < cells.size(); ++k) apart += left(static_cast<int>(k), cells[k]);
+  if (endings.empty()) return apart;
+  int best = kNever;
+  for (const std::vector<int>& ending : endings) {
+    int sum = 0;
+    for (std::size_t k = 0; k < cells.size() && sum < best; ++k) {
+      const int place = ending[k];
+      if (place == 0 || pushes_to_place[k].empty()) continue;
+      const int pushes = pushes_to_place[k][static_cast<std::size_t>(place)][static_cast<std::size_t>(cells[k])];
+      sum = pushes == kNever ? kNever : sum + pushes;
+    }
+    best = std::min(best, sum);
+  }
+  // Every ending out of reach alone: the arrangement is pruned elsewhere, or the bodies must help each other.
+  return best == kNever ? apart : std::max(best, apart);
 }
 
 int PushSearcher::stage_after(int stage, const std::vector<int>& cells) const {
@@ -158,11 +195,12 @@ bool PushSearcher::square_frozen(const Goals& goals, const std::vector<int>& cel
 class ArrangementSearch {
  public:
   ArrangementSearch(const PushLattice& lattice, const StageGraph& stages, const PushSearcher& searcher,
-                    const PushSearcher::Goals& goals)
+                    const PushSearcher::Goals& goals, double weight)
       : lattice_(lattice),
         stages_(stages),
         searcher_(searcher),
         goals_(goals),
+        weight_(weight),
         holder_(static_cast<std::size_t>(lattice.cells()), -1),
         seen_(static_cast<std::size_t>(lattice.cells()), -1),
         seen_after_(static_cast<std::size_t>(lattice.cells()), -1) {}
@@ -276,7 +314,7 @@ class ArrangementSearch {
   int add(Node node) {
     const auto [it, inserted] = known_.emplace(key_of(node.cells, node.robot, node.stage), static_cast<int>(nodes_.size()));
     if (!inserted) return -1;
-    open_.push({node.cost + kHeuristicWeight * goals_.estimate(node.cells), order_++, it->second});
+    open_.push({node.cost + weight_ * goals_.estimate(node.cells), order_++, it->second});
     nodes_.push_back(std::move(node));
     return it->second;
   }
@@ -285,6 +323,7 @@ class ArrangementSearch {
   const StageGraph& stages_;
   const PushSearcher& searcher_;
   const PushSearcher::Goals& goals_;
+  double weight_;
   std::vector<int> holder_;      // per place, the body on it or -1
   std::vector<int> seen_;        // the robot's reach before a push (marks)
   std::vector<int> seen_after_;  // and after it
@@ -298,14 +337,14 @@ class ArrangementSearch {
 };
 
 PushSearch PushSearcher::search(int stage, const std::vector<int>& cells, int robot_cell, const Deadline& deadline,
-                                long long max_arrangements) const {
+                                long long max_arrangements, double weight) const {
   PushSearch result;
   const Goals goals = goals_from(stage);
   result.outcome = "no order of pushes";
   for (std::size_t k = 0; k < cells.size(); ++k) {
     if (goals.left(static_cast<int>(k), cells[k]) == kNever) return result;
   }
-  ArrangementSearch search(lattice_, stages_, *this, goals);
+  ArrangementSearch search(lattice_, stages_, *this, goals, weight);
   int solution = search.start(cells, robot_cell, stage);
   if (!ends_pushing(stage)) solution = -1;
   while (solution < 0 && !search.exhausted()) {

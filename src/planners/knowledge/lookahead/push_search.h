@@ -2,8 +2,10 @@
 // The look-ahead's discrete search: over arrangements of the lattice's bodies (push_lattice.h) and the
 // task's stage, by pushes of one body one step (the robot walks, between pushes, through the places no
 // body holds), until the stage needs no more body moves; a line of bodies pushed end to end may end it.
-// Weighted A*: a push costs the bodies it moves, and the estimate is each named body's fewest pushes to
-// its places alone. Pruned inside this search only: arrangements where the automaton dies, a body the task needs
+// Weighted A*: a push costs the bodies it moves, and the estimate is the fewest pushes, each named body
+// alone, to the places of one fact set that ends the pushing (for Sokoban's any box on any goal, the
+// cheapest matching of boxes to goals, so two boxes never count one goal); with more such fact sets than
+// kMaxEndings, each body's fewest pushes to any of its places. Pruned inside this search only: arrangements where the automaton dies, a body the task needs
 // somewhere on a place it can never be pushed there from (a box against a wall its goal is not along),
 // and four places in a square all held by walls or bodies, no two bodies side by side, one of them a body
 // not yet where the task needs it (none of them can move again).
@@ -12,6 +14,7 @@
 #include "physltl/base/deadline.h"
 #include "physltl/planning/stage_graph.h"
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -21,6 +24,9 @@ namespace physltl::planning::lookahead {
 // with pushes within a few of the fewest; 1 (plain A*) settled ten times as many arrangements.
 inline constexpr double kHeuristicWeight = 2.0;
 inline constexpr long long kMaxArrangements = 400'000;
+// The estimate weighs each arrangement against every ending fact set up to this many (a Sokoban level of
+// 6 boxes, any box on any goal, has 720); beyond it, the bodies' places are taken apart.
+inline constexpr int kMaxEndings = 1024;
 
 struct PushStep {
   int body = 0;  // lattice body: the one the robot pushes
@@ -50,8 +56,12 @@ class PushSearcher {
 
   // From `stage` with the lattice bodies on `cells` and the robot on `robot_cell`. The arrangements are
   // its work budget (the same order on any machine); `deadline` only ends it early (DeadlineReached).
+  // `weight` scales the estimate against the cost so far: 0 is a uniform-cost search, whose order has
+  // the fewest body steps (for tests of the estimate).
   PushSearch search(int stage, const std::vector<int>& cells, int robot_cell, const Deadline& deadline = {},
-                    long long max_arrangements = kMaxArrangements) const;
+                    long long max_arrangements = kMaxArrangements, double weight = kHeuristicWeight) const;
+  // The estimate the search ranks arrangements by: never more than the body steps left from `cells`.
+  int estimate(int stage, const std::vector<int>& cells) const;
   // Whether body k on `cell` can still get to where the task needs it, pushed alone; always true for a
   // body the task leaves free.
   bool alive(int stage, int k, int cell) const;
@@ -62,9 +72,17 @@ class PushSearcher {
   // stage (kNever where it can get there no more); no table for a body the task leaves free.
   struct Goals {
     std::vector<std::vector<int>> pushes_left;
+    // The ending fact sets, each as the place (labelling.h) of every lattice body (0 for one the task
+    // leaves free), and per lattice body, per place, per cell: the fewest pushes of it alone to that place
+    // (empty when the endings are too many to weigh).
+    std::vector<std::vector<int>> endings;
+    std::vector<std::vector<std::vector<int>>> pushes_to_place;
     int left(int k, int cell) const;           // 0 for a body the task leaves free
-    int estimate(const std::vector<int>& cells) const;  // the sum over the bodies
+    // A lower bound on the body steps left: the cheapest ending, each body pushed alone.
+    int estimate(const std::vector<int>& cells) const;
   };
+  // Per place, the fewest pushes of lattice body k alone to a place whose labelling place is in `places`.
+  std::vector<int> pushes_to(int k, const std::set<int>& places) const;
   Goals goals_from(int stage) const;
   // The stage needs no more body moves: the robot's part of the task, or acceptance.
   bool ends_pushing(int stage) const;
