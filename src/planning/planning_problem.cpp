@@ -28,15 +28,16 @@ const TaskAutomaton& PlanningProblem::search_task(const PlannerEntry& planner) c
   return planner.uses_knowledge ? prepared_->simplified : prepared_->as_written;
 }
 
-const PlannerData* PlanningProblem::preparation(const PlannerEntry& planner, const Deadline& deadline) const {
+const PlannerData* PlanningProblem::preparation(const PlannerEntry& planner, const PreparationOptions& options) const {
   const std::lock_guard lock(planners_mutex_);
   auto known = planners_.find(&planner);
-  if (known == planners_.end()) {
+  if (known == planners_.end() || (known->second.preview && !options.preview)) {
     const auto started = std::chrono::steady_clock::now();
     PlannerPreparation made;
-    if (planner.prepare) made.data = planner.prepare(for_planner(planner), deadline);
+    if (planner.prepare) made.data = planner.prepare(for_planner(planner), options);
     made.seconds = seconds_since(started);
-    known = planners_.emplace(&planner, std::move(made)).first;
+    made.preview = options.preview;
+    known = planners_.insert_or_assign(&planner, std::move(made)).first;
   }
   return known->second.data.get();
 }
@@ -61,7 +62,7 @@ Problem PlanningProblem::for_planner(const PlannerEntry& planner) const {
 ValidatedPlan solve(const PlanningProblem& problem, const PlannerEntry& planner, const PlannerOptions& options) {
   const PlannerData* prepared = nullptr;
   try {
-    prepared = problem.preparation(planner, options.deadline);
+    prepared = problem.preparation(planner, {options.deadline});
   } catch (const DeadlineReached& reached) {
     // Cut short before any search: no plan, for the reason the deadline gives.
     ValidatedPlan cut;

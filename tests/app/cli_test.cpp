@@ -68,6 +68,30 @@ TEST(Cli, CheckSaysWhetherTheLookAheadAppliesAndItsPushOrder) {
   EXPECT_EQ(rooms["lookahead"]["reason"], "the task names no body");
 }
 
+// check is a preview: its look-ahead has a budget of its own in arrangements, so it stays quick and says
+// the same on any machine, and it says when the budget stopped it; a run's look-ahead searches on.
+TEST(Cli, CheckSearchesPushOrdersWithinABudgetOfItsOwnAndSaysWhenItStoppedThere) {
+  const fs::path out = fresh_out_dir();
+  ASSERT_EQ(run("import sokoban " + kSource + "/tests/app/microban_ii_47.txt --out " + out.string()).exit_code, 0);
+  const std::string level = (out / "microban_ii_47_1.lua").string();
+  const Result text = run("check " + level + " --no-preview");
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("lookahead  no push order within check's budget of 20000 arrangements (a run searches up to 400000)"),
+            std::string::npos)
+      << text.out;
+  const auto checked = nlohmann::json::parse(run("check " + level + " --json --no-preview").out);
+  EXPECT_EQ(checked["lookahead"]["outcome"], "search limit");
+  EXPECT_EQ(checked["lookahead"]["arrangement_budget"], 20000);
+  // The run's preparation finds the order (the physics may take longer than the test gives it).
+  run(level + " --threads 1 --time-limit " + std::to_string(3 * kSlowdown) + " --improve 0 --quiet --out " + out.string());
+  const fs::path report = fs::exists(out / "microban_ii_47_1" / "report.json") ? out / "microban_ii_47_1" / "report.json"
+                                                                                 : out / "microban_ii_47_1" / "failed" / "report.json";
+  const auto ran = nlohmann::json::parse(slurp(report));
+  EXPECT_EQ(ran["lookahead"]["outcome"], "found");
+  EXPECT_GT(ran["lookahead"]["arrangements"].get<long long>(), 20000);
+  EXPECT_EQ(ran["lookahead"]["arrangement_budget"], 400000);
+}
+
 TEST(Cli, TheMainJobPrintsThePushOrderItFollowsAndReportJsonHoldsIt) {
   const std::string out = std::string(PHYSLTL_TEST_OUTPUT_DIR) + "/lookahead_run";
   const Result r = run(kSource + "/tests/planning/data/puzzles/long_haul.lua --improve 0 --out " + out);

@@ -31,7 +31,7 @@ PlannerEntry annotated(const PlannerEntry& baseline) {
   entry.parameters = {{"test-flavour", "A parameter of the test's planner: plain or salted", {"plain", "salted"},
                        [](const std::string& value) { return value == "salted" ? "the test's planner was salted" : ""; }}};
   entry.report_keys = {"test_note"};
-  entry.prepare = [](const Problem&, const physltl::Deadline&) {
+  entry.prepare = [](const Problem&, const physltl::planning::PreparationOptions&) {
     auto prepared = std::make_shared<Annotation>();
     prepared->prepared = true;
     return prepared;

@@ -348,7 +348,7 @@ TEST(Deadline, APreparationCutShortEndsTheRunWithNoPlanAndKeepsNothing) {
   const TestProblem p("rooms.lua");
   const PlanningProblem problem(p.world);
   const PlannerEntry& knowledge = planner_named("knowledge");
-  EXPECT_THROW(problem.preparation(knowledge, Deadline::in(0.0)), DeadlineReached);
+  EXPECT_THROW(problem.preparation(knowledge, {Deadline::in(0.0)}), DeadlineReached);
   PlannerOptions options;
   options.deadline = Deadline::in(0.0);
   const ValidatedPlan cut = solve(problem, knowledge, options);

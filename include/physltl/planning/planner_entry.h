@@ -47,6 +47,14 @@ struct PlannerParameter {
   const std::string& default_value() const { return choices.front(); }
 };
 
+// How far a planner's preparation goes. A preview (`check`) is not followed by a search: it must stay
+// quick and say the same on any machine, so a planner bounds its work there by budgets of its own, in
+// units of work rather than seconds, smaller than a run's, and its account says when one stopped it.
+struct PreparationOptions {
+  Deadline deadline{};
+  bool preview = false;
+};
+
 // What a planner keeps of its own, about a problem (what it prepared) or a search (what it reports).
 class PlannerData {
  public:
@@ -86,9 +94,9 @@ struct PlannerEntry {
   std::vector<std::string> diagnosis_keys;
 
   // Run once per problem and kept (PlanningProblem::preparation): what the planner makes of the problem
-  // before any search, as OMPL's setup(). Empty: nothing. Long loops check `deadline` (the first run's)
-  // and throw DeadlineReached; nothing is kept then.
-  std::function<std::shared_ptr<const PlannerData>(const Problem&, const Deadline& deadline)> prepare;
+  // before any search, as OMPL's setup(). Empty: nothing. Long loops check `options.deadline` (the first
+  // run's) and throw DeadlineReached; nothing is kept then.
+  std::function<std::shared_ptr<const PlannerData>(const Problem&, const PreparationOptions& options)> prepare;
   // The search; `prepared` is what prepare made (null without it).
   std::function<PlanResult(const Problem&, const PlannerData* prepared, const PlannerOptions&)> plan;
   // Its own data, from prepare or from PlanResult::own, in the program's forms. Empty: it shows none.

@@ -38,8 +38,9 @@ class PlanningProblem {
   const TaskAutomaton& as_written() const { return prepared_->as_written; }
   const decomposition::Decomposition& decomposition() const { return prepared_->decomposition; }
   // What `planner` prepared of this problem (null when it prepares nothing), made on the first call;
-  // throws DeadlineReached when `deadline` comes first (nothing kept: a later call prepares again).
-  const PlannerData* preparation(const PlannerEntry& planner, const Deadline& deadline = {}) const;
+  // throws DeadlineReached when `options.deadline` comes first (nothing kept: a later call prepares
+  // again). A preview's preparation is made again when a full one is asked for.
+  const PlannerData* preparation(const PlannerEntry& planner, const PreparationOptions& options = {}) const;
   // Seconds the reasoning and the decomposition took, once per World and task, and what `planner`
   // prepared of them; without a planner, what every planner prepared so far.
   double preparation_s(const PlannerEntry& planner) const;
@@ -56,6 +57,7 @@ class PlanningProblem {
   struct PlannerPreparation {
     std::shared_ptr<const PlannerData> data;
     double seconds = 0.0;
+    bool preview = false;
   };
   static std::optional<Prepared> prepare(const scenario::World& world, const knowledge::Reasoning& reasoning);
 

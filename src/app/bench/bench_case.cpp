@@ -62,7 +62,7 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   for (const auto planner : settings.planners) {
     if (const auto why = registry().refusal(*planner, c->problem->search_task(*planner))) throw BadInput(*why);
     // Each planner prepares the problem before its first run, outside every run's time.
-    c->problem->preparation(*planner, interruptible);
+    c->problem->preparation(*planner, {interruptible});
     // A planner that grows its search on one thread runs once, with the first thread count.
     for (const int threads : settings.threads) {
       if (planner->can.threads || threads == settings.threads.front()) results.planners.push_back({planner, threads, {}});

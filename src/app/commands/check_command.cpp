@@ -56,10 +56,10 @@ CommandRunner add_check_command(CLI::App& app) {
     if (!args->no_preview) preview = write_preview(world, reasoning, args->out_dir);
     // What the planner a run uses would prepare: the knowledge planner's look-ahead.
     const planning::PlannerEntry& planner = registry().default_planner();
-    // Not a planning run: no time limit, but Ctrl-C.
+    // Not a planning run: no time limit, but Ctrl-C; a preview, whose budgets are the planner's own.
     const Deadline interruptible(Deadline::Clock::time_point::max(), &stop_flag());
     const planning::PlannerAccount prepared = problem.feasible()
-                                                  ? account_of(planner, problem.preparation(planner, interruptible), world)
+                                                  ? account_of(planner, problem.preparation(planner, {interruptible, true}), world)
                                                   : planning::PlannerAccount{};
     if (args->json) {
       nlohmann::ordered_json report = check_report_json(world, reasoning);

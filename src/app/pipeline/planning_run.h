@@ -43,7 +43,7 @@ class PlanningRun {
   planning::PlannerOptions options() const;
   const Deadline& deadline() const { return deadline_; }
   // What the planner prepared of the problem, within the run's deadline (throws DeadlineReached).
-  const planning::PlannerData* preparation() const { return problem_.preparation(planner_, deadline_); }
+  const planning::PlannerData* preparation() const { return problem_.preparation(planner_, {deadline_}); }
   planning::ValidatedPlan solve(const planning::PlannerOptions& options) const { return planning::solve(problem_, planner_, options); }
 
   // Why a solution is not a validated plan.

@@ -24,6 +24,10 @@ std::vector<std::string> body_names(const scenario::World& world) {
 std::string lookahead_line(const PushPlan& plan, const scenario::World& world) {
   std::string line = "lookahead  ";
   if (!plan.rule.applies) return line + "off: " + plan.rule.reason;
+  if (!plan.found && plan.budget < lookahead::kMaxArrangements && plan.outcome == "search limit") {
+    return line + fmt::format("no push order within check's budget of {} arrangements (a run searches up to {}): {}", plan.budget,
+                              lookahead::kMaxArrangements, plan.rule.reason);
+  }
   if (!plan.found) return line + fmt::format("no push order ({}, {} arrangements): {}", plan.outcome, plan.arrangements, plan.rule.reason);
   const std::vector<std::string> names = body_names(world);
   std::vector<std::string> shown;
@@ -49,6 +53,7 @@ json lookahead_json(const PushPlan& plan, const scenario::World& world) {
           {"step", plan.rule.applies ? json(plan.rule.step) : json(nullptr)},
           {"outcome", plan.outcome},
           {"arrangements", plan.arrangements},
+          {"arrangement_budget", plan.budget > 0 ? json(plan.budget) : json(nullptr)},
           {"pushes", pushes}};
 }
 

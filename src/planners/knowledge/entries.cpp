@@ -13,10 +13,11 @@ using planning::KnowledgePreparation;
 using planning::PlannerData;
 using planning::Problem;
 
-std::shared_ptr<const PlannerData> prepare_knowledge(const Problem& problem, const Deadline& deadline) {
+std::shared_ptr<const PlannerData> prepare_knowledge(const Problem& problem, const planning::PreparationOptions& options) {
   auto prepared = std::make_shared<KnowledgePreparation>();
-  prepared->routes = planning::choose_routes(problem.world, problem.task, problem.decomposition, deadline);
-  prepared->lookahead = planning::lookahead::look_ahead(problem.world, problem.knowledge, problem.task, deadline);
+  prepared->routes = planning::choose_routes(problem.world, problem.task, problem.decomposition, options.deadline);
+  const long long arrangements = options.preview ? planning::lookahead::kPreviewArrangements : planning::lookahead::kMaxArrangements;
+  prepared->lookahead = planning::lookahead::look_ahead(problem.world, problem.knowledge, problem.task, options.deadline, arrangements);
   prepared->task_names_bodies = problem.task.names_bodies();
   return prepared;
 }

@@ -83,7 +83,7 @@ std::vector<PlannedPush> runs_of(const PushLattice& lattice, const std::vector<P
 }
 
 Lookahead look_ahead(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge, const TaskAutomaton& task,
-                     const Deadline& deadline) {
+                     const Deadline& deadline, long long max_arrangements) {
   Lookahead result;
   PushPlan& plan = result.plan;
   if (!task.names_bodies()) {
@@ -119,8 +119,10 @@ Lookahead look_ahead(const scenario::World& world, const knowledge::AbstractKnow
     plan.outcome = "the task's first move is the robot's";
     return result;
   }
-  const PushSearch search = PushSearcher(*result.lattice, stages, task.labelling).search(result.stage, result.start_cells, robot, deadline);
+  const PushSearch search =
+      PushSearcher(*result.lattice, stages, task.labelling).search(result.stage, result.start_cells, robot, deadline, max_arrangements);
   plan.arrangements = search.settled;
+  plan.budget = max_arrangements;
   plan.outcome = search.outcome;
   plan.found = search.found;
   result.steps = search.steps;

@@ -21,8 +21,9 @@ struct Lookahead {
 };
 
 // Throws DeadlineReached.
+// `max_arrangements`: the discrete search's budget (push_search.h).
 Lookahead look_ahead(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge, const TaskAutomaton& task,
-                     const Deadline& deadline = {});
+                     const Deadline& deadline = {}, long long max_arrangements = kMaxArrangements);
 
 // Steps of one body in one direction after each other, as one push each.
 std::vector<PlannedPush> runs_of(const PushLattice& lattice, const std::vector<PushStep>& steps);

@@ -40,6 +40,7 @@ struct PushPlan {
   bool found = false;              // a push order was found (rule.applies and the search succeeded)
   std::vector<PlannedPush> pushes;
   long long arrangements = 0;      // arrangements the discrete search settled
+  long long budget = 0;            // and the most it was allowed (kMaxArrangements, or a preview's)
   std::string outcome;             // "found", "no order of pushes", "search limit", or why not searched
 };
 

@@ -24,6 +24,9 @@ namespace physltl::planning::lookahead {
 // with pushes within a few of the fewest; 1 (plain A*) settled ten times as many arrangements.
 inline constexpr double kHeuristicWeight = 2.0;
 inline constexpr long long kMaxArrangements = 400'000;
+// `check`'s budget (a preview, planner_entry.h): about a second on the slowest level of the collections
+// measured (docs/planner.md), the same answer on any machine.
+inline constexpr long long kPreviewArrangements = 20'000;
 // The estimate weighs each arrangement against every ending fact set up to this many (a Sokoban level of
 // 6 boxes, any box on any goal, has 720); beyond it, the bodies' places are taken apart.
 inline constexpr int kMaxEndings = 1024;
