@@ -1,11 +1,24 @@
 #include "physltl/geometry/shortest_paths.h"
 
+#include <new>
+
 namespace physltl::geometry {
+namespace {
+
+template <class T>
+T* zeroed(std::size_t count) {
+  void* p = std::calloc(std::max<std::size_t>(count, 1), sizeof(T));
+  if (p == nullptr) throw std::bad_alloc();
+  return static_cast<T*>(p);
+}
+
+}  // namespace
 
 void ShortestPaths::resize(std::size_t nodes) {
-  distance_.assign(nodes, kUnreached);
-  previous_.assign(nodes, -1);
-  stamp_.assign(nodes, 0u);
+  nodes_ = nodes;
+  distance_.reset(zeroed<double>(nodes));
+  previous_.reset(zeroed<int>(nodes));
+  stamp_.reset(zeroed<unsigned>(nodes));
   search_ = 1;
   open_.clear();
 }
@@ -14,7 +27,7 @@ void ShortestPaths::start() {
   open_.clear();
   if (++search_ == 0) {
     // The stamps wrapped round: forget them all once.
-    std::fill(stamp_.begin(), stamp_.end(), 0u);
+    std::fill(stamp_.get(), stamp_.get() + nodes_, 0u);
     search_ = 1;
   }
 }
@@ -29,7 +42,7 @@ void ShortestPaths::reach(int node, int from, double distance) {
 }
 
 std::vector<double> ShortestPaths::distances() const {
-  std::vector<double> all(distance_.size(), kUnreached);
+  std::vector<double> all(nodes_, kUnreached);
   for (std::size_t i = 0; i < all.size(); ++i) {
     if (stamp_[i] == search_) all[i] = distance_[i];
   }

@@ -52,7 +52,7 @@ void expect_each_refused(const std::vector<Refusal>& cases, const fs::path& out)
 TEST(Crash, ATaskOfTwentyNamedBodiesIsRefusedWithExitTwoByEveryCommandAndNeverAborts) {
   const fs::path out = fresh_out_dir();
   const std::string scenario = many_named_boxes(test_dir(), 20).string();
-  for (const std::string command : {"check " + scenario + " --no-preview", scenario, "bench " + scenario + " --runs 1",
+  for (const std::string& command : {"check " + scenario + " --no-preview", scenario, "bench " + scenario + " --runs 1",
                                     "execute " + scenario + " --worlds 1"}) {
     const Result r = run(command + " --out " + out.string());
     EXPECT_EQ(r.exit_code, 2) << command << ": " << r.err;
@@ -351,6 +351,22 @@ TEST(Hang, APreparationLongerThanTheTimeLimitEndsWithinASecondOfIt) {
   EXPECT_FALSE(fs::exists(out / "crowded" / "plan.json"));
 }
 
+// Push puzzles whose preparation or search would outgrow the time limit: Microban II 109, whose look-ahead
+// takes ~12 s, and 115, whose 16 boxes make the planner's product of triangles and places ~10^8 states
+// (it held 9.6 GB and took 18 to 27 s of a 10 s limit before the product kept only the states a search
+// meets). Each ends within the time rule's second.
+TEST(Hang, PushPuzzlesWhoseLookAheadOrProductOutgrowTheLimitEndWithinASecondOfIt) {
+  const fs::path out = fresh_out_dir();
+  ASSERT_EQ(run("import sokoban " + kSource + "/tests/app/microban_ii_109_115.txt --out " + out.string()).exit_code, 0);
+  for (const std::string level : {"microban_ii_109_115_1", "microban_ii_109_115_2"}) {
+    const auto started = std::chrono::steady_clock::now();
+    const Result r = run((out / (level + ".lua")).string() + " --threads 1 --time-limit 2 --quiet --out " + out.string());
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 1) << level << r.err;  // a plan in 2 s would be welcome
+    EXPECT_LT(elapsed, 2.0 + 1.0 * kSlowdown) << level;
+  }
+}
+
 TEST(Hang, CtrlCEndsEveryPhaseWithinASecondPreparationAndRenderingIncluded) {
   const fs::path crowded = crowded_world(test_dir());
   const fs::path out = fresh_out_dir();
@@ -422,7 +438,7 @@ TEST(Leftover, AWriteBlockedByAFolderOrALoopOfLinksSaysSoAndLeavesNothing) {
 TEST(Internal, AFaultInAPlannerIsAnInternalErrorWithExitThreeInRunBenchAndExecute) {
   const fs::path out = fresh_out_dir();
   const std::string scenario = small_ordered(test_dir()).string();
-  for (const std::string command : {scenario + " --planner test-throws", "bench " + scenario + " --planners test-throws --runs 1",
+  for (const std::string& command : {scenario + " --planner test-throws", "bench " + scenario + " --planners test-throws --runs 1",
                                     "execute " + scenario + " --planner test-throws --worlds 1"}) {
     const Result r = run_program(PHYSLTL_TEST_PLANNERS_BINARY, command + " --out " + out.string());
     EXPECT_EQ(r.exit_code, 3) << command << ": " << r.err;

@@ -10,7 +10,9 @@
 #include <algorithm>
 #include <cstddef>
 #include <functional>
+#include <cstdlib>
 #include <limits>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -22,7 +24,7 @@ class ShortestPaths {
 
   explicit ShortestPaths(std::size_t nodes = 0) { resize(nodes); }
   void resize(std::size_t nodes);
-  std::size_t size() const { return distance_.size(); }
+  std::size_t size() const { return nodes_; }
 
   // A new search: every node unreached.
   void start();
@@ -62,9 +64,19 @@ class ShortestPaths {
  private:
   void reach(int node, int from, double distance);
 
-  std::vector<double> distance_;
-  std::vector<int> previous_;
-  std::vector<unsigned> stamp_;  // per node, the search that last reached it
+  // Per node, allocated zeroed by calloc: the pages of a large graph's arrays cost nothing until a search
+  // reaches a node on them (the knowledge planner's product of triangles and stages can hold a hundred
+  // million nodes, of which a search reaches a few thousand). A node's distance and predecessor are read
+  // only once its stamp says this search reached it.
+  struct Free {
+    void operator()(void* p) const { std::free(p); }
+  };
+  template <class T>
+  using Zeroed = std::unique_ptr<T[], Free>;
+  std::size_t nodes_ = 0;
+  Zeroed<double> distance_;
+  Zeroed<int> previous_;
+  Zeroed<unsigned> stamp_;  // the search that last reached the node; 0: none
   unsigned search_ = 1;
   std::vector<std::pair<double, int>> open_;  // a min-heap
   long long settled_ = 0;

@@ -8,26 +8,44 @@ namespace physltl::planning {
 
 ProductGraph::ProductGraph(const decomposition::Decomposition& decomposition, const StageGraph& stages,
                            std::vector<float> lead_factor)
-    : stages_(stages),
-      stages_count_(stages.stages()),
-      motions_(static_cast<size_t>(decomposition.size()) * stages_count_),
-      selections_(motions_.size(), 0) {
+    : stages_(stages), stages_count_(stages.stages()), lead_factor_(std::move(lead_factor)) {
   for (const auto& triangle : decomposition.triangles()) {
     first_neighbour_.push_back(static_cast<int>(neighbours_.size()));
     for (int t : triangle.neighbors) neighbours_.push_back({t, decomposition.triangles()[t].region});
+    areas_.push_back(triangle.area);
   }
   first_neighbour_.push_back(static_cast<int>(neighbours_.size()));
-  volume_per_distance_.resize(motions_.size());
-  for (size_t id = 0; id < motions_.size(); ++id) {
-    const int i = static_cast<int>(id);
-    // Zero for states from which acceptance is out of reach: the lead never enters them.
-    const int distance = stages_.distance(stage_of(i));
-    volume_per_distance_[id] = distance < 0 ? 0.0 : decomposition.triangles()[triangle_of(i)].area / (distance + 1.0);
-  }
-  lead_factor_ = std::move(lead_factor);
-  entry_cost_.resize(motions_.size());
-  lead_search_.resize(motions_.size());
-  for (size_t id = 0; id < motions_.size(); ++id) update_entry_cost(static_cast<int>(id));
+  lead_search_.resize(static_cast<size_t>(decomposition.size()) * static_cast<size_t>(stages_count_));
+}
+
+double ProductGraph::volume_per_distance(int id) const {
+  // Zero for states from which acceptance is out of reach: the lead never enters them.
+  const int distance = stages_.distance(stage_of(id));
+  return distance < 0 ? 0.0 : areas_[static_cast<size_t>(triangle_of(id))] / (distance + 1.0);
+}
+
+double ProductGraph::weight(int id, int motions, int selections) const {
+  const double selected = static_cast<double>(selections) + 1.0;
+  return (static_cast<double>(motions) + 1.0) * volume_per_distance(id) / (selected * selected);
+}
+
+double ProductGraph::weight(int id) const {
+  const auto motions = motions_.find(id);
+  const auto selections = selections_.find(id);
+  return weight(id, motions == motions_.end() ? 0 : static_cast<int>(motions->second.size()),
+                selections == selections_.end() ? 0 : selections->second);
+}
+
+const std::vector<int>& ProductGraph::motions(int id) const {
+  static const std::vector<int> kNone;
+  const auto found = motions_.find(id);
+  return found == motions_.end() ? kNone : found->second;
+}
+
+double ProductGraph::entry_cost(int id) const {
+  const auto changed = entry_cost_.find(id);
+  if (changed != entry_cost_.end()) return changed->second;
+  return (lead_factor_.empty() ? 1.0 : lead_factor_[static_cast<size_t>(id)]) / weight(id, 0, 0);
 }
 
 void ProductGraph::update_entry_cost(int id) {
@@ -64,7 +82,7 @@ std::vector<int> ProductGraph::lead(int start, int horizon) {
       const int next = stages_.after_robot(stage, neighbours_[n].region);
       if (stages_.distance(next) < 0) continue;
       const int v = id(neighbours_[n].triangle, next);
-      lead_search_.relax(u, v, c + entry_cost_[v]);
+      lead_search_.relax(u, v, c + entry_cost(v));
     }
     return true;
   });

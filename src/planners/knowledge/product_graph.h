@@ -8,6 +8,7 @@
 #include "physltl/geometry/shortest_paths.h"
 #include "physltl/planning/stage_graph.h"
 
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -29,11 +30,8 @@ class ProductGraph {
   void add_motion(int id, int motion);
   void remove_motion(int id, int motion);
   void count_selection(int id);
-  const std::vector<int>& motions(int id) const { return motions_[id]; }
-  double weight(int id) const {
-    const double selected = static_cast<double>(selections_[id]) + 1.0;
-    return (static_cast<double>(motions_[id].size()) + 1.0) * volume_per_distance_[id] / (selected * selected);
-  }
+  const std::vector<int>& motions(int id) const;
+  double weight(int id) const;
 
   // Product states from `start` to the first one whose stage is at most `horizon` moves from acceptance
   // (0: an accepting one) or needs a body moved first, cheapest under 1/weight; empty if none.
@@ -51,13 +49,19 @@ class ProductGraph {
   };
   std::vector<int> first_neighbour_;  // per triangle, into neighbours_; one more entry at the end
   std::vector<Neighbour> neighbours_;
+  // The product can hold a hundred million states (a thousand triangles, 2^16 places of the named
+  // bodies); a search meets a few thousand. So what a state holds is kept only for the states met, and
+  // the rest is computed from the triangle and the stage.
+  std::vector<double> areas_;  // per triangle
   // The weight's constant part: triangle area over (the stage's moves to acceptance + 1).
-  std::vector<double> volume_per_distance_;
-  std::vector<std::vector<int>> motions_;
-  std::vector<int> selections_;
+  double volume_per_distance(int id) const;
+  double weight(int id, int motions, int selections) const;
+  double entry_cost(int id) const;  // 1 / (weight * lead scale): the lead search reads it for every edge
   void update_entry_cost(int id);
+  std::unordered_map<int, std::vector<int>> motions_;
+  std::unordered_map<int, int> selections_;
+  std::unordered_map<int, double> entry_cost_;  // of the states whose motions or selections changed
   std::vector<float> lead_factor_;  // per product state; empty: all 1
-  std::vector<double> entry_cost_;  // 1 / (weight * lead scale), kept up to date: the lead search reads it for every edge
   geometry::ShortestPaths lead_search_;
 };
 
