@@ -5,15 +5,16 @@
 #include <limits>
 #include <queue>
 #include <set>
-#include <unordered_map>
+#include <memory_resource>
+#include <unordered_set>
 
 namespace physltl::planning::lookahead {
 namespace {
 
 constexpr int kNever = std::numeric_limits<int>::max();
 
+// An arrangement met; its bodies' places are in ArrangementSearch's pool.
 struct Node {
-  std::vector<int> cells;
   int robot = 0;  // the smallest place the robot can walk to: the arrangement's robot component
   int stage = 0;
   int parent = -1;
@@ -21,15 +22,6 @@ struct Node {
   int cost = 0;  // body steps so far: a line of n bodies pushed one step costs n
 };
 
-std::string key_of(const std::vector<int>& cells, int robot, int stage) {
-  std::string key;
-  key.reserve((cells.size() + 2) * sizeof(std::int32_t));
-  const auto put = [&](int v) { key.append(reinterpret_cast<const char*>(&v), sizeof v); };
-  for (int c : cells) put(c);
-  put(robot);
-  put(stage);
-  return key;
-}
 
 // The places the robot can walk to from `from` without entering one a body holds (holder[c] >= 0),
 // marked with `mark` in `seen`; returns the smallest.
@@ -192,6 +184,9 @@ bool PushSearcher::square_frozen(const Goals& goals, const std::vector<int>& cel
 }
 
 // One search's state: the arrangements met, the open ones by priority, and scratch space for the walks.
+// The arrangements' places are stored flat, one block of a place per body each, and the set of those met
+// holds node numbers hashed by those places, in an arena: a search cut short at a few hundred thousand
+// arrangements frees its memory at once rather than over half a second.
 class ArrangementSearch {
  public:
   ArrangementSearch(const PushLattice& lattice, const StageGraph& stages, const PushSearcher& searcher,
@@ -203,12 +198,14 @@ class ArrangementSearch {
         weight_(weight),
         holder_(static_cast<std::size_t>(lattice.cells()), -1),
         seen_(static_cast<std::size_t>(lattice.cells()), -1),
-        seen_after_(static_cast<std::size_t>(lattice.cells()), -1) {}
+        seen_after_(static_cast<std::size_t>(lattice.cells()), -1),
+        bodies_(lattice.bodies().size()),
+        known_(0, KeyHash{this}, KeyEqual{this}, &arena_) {}
 
   // The arrangement to start from; returns its node.
   int start(const std::vector<int>& cells, int robot_cell, int stage) {
     hold(cells);
-    return add({cells, walk(lattice_, robot_cell, holder_, seen_, mark_++, queue_), stage, -1, {}, 0});
+    return add({walk(lattice_, robot_cell, holder_, seen_, mark_++, queue_), stage, -1, {}, 0}, cells);
   }
   bool exhausted() const { return open_.empty(); }
   // Settles the open arrangement of highest priority: adds every arrangement one push away, and where a
@@ -218,13 +215,14 @@ class ArrangementSearch {
     const int index = std::get<2>(open_.top());
     open_.pop();
     const Node node = nodes_[static_cast<std::size_t>(index)];
-    hold(node.cells);
+    const std::vector<int> cells = cells_of(index);
+    hold(cells);
     walk(lattice_, node.robot, holder_, seen_, mark_, queue_);
     const int reach = mark_++;
-    for (std::size_t k = 0; k < node.cells.size(); ++k) {
+    for (std::size_t k = 0; k < cells.size(); ++k) {
       for (int d = 0; d < kDirections; ++d) {
-        const int added = is_line(node, static_cast<int>(k), d) ? finish_with_line(node, index, static_cast<int>(k), d, reach)
-                                                                 : push(node, index, static_cast<int>(k), d, reach);
+        const int added = is_line(cells, static_cast<int>(k), d) ? finish_with_line(node, cells, index, static_cast<int>(k), d, reach)
+                                                                  : push(node, cells, index, static_cast<int>(k), d, reach);
         if (added >= 0 && searcher_.ends_pushing(nodes_[static_cast<std::size_t>(added)].stage)) return added;
       }
     }
@@ -245,21 +243,26 @@ class ArrangementSearch {
     for (std::size_t k = 0; k < at.size(); ++k) holder_[static_cast<std::size_t>(at[k])] = static_cast<int>(k);
   }
 
-  bool is_line(const Node& node, int k, int d) const {
-    const int ahead = lattice_.neighbour(node.cells[static_cast<std::size_t>(k)], d);
+  std::vector<int> cells_of(int node) const {
+    const auto first = pool_.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(node) * bodies_);
+    return {first, first + static_cast<std::ptrdiff_t>(bodies_)};
+  }
+
+  bool is_line(const std::vector<int>& cells, int k, int d) const {
+    const int ahead = lattice_.neighbour(cells[static_cast<std::size_t>(k)], d);
     return ahead >= 0 && holder_[static_cast<std::size_t>(ahead)] >= 0;
   }
 
   // The arrangement after pushing body k of `node` one step in direction d, added unless it was met
   // before or is pruned; its node, or -1.
-  int push(const Node& node, int index, int k, int d, int reach) {
-    const int at = node.cells[static_cast<std::size_t>(k)];
+  int push(const Node& node, const std::vector<int>& cells, int index, int k, int d, int reach) {
+    const int at = cells[static_cast<std::size_t>(k)];
     if (!lattice_.can_push(k, d)) return -1;
     const int stand = lattice_.neighbour(at, opposite(d));
     const int to = lattice_.neighbour(at, d);
     if (stand < 0 || to < 0 || seen_[static_cast<std::size_t>(stand)] != reach) return -1;
     if (!lattice_.body_fits(k, to) || holder_[static_cast<std::size_t>(to)] >= 0 || goals_.left(k, to) == kNever) return -1;
-    std::vector<int> next = node.cells;
+    std::vector<int> next = cells;
     next[static_cast<std::size_t>(k)] = to;
     const int next_stage = searcher_.stage_after(node.stage, next);
     if (stages_.distance(next_stage) < 0 || stages_.dead(stages_.automaton_state_of(next_stage))) return -1;
@@ -270,15 +273,15 @@ class ArrangementSearch {
     holder_[static_cast<std::size_t>(to)] = -1;
     holder_[static_cast<std::size_t>(at)] = k;
     if (frozen) return -1;
-    return add({std::move(next), robot, next_stage, index, {k, d, at, to, {}}, node.cost + 1});
+    return add({robot, next_stage, index, {k, d, at, to, {}}, node.cost + 1}, next);
   }
 
   // Body k of `node` pushed in direction d with the bodies in a line ahead of it, end to end, as many
   // places as it takes to end the pushing: the node where it does, or -1. A line only ends an order: its
   // first push closes the gaps between the bodies, which then stand short of their places
   // (PushLattice::line_shortfalls), so no later push could start from the lattice.
-  int finish_with_line(const Node& node, int index, int k, int d, int reach) {
-    const int at = node.cells[static_cast<std::size_t>(k)];
+  int finish_with_line(const Node& node, const std::vector<int>& start, int index, int k, int d, int reach) {
+    const int at = start[static_cast<std::size_t>(k)];
     const int stand = lattice_.neighbour(at, opposite(d));
     if (stand < 0 || seen_[static_cast<std::size_t>(stand)] != reach) return -1;
     std::vector<int> line{k};
@@ -288,7 +291,7 @@ class ArrangementSearch {
     if (!lattice_.line_shortfalls(line, d)) return -1;
     if (!std::all_of(line.begin(), line.end(), [&](int j) { return lattice_.can_push(j, d); })) return -1;
     const std::vector<int> ahead(line.begin() + 1, line.end());
-    std::vector<int> cells = node.cells;
+    std::vector<int> cells = start;
     int parent = index;
     for (int cost = node.cost;;) {
       const int from = cells[static_cast<std::size_t>(k)];
@@ -303,21 +306,53 @@ class ArrangementSearch {
       const int stage = searcher_.stage_after(node.stage, cells);
       if (stages_.distance(stage) < 0 || stages_.dead(stages_.automaton_state_of(stage))) return -1;
       cost += static_cast<int>(line.size());
-      Node moved{cells, 0, stage, parent, {k, d, from, cells[static_cast<std::size_t>(k)], ahead}, cost};
-      if (searcher_.ends_pushing(stage)) return add(std::move(moved));
+      Node moved{0, stage, parent, {k, d, from, cells[static_cast<std::size_t>(k)], ahead}, cost};
+      if (searcher_.ends_pushing(stage)) return add(std::move(moved), cells);
       // A place on the way is no arrangement to search from: it is kept for the order only.
-      parent = static_cast<int>(nodes_.size());
-      nodes_.push_back(std::move(moved));
+      parent = keep(std::move(moved), cells);
     }
   }
 
-  int add(Node node) {
-    const auto [it, inserted] = known_.emplace(key_of(node.cells, node.robot, node.stage), static_cast<int>(nodes_.size()));
-    if (!inserted) return -1;
-    open_.push({node.cost + weight_ * goals_.estimate(node.cells), order_++, it->second});
+  // Stores `node` with its places; returns its number.
+  int keep(Node node, const std::vector<int>& cells) {
+    pool_.insert(pool_.end(), cells.begin(), cells.end());
     nodes_.push_back(std::move(node));
-    return it->second;
+    return static_cast<int>(nodes_.size()) - 1;
   }
+
+  // Keeps `node` and opens it unless its arrangement (places, robot component, stage) was met before;
+  // its number, or -1.
+  int add(Node node, const std::vector<int>& cells) {
+    const int index = keep(std::move(node), cells);
+    if (!known_.insert(index).second) {
+      pool_.resize(pool_.size() - bodies_);
+      nodes_.pop_back();
+      return -1;
+    }
+    open_.push({nodes_.back().cost + weight_ * goals_.estimate(cells), order_++, index});
+    return index;
+  }
+
+  struct KeyHash {
+    const ArrangementSearch* search;
+    std::size_t operator()(int n) const {
+      const Node& node = search->nodes_[static_cast<std::size_t>(n)];
+      std::size_t h = std::hash<long long>{}((static_cast<long long>(node.robot) << 32) ^ node.stage);
+      const int* cells = search->pool_.data() + static_cast<std::size_t>(n) * search->bodies_;
+      for (std::size_t k = 0; k < search->bodies_; ++k) h = h * 1'000'003 ^ static_cast<std::size_t>(cells[k]);
+      return h;
+    }
+  };
+  struct KeyEqual {
+    const ArrangementSearch* search;
+    bool operator()(int a, int b) const {
+      const Node& x = search->nodes_[static_cast<std::size_t>(a)];
+      const Node& y = search->nodes_[static_cast<std::size_t>(b)];
+      const int* p = search->pool_.data() + static_cast<std::size_t>(a) * search->bodies_;
+      const int* q = search->pool_.data() + static_cast<std::size_t>(b) * search->bodies_;
+      return x.robot == y.robot && x.stage == y.stage && std::equal(p, p + search->bodies_, q);
+    }
+  };
 
   const PushLattice& lattice_;
   const StageGraph& stages_;
@@ -329,8 +364,13 @@ class ArrangementSearch {
   std::vector<int> seen_after_;  // and after it
   std::vector<int> queue_;
   int mark_ = 0;
+  std::size_t bodies_;
   std::vector<Node> nodes_;
-  std::unordered_map<std::string, int> known_;
+  std::vector<int> pool_;  // node n's places: pool_[n * bodies_ ...]
+  // The set's entries come from an arena released whole with the search: freed one by one, the
+  // entries of a search cut short at its deadline took over half a second (Microban II level 109).
+  std::pmr::monotonic_buffer_resource arena_;
+  std::pmr::unordered_set<int, KeyHash, KeyEqual> known_;
   using Entry = std::tuple<double, long long, int>;  // priority, order of insertion, node
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open_;
   long long order_ = 0;
