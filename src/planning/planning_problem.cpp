@@ -32,6 +32,9 @@ const PlannerData* PlanningProblem::preparation(const PlannerEntry& planner, con
   const std::lock_guard lock(planners_mutex_);
   auto known = planners_.find(&planner);
   if (known == planners_.end() || (known->second.preview && !options.preview)) {
+    // A deadline already past starts no work: a run whose preparation it cut short asks again for the
+    // search, and a preparation's first steps (a task's stage graph) check no deadline for a second.
+    options.deadline.check();
     const auto started = std::chrono::steady_clock::now();
     PlannerPreparation made;
     if (planner.prepare) made.data = planner.prepare(for_planner(planner), options);

@@ -360,6 +360,23 @@ TEST(Deadline, APreparationCutShortEndsTheRunWithNoPlanAndKeepsNothing) {
   EXPECT_TRUE(solve(problem, knowledge, options).solved());  // nothing was kept: prepared afresh
 }
 
+// A run whose preparation the deadline cut short asks for it again to search; with the deadline past, no
+// preparation starts (its first steps check no deadline: a 16-box task's stage graph took a second).
+TEST(Deadline, APreparationAskedForAfterTheDeadlineStartsNoWork) {
+  const TestProblem p("rooms.lua");
+  const PlanningProblem problem(p.world);
+  PlannerEntry counting = planner_named("knowledge");
+  int preparations = 0;
+  counting.prepare = [&](const Problem&, const PreparationOptions&) {
+    ++preparations;
+    return std::shared_ptr<const PlannerData>();
+  };
+  EXPECT_THROW(problem.preparation(counting, {Deadline::in(0.0)}), DeadlineReached);
+  EXPECT_EQ(preparations, 0);
+  EXPECT_EQ(problem.preparation(counting, {}), nullptr);
+  EXPECT_EQ(preparations, 1);
+}
+
 // push_from is the world's rule, not knowledge (docs/scenarios.md): a plan that pushes a body from a face
 // its push_from does not list fails validation for every planner, and the replay names the body, the face
 // and the time.
