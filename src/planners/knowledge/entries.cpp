@@ -15,9 +15,12 @@ using planning::Problem;
 
 std::shared_ptr<const PlannerData> prepare_knowledge(const Problem& problem, const planning::PreparationOptions& options) {
   auto prepared = std::make_shared<KnowledgePreparation>();
-  prepared->routes = planning::choose_routes(problem.world, problem.task, problem.decomposition, options.deadline);
+  // One stage graph for the route choice, the look-ahead and the search: with 16 named bodies it takes
+  // half a second to build.
+  prepared->stages = std::make_shared<const planning::StageGraph>(problem.task);
+  prepared->routes = planning::choose_routes(problem.world, problem.task, *prepared->stages, problem.decomposition, options.deadline);
   const long long arrangements = options.preview ? planning::lookahead::kPreviewArrangements : planning::lookahead::kMaxArrangements;
-  prepared->lookahead = planning::lookahead::look_ahead(problem.world, problem.knowledge, problem.task, options.deadline, arrangements);
+  prepared->lookahead = planning::lookahead::look_ahead(problem.world, problem.knowledge, problem.task, *prepared->stages, options.deadline, arrangements);
   prepared->task_names_bodies = problem.task.names_bodies();
   return prepared;
 }

@@ -9,6 +9,7 @@
 
 #include "physltl/planning/planner_entry.h"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@ namespace physltl::planning {
 // Prepared once per problem (PlannerEntry::prepare): going round or pushing through, per stage, and the
 // look-ahead's push order.
 struct KnowledgePreparation : PlannerData {
+  std::shared_ptr<const StageGraph> stages;  // of the task the planner searches
   RouteChoice routes;
   lookahead::Lookahead lookahead;
   bool task_names_bodies = false;

@@ -147,9 +147,8 @@ bool stage_goes_round(const std::set<int>& entries, const std::vector<int>& targ
 
 }  // namespace
 
-RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& task,
+RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& task, const StageGraph& stages,
                           const decomposition::Decomposition& decomposition, const Deadline& deadline) {
-  const StageGraph stages(task);
   const int count = stages.stages();
   RouteChoice choice{std::vector<bool>(static_cast<size_t>(count), false), {}};
   const std::vector<bool> under = triangles_under_bodies(world, task, decomposition);

@@ -16,6 +16,7 @@
 
 #include "physltl/base/deadline.h"
 #include "physltl/decomposition/decomposition.h"
+#include "physltl/planning/stage_graph.h"
 #include "physltl/planning/task.h"
 
 #include <vector>
@@ -39,9 +40,9 @@ struct RouteChoice {
   std::vector<float> lead_factor;   // per product state (triangle * stages + stage); empty: all 1
 };
 
-// For the stages of `task` (stage_graph.h). Depends on the World and the task only, like the
-// decomposition: a run prepares it once for every search (Problem::routes). Throws DeadlineReached.
-RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& task,
+// For the stages of `task` (stage_graph.h, `stages` of that task). Depends on the World and the task only,
+// like the decomposition: a run prepares it once for every search (Problem::routes). Throws DeadlineReached.
+RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& task, const StageGraph& stages,
                           const decomposition::Decomposition& decomposition, const Deadline& deadline = {});
 
 // Per triangle: the robot's centre at the triangle's centroid would overlap a movable body as the World

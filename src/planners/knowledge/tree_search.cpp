@@ -97,11 +97,12 @@ class Search {
         decomposition_(problem.decomposition),
         options_(options),
         knowledge_mode_(mode == TreeSearchMode::kKnowledge),
-        stages_(task_),
+        stage_graph_(prepared != nullptr && prepared->stages ? prepared->stages : std::make_shared<const StageGraph>(task_)),
+        stages_(*stage_graph_),
         // The knowledge planner's lead goes round the bodies where the task needs no pushing (route_choice.h).
         routes_(!knowledge_mode_       ? RouteChoice{}
                 : prepared != nullptr ? prepared->routes
-                                      : choose_routes(world_, task_, decomposition_)),
+                                      : choose_routes(world_, task_, stages_, decomposition_)),
         graph_(decomposition_, stages_, routes_.lead_factor),
         lead_search_(graph_),
         object_lead_(world_, knowledge_, decomposition_),
@@ -617,7 +618,8 @@ class Search {
   const decomposition::Decomposition& decomposition_;
   const PlannerOptions& options_;
   const bool knowledge_mode_;  // the knowledge planner; otherwise the baseline
-  const StageGraph stages_;
+  std::shared_ptr<const StageGraph> stage_graph_;  // the preparation's, or the search's own
+  const StageGraph& stages_;
   const RouteChoice routes_;
   ProductGraph graph_;
   LeadSearch lead_search_;

@@ -18,7 +18,7 @@ bool first_stage_goes_round(const std::string& scenario, const std::map<std::str
   const TestProblem p(scenario, params);
   const StageGraph stages(p.task);
   const scenario::EnvironmentState start = scenario::EnvironmentState::initial(p.world);
-  return choose_routes(p.world, p.task, p.decomposition).going_round[static_cast<size_t>(
+  return choose_routes(p.world, p.task, StageGraph(p.task), p.decomposition).going_round[static_cast<size_t>(
       stages.stage(p.task.start_state(start), p.task.labelling.facts(start)))];
 }
 
@@ -54,7 +54,7 @@ TEST(RouteChoice, ARobotBrakedAHairIntoAWallStillPushesTheBoxThatClosesItsCorrid
   world.robot.start += geometry::Vec2(0.2, 0.151);  // 1 mm into the corridor's north wall
   const StageGraph stages(p.task);
   const scenario::EnvironmentState start = scenario::EnvironmentState::initial(world);
-  EXPECT_FALSE(choose_routes(world, p.task, p.decomposition)
+  EXPECT_FALSE(choose_routes(world, p.task, StageGraph(p.task), p.decomposition)
                    .going_round[static_cast<size_t>(stages.stage(p.task.start_state(start), p.task.labelling.facts(start)))]);
 }
 

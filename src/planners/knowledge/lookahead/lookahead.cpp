@@ -83,7 +83,7 @@ std::vector<PlannedPush> runs_of(const PushLattice& lattice, const std::vector<P
 }
 
 Lookahead look_ahead(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge, const TaskAutomaton& task,
-                     const Deadline& deadline, long long max_arrangements) {
+                     const StageGraph& stages, const Deadline& deadline, long long max_arrangements) {
   Lookahead result;
   PushPlan& plan = result.plan;
   if (!task.names_bodies()) {
@@ -105,7 +105,6 @@ Lookahead look_ahead(const scenario::World& world, const knowledge::AbstractKnow
     return result;
   }
   plan.rule = {true, *narrow, result.lattice->step()};
-  const StageGraph stages(task);
   const scenario::EnvironmentState start = scenario::EnvironmentState::initial(world);
   const int letter = task.labelling.letter(start);
   result.stage = stages.stage(task.step(task.dfa.start, letter), task.labelling.facts_of(letter));
