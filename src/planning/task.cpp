@@ -27,9 +27,10 @@ TaskAutomaton TaskAutomaton::make(const ltl::Formula& formula, const ltl::Dfa& d
                                                           "bodies or regions"}});
   }
   task.successors.resize(dfa.size() * letters);
-  for (std::size_t state = 0; state < dfa.size(); ++state) {
-    for (std::size_t letter = 0; letter < letters; ++letter) {
-      const std::vector<int> props = task.labelling.true_propositions(static_cast<int>(letter));
+  // A letter's propositions once for every state: a task naming 16 bodies has a million letters.
+  for (std::size_t letter = 0; letter < letters; ++letter) {
+    const std::vector<int> props = task.labelling.true_propositions(static_cast<int>(letter));
+    for (std::size_t state = 0; state < dfa.size(); ++state) {
       task.successors[state * letters + letter] = dfa.step(static_cast<int>(state), props);
     }
   }
