@@ -392,7 +392,8 @@ PushSearch PushSearcher::search(int stage, const std::vector<int>& cells, int ro
       result.outcome = "search limit";
       return result;
     }
-    if (result.settled % 256 == 0) deadline.check();
+    // Every settle: one of 16 boxes walks the robot's places some 60 times, and 256 of them took 0.7 s.
+    deadline.check();
     solution = search.settle();
   }
   if (solution < 0) return result;
