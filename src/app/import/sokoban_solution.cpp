@@ -2,6 +2,7 @@
 
 #include "common/bad_input.h"
 #include "common/files.h"
+#include "common/printable.h"
 
 #include <fmt/format.h>
 
@@ -43,9 +44,7 @@ class SolutionReader {
       } else if (kMoves.find(c) != std::string_view::npos) {
         append(std::string(1, c), take_count());
       } else {
-        refuse(fmt::format("'{}' is no move (u d l r, capitals for pushes, counts and parentheses)",
-                           std::isprint(static_cast<unsigned char>(c)) != 0 ? std::string(1, c)
-                                                                            : fmt::format("\\x{:02x}", static_cast<unsigned char>(c))));
+        refuse(fmt::format("'{}' is no move (u d l r, capitals for pushes, counts and parentheses)", printable(std::string(1, c))));
       }
     }
     if (count_) refuse("a count with no move after it");
