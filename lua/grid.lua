@@ -2,7 +2,8 @@
 -- 'o' an obstacle box the task does not name, '@' the robot, '+' the robot on a goal, anything else floor.
 -- Cells `cell` metres (0.6), boxes `box` metres (0.5); the k-th box from the top left is Mk, the k-th
 -- obstacle Ok and the k-th goal goalk, and the task puts every box on its goal and keeps it there:
--- F G(M1@goal1 & M2@goal2 & ...), unless the scenario's parameters give a task.
+-- F G(M1@goal1 & M2@goal2 & ...), unless the scenario's parameters give a task; the robot is holonomic
+-- unless they give a drive (--set drive=differential).
 --   require "grid" { "#####", "#@$.#", "#####" }
 local P = require "physltl"
 return function(rows, cell, box)
@@ -37,7 +38,7 @@ return function(rows, cell, box)
         P.area("goal" .. goals, { x0, y0 }, { x0 + cell, y0 + cell })
       end
       if ch == "@" or ch == "+" then
-        robot { radius = 0.25, mass = 1.0, max_force = 20, max_speed = 1.0, start = centre }
+        robot { radius = 0.25, mass = 1.0, max_force = 20, max_speed = 1.0, start = centre, drive = params.drive or "holonomic" }
       end
     end
   end

@@ -75,6 +75,8 @@ json search_end_json(const SearchEnd& end) {
           {"lead", lead},
           {"body_move", end.body_move.empty() ? json(nullptr) : json(end.body_move)},
           {"nodes_per_stage", stages},
+          {"order_push", end.order_push == 0 ? json(nullptr)
+                                             : json{{"index", end.order_push}, {"of", end.order_pushes}, {"push", end.order_push_named}}},
           {"expansions_since_progress", end.expansions_since_progress},
           {"widened", end.widened}};
 }
@@ -94,6 +96,7 @@ PlannerAccount search_account(const SearchReport& report, const scenario::World&
   if (report.lookahead) {
     account.report["lookahead"] = lookahead_json(*report.lookahead, world);
     account.report["lookahead"]["replans"] = report.lookahead_replans;
+    account.report["lookahead"]["primitive_controls"] = report.primitive_controls;
     for (const PlannedPush& push : report.lookahead->pushes) account.moves.push_back({push.from, push.to, Vec2(push.dx, push.dy)});
     if (!report.lookahead->pushes.empty()) {
       account.moves_legend = fmt::format("look-ahead: {} push{}, arrows light (first) to dark (last)",

@@ -55,6 +55,12 @@ struct SearchEnd {
   std::vector<LeadStep> lead;
   std::string body_move;  // the object lead's move when it led: "crate to dock", "crate out of dock"
   std::vector<StageNodes> nodes_per_stage;  // stages holding a node, in the order the tree reached them
+  // The push of the look-ahead's order under way at the node furthest along it: the one the physics did not
+  // carry out (index from 1, of `order_pushes`, as the order stood after its last replanning); 0 when the
+  // search followed no order or got no node onto it.
+  int order_push = 0;
+  int order_pushes = 0;
+  std::string order_push_named;  // "M4 +x 0.6 m"
   long long expansions_since_progress = 0;  // since a node last got closer to acceptance
   bool widened = false;  // the frontier had stalled: some expansions grew as the baseline grows
 };
@@ -65,6 +71,7 @@ struct SearchReport : PlannerData {
   // the order again from where the physics left the bodies; none when it followed none.
   std::optional<PushPlan> lookahead;
   int lookahead_replans = 0;
+  long long primitive_controls = 0;  // controls the push primitives propagated (of the run's propagations)
   std::optional<SearchEnd> end;  // when it stopped without a plan
 };
 

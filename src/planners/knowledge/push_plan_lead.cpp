@@ -35,6 +35,30 @@ constexpr int kWalkAhead = 1;
 constexpr double kGetReady = 0.5;
 // A robot that cannot walk to its push along the lattice counts this many metres from it.
 constexpr double kNoWay = 100.0;  // m
+// The robot walks to this far behind the body's side before it pushes.
+constexpr double kBehindGap = 0.02;  // m
+
+// The push primitive (steer). Walking, it heads for the point kPursuit metres ahead of its nearest point
+// on the way, which keeps it on the line through the places' centres in a corridor a few centimetres
+// wider than it, and turns corners by cutting them by a few centimetres, slowing to kCornerSpeed of its
+// top speed at each; it slows to arrive behind the body in kArriveTime. Pushing, it heads along the push, closes its offset from the line through the
+// body's centre within kCloseTime (it starts within kSquareBehind of it), and slows to reach the place in
+// kArriveTime, no slower than kCreep of its top speed. It does not steer the body back onto the push's
+// line: that would take the robot off its own, and in a corridor onto a wall; pushed through its centre,
+// a body keeps the offset it had.
+constexpr double kPursuit = 0.15;     // m
+constexpr double kArriveTime = 0.4;   // s
+constexpr double kCloseTime = 0.1;    // s
+constexpr double kSquareBehind = 0.015;  // m
+constexpr double kTouching = 0.005;      // m
+constexpr double kCreep = 0.15;
+constexpr double kCornerSpeed = 0.25;  // share of the top speed at a corner of the way
+constexpr double kPushSpeed = 0.8;    // share of the top speed: a box shoved at full speed slides past its place
+// A push's controls last this long, so that the plan's push count stays near the order's; walking
+// controls are as short as the scenario allows, to turn its corners.
+constexpr double kPushControlTime = 0.3;  // s
+// Places of the way ahead the pursuit looks along.
+constexpr int kWayAhead = 3;
 
 geometry::Vec2 direction_of(int d) { return {kDx[d], kDy[d]}; }
 
@@ -57,6 +81,27 @@ std::vector<int> walk_to(const lookahead::PushLattice& lattice, int goal, const 
     }
   }
   return steps;
+}
+
+// The point `ahead` metres along `way` (a polyline) from its point nearest `p`; its end when that is nearer.
+geometry::Vec2 pursuit_point(const std::vector<geometry::Vec2>& way, const geometry::Vec2& p, double ahead) {
+  std::size_t segment = 0;
+  double along = 0.0, nearest = (p - way.front()).norm();
+  for (std::size_t i = 0; i + 1 < way.size(); ++i) {
+    const geometry::Vec2 v = way[i + 1] - way[i];
+    const double length = v.norm();
+    if (length < 1e-9) continue;
+    const double t = std::clamp((p - way[i]).dot(v) / length, 0.0, length);
+    const double distance = (way[i] + t * v / length - p).norm();
+    if (distance < nearest) nearest = distance, segment = i, along = t;
+  }
+  for (std::size_t i = segment; i + 1 < way.size(); ++i) {
+    const double length = (way[i + 1] - way[i]).norm();
+    if (along + ahead <= length) return way[i] + (along + ahead) * (way[i + 1] - way[i]) / length;
+    ahead -= length - along;
+    along = 0.0;
+  }
+  return way.back();
 }
 
 }  // namespace
@@ -102,6 +147,7 @@ PushPlanLead::PushPlanLead(const lookahead::PushLattice& lattice, const std::vec
 const std::vector<int>& PushPlanLead::walk_behind(int j, int body_cell) const {
   const Run& run = runs_[static_cast<std::size_t>(j)];
   if (body_cell == run.from) return run.walk;
+  const std::lock_guard<std::mutex> lock(walks_mutex_);
   auto& walk = walks_[{j, body_cell}];
   if (walk.empty()) {
     std::vector<int> held = run.before;
@@ -193,21 +239,31 @@ PushPlanLead::Progress PushPlanLead::progress(const physics::PhysicsState& state
   return done_here;
 }
 
+PushPlanLead::Situation PushPlanLead::situation(const physics::PhysicsState& state, int push) const {
+  const Run& run = runs_[static_cast<std::size_t>(push)];
+  return {run, direction_of(run.direction), state.robot_position(), position(state, run.body),
+          lattice_.half_along(run.body, run.direction) + robot_radius_};
+}
+
 std::optional<PushPlanLead::Target> PushPlanLead::target(const physics::PhysicsState& state, int push) const {
   if (push < 0 || push >= pushes()) return std::nullopt;
-  const Run& run = runs_[static_cast<std::size_t>(push)];
-  const geometry::Vec2 d = direction_of(run.direction);
-  const geometry::Vec2 robot = state.robot_position();
-  const geometry::Vec2 body = position(state, run.body);
-  const double touching = lattice_.half_along(run.body, run.direction) + robot_radius_;
+  const auto [run, d, robot, body, touching] = situation(state, push);
   // Pushing: to where the robot stands behind the body on its place, which also steers the body back onto
   // the lattice's line.
   if (ready_to_push(robot, body, push)) return Target{lattice_.centre(run.to) - touching * d, true};
-  const geometry::Vec2 behind = body - (touching + 0.02) * d;
+  const geometry::Vec2 behind = body - (touching + kBehindGap) * d;
+  const std::vector<int> way = way_ahead(robot, push, body, kWalkAhead);
+  if (way.empty()) return std::nullopt;
+  const bool arriving = walk_behind(push, lattice_.cell_at(body))[static_cast<std::size_t>(way.back())] == 0;
+  const double off_line = std::abs((robot - body).x() * d.y() - (robot - body).y() * d.x());
+  return Target{arriving && off_line <= kOnLine ? behind : lattice_.centre(way.back()), false};
+}
+
+std::vector<int> PushPlanLead::way_ahead(const geometry::Vec2& robot, int j, const geometry::Vec2& body, int ahead) const {
   int cell = lattice_.robot_cell(robot);
   const int body_cell = lattice_.cell_at(body);
-  if (cell < 0 || body_cell < 0) return std::nullopt;
-  const std::vector<int>& walk = walk_behind(push, body_cell);
+  if (cell < 0 || body_cell < 0) return {};
+  const std::vector<int>& walk = walk_behind(j, body_cell);
   const auto steps = [&](int c) { return c < 0 ? kNever : walk[static_cast<std::size_t>(c)]; };
   if (steps(cell) == kNever) {
     // The robot's nearest place is one a body holds, or off the walk: the neighbour nearest its push.
@@ -216,10 +272,11 @@ std::optional<PushPlanLead::Target> PushPlanLead::target(const physics::PhysicsS
       const int n = lattice_.neighbour(cell, k);
       if (steps(n) != kNever && (best < 0 || steps(n) < steps(best))) best = n;
     }
-    if (best < 0) return std::nullopt;
+    if (best < 0) return {};
     cell = best;
   }
-  for (int ahead = 0; ahead < kWalkAhead && steps(cell) > 0; ++ahead) {
+  std::vector<int> way{cell};
+  for (int i = 0; i < ahead && steps(cell) > 0; ++i) {
     for (int k = 0; k < kDirections; ++k) {
       const int n = lattice_.neighbour(cell, k);
       if (lattice_.robot_passes(cell, k) && steps(n) == steps(cell) - 1) {
@@ -227,9 +284,48 @@ std::optional<PushPlanLead::Target> PushPlanLead::target(const physics::PhysicsS
         break;
       }
     }
+    way.push_back(cell);
   }
-  const double off_line = std::abs((robot - body).x() * d.y() - (robot - body).y() * d.x());
-  return Target{steps(cell) == 0 && off_line <= kOnLine ? behind : lattice_.centre(cell), false};
+  return way;
+}
+
+std::optional<PushPlanLead::Steer> PushPlanLead::steer(const physics::PhysicsState& state, int push, double max_speed) const {
+  if (push < 0 || push >= pushes()) return std::nullopt;
+  const auto [run, d, robot, body, touching] = situation(state, push);
+  const auto across = [](const geometry::Vec2& v, const geometry::Vec2& u) { return u.x() * v.y() - u.y() * v.x(); };
+  // The robot starts a push only square behind the body's centre: a push started off it leaves the robot
+  // off the line for the whole push, which in a corridor a few centimetres wider than it ends on a wall.
+  // Once touching, it keeps pushing and closes the offset as it goes.
+  const double depth = (body - robot).dot(d);
+  const bool square_behind = std::abs(across(robot - body, d)) <= kSquareBehind;
+  if (ready_to_push(robot, body, push) && (square_behind || depth <= touching + kTouching)) {
+    const double left = run.length - (body - lattice_.centre(run.from)).dot(d);
+    const double speed = std::clamp(left / kArriveTime, kCreep * max_speed, kPushSpeed * max_speed);
+    // Along the push, closing the robot's offset from the line through the body's centre sideways.
+    const geometry::Vec2 side(-d.y(), d.x());
+    const geometry::Vec2 velocity = speed * d - (across(robot - body, d) / kCloseTime) * side;
+    return Steer{velocity.normalized(), std::min(max_speed, velocity.norm()), std::min(kPushControlTime, left / speed), true};
+  }
+  const std::vector<int> cells = way_ahead(robot, push, body, kWayAhead);
+  if (cells.empty()) return std::nullopt;
+  // The way: the places' centres from the robot's place on, the last the point behind the body.
+  std::vector<geometry::Vec2> way;
+  for (int c : cells) way.push_back(lattice_.centre(c));
+  const bool arriving = walk_behind(push, lattice_.cell_at(body))[static_cast<std::size_t>(cells.back())] == 0;
+  if (arriving) way.back() = body - (touching + kBehindGap) * d;
+  const geometry::Vec2 aim = pursuit_point(way, robot, kPursuit);
+  const double to_aim = (aim - robot).norm();
+  if (to_aim < 1e-9) return Steer{d, 0.0, 0.0, false};
+  // Slowing for the way's first corner (or its end, behind the body): a robot that turns at speed swings
+  // wide, and a differential one turns on an arc of its speed over its turn rate.
+  double to_corner = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 1; i + 1 < way.size() && std::isinf(to_corner); ++i) {
+    const geometry::Vec2 in = way[i] - way[i - 1], out = way[i + 1] - way[i];
+    if (std::abs(in.x() * out.y() - in.y() * out.x()) > 1e-6 * in.norm() * out.norm()) to_corner = (way[i] - robot).norm();
+  }
+  if (arriving) to_corner = std::min(to_corner, (way.back() - robot).norm());
+  const double speed = std::min(max_speed, std::max(arriving && aim == way.back() ? 0.0 : kCornerSpeed * max_speed, to_corner / kArriveTime));
+  return Steer{(aim - robot) / to_aim, speed, 0.0, false};
 }
 
 }  // namespace physltl::planning

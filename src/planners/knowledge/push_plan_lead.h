@@ -14,6 +14,7 @@
 
 #include <limits>
 #include <map>
+#include <mutex>
 #include <utility>
 #include <optional>
 #include <vector>
@@ -41,6 +42,18 @@ class PushPlanLead {
   // through the body to where it stands when the body is on its place. Nothing when the robot cannot get
   // there along the lattice.
   std::optional<Target> target(const physics::PhysicsState& state, int push) const;
+  // The closed-loop push primitive's next control from `state` at push `push` (docs/planner.md, "Push
+  // primitives"): walking, the way along the lattice's places round the bodies, tracked by a point a little
+  // ahead on it; pushing, through the body's centre with feedback on the body's offset from the push's line
+  // and the robot's from the body's, slowing as the body nears its place. Nothing when the robot cannot
+  // get to its push along the lattice.
+  struct Steer {
+    geometry::Vec2 direction = geometry::Vec2::UnitX();  // unit
+    double speed = 0.0;                                  // m/s
+    double time = 0.0;  // s the control should last at most (the scenario's min_steps may make it longer)
+    bool pushing = false;
+  };
+  std::optional<Steer> steer(const physics::PhysicsState& state, int push, double max_speed) const;
 
  private:
   struct Run {
@@ -56,7 +69,19 @@ class PushPlanLead {
   // Per place, robot steps to the place behind the pushed body of run j standing on `body_cell`, round
   // the other bodies; computed on first use.
   const std::vector<int>& walk_behind(int j, int body_cell) const;
+  // The robot's way to run j's push with the pushed body at `body`: its place on the walk (its nearest
+  // place, or the neighbour of it nearest the push when that one is held or off the walk), then up to
+  // `ahead` places further along; empty when the robot is on no walk to it.
+  std::vector<int> way_ahead(const geometry::Vec2& robot, int j, const geometry::Vec2& body, int ahead) const;
   geometry::Vec2 position(const physics::PhysicsState& state, int k) const;
+  // Push j as `state` stands: its run, direction, the robot's and the pushed body's centres, and how far
+  // apart they are when the robot touches the body's side it pushes.
+  struct Situation {
+    const Run& run;
+    geometry::Vec2 direction, robot, body;
+    double touching;
+  };
+  Situation situation(const physics::PhysicsState& state, int j) const;
   struct Along {
     double distance = 0.0;  // metres the pushed body has come along its push
     double drift = 0.0;     // and the metres off the push's line of its centre, or of a line's worst body
@@ -69,7 +94,8 @@ class PushPlanLead {
 
   const lookahead::PushLattice& lattice_;
   std::vector<Run> runs_;
-  // Not thread-safe: the search asks from one thread, between batches.
+  // Growers follow the order from several threads (tree_grower.h); the walks are the same whoever asks.
+  mutable std::mutex walks_mutex_;
   mutable std::map<std::pair<int, int>, std::vector<int>> walks_;  // by run and the pushed body's place
   std::vector<geometry::Vec2> end_positions_;  // where every body stands after the last push
   double robot_radius_;

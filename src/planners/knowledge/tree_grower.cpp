@@ -4,8 +4,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace physltl::planning {
+namespace {
+
+// The push primitive (follow_order) ends after this many controls, or after kMaxPrimitiveStall controls
+// that did not bring the order's end kPrimitiveProgress closer: a robot pressed against a body that does
+// not move, or walking into a corner. The tree grows on from any of its motions.
+constexpr int kMaxPrimitiveControls = 400;
+constexpr int kMaxPrimitiveStall = 12;
+constexpr double kPrimitiveProgress = 0.01;  // m
+
+}  // namespace
+
 TreeGrower::TreeGrower(const scenario::World& world, const TaskAutomaton& task, const StageGraph& stages,
                        const knowledge::AbstractKnowledge& knowledge, const decomposition::Decomposition& decomposition,
                        const ProductGraph& graph, const ObjectLead& object_lead, bool use_knowledge)
@@ -17,6 +29,9 @@ TreeGrower::TreeGrower(const scenario::World& world, const TaskAutomaton& task, 
       sampler_(world, knowledge, use_knowledge),
       max_braking_steps_(static_cast<int>(std::ceil(kMaxBrakingTime / world.planner.step_size))),
       max_control_steps_(world.planner.max_steps),
+      min_control_steps_(world.planner.min_steps),
+      step_size_(world.planner.step_size),
+      max_speed_(world.robot.max_speed),
       named_(world.movable_bodies.size(), false),
       simulation_(world, knowledge, use_knowledge ? knowledge::ValidityMode::kKnowledge : knowledge::ValidityMode::kBaseline) {
   for (const knowledge::Labelling::NamedBody& n : task.labelling.named_bodies()) named_[static_cast<size_t>(n.body)] = true;
@@ -27,12 +42,41 @@ void TreeGrower::grow(const Motion& from, const Vec2& target, const ObjectLead::
   growth = Growth{};
   Random random(seed);
   simulation_.restore(from.state);
-  if (guidance == Guidance::kWidened) return propagate(sampler_.sample_uniform(random), from.stage, true, growth);
+  growth.controls = 1;
+  if (guidance == Guidance::kWidened) {
+    propagate(sampler_.sample_uniform(random), from.stage, true, growth);
+    return;
+  }
   const scenario::EnvironmentState& state = simulation_.environment();
   const Vec2 aim = goal != nullptr ? object_lead_.target(*goal, state, simulation_.kappa(), random) : target;
   const bool may_push = guidance != Guidance::kGoingRound;
   const bool stop_at_target = guidance == Guidance::kPushingTo;
   propagate(sampler_.sample(state, simulation_.kappa(), aim, may_push, random, stop_at_target), from.stage, may_push, growth);
+}
+
+void TreeGrower::follow_order(const Motion& from, const PushPlanLead& order, int push, Growth& growth) {
+  growth = Growth{};
+  simulation_.restore(from.state);
+  const physics::PhysicsState* state = &from.state;
+  int stage = from.stage;
+  double best_remaining = std::numeric_limits<double>::infinity();
+  int since_closer = 0;
+  while (!growth.accepted && growth.controls < kMaxPrimitiveControls && since_closer < kMaxPrimitiveStall) {
+    const std::optional<PushPlanLead::Steer> steer = order.steer(*state, push, max_speed_);
+    if (!steer) return;
+    const int steps = std::clamp(static_cast<int>(std::ceil(steer->time / step_size_ - 1e-9)), min_control_steps_, max_control_steps_);
+    const Control control{sampler_.along(simulation_.environment(), steer->direction, steer->speed, steps), steps};
+    ++growth.controls;
+    const bool whole = propagate(control, stage, true, growth);
+    if (!whole || growth.motions.empty()) return;
+    state = &growth.motions.back().state;
+    stage = growth.motions.back().stage;
+    const PushPlanLead::Progress progress = order.progress(*state, push);
+    if (progress.push < 0 || progress.push == order.pushes()) return;
+    push = progress.push;
+    ++since_closer;
+    if (progress.remaining < best_remaining - kPrimitiveProgress) best_remaining = progress.remaining, since_closer = 0;
+  }
 }
 
 int TreeGrower::stage_after_step(int stage) const {
@@ -59,7 +103,7 @@ bool TreeGrower::valid_step(const Vec2& setpoint, bool may_push, Growth& growth)
   return false;
 }
 
-void TreeGrower::propagate(const Control& control, int stage, bool may_push, Growth& growth) {
+bool TreeGrower::propagate(const Control& control, int stage, bool may_push, Growth& growth) {
   int valid_steps = 0;
   bool accepted = false;
   for (int step = 1; step <= control.steps; ++step) {
@@ -77,10 +121,15 @@ void TreeGrower::propagate(const Control& control, int stage, bool may_push, Gro
       break;
     }
   }
-  if (valid_steps == 0) return;
-  growth.motion = make_motion({control.setpoint, valid_steps}, stage);
+  if (valid_steps == 0) return false;
+  growth.motions.push_back(make_motion({control.setpoint, valid_steps}, stage));
   // The simulation stands at the motion's end unless a later step failed; braking starts from there.
-  growth.accepted = accepted && (!task_.ends_at_rest() || brake(stage, growth));
+  if (!accepted) return valid_steps == control.steps;
+  const std::size_t before_braking = growth.motions.size();
+  growth.accepted = !task_.ends_at_rest() || brake(stage, growth);
+  // Braking that failed left the simulation past the motion's end: nothing may follow it.
+  if (!growth.accepted) growth.motions.resize(before_braking);
+  return growth.accepted;
 }
 
 bool TreeGrower::brake(int stage, Growth& growth) {
@@ -98,7 +147,7 @@ bool TreeGrower::brake(int stage, Growth& growth) {
     if (at_rest && !accepting(stage)) return false;
     if (at_rest || steps == max_control_steps_) {
       simulation_.save(last_valid_);
-      growth.braking.push_back(make_motion({stop, steps}, stage));
+      growth.motions.push_back(make_motion({stop, steps}, stage));
       steps = 0;
     }
     if (at_rest) return true;

@@ -16,6 +16,7 @@
 #include "physltl/planning/task.h"
 #include "product_graph.h"
 #include "physltl/planning/stage_graph.h"
+#include "push_plan_lead.h"
 
 #include <cstdint>
 #include <optional>
@@ -33,15 +34,15 @@ struct Motion {
   int product_state = 0;
 };
 
-// What one expansion grew: a child of the node grown from (its `parent` is left for the tree to fill
-// in), unless the first step was already invalid.
+// What one expansion grew: a chain of motions, the first a child of the node grown from, each next a
+// child of the one before (their `parent` is left for the tree to fill in); empty when the first step was
+// already invalid. One motion for a sampled control; a push primitive's controls one by one; and, for a
+// task that ends at rest, after a motion that reached acceptance, the robot braking until it and the
+// boxes stand still, still accepted, in controls of at most the scenario's max_steps each.
 struct Growth {
-  std::optional<Motion> motion;
-  // A task that ends at rest: after a motion that reached acceptance, the robot braking until it and the
-  // boxes stand still, still accepted: controls of at most the scenario's max_steps each, the first a
-  // child of `motion` and each next a child of the one before.
-  std::vector<Motion> braking;
-  bool accepted = false;  // the motion (and the braking, where the task needs it) reached acceptance
+  std::vector<Motion> motions;
+  bool accepted = false;  // the last motion (after its braking, where the task needs it) reached acceptance
+  int controls = 0;       // controls propagated, braking not counted
   int physics_steps = 0;
   bool stopped_by_invalid_step = false;
   std::optional<Refusal> refusal;  // the rule that ended the motion (or its braking), if one did
@@ -54,6 +55,7 @@ enum class Guidance {
   kPushingTo,   // the same, each control ending where the robot gets to the target (the look-ahead's pushes)
   kGoingRound,  // the knowledge sampler steering only; touching a body the task does not name is cut
   kWidened,     // as the baseline grows: a uniform control, nothing cut but what the task and the world forbid
+  kFollowingOrder,  // the look-ahead's push primitive: its order carried out control by control (push_plan_lead.h)
 };
 
 class TreeGrower {
@@ -67,11 +69,18 @@ class TreeGrower {
   // found in `from`'s state.
   void grow(const Motion& from, const Vec2& target, const ObjectLead::Goal* goal, Guidance guidance,
             std::uint64_t seed, Growth& growth);
+  // Replaces `growth` with the push primitive's chain from `from`, which stands at push `push` of `order`:
+  // one control of min_steps to max_steps steps at a time, each from the state the last left, until the
+  // order is done, a step is refused, the state leaves the order, or kMaxPrimitiveStall controls pass
+  // without getting closer to its end.
+  void follow_order(const Motion& from, const PushPlanLead& order, int push, Growth& growth);
 
  private:
   // Applies `control` from the simulation's current state until the end, an invalid step, a dead
-  // automaton state or acceptance; the valid steps make the growth's motion.
-  void propagate(const Control& control, int stage, bool may_push, Growth& growth);
+  // automaton state or acceptance; the valid steps make the growth's next motion. Whether a motion may
+  // follow it: the whole control was valid and did not accept, or it accepted (and braked where the task
+  // needs it); then the simulation stands at the growth's end.
+  bool propagate(const Control& control, int stage, bool may_push, Growth& growth);
   // From an accepting motion's end: the drive's set-point zero until the robot and the boxes are at rest,
   // every step valid and the automaton still accepting at the end. Whether that worked.
   bool brake(int stage, Growth& growth);
@@ -91,6 +100,9 @@ class TreeGrower {
   const ControlSampler sampler_;
   const int max_braking_steps_;
   const int max_control_steps_;
+  const int min_control_steps_;
+  const double step_size_;  // s per physics step
+  const double max_speed_;  // the robot's, m/s
   std::vector<bool> named_;  // per movable body: the task says where it must be (touching it is never refused)
   CheckedSimulation simulation_;
   physics::PhysicsState last_valid_;

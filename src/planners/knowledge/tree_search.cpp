@@ -85,6 +85,7 @@ struct Expansion {
   Vec2 target = Vec2::Zero();
   std::optional<ObjectLead::Goal> goal;
   Guidance guidance = Guidance::kPushing;
+  int push = -1;  // following the order: the push of it the node stands at
   std::uint64_t seed = 0;
 };
 
@@ -97,6 +98,7 @@ class Search {
         decomposition_(problem.decomposition),
         options_(options),
         knowledge_mode_(mode == TreeSearchMode::kKnowledge),
+        primitives_(options.parameter(kPushPrimitivesParameter, "on") == "on"),
         stage_graph_(prepared != nullptr && prepared->stages ? prepared->stages : std::make_shared<const StageGraph>(task_)),
         stages_(*stage_graph_),
         // The knowledge planner's lead goes round the bodies where the task needs no pushing (route_choice.h).
@@ -114,7 +116,8 @@ class Search {
         stage_dropped_(static_cast<size_t>(stages_.stages()), 0) {
     if (knowledge_mode_ && prepared != nullptr && prepared->lookahead.plan.found) {
       lookahead_ = &prepared->lookahead;
-      push_lead_.emplace(*lookahead_->lattice, lookahead_->start_cells, lookahead_->steps, knowledge_);
+      order_steps_ = lookahead_->steps;
+      push_lead_.emplace(*lookahead_->lattice, lookahead_->start_cells, order_steps_, knowledge_);
     }
   }
 
@@ -234,6 +237,7 @@ class Search {
     if (stage_nodes_[static_cast<size_t>(motion.stage)]++ == 0) stages_reached_.push_back(motion.stage);
     failed_starts_.push_back(0);
     chosen_.push_back(0);
+    primitive_tried_.push_back(false);
     dropped_.push_back(false);
     note_push_progress(motion);
     motions_.push_back(std::move(motion));
@@ -363,6 +367,7 @@ class Search {
       batches_since_push_progress_ = 0;
     }
     push_progress_.push_back(progress);
+    furthest_push_ = std::max(furthest_push_, progress.push);
     rank_on_order(static_cast<int>(push_progress_.size()) - 1);
   }
 
@@ -405,6 +410,15 @@ class Search {
       if (best) from = ranked_on_order_.begin()->second;
       count_choice(from);
       e.from = from;
+      e.seed = random_.next();
+      const int push = push_progress_[static_cast<size_t>(from)].push;
+      if (primitives_ && push >= 0 && !primitive_tried_[static_cast<size_t>(from)]) {
+        // The order carried out by the push primitive, once from each node on it.
+        primitive_tried_[static_cast<size_t>(from)] = true;
+        e.guidance = Guidance::kFollowingOrder;
+        e.push = push;
+        continue;
+      }
       e.guidance = Guidance::kPushing;
       const Motion& node = motions_[static_cast<size_t>(from)];
       if (const auto target = push_lead_->target(node.state, push_progress_[static_cast<size_t>(from)].push)) {
@@ -414,7 +428,6 @@ class Search {
       } else {
         aim_at_body(e, goal);
       }
-      e.seed = random_.next();
     }
   }
 
@@ -437,11 +450,14 @@ class Search {
       const lookahead::PushSearch search =
           lookahead::PushSearcher(lattice, stages_, task_.labelling).search(node.stage, *cells, robot, {}, kReplanArrangements);
       if (!search.found) return;
-      push_lead_.emplace(lattice, *cells, search.steps, knowledge_);
+      order_steps_ = search.steps;
+      push_lead_.emplace(lattice, *cells, order_steps_, knowledge_);
       best_push_remaining_ = std::numeric_limits<double>::infinity();
+      furthest_push_ = -1;
       ranked_on_order_.clear();
       for (size_t m = 0; m < motions_.size(); ++m) {
         push_progress_[m] = push_lead_->progress(motions_[m].state, -1);
+        furthest_push_ = std::max(furthest_push_, push_progress_[m].push);
         best_push_remaining_ = std::min(best_push_remaining_, push_progress_[m].remaining);
         if (!dropped_[m]) rank_on_order(static_cast<int>(m));
       }
@@ -474,8 +490,12 @@ class Search {
       }
       const Expansion& e = expansions_[static_cast<size_t>(expansion)];
       Growth& growth = growths_[static_cast<size_t>(expansion)];
-      grower->grow(motions_[static_cast<size_t>(e.from)], e.target, e.goal ? &*e.goal : nullptr, e.guidance, e.seed,
-                   growth);
+      const Motion& from = motions_[static_cast<size_t>(e.from)];
+      if (e.guidance == Guidance::kFollowingOrder) {
+        grower->follow_order(from, *push_lead_, e.push, growth);
+      } else {
+        grower->grow(from, e.target, e.goal ? &*e.goal : nullptr, e.guidance, e.seed, growth);
+      }
       if (!growth.accepted) return;
       int seen = first_accepted.load(std::memory_order_relaxed);
       while (expansion < seen && !first_accepted.compare_exchange_weak(seen, expansion)) {
@@ -488,33 +508,29 @@ class Search {
   int add_growths() {
     for (size_t i = 0; i < growths_.size(); ++i) {
       Growth& growth = growths_[i];
-      ++stats_.propagations;
+      stats_.propagations += growth.controls;
+      if (expansions_[i].guidance == Guidance::kFollowingOrder) primitive_controls_ += growth.controls;
       stats_.physics_steps += growth.physics_steps;
       stats_.invalid_steps += growth.stopped_by_invalid_step ? 1 : 0;
       if (growth.refusal) stats_.refused.add(*growth.refusal);
       if (growth.route_choice_cut) stats_.refused.add_own(own_rule(OwnRefusal::kRouteChoiceCut));
       note_outcome(expansions_[i].from, growth);
-      if (!growth.motion) continue;
-      const int index = static_cast<int>(motions_.size());
-      growth.motion->parent = expansions_[i].from;
-      add_motion(std::move(*growth.motion));
-      if (growth.accepted && !growth.braking.empty()) {
-        int parent = index;
-        for (Motion& braking : growth.braking) {
-          braking.parent = parent;
-          parent = static_cast<int>(motions_.size());
-          add_motion(std::move(braking));
-        }
-        return parent;
+      int parent = expansions_[i].from;
+      for (Motion& motion : growth.motions) {
+        motion.parent = parent;
+        parent = static_cast<int>(motions_.size());
+        add_motion(std::move(motion));
+        // The primitive from any motion of its chain would grow the same chain again.
+        if (expansions_[i].guidance == Guidance::kFollowingOrder) primitive_tried_[static_cast<size_t>(parent)] = true;
       }
-      if (growth.accepted) return index;
+      if (growth.accepted) return parent;
     }
     return -1;
   }
 
   void note_outcome(int from, const Growth& growth) {
     int& failures = failed_starts_[static_cast<size_t>(from)];
-    if (growth.motion || !growth.stopped_by_invalid_step) {
+    if (!growth.motions.empty() || !growth.stopped_by_invalid_step) {
       failures = 0;
       return;
     }
@@ -577,6 +593,7 @@ class Search {
     auto report = std::make_shared<SearchReport>();
     if (lookahead_ != nullptr) report->lookahead = lookahead_->plan;
     report->lookahead_replans = lookahead_replans_;
+    report->primitive_controls = primitive_controls_;
     if (!result.solved) report->end = search_end();
     result.own = std::move(report);
   }
@@ -607,6 +624,14 @@ class Search {
     for (int stage : stages_reached_) {
       end.nodes_per_stage.push_back({describe(stage), stage_nodes_[static_cast<size_t>(stage)], stage_dropped_[static_cast<size_t>(stage)]});
     }
+    if (push_lead_ && furthest_push_ >= 0 && furthest_push_ < push_lead_->pushes()) {
+      const std::vector<PlannedPush> order = lookahead::runs_of(*lookahead_->lattice, order_steps_);
+      std::vector<std::string> names;
+      for (const auto& body : world_.movable_bodies) names.push_back(body.name);
+      end.order_push = furthest_push_ + 1;
+      end.order_pushes = push_lead_->pushes();
+      end.order_push_named = planning::describe(order[static_cast<size_t>(furthest_push_)], names);
+    }
     end.expansions_since_progress = expansions_since_progress_;
     end.widened = widened_;
     return end;
@@ -618,6 +643,7 @@ class Search {
   const decomposition::Decomposition& decomposition_;
   const PlannerOptions& options_;
   const bool knowledge_mode_;  // the knowledge planner; otherwise the baseline
+  const bool primitives_;      // the look-ahead's order carried out by push primitives (--push-primitives)
   std::shared_ptr<const StageGraph> stage_graph_;  // the preparation's, or the search's own
   const StageGraph& stages_;
   const RouteChoice routes_;
@@ -632,12 +658,16 @@ class Search {
   std::vector<int> failed_starts_;        // per motion: expansions in a row that failed at once
   std::vector<int> chosen_;               // per motion: times it was chosen to grow from
   std::vector<bool> dropped_;             // per motion: no longer chosen but by a widened expansion
+  std::vector<bool> primitive_tried_;     // per motion: the push primitive has grown from it
   long long expansions_since_progress_ = 0;
   bool widened_ = false;                  // the search has stalled at least once
   const std::vector<int>* current_lead_ = nullptr;
   const lookahead::Lookahead* lookahead_ = nullptr;   // the look-ahead the search follows, if any
   int lookahead_replans_ = 0;                          // times its order was planned again
-  std::optional<PushPlanLead> push_lead_;             // and its order as it stands
+  std::vector<lookahead::PushStep> order_steps_;       // its order as it stands
+  std::optional<PushPlanLead> push_lead_;             // and as the tree follows it
+  int furthest_push_ = -1;                             // the furthest push of it any node stands at
+  long long primitive_controls_ = 0;                   // controls the push primitives propagated
   std::vector<PushPlanLead::Progress> push_progress_;  // per motion, where it stands on that order
   std::set<std::pair<double, int>> ranked_on_order_;  // the nodes on it, not dropped, by order_rank
   double best_push_remaining_ = std::numeric_limits<double>::infinity();

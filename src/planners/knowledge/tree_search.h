@@ -13,12 +13,18 @@
 #include "physltl/planning/planner_options.h"
 #include "physltl/planning/problem.h"
 
+#include <string>
+
 namespace physltl::planning {
 
 enum class TreeSearchMode {
   kKnowledge,  // kappa-aware validity, the route choice and its escape (the paper's planner)
   kBaseline,   // fixed-body contacts only, uniform controls (the paper's simple planner)
 };
+
+// The knowledge planner's parameter: "on" (the default), the look-ahead's order is first carried out by
+// closed-loop push primitives; "off", by sampled controls alone (for comparing the two).
+inline const std::string kPushPrimitivesParameter = "push-primitives";
 
 // `prepared`: the knowledge planner's route choice and look-ahead; without it, the knowledge search chooses
 // its routes itself and follows no push order.

@@ -6,6 +6,7 @@
 #include "physltl/planning/stage_graph.h"
 #include "planner_data.h"
 #include "push_plan_lead.h"
+#include "tree_search.h"
 #include "test_problem.h"
 
 #include <gtest/gtest.h>
@@ -220,12 +221,63 @@ TEST(LookAhead, ASearchTheOrderLeadsIntoADeadEndGetsOutThroughItsEscape) {
   options.time_limit = 600;  // the budget stops it, never the clock
   options.threads = 1;
   options.max_propagations = 200'000;  // it needs 144,462
+  options.parameters[kPushPrimitivesParameter] = "off";  // the primitives carry the order out at once
   const PlanResult result = p.plan_task(p.task, options);
   ASSERT_TRUE(result.solved) << result.stop_reason;
   // Else this seed no longer stalls on the order, and the test no longer reaches the escape.
   EXPECT_GT(result.stats.propagations, 100'000);
   const Replay replay = p.check(result.plan);
   EXPECT_TRUE(replay.validated()) << replay.failure;
+}
+
+// The push primitive (push_plan_lead.h, steer) carries the look-ahead's order out control by control:
+// on a puzzle of three pushes it needs a fraction of the propagations the sampled controls need, and
+// what it grows passes the replay.
+TEST(PushPrimitive, CarriesOutAThreePushOrderInFewerPropagationsThanSampledControls) {
+  const TestProblem p(kPuzzles + "crossing.lua");
+  ASSERT_EQ(ahead_of(p).plan.pushes.size(), 3u);
+  PlannerOptions options;
+  options.seed = 1;
+  options.threads = 1;
+  options.time_limit = 600;  // the budget stops it, never the clock
+  options.max_propagations = 20'000;
+  const PlanResult primitives = p.plan_task(p.task, options);
+  options.parameters[kPushPrimitivesParameter] = "off";
+  const PlanResult sampled = p.plan_task(p.task, options);
+  ASSERT_TRUE(primitives.solved) << primitives.stop_reason;
+  ASSERT_TRUE(sampled.solved) << sampled.stop_reason;
+  // Seed 1: 70 propagations with the primitive (every one of them its controls), 337 without.
+  EXPECT_LE(primitives.stats.propagations, 120);
+  EXPECT_GE(sampled.stats.propagations, 200);
+  const auto& report = dynamic_cast<const SearchReport&>(*primitives.own);
+  EXPECT_GE(report.primitive_controls * 2, primitives.stats.propagations);
+  EXPECT_EQ(dynamic_cast<const SearchReport&>(*sampled.own).primitive_controls, 0);
+  const Replay replay = p.check(primitives.plan);
+  EXPECT_TRUE(replay.validated()) << replay.failure;
+}
+
+// A search stopped before the order is carried out names the push it did not carry out
+// (failed/report.json's search_end.order_push).
+TEST(PushPrimitive, ASearchStoppedShortNamesThePushOfTheOrderItDidNotCarryOut) {
+  const TestProblem p(kPuzzles + "crossing.lua");
+  PlannerOptions options;
+  options.seed = 1;
+  options.threads = 1;
+  options.time_limit = 600;
+  // Sampled controls, which seed 1 needs 337 of: the primitive carries the whole order out in its first
+  // expansion, before any budget is looked at.
+  options.parameters[kPushPrimitivesParameter] = "off";
+  options.max_propagations = 64;
+  const PlanResult result = p.plan_task(p.task, options);
+  ASSERT_FALSE(result.solved);
+  EXPECT_EQ(result.stop_reason, "budget");
+  const SearchEnd& end = *dynamic_cast<const SearchReport&>(*result.own).end;
+  EXPECT_EQ(end.order_pushes, 3);
+  ASSERT_GE(end.order_push, 1);
+  ASSERT_LE(end.order_push, 3);
+  std::vector<std::string> names;
+  for (const auto& body : p.world.movable_bodies) names.push_back(body.name);
+  EXPECT_EQ(end.order_push_named, describe(ahead_of(p).plan.pushes[static_cast<std::size_t>(end.order_push - 1)], names));
 }
 
 // The puzzles of docs/benchmarks.md ("Push puzzles"), seed 1: each solved and validated by replay.

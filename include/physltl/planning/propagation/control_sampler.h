@@ -24,11 +24,11 @@ class ControlSampler {
                  bool may_push, Random& random, bool stop_at_target = false) const;
   // A control as the baseline samples it: a uniform set-point for a uniform number of steps.
   Control sample_uniform(Random& random) const;
+  // The set-point that moves the robot along the unit vector `direction` at up to `speed` for `steps`.
+  Vec2 along(const scenario::EnvironmentState& state, const Vec2& direction, double speed, int steps) const;
 
  private:
   Vec2 uniform_setpoint(Random& random) const;
-  // The set-point that moves the robot along the unit vector `direction` at up to `speed` for `steps`.
-  Vec2 along(const scenario::EnvironmentState& state, const Vec2& direction, double speed, int steps) const;
   // A push direction of a body the robot stands ready to push that helps towards `heading`.
   bool push_towards(const scenario::EnvironmentState& state, const knowledge::Kappa& kappa, const Vec2& heading,
                     Random& random, Vec2& direction) const;
