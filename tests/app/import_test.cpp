@@ -52,6 +52,18 @@ TEST(ImportSokoban, AnyBoxOnAnyGoalUpToFiveBoxesAndAGoalForEachBeyond) {
   for (int b = 1; b <= 6; ++b) EXPECT_NE(formula.find("M" + std::to_string(b) + "@goal"), std::string::npos) << formula;
 }
 
+// From 6 boxes on, each box is given the goal of the assignment with the fewest pushes in all: M2, against
+// the west wall beside goal2, gets goal6 below it, which it can be pushed to, and M3 goal2.
+TEST(ImportSokoban, BeyondFiveBoxesEachBoxGetsAGoalItCanBePushedTo) {
+  const fs::path out = fresh_out_dir();
+  ASSERT_EQ(run("import sokoban " + kSource + "/tests/app/sokoban_assignment.txt --out " + out.string()).exit_code, 0);
+  const std::string level = slurp(out / "sokoban_assignment_1.lua");
+  EXPECT_NE(level.find("F G(M1@goal1 & M2@goal6 & M3@goal2 & M4@goal3 & M5@goal4 & M6@goal5)"), std::string::npos) << level;
+  const Result check = run("check " + (out / "sokoban_assignment_1.lua").string() + " --no-preview --json");
+  ASSERT_EQ(check.exit_code, 0) << check.err;
+  EXPECT_EQ(nlohmann::json::parse(check.out).at("lookahead").at("outcome"), "found") << check.out;
+}
+
 TEST(ImportSokoban, LevelNImportsThatLevelOnly) {
   const fs::path out = fresh_out_dir();
   ASSERT_EQ(run("import sokoban " + kLevels + " --level 2 --out " + out.string()).exit_code, 0);

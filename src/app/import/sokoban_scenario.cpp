@@ -1,12 +1,13 @@
 #include "sokoban_scenario.h"
 
+#include "goal_assignment.h"
+
 #include "physltl/knowledge/labelling.h"
 #include "physltl/scenario/world.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <numeric>
 
 namespace physltl::app::import {
@@ -60,21 +61,8 @@ std::string task_formula(const SokobanLevel& level) {
       goals.push_back(n == 1 ? any.front() : "(" + fmt::format("{}", fmt::join(any, " | ")) + ")");
     }
   } else {
-    std::vector<bool> box_used(static_cast<size_t>(n)), goal_used(static_cast<size_t>(n));
-    for (int k = 0; k < n; ++k) {
-      int best_b = -1, best_g = -1, best = 1 << 30;
-      for (int b = 0; b < n; ++b) {
-        for (int g = 0; g < n; ++g) {
-          if (box_used[static_cast<size_t>(b)] || goal_used[static_cast<size_t>(g)]) continue;
-          const Cell& x = level.boxes[static_cast<size_t>(b)];
-          const Cell& y = level.goals[static_cast<size_t>(g)];
-          const int d = std::abs(x.row - y.row) + std::abs(x.column - y.column);
-          if (d < best) best = d, best_b = b, best_g = g;
-        }
-      }
-      box_used[static_cast<size_t>(best_b)] = goal_used[static_cast<size_t>(best_g)] = true;
-      goals.push_back(fmt::format("M{}@goal{}", best_b + 1, best_g + 1));
-    }
+    const std::vector<int> goal_of = assign_goals(level);
+    for (int b = 0; b < n; ++b) goals.push_back(fmt::format("M{}@goal{}", b + 1, goal_of[static_cast<size_t>(b)] + 1));
   }
   return "F G(" + fmt::format("{}", fmt::join(goals, " & ")) + ")";
 }

@@ -35,6 +35,14 @@ int lattice_body(const TestProblem& p, const std::string& name) {
   throw std::invalid_argument("no lattice body " + name);
 }
 
+// The look-ahead's discrete search over `p`'s lattice, as the knowledge planner prepared it.
+struct Searcher {
+  explicit Searcher(const TestProblem& p) : lattice(*ahead_of(p).lattice), stages(p.task), searcher(lattice, stages, p.task.labelling) {}
+  const lookahead::PushLattice& lattice;
+  const StageGraph stages;
+  const lookahead::PushSearcher searcher;
+};
+
 geometry::Vec2 region_centre(const TestProblem& p, const std::string& name) {
   for (const auto& r : p.world.regions) {
     if (r.name == name) return r.polygon.centroid();
@@ -157,9 +165,9 @@ int fewest_body_steps(const lookahead::PushSearcher& searcher, int stage, const 
 TEST(LookAhead, TheEstimateGivesEachGoalOneBoxAndNeverExceedsTheFewestBodyStepsLeft) {
   const TestProblem p(kWorlds + "nearest_goal_shared.lua");
   ASSERT_TRUE(ahead_of(p).plan.rule.applies) << ahead_of(p).plan.rule.reason;
-  const lookahead::PushLattice& lattice = *ahead_of(p).lattice;
-  const StageGraph stages(p.task);
-  const lookahead::PushSearcher searcher(lattice, stages, p.task.labelling);
+  const Searcher searching(p);
+  const lookahead::PushLattice& lattice = searching.lattice;
+  const lookahead::PushSearcher& searcher = searching.searcher;
   const int stage = ahead_of(p).stage;
   const std::vector<int>& start = ahead_of(p).start_cells;
   EXPECT_EQ(searcher.estimate(stage, start), 5);  // M1 west 1, M2 east 4; not 1 + 2 with both west
@@ -183,9 +191,9 @@ TEST(LookAhead, TheEstimateGivesEachGoalOneBoxAndNeverExceedsTheFewestBodyStepsL
 TEST(LookAhead, PrunesABoxAgainstAWallItsGoalIsNotAlong) {
   const TestProblem p(kPuzzles + "under_the_wall.lua");
   ASSERT_TRUE(ahead_of(p).plan.rule.applies) << ahead_of(p).plan.rule.reason;
-  const lookahead::PushLattice& lattice = *ahead_of(p).lattice;
-  const StageGraph stages(p.task);
-  const lookahead::PushSearcher searcher(lattice, stages, p.task.labelling);
+  const Searcher searching(p);
+  const lookahead::PushLattice& lattice = searching.lattice;
+  const lookahead::PushSearcher& searcher = searching.searcher;
   const int box = lattice_body(p, "M1");
   EXPECT_TRUE(searcher.alive(ahead_of(p).stage, box, ahead_of(p).start_cells[static_cast<std::size_t>(box)]));
   EXPECT_TRUE(searcher.alive(ahead_of(p).stage, box, lattice.cell_at({2.7, 1.5})));   // the middle of the room
@@ -228,6 +236,31 @@ TEST(LookAhead, ASearchTheOrderLeadsIntoADeadEndGetsOutThroughItsEscape) {
   EXPECT_GT(result.stats.propagations, 100'000);
   const Replay replay = p.check(result.plan);
   EXPECT_TRUE(replay.validated()) << replay.failure;
+}
+
+// frozen_pair: M1 pushed next to M2, which stands on its goal in the corner, is held along the wall by
+// the wall below and along it by M2 (the pair pushed as a line runs into the east wall): the search
+// prunes that arrangement, which neither the dead places (M1 could still be pushed west from there,
+// were M2 not in the way) nor the square of four places (two bodies side by side) find.
+TEST(LookAhead, PrunesABodyFrozenAgainstAWallAndABodyThatCannotMove) {
+  const TestProblem p(kWorlds + "frozen_pair.lua");
+  ASSERT_TRUE(ahead_of(p).plan.rule.applies) << ahead_of(p).plan.rule.reason;
+  const Searcher on(p);
+  const int m1 = lattice_body(p, "M1"), m2 = lattice_body(p, "M2");
+  const int stage = ahead_of(p).stage;
+  std::vector<int> cells = ahead_of(p).start_cells;
+  EXPECT_FALSE(on.searcher.frozen_apart(stage, cells, m1));
+  EXPECT_FALSE(on.searcher.frozen_apart(stage, cells, m2));  // frozen, but on its goal
+  const int next_to_m2 = on.lattice.cell_at({2.7, 0.9});
+  ASSERT_EQ(on.lattice.neighbour(next_to_m2, 0), cells[static_cast<std::size_t>(m2)]);
+  EXPECT_TRUE(on.searcher.alive(stage, m1, next_to_m2));
+  cells[static_cast<std::size_t>(m1)] = next_to_m2;
+  EXPECT_TRUE(on.searcher.frozen_apart(stage, cells, m1));
+  // One place further west, M1 can still be pushed along the wall.
+  cells[static_cast<std::size_t>(m1)] = on.lattice.neighbour(next_to_m2, 1);
+  EXPECT_FALSE(on.searcher.frozen_apart(stage, cells, m1));
+  ASSERT_TRUE(ahead_of(p).plan.found);
+  for (const PlannedPush& push : ahead_of(p).plan.pushes) EXPECT_NE(push.dx, 1) << "an order never pushes M1 east";
 }
 
 // The push primitive (push_plan_lead.h, steer) carries the look-ahead's order out control by control:

@@ -186,6 +186,78 @@ bool PushSearcher::square_frozen(const Goals& goals, const std::vector<int>& cel
   return false;
 }
 
+// A body is frozen when it can be pushed along neither axis again. Along an axis, each way is shut by
+// the lattice (the body cannot be pushed that way: no side to push, no room ahead, no room behind for the
+// robot, or a place from which it could never get where the task wants it), or by a frozen body ahead or
+// behind; a body already looked at counts as frozen (it stands in the way of the one that asked). A body
+// ahead that the pushed one can move as a line leaves the way open: a line may end an order.
+class FreezeTest {
+ public:
+  FreezeTest(const PushLattice& lattice, const PushSearcher::Goals& goals, const std::vector<int>& holder)
+      : lattice_(lattice), goals_(goals), holder_(holder) {}
+
+  // Whether the body on `at` is frozen with a body frozen with it (itself included) not where the task
+  // wants it: an arrangement no push can resolve.
+  bool deadlocked(int at) {
+    looked_at_.clear();
+    if (!frozen(at)) return false;
+    return std::any_of(looked_at_.begin(), looked_at_.end(), [&](int c) {
+      const int k = holder_[static_cast<std::size_t>(c)];
+      return goals_.left(k, c) != 0;
+    });
+  }
+
+ private:
+  bool held(int c) const { return c >= 0 && holder_[static_cast<std::size_t>(c)] >= 0; }
+
+  bool frozen(int at) {
+    looked_at_.push_back(at);
+    return axis_shut(at, 0) && axis_shut(at, 2);
+  }
+
+  // Both ways along the axis of direction d shut.
+  bool axis_shut(int at, int d) { return way_shut(at, d) && way_shut(at, opposite(d)); }
+
+  bool way_shut(int at, int d) {
+    const int k = holder_[static_cast<std::size_t>(at)];
+    const int to = lattice_.neighbour(at, d);
+    const int stand = lattice_.neighbour(at, opposite(d));
+    if (!lattice_.can_push(k, d) || to < 0 || stand < 0 || !lattice_.robot_fits(stand)) return true;
+    if (!lattice_.body_fits(k, to) || goals_.left(k, to) == kNever) return true;
+    if (held(stand) && stops(stand)) return true;
+    return held(to) && stops(to) && !line_moves(at, d);
+  }
+
+  // Whether the body on c stands in the way for good: looked at already, or frozen.
+  bool stops(int c) {
+    if (std::find(looked_at_.begin(), looked_at_.end(), c) != looked_at_.end()) return true;
+    const std::size_t mark = looked_at_.size();
+    if (frozen(c)) return true;
+    looked_at_.resize(mark);  // it may move: what it was frozen with is not
+    return false;
+  }
+
+  // The bodies from `at` on in direction d, end to end, pushed together one place.
+  bool line_moves(int at, int d) const {
+    int c = at;
+    while (held(lattice_.neighbour(c, d))) c = lattice_.neighbour(c, d);
+    const int beyond = lattice_.neighbour(c, d);
+    return beyond >= 0 && lattice_.body_fits(holder_[static_cast<std::size_t>(c)], beyond);
+  }
+
+  const PushLattice& lattice_;
+  const PushSearcher::Goals& goals_;
+  const std::vector<int>& holder_;
+  std::vector<int> looked_at_;  // places of the bodies looked at, frozen so far
+};
+
+bool PushSearcher::frozen_apart(int stage, const std::vector<int>& cells, int k) const {
+  std::vector<int> holder(static_cast<std::size_t>(lattice_.cells()), -1);
+  for (std::size_t j = 0; j < cells.size(); ++j) holder[static_cast<std::size_t>(cells[j])] = static_cast<int>(j);
+  const Goals goals = goals_from(stage);
+  return FreezeTest(lattice_, goals, holder).deadlocked(cells[static_cast<std::size_t>(k)]);
+}
+
 // One search's state: the arrangements met, the open ones by priority, and scratch space for the walks.
 // The arrangements' places are stored flat, one block of a place per body each, and the set of those met
 // holds node numbers hashed by those places, in an arena: a search cut short at a few hundred thousand
@@ -271,7 +343,7 @@ class ArrangementSearch {
     if (stages_.distance(next_stage) < 0 || stages_.dead(stages_.automaton_state_of(next_stage))) return -1;
     holder_[static_cast<std::size_t>(at)] = -1;
     holder_[static_cast<std::size_t>(to)] = k;
-    const bool frozen = searcher_.square_frozen(goals_, next, holder_, to);
+    const bool frozen = searcher_.square_frozen(goals_, next, holder_, to) || FreezeTest(lattice_, goals_, holder_).deadlocked(to);
     const int robot = frozen ? 0 : walk(lattice_, at, holder_, seen_after_, mark_++, queue_);
     holder_[static_cast<std::size_t>(to)] = -1;
     holder_[static_cast<std::size_t>(at)] = k;

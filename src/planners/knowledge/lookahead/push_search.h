@@ -7,8 +7,10 @@
 // cheapest matching of boxes to goals, so two boxes never count one goal); with more such fact sets than
 // kMaxEndings, each body's fewest pushes to any of its places. Pruned inside this search only: arrangements where the automaton dies, a body the task needs
 // somewhere on a place it can never be pushed there from (a box against a wall its goal is not along),
-// and four places in a square all held by walls or bodies, no two bodies side by side, one of them a body
-// not yet where the task needs it (none of them can move again).
+// four places in a square all held by walls or bodies, no two bodies side by side, one of them a body
+// not yet where the task needs it (none of them can move again), and more generally a body pushed where
+// it can be pushed along neither axis again, held so by walls, dead places or bodies that are themselves
+// held so (frozen), with one of those bodies not where the task needs it.
 
 #include "push_lattice.h"
 #include "physltl/base/deadline.h"
@@ -68,9 +70,13 @@ class PushSearcher {
   // Whether body k on `cell` can still get to where the task needs it, pushed alone; always true for a
   // body the task leaves free.
   bool alive(int stage, int k, int cell) const;
+  // Whether body k on cells[k] can be pushed along neither axis again, nor can a body that holds it so,
+  // and one of them is not where the task wants it from `stage` (FreezeTest in push_search.cpp).
+  bool frozen_apart(int stage, const std::vector<int>& cells, int k) const;
 
  private:
   friend class ArrangementSearch;
+  friend class FreezeTest;
   // Per lattice body, per place: the fewest pushes of that body alone to where the task wants it from a
   // stage (kNever where it can get there no more); no table for a body the task leaves free.
   struct Goals {
