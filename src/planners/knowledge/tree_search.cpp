@@ -80,7 +80,6 @@ constexpr long long kReplanArrangements = 100'000;
 // Propagations the push primitives may take before they share them half and half with the sampled
 // controls (primitives_within_share).
 constexpr long long kPrimitiveHeadStart = 2'000;
-constexpr long long kPrimitiveStallExpansions = 256;
 
 // Where to grow from and towards, and the seed of the grower's own generator. With an object goal, the
 // grower finds the target in the node's state (object_lead.h).
@@ -440,11 +439,8 @@ class Search {
   // them ran up to kMaxPrimitiveStall controls and left the sampled controls almost nothing (Microban II
   // level 41: 392,632 of 573,132 propagations, unsolved in 10 s; the sampled controls alone solve it
   // with 2,017).
-  // And none once kPrimitiveStallExpansions have passed without a node further along the order, until a
-  // node gets further or the order is planned again: the sampled controls then look for another way.
   bool primitives_within_share() const {
-    return batches_since_push_progress_ * kBatch < kPrimitiveStallExpansions &&
-           primitive_controls_ <= stats_.propagations - primitive_controls_ + kPrimitiveHeadStart;
+    return primitive_controls_ <= stats_.propagations - primitive_controls_ + kPrimitiveHeadStart;
   }
 
   // A new push order from the latest node of the frontier stage that the physics left off the order with
