@@ -77,9 +77,6 @@ constexpr double kWidenedAnywhereShare = 0.5;
 constexpr long long kReplanExpansions = kStallExpansions / 2;
 constexpr int kMaxReplans = 8;
 constexpr long long kReplanArrangements = 100'000;
-// Propagations the push primitives may take before they share them half and half with the sampled
-// controls (primitives_within_share).
-constexpr long long kPrimitiveHeadStart = 2'000;
 
 // Where to grow from and towards, and the seed of the grower's own generator. With an object goal, the
 // grower finds the target in the node's state (object_lead.h).
@@ -415,7 +412,7 @@ class Search {
       e.from = from;
       e.seed = random_.next();
       const int push = push_progress_[static_cast<size_t>(from)].push;
-      if (primitives_ && push >= 0 && !primitive_tried_[static_cast<size_t>(from)] && primitives_within_share()) {
+      if (primitives_ && push >= 0 && !primitive_tried_[static_cast<size_t>(from)]) {
         // The order carried out by the push primitive, once from each node on it.
         primitive_tried_[static_cast<size_t>(from)] = true;
         e.guidance = Guidance::kFollowingOrder;
@@ -432,15 +429,6 @@ class Search {
         aim_at_body(e, goal);
       }
     }
-  }
-
-  // The primitives take at most half of the propagations past a head start: where the physics cannot
-  // follow the order as they steer (a side kappa has switched off, a body that will not slide), each of
-  // them ran up to kMaxPrimitiveStall controls and left the sampled controls almost nothing (Microban II
-  // level 41: 392,632 of 573,132 propagations, unsolved in 10 s; the sampled controls alone solve it
-  // with 2,017).
-  bool primitives_within_share() const {
-    return primitive_controls_ <= stats_.propagations - primitive_controls_ + kPrimitiveHeadStart;
   }
 
   // A new push order from the latest node of the frontier stage that the physics left off the order with
