@@ -33,7 +33,7 @@ void insert_polygon(Cdt& cdt, const std::vector<Vec2>& vertices, double max_piec
   }
 }
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+using geometry::cross;
 
 bool triangle_contains(const Triangle& t, const Vec2& p) {
   const auto& c = t.corners;

@@ -18,8 +18,6 @@ namespace {
 using Inexact = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Exact = CGAL::Exact_predicates_exact_constructions_kernel;
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 Polygon counter_clockwise(Polygon p) {
   if (p.signed_area() < 0) std::reverse(p.vertices.begin(), p.vertices.end());
   return p;

@@ -16,8 +16,6 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 double distance_to_segment(const Vec2& p, const Vec2& a, const Vec2& b, Vec2& closest) {
   const Vec2 d = b - a;
   const double length2 = d.squaredNorm();

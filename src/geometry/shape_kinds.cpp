@@ -14,8 +14,6 @@
 namespace physltl::geometry {
 namespace {
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 double distance_to_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
   const Vec2 d = b - a;
   const double length2 = d.squaredNorm();

@@ -9,8 +9,6 @@
 namespace physltl::geometry {
 namespace {
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 // Orientation of c relative to the directed line a->b, with a relative dead band.
 int orientation(const Vec2& a, const Vec2& b, const Vec2& c) {
   const double v = cross(b - a, c - a);

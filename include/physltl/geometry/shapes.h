@@ -10,6 +10,9 @@ namespace physltl::geometry {
 
 using Vec2 = Eigen::Vector2d;
 
+// The z component of a x b: positive when b turns left from a.
+inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
 struct Pose2 {
   Vec2 position = Vec2::Zero();
   double yaw = 0.0;  // radians, counter-clockwise from +x

@@ -1,6 +1,5 @@
 #include "goal_assignment.h"
 
-#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstddef>

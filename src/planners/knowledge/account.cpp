@@ -61,7 +61,7 @@ json stage_json(const SearchEnd::Stage& stage) {
   return {{"automaton_state", stage.automaton_state}, {"object_facts", stage.facts}, {"moves_to_acceptance", stage.distance}};
 }
 
-json search_end_json(const SearchEnd& end) {
+json search_end_json(const SearchEnd& end, const scenario::World& world) {
   json lead = json::array();
   for (const auto& step : end.lead) lead.push_back({{"at", {step.point.x(), step.point.y()}}, {"automaton_state", step.automaton_state}});
   json stages = json::array();
@@ -76,7 +76,8 @@ json search_end_json(const SearchEnd& end) {
           {"body_move", end.body_move.empty() ? json(nullptr) : json(end.body_move)},
           {"nodes_per_stage", stages},
           {"order_push", end.order_push == 0 ? json(nullptr)
-                                             : json{{"index", end.order_push}, {"of", end.order_pushes}, {"push", end.order_push_named}}},
+                                             : json{{"index", end.order_push}, {"of", end.order_pushes},
+                                                    {"push", describe(end.unfinished_push, body_names(world))}}},
           {"expansions_since_progress", end.expansions_since_progress},
           {"widened", end.widened}};
 }
@@ -103,7 +104,7 @@ PlannerAccount search_account(const SearchReport& report, const scenario::World&
                                          report.lookahead->pushes.size(), report.lookahead->pushes.size() == 1 ? "" : "es");
     }
   }
-  if (report.end) account.diagnosis["search_end"] = search_end_json(*report.end);
+  if (report.end) account.diagnosis["search_end"] = search_end_json(*report.end, world);
   return account;
 }
 

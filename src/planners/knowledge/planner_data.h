@@ -60,7 +60,7 @@ struct SearchEnd {
   // search followed no order or got no node onto it.
   int order_push = 0;
   int order_pushes = 0;
-  std::string order_push_named;  // "M4 +x 0.6 m"
+  PlannedPush unfinished_push;  // that push, when order_push > 0
   long long expansions_since_progress = 0;  // since a node last got closer to acceptance
   bool widened = false;  // the frontier had stalled: some expansions grew as the baseline grows
 };

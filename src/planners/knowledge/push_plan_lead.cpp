@@ -185,7 +185,7 @@ std::optional<PushPlanLead::Along> PushPlanLead::along(const physics::PhysicsSta
   const auto offset_of = [&](int k) -> std::optional<Along> {
     const geometry::Vec2 offset = position(state, k) - lattice_.centre(places[static_cast<std::size_t>(k)]);
     const double a = offset.dot(d);
-    const double lateral = std::abs(offset.x() * d.y() - offset.y() * d.x());
+    const double lateral = std::abs(geometry::cross(offset, d));
     if (lateral > tolerance || a < -tolerance || a > run.length + tolerance) return std::nullopt;
     return Along{a, lateral};
   };
@@ -206,7 +206,7 @@ bool PushPlanLead::ready_to_push(const geometry::Vec2& robot, const geometry::Ve
   const double touching = lattice_.half_along(run.body, run.direction) + robot_radius_;
   const double half_width = lattice_.half_along(run.body, lookahead::perpendicular(run.direction));
   const double depth = v.dot(d);
-  const double lateral = std::abs(v.x() * d.y() - v.y() * d.x());
+  const double lateral = std::abs(geometry::cross(v, d));
   return depth >= touching - kReadyDepth && depth <= touching + kReadyDepth && lateral <= kReadyLateral * half_width;
 }
 
@@ -252,14 +252,13 @@ std::optional<PushPlanLead::Target> PushPlanLead::target(const physics::PhysicsS
   // the lattice's line.
   if (ready_to_push(robot, body, push)) return Target{lattice_.centre(run.to) - touching * d, true};
   const geometry::Vec2 behind = body - (touching + kBehindGap) * d;
-  const std::vector<int> way = way_ahead(robot, push, body, kWalkAhead);
-  if (way.empty()) return std::nullopt;
-  const bool arriving = walk_behind(push, lattice_.cell_at(body))[static_cast<std::size_t>(way.back())] == 0;
-  const double off_line = std::abs((robot - body).x() * d.y() - (robot - body).y() * d.x());
-  return Target{arriving && off_line <= kOnLine ? behind : lattice_.centre(way.back()), false};
+  const Way way = way_ahead(robot, push, body, kWalkAhead);
+  if (way.places.empty()) return std::nullopt;
+  const double off_line = std::abs(geometry::cross(robot - body, d));
+  return Target{way.arriving && off_line <= kOnLine ? behind : lattice_.centre(way.places.back()), false};
 }
 
-std::vector<int> PushPlanLead::way_ahead(const geometry::Vec2& robot, int j, const geometry::Vec2& body, int ahead) const {
+PushPlanLead::Way PushPlanLead::way_ahead(const geometry::Vec2& robot, int j, const geometry::Vec2& body, int ahead) const {
   int cell = lattice_.robot_cell(robot);
   const int body_cell = lattice_.cell_at(body);
   if (cell < 0 || body_cell < 0) return {};
@@ -275,7 +274,7 @@ std::vector<int> PushPlanLead::way_ahead(const geometry::Vec2& robot, int j, con
     if (best < 0) return {};
     cell = best;
   }
-  std::vector<int> way{cell};
+  Way way{{cell}, false};
   for (int i = 0; i < ahead && steps(cell) > 0; ++i) {
     for (int k = 0; k < kDirections; ++k) {
       const int n = lattice_.neighbour(cell, k);
@@ -284,34 +283,34 @@ std::vector<int> PushPlanLead::way_ahead(const geometry::Vec2& robot, int j, con
         break;
       }
     }
-    way.push_back(cell);
+    way.places.push_back(cell);
   }
+  way.arriving = steps(cell) == 0;
   return way;
 }
 
 std::optional<PushPlanLead::Steer> PushPlanLead::steer(const physics::PhysicsState& state, int push, double max_speed) const {
   if (push < 0 || push >= pushes()) return std::nullopt;
   const auto [run, d, robot, body, touching] = situation(state, push);
-  const auto across = [](const geometry::Vec2& v, const geometry::Vec2& u) { return u.x() * v.y() - u.y() * v.x(); };
   // The robot starts a push only square behind the body's centre: a push started off it leaves the robot
   // off the line for the whole push, which in a corridor a few centimetres wider than it ends on a wall.
   // Once touching, it keeps pushing and closes the offset as it goes.
   const double depth = (body - robot).dot(d);
-  const bool square_behind = std::abs(across(robot - body, d)) <= kSquareBehind;
+  const bool square_behind = std::abs(geometry::cross(d, robot - body)) <= kSquareBehind;
   if (ready_to_push(robot, body, push) && (square_behind || depth <= touching + kTouching)) {
     const double left = run.length - (body - lattice_.centre(run.from)).dot(d);
     const double speed = std::clamp(left / kArriveTime, kCreep * max_speed, kPushSpeed * max_speed);
     // Along the push, closing the robot's offset from the line through the body's centre sideways.
     const geometry::Vec2 side(-d.y(), d.x());
-    const geometry::Vec2 velocity = speed * d - (across(robot - body, d) / kCloseTime) * side;
+    const geometry::Vec2 velocity = speed * d - (geometry::cross(d, robot - body) / kCloseTime) * side;
     return Steer{velocity.normalized(), std::min(max_speed, velocity.norm()), std::min(kPushControlTime, left / speed), true};
   }
-  const std::vector<int> cells = way_ahead(robot, push, body, kWayAhead);
-  if (cells.empty()) return std::nullopt;
+  const Way ahead = way_ahead(robot, push, body, kWayAhead);
+  if (ahead.places.empty()) return std::nullopt;
+  const bool arriving = ahead.arriving;
   // The way: the places' centres from the robot's place on, the last the point behind the body.
   std::vector<geometry::Vec2> way;
-  for (int c : cells) way.push_back(lattice_.centre(c));
-  const bool arriving = walk_behind(push, lattice_.cell_at(body))[static_cast<std::size_t>(cells.back())] == 0;
+  for (int c : ahead.places) way.push_back(lattice_.centre(c));
   if (arriving) way.back() = body - (touching + kBehindGap) * d;
   const geometry::Vec2 aim = pursuit_point(way, robot, kPursuit);
   const double to_aim = (aim - robot).norm();
@@ -321,7 +320,7 @@ std::optional<PushPlanLead::Steer> PushPlanLead::steer(const physics::PhysicsSta
   double to_corner = std::numeric_limits<double>::infinity();
   for (std::size_t i = 1; i + 1 < way.size() && std::isinf(to_corner); ++i) {
     const geometry::Vec2 in = way[i] - way[i - 1], out = way[i + 1] - way[i];
-    if (std::abs(in.x() * out.y() - in.y() * out.x()) > 1e-6 * in.norm() * out.norm()) to_corner = (way[i] - robot).norm();
+    if (std::abs(geometry::cross(in, out)) > 1e-6 * in.norm() * out.norm()) to_corner = (way[i] - robot).norm();
   }
   if (arriving) to_corner = std::min(to_corner, (way.back() - robot).norm());
   const double speed = std::min(max_speed, std::max(arriving && aim == way.back() ? 0.0 : kCornerSpeed * max_speed, to_corner / kArriveTime));

@@ -71,8 +71,13 @@ class PushPlanLead {
   const std::vector<int>& walk_behind(int j, int body_cell) const;
   // The robot's way to run j's push with the pushed body at `body`: its place on the walk (its nearest
   // place, or the neighbour of it nearest the push when that one is held or off the walk), then up to
-  // `ahead` places further along; empty when the robot is on no walk to it.
-  std::vector<int> way_ahead(const geometry::Vec2& robot, int j, const geometry::Vec2& body, int ahead) const;
+  // `ahead` places further along (none when the robot is on no walk to it), and whether the last of them
+  // is the place the push starts from.
+  struct Way {
+    std::vector<int> places;
+    bool arriving = false;
+  };
+  Way way_ahead(const geometry::Vec2& robot, int j, const geometry::Vec2& body, int ahead) const;
   geometry::Vec2 position(const physics::PhysicsState& state, int k) const;
   // Push j as `state` stands: its run, direction, the robot's and the pushed body's centres, and how far
   // apart they are when the robot touches the body's side it pushes.

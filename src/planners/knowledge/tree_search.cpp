@@ -421,7 +421,7 @@ class Search {
       }
       e.guidance = Guidance::kPushing;
       const Motion& node = motions_[static_cast<size_t>(from)];
-      if (const auto target = push_lead_->target(node.state, push_progress_[static_cast<size_t>(from)].push)) {
+      if (const auto target = push_lead_->target(node.state, push)) {
         e.target = target->point;
         e.goal.reset();
         e.guidance = Guidance::kPushingTo;
@@ -625,12 +625,9 @@ class Search {
       end.nodes_per_stage.push_back({describe(stage), stage_nodes_[static_cast<size_t>(stage)], stage_dropped_[static_cast<size_t>(stage)]});
     }
     if (push_lead_ && furthest_push_ >= 0 && furthest_push_ < push_lead_->pushes()) {
-      const std::vector<PlannedPush> order = lookahead::runs_of(*lookahead_->lattice, order_steps_);
-      std::vector<std::string> names;
-      for (const auto& body : world_.movable_bodies) names.push_back(body.name);
       end.order_push = furthest_push_ + 1;
       end.order_pushes = push_lead_->pushes();
-      end.order_push_named = planning::describe(order[static_cast<size_t>(furthest_push_)], names);
+      end.unfinished_push = lookahead::runs_of(*lookahead_->lattice, order_steps_)[static_cast<size_t>(furthest_push_)];
     }
     end.expansions_since_progress = expansions_since_progress_;
     end.widened = widened_;

@@ -165,22 +165,20 @@ int fewest_body_steps(const lookahead::PushSearcher& searcher, int stage, const 
 TEST(LookAhead, TheEstimateGivesEachGoalOneBoxAndNeverExceedsTheFewestBodyStepsLeft) {
   const TestProblem p(kWorlds + "nearest_goal_shared.lua");
   ASSERT_TRUE(ahead_of(p).plan.rule.applies) << ahead_of(p).plan.rule.reason;
-  const Searcher searching(p);
-  const lookahead::PushLattice& lattice = searching.lattice;
-  const lookahead::PushSearcher& searcher = searching.searcher;
+  const Searcher on(p);
   const int stage = ahead_of(p).stage;
   const std::vector<int>& start = ahead_of(p).start_cells;
-  EXPECT_EQ(searcher.estimate(stage, start), 5);  // M1 west 1, M2 east 4; not 1 + 2 with both west
-  const int robot = lattice.robot_cell(p.world.robot.start);
-  EXPECT_EQ(fewest_body_steps(searcher, stage, start, robot), 7);  // M1 round M2 to the west goal: 3, M2 east 4
+  EXPECT_EQ(on.searcher.estimate(stage, start), 5);  // M1 west 1, M2 east 4; not 1 + 2 with both west
+  const int robot = on.lattice.robot_cell(p.world.robot.start);
+  EXPECT_EQ(fewest_body_steps(on.searcher, stage, start, robot), 7);  // M1 round M2 to the west goal: 3, M2 east 4
 
   int compared = 0;
-  for (int first = 0; first < lattice.cells(); ++first) {
-    for (int second = 0; second < lattice.cells(); ++second) {
-      if (!lattice.body_fits(0, first) || !lattice.body_fits(1, second) || first == second || robot == first || robot == second) continue;
-      const int exact = fewest_body_steps(searcher, stage, {first, second}, robot);
+  for (int first = 0; first < on.lattice.cells(); ++first) {
+    for (int second = 0; second < on.lattice.cells(); ++second) {
+      if (!on.lattice.body_fits(0, first) || !on.lattice.body_fits(1, second) || first == second || robot == first || robot == second) continue;
+      const int exact = fewest_body_steps(on.searcher, stage, {first, second}, robot);
       if (exact < 0) continue;
-      EXPECT_LE(searcher.estimate(stage, {first, second}), exact) << "places " << first << ", " << second;
+      EXPECT_LE(on.searcher.estimate(stage, {first, second}), exact) << "places " << first << ", " << second;
       ++compared;
     }
   }
@@ -191,14 +189,12 @@ TEST(LookAhead, TheEstimateGivesEachGoalOneBoxAndNeverExceedsTheFewestBodyStepsL
 TEST(LookAhead, PrunesABoxAgainstAWallItsGoalIsNotAlong) {
   const TestProblem p(kPuzzles + "under_the_wall.lua");
   ASSERT_TRUE(ahead_of(p).plan.rule.applies) << ahead_of(p).plan.rule.reason;
-  const Searcher searching(p);
-  const lookahead::PushLattice& lattice = searching.lattice;
-  const lookahead::PushSearcher& searcher = searching.searcher;
+  const Searcher on(p);
   const int box = lattice_body(p, "M1");
-  EXPECT_TRUE(searcher.alive(ahead_of(p).stage, box, ahead_of(p).start_cells[static_cast<std::size_t>(box)]));
-  EXPECT_TRUE(searcher.alive(ahead_of(p).stage, box, lattice.cell_at({2.7, 1.5})));   // the middle of the room
-  EXPECT_FALSE(searcher.alive(ahead_of(p).stage, box, lattice.cell_at({2.7, 0.9})));  // along the bottom wall
-  EXPECT_FALSE(searcher.alive(ahead_of(p).stage, box, lattice.cell_at({0.9, 1.5})));  // along the west wall
+  EXPECT_TRUE(on.searcher.alive(ahead_of(p).stage, box, ahead_of(p).start_cells[static_cast<std::size_t>(box)]));
+  EXPECT_TRUE(on.searcher.alive(ahead_of(p).stage, box, on.lattice.cell_at({2.7, 1.5})));   // the middle of the room
+  EXPECT_FALSE(on.searcher.alive(ahead_of(p).stage, box, on.lattice.cell_at({2.7, 0.9})));  // along the bottom wall
+  EXPECT_FALSE(on.searcher.alive(ahead_of(p).stage, box, on.lattice.cell_at({0.9, 1.5})));  // along the west wall
   ASSERT_TRUE(ahead_of(p).plan.found);
   EXPECT_EQ(ahead_of(p).plan.pushes.size(), 1u);  // straight along the wall
 }
@@ -308,9 +304,17 @@ TEST(PushPrimitive, ASearchStoppedShortNamesThePushOfTheOrderItDidNotCarryOut) {
   EXPECT_EQ(end.order_pushes, 3);
   ASSERT_GE(end.order_push, 1);
   ASSERT_LE(end.order_push, 3);
+  const PlannedPush& planned = ahead_of(p).plan.pushes[static_cast<std::size_t>(end.order_push - 1)];
+  EXPECT_EQ(end.unfinished_push.body, planned.body);
+  EXPECT_EQ(end.unfinished_push.dx, planned.dx);
+  EXPECT_EQ(end.unfinished_push.dy, planned.dy);
+  EXPECT_EQ(end.unfinished_push.cells, planned.cells);
+  // failed/report.json names it as the console does.
   std::vector<std::string> names;
   for (const auto& body : p.world.movable_bodies) names.push_back(body.name);
-  EXPECT_EQ(end.order_push_named, describe(ahead_of(p).plan.pushes[static_cast<std::size_t>(end.order_push - 1)], names));
+  const auto order_push = knowledge_account(*result.own, p.world).diagnosis.at("search_end").at("order_push");
+  EXPECT_EQ(order_push.at("index"), end.order_push);
+  EXPECT_EQ(order_push.at("push"), describe(planned, names));
 }
 
 // The puzzles of docs/benchmarks.md ("Push puzzles"), seed 1: each solved and validated by replay.
