@@ -19,10 +19,13 @@ struct ThreadData {
   ~ThreadData() { dCleanupODEAllDataForThread(); }
 };
 
-// ODE's messages are warnings such as "LCP internal error, s <= 0" when contacts are redundant (a box
-// pressed into a corner): the Dantzig solver recovers, deterministically, and replay validates every
-// plan. Printing them would bury a run's own output, so they are dropped.
-void ignore_message(int, const char*, va_list) {}
+thread_local unsigned long long solver_messages = 0;
+
+// ODE's messages are warnings such as "LCP internal error, s <= 0": the Dantzig solver stopped before it
+// had solved the step's constraints, and ODE integrated the step with the forces it had (docs/physics.md,
+// "Steps the solver fails on"). Printing them would bury a run's own output; they are counted per thread,
+// as each thread steps its own worlds, so that a step can say whether it was solved.
+void count_message(int, const char*, va_list) { ++solver_messages; }
 
 std::atomic<EngineFailureHandler> failure_handler{nullptr};
 
@@ -39,13 +42,15 @@ std::atomic<EngineFailureHandler> failure_handler{nullptr};
 
 }  // namespace
 
+unsigned long long solver_messages_on_this_thread() { return solver_messages; }
+
 void set_engine_failure_handler(EngineFailureHandler handler) { failure_handler.store(handler); }
 
 void ensure_ode_ready_on_this_thread() {
   static std::once_flag once;
   std::call_once(once, [] {
     dInitODE2(0);
-    dSetMessageHandler(ignore_message);
+    dSetMessageHandler(count_message);
     dSetErrorHandler(engine_failed);
     dSetDebugHandler(engine_failed);
   });

@@ -90,6 +90,7 @@ struct Simulation::Impl {
   std::vector<int> movers;      // last step's awake boxes as World indices
   DriveBody drive;
   DriveEffort last_drive;
+  bool last_step_solved = true;
   dJointID wheel_grip = nullptr;  // differential drive only
   dContactGeom contact_buffer[kMaxContactsPerPair];
 
@@ -458,7 +459,9 @@ struct Simulation::Impl {
         if (within_reach(p, radius, g.position, g.bound_radius)) collide(dynamic[i], g, robot_contacts);
       }
     }
+    const unsigned long long messages_before = solver_messages_on_this_thread();
     dWorldStep(ode_world, world.planner.step_size);
+    last_step_solved = solver_messages_on_this_thread() == messages_before;
     dJointGroupEmpty(contact_group);
     for (int i : woken) settle(static_cast<size_t>(i));
     add_overlaps_at_end(robot_contacts);
@@ -564,6 +567,8 @@ void Simulation::step(const Vec2& setpoint, std::vector<scenario::RobotContact>&
 }
 
 const DriveEffort& Simulation::last_drive() const { return impl_->last_drive; }
+
+bool Simulation::last_step_solved() const { return impl_->last_step_solved; }
 
 std::span<const int> Simulation::last_step_movers() const { return impl_->movers; }
 

@@ -145,6 +145,25 @@ TEST(Replay, StartingAfterAReplayedPrefixGivesTheWholeReplay) {
   }
 }
 
+// ODE's solver stops short on some steps of rooms_n's plan (a box pressed between the robot and a wall):
+// the replay names them, after a replayed prefix as from the start (docs/physics.md, "Steps the solver
+// fails on").
+TEST(Replay, NamesTheStepsThePhysicsSolverDidNotSolveFromTheStartAndAfterAPrefix) {
+  const TestProblem p("rooms_n.lua");
+  const PlanResult result = p.solve(1);
+  ASSERT_TRUE(result.solved) << result.stop_reason;
+  const Replay whole = p.check(result.plan);
+  ASSERT_TRUE(whole.validated()) << whole.failure;
+  EXPECT_FALSE(whole.unsolved_steps.empty());
+  for (std::size_t step : whole.unsolved_steps) {
+    EXPECT_GT(step, 0u);
+    EXPECT_LT(step, whole.states.size());
+  }
+  const ReplayedPrefix prefix{whole, result.plan.controls.size() / 2};
+  const Replay r = replay(p.world, result.plan, p.original, p.knowledge, {.prefix = &prefix});
+  EXPECT_EQ(r.unsolved_steps, whole.unsolved_steps);
+}
+
 TEST(Replay, AControlAskingForMoreThanTheRobotsLimitsIsNamed) {
   const TestProblem p("rooms_differential.lua");
   EXPECT_EQ(control_out_of_bounds(p.world, {{1.0, 1.5}, 5}), "");

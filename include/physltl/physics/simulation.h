@@ -90,6 +90,10 @@ class Simulation {
   void step(const Vec2& setpoint, std::vector<scenario::RobotContact>& contacts);
   // What the drive applied during the last step (zero before the first).
   const DriveEffort& last_drive() const;
+  // Whether ODE's constraint solver solved the last step. When it stops short ("LCP internal error"), ODE
+  // integrates the step with the forces it had: often what the contacts would do, sometimes a robot
+  // passing into a box (docs/physics.md, "Steps the solver fails on").
+  bool last_step_solved() const;
 
   void read_environment(scenario::EnvironmentState& out) const;  // reuses out's storage
   // The movable bodies (World indices, ascending) the last step integrated: every other one kept its

@@ -106,8 +106,10 @@ void say_solution(const planning::ValidatedPlan& solution, const scenario::World
                     improved->stopped.empty() ? "" : " (cut short: " + improved->stopped + ")"));
   }
   const planning::Plan& plan = solution.result.plan;
-  say(fmt::format("plan       {} controls, {:.1f} s of motion, {} pushes, validated by replay", plan.controls.size(),
-                  plan.total_steps() * world.planner.step_size, solution.replay->pushes));
+  const std::size_t unsolved = solution.replay->unsolved_steps.size();
+  say(fmt::format("plan       {} controls, {:.1f} s of motion, {} pushes, validated by replay{}", plan.controls.size(),
+                  plan.total_steps() * world.planner.step_size, solution.replay->pushes,
+                  unsolved == 0 ? "" : fmt::format(" ({} steps the physics solver did not solve: docs/physics.md)", unsolved)));
 }
 
 // --render: tree.png, the frames and plan.mp4.

@@ -57,6 +57,7 @@ json report_json(const RunSummary& run) {
         {"within_limits", run.replay->within_limits},
         {"ends_at_rest", run.replay->ends_at_rest},
         {"peak_speed", run.replay->peak_speed},
+        {"unsolved_steps", run.replay->unsolved_steps.size()},
         {"failure", run.replay->failure.empty() ? json(nullptr) : json(run.replay->failure)},
     };
     if (run.robustness != nullptr) report["robustness"] = robustness_json(*run.robustness, *run.uncertainty);

@@ -105,6 +105,9 @@ class Replayer {
     r_.facts_trace.assign(done.facts_trace.begin(), done.facts_trace.begin() + end);
     r_.automaton_trace.assign(done.automaton_trace.begin(), done.automaton_trace.begin() + end);
     r_.pushing.assign(done.pushing.begin(), done.pushing.begin() + end);
+    for (std::size_t step : done.unsolved_steps) {
+      if (step < static_cast<std::size_t>(end)) r_.unsolved_steps.push_back(step);
+    }
     for (size_t i = 1; i < r_.states.size(); ++i) r_.peak_speed = std::max(r_.peak_speed, r_.states[i].robot_velocity.norm());
     kappa_ = knowledge::infer(knowledge_, r_.states.back());
     simulation_.restore(plan_.states[prefix.controls - 1]);
@@ -141,6 +144,7 @@ class Replayer {
     const auto& state = r_.states.back();
     const size_t step = r_.states.size() - 1;
     r_.peak_speed = std::max(r_.peak_speed, state.robot_velocity.norm());
+    if (!simulation_.last_step_solved()) r_.unsolved_steps.push_back(step);
     const double force_bound = world_.robot.max_force * (1.0 + 1e-9);  // rounding of the norm only
     if (simulation_.last_drive().force.norm() > force_bound) {
       fail(r_.within_limits, fmt::format("step {} (control {}): drive force above max_force", step, c));

@@ -42,6 +42,9 @@ struct Replay {
   // never applied more than max_force, and at every step the robot kept max_speed (and max_turn_rate).
   bool within_limits = false;
   double peak_speed = 0.0;       // m/s, the robot's fastest step
+  // The steps (indices into `states`, of the step into that state) whose constraints ODE's solver did not
+  // solve (physics::Simulation::last_step_solved): reported, not refused (docs/physics.md).
+  std::vector<std::size_t> unsolved_steps;
   std::string failure;           // why not, for people; empty when validated
   // "time limit" or "interrupted" when ReplayOptions::deadline stopped the replay before the plan's end:
   // nothing is known of the rest, so the plan is not validated.
