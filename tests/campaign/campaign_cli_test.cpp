@@ -32,7 +32,7 @@ nlohmann::json untimed(const nlohmann::json& bench) {
     for (const auto& run : planner["per_run"]) {
       nlohmann::json fields = {{"planner", planner["name"]}};
       for (const char* key : {"seed", "solved", "stop_reason", "pushes", "bodies_moved", "solution_duration_s",
-                              "path_length_m", "tree_nodes", "propagations", "physics_steps", "controls"}) {
+                              "path_length_m", "unsolved_steps", "tree_nodes", "propagations", "physics_steps", "controls"}) {
         if (run.contains(key)) fields[key] = run[key];
       }
       runs.push_back(std::move(fields));

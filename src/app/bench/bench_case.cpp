@@ -143,6 +143,7 @@ BenchRun measure(const planning::PlanningProblem& problem, const planning::Plann
     run.controls = static_cast<int>(result.plan.controls.size());
     run.pushes = solution.replay->pushes;
     run.bodies_moved = static_cast<int>(solution.replay->moved_bodies.size());
+    run.unsolved_steps = static_cast<int>(solution.replay->unsolved_steps.size());
     run.solution_duration_s = result.plan.total_steps() * problem.world().planner.step_size;
     run.path_length_m = planning::measure(problem.world(), result.plan, *solution.replay).path_length_m;
     run.first_pushes = solution.improvement ? solution.improvement->first.pushes : run.pushes;

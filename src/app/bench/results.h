@@ -27,6 +27,9 @@ struct BenchRun {
   double solution_duration_s = 0.0;  // of the plan bench ends with (improved, with --improve)
   double path_length_m = 0.0;        // of the same plan: the robot's centre, step by step
   int first_pushes = 0;              // of the first validated plan
+  // Of the plan bench ends with: steps ODE's solver did not solve (docs/physics.md, "Steps the solver
+  // fails on").
+  int unsolved_steps = 0;
   double first_duration_s = 0.0;
   long long cell_skips_refused = 0;  // OMPL's planners (PlannerStats)
   // Refused steps by rule, every rule of the program's planners (planner_views.h refusal_counts).

@@ -28,6 +28,7 @@ nlohmann::ordered_json to_json(const UnitRecord& record) {
           {"path_length_m", run.path_length_m},
           {"first_pushes", run.first_pushes},
           {"first_duration_s", run.first_duration_s},
+          {"unsolved_steps", run.unsolved_steps},
           {"cell_skips_refused", run.cell_skips_refused},
           {"refused", [&] {
              std::vector<long long> counts;
@@ -64,6 +65,8 @@ BenchRun run_from_json(const JsonFields& json) {
   run.path_length_m = json.number("path_length_m", 0.0, 1e12);
   run.first_pushes = static_cast<int>(json.whole("first_pushes", 0, kMaxSmallCount));
   run.first_duration_s = json.number("first_duration_s", 0.0, kMaxSeconds);
+  // Results of builds before the solver's failures were counted have none.
+  run.unsolved_steps = json.has("unsolved_steps") ? static_cast<int>(json.whole("unsolved_steps", 0, kMaxSmallCount)) : 0;
   run.cell_skips_refused = json.whole("cell_skips_refused", 0, kMaxCount);
   // Results of builds before the refusals were counted have none.
   run.refused = named_refusals(registry(), json.has("refused") ? json.wholes("refused", 0, kMaxCount) : std::vector<long long>{});

@@ -137,6 +137,7 @@ json bench_json(const BenchResults& r) {
         entry["first_duration_s"] = run.first_duration_s;
         entry["solution_duration_s"] = run.solution_duration_s;
         entry["path_length_m"] = run.path_length_m;
+        entry["unsolved_steps"] = run.unsolved_steps;
         if (run.robust_worlds > 0) {
           entry["robustness"] = {{"worlds", run.robust_worlds},
                                  {"succeeded", run.robust_succeeded},
