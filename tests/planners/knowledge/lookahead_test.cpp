@@ -259,6 +259,32 @@ TEST(LookAhead, PrunesABodyFrozenAgainstAWallAndABodyThatCannotMove) {
   for (const PlannedPush& push : ahead_of(p).plan.pushes) EXPECT_NE(push.dx, 1) << "an order never pushes M1 east";
 }
 
+// corral: M1 pushed down into the door closes the lower room off from the robot with M2 in it, an
+// arrangement no push resolves though no box in it is frozen or on a dead place: the corral test prunes
+// it.
+TEST(LookAhead, PrunesACorralWhoseBoxesCannotAllGetWhereTheTaskWantsThemWithoutTheRobotInside) {
+  const TestProblem p(kWorlds + "corral.lua");
+  ASSERT_TRUE(ahead_of(p).plan.rule.applies) << ahead_of(p).plan.rule.reason;
+  const Searcher on(p);
+  const int m1 = lattice_body(p, "M1"), m2 = lattice_body(p, "M2");
+  const int stage = ahead_of(p).stage;
+  std::vector<int> cells = ahead_of(p).start_cells;
+  const int above_door = cells[static_cast<std::size_t>(m1)];
+  const int robot = on.lattice.robot_cell(p.world.robot.start);
+  EXPECT_FALSE(on.searcher.corralled(stage, cells, robot));
+  cells[static_cast<std::size_t>(m1)] = on.lattice.neighbour(above_door, 3);  // pushed down into the door
+  EXPECT_TRUE(on.searcher.corralled(stage, cells, above_door));
+  for (const int k : {m1, m2}) {
+    EXPECT_FALSE(on.searcher.frozen_apart(stage, cells, k)) << k;
+    EXPECT_TRUE(on.searcher.alive(stage, k, cells[static_cast<std::size_t>(k)])) << k;
+  }
+  // M1 pushed west instead opens the door: no corral.
+  cells[static_cast<std::size_t>(m1)] = on.lattice.neighbour(above_door, 1);
+  EXPECT_FALSE(on.searcher.corralled(stage, cells, above_door));
+  ASSERT_TRUE(ahead_of(p).plan.found);
+  for (const PlannedPush& push : ahead_of(p).plan.pushes) EXPECT_NE(push.dy, -1) << "an order never pushes a box down";
+}
+
 // The push primitive (push_plan_lead.h, steer) carries the look-ahead's order out control by control:
 // on a puzzle of three pushes it needs a fraction of the propagations the sampled controls need, and
 // what it grows passes the replay.

@@ -6,8 +6,10 @@
 #include <memory>
 #include <limits>
 #include <queue>
+#include <tuple>
 #include <set>
 #include <memory_resource>
+#include <unordered_map>
 #include <unordered_set>
 
 namespace physltl::planning::lookahead {
@@ -251,6 +253,217 @@ class FreezeTest {
   std::vector<int> looked_at_;  // places of the bodies looked at, frozen so far
 };
 
+// A corral: places the robot cannot walk to, closed off by bodies, and the bodies on its edge. Every other
+// body taken off the lattice only frees places, so when the corral's bodies alone cannot all be pushed to
+// where the task wants them, neither can they with the others there: the arrangement is a deadlock,
+// though no body in it is frozen (the robot could push them, from inside the corral). The search over the
+// corral's bodies allows every push the arrangement search makes (a line of them pushed one place
+// included) and leaves out its stage and pruning rules, so it finds a way wherever that one could. It
+// looks for an arrangement with every corral body where the task wants it (an order ends on one, all at
+// once) or with the robot able to walk into the corral (no corral any more: searching on from there cost
+// more than it pruned, docs/planner.md); it decides only when it settles every arrangement of those
+// bodies, within kCorralArrangements, without one.
+struct PlacesHash {
+  std::size_t operator()(const std::vector<int>& places) const {
+    std::size_t h = places.size();
+    for (int p : places) h = h * 1'000'003 ^ static_cast<std::size_t>(p);
+    return h;
+  }
+};
+
+class CorralTest {
+ public:
+  static constexpr int kCorralArrangements = 64;
+  static constexpr std::size_t kMaxCorralBodies = 5;
+
+  // Verdicts of earlier tests, by the corral's bodies, their places and the robot's place: the same corral
+  // comes back in many arrangements that differ elsewhere.
+  using Verdicts = std::unordered_map<std::vector<int>, bool, PlacesHash>;
+
+  // `cells`: per lattice body, its place (held in `holder`); `reach`: the places the robot can walk to,
+  // marked `reached`.
+  CorralTest(const PushLattice& lattice, const PushSearcher::Goals& goals, const std::vector<int>& holder,
+             const std::vector<int>& cells, const std::vector<int>& reach, int reached, Verdicts& verdicts)
+      : verdicts_(verdicts),
+        lattice_(lattice),
+        goals_(goals),
+        holder_(holder),
+        cells_(cells),
+        reach_(reach),
+        reached_(reached),
+        seen_(static_cast<std::size_t>(lattice.cells()), -1) {}
+
+  // Whether the corrals holding the places `seeds` (where the robot on `robot_cell` cannot walk) make the
+  // arrangement a deadlock. Only a corral the robot can change from outside by pushing its bodies in
+  // (every push from where it can walk moves a body into the corral) is searched: the robot can push
+  // the other corrals' bodies out, which the arrangement search tries anyway.
+  bool deadlocked(int robot_cell, const std::vector<int>& seeds) {
+    const std::vector<int> bodies = corral_bodies(seeds);
+    if (bodies.empty() || bodies.size() > kMaxCorralBodies) return false;
+    std::vector<int> cells;
+    for (int k : bodies) cells.push_back(cells_[static_cast<std::size_t>(k)]);
+    if (placed(bodies, cells) || pushes_out(bodies)) return false;
+    std::vector<int> key = bodies;
+    key.insert(key.end(), cells.begin(), cells.end());
+    key.push_back(robot_cell);
+    const auto known = verdicts_.find(key);
+    if (known != verdicts_.end()) return known->second;
+    const bool dead = !way_out(bodies, cells, robot_cell);
+    verdicts_.emplace(std::move(key), dead);
+    return dead;
+  }
+
+ private:
+  // Whether the robot, from where it can walk, can push a corral body to a place outside the corral.
+  bool pushes_out(const std::vector<int>& bodies) const {
+    for (int k : bodies) {
+      const int at = cells_[static_cast<std::size_t>(k)];
+      for (int d = 0; d < kDirections; ++d) {
+        const int stand = lattice_.neighbour(at, opposite(d));
+        const int to = lattice_.neighbour(at, d);
+        if (stand < 0 || to < 0 || reach_[static_cast<std::size_t>(stand)] != reached_ || !lattice_.can_push(k, d)) continue;
+        if (holder_[static_cast<std::size_t>(to)] >= 0 || !lattice_.body_fits(k, to) || goals_.left(k, to) == kNever) continue;
+        if (seen_[static_cast<std::size_t>(to)] != corral_) return true;
+      }
+    }
+    return false;
+  }
+
+  // The bodies next to the places the robot cannot walk to from `seeds` on, in lattice order.
+  std::vector<int> corral_bodies(const std::vector<int>& seeds) {
+    std::vector<int> queue, bodies;
+    const int mark = corral_ = mark_++;
+    for (int c : seeds) {
+      if (seen_[static_cast<std::size_t>(c)] != mark) seen_[static_cast<std::size_t>(c)] = mark, queue.push_back(c);
+    }
+    for (std::size_t i = 0; i < queue.size(); ++i) {
+      const int c = queue[i];
+      for (int d = 0; d < kDirections; ++d) {
+        const int next = lattice_.neighbour(c, d);
+        if (next < 0) continue;
+        const int k = holder_[static_cast<std::size_t>(next)];
+        if (k >= 0) {
+          if (std::find(bodies.begin(), bodies.end(), k) == bodies.end()) bodies.push_back(k);
+        } else if (lattice_.robot_passes(c, d) && seen_[static_cast<std::size_t>(next)] != mark) {
+          seen_[static_cast<std::size_t>(next)] = mark;
+          queue.push_back(next);
+          if (queue.size() > static_cast<std::size_t>(lattice_.cells())) return {};
+        }
+      }
+    }
+    std::sort(bodies.begin(), bodies.end());
+    corral_places_ = std::move(queue);
+    return bodies;
+  }
+
+  bool placed(const std::vector<int>& bodies, const std::vector<int>& cells) const {
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      if (goals_.left(bodies[i], cells[i]) != 0) return false;
+    }
+    return true;
+  }
+
+  // Breadth first over the arrangements of `bodies` alone on the lattice, from `cells` with the robot on
+  // `robot_cell`: whether one has every body where the task wants it or the robot in the corral (or the
+  // budget ran out first).
+  bool way_out(const std::vector<int>& bodies, const std::vector<int>& cells, int robot_cell) {
+    std::vector<int> holder(static_cast<std::size_t>(lattice_.cells()), -1), queue;
+    std::set<std::vector<int>> met;
+    // An arrangement met, with whether the robot can walk behind each body for each direction (body i,
+    // direction d at i * kDirections + d), found by the walk that told it apart.
+    struct Met {
+      std::vector<int> cells;
+      std::vector<bool> stands;
+    };
+    std::deque<Met> open;
+    const auto meet = [&](const std::vector<int>& at, int robot) {
+      for (std::size_t i = 0; i < at.size(); ++i) holder[static_cast<std::size_t>(at[i])] = static_cast<int>(i);
+      const int reach = mark_++;
+      std::vector<int> key = at;
+      key.push_back(walk(lattice_, robot, holder, seen_, reach, queue));
+      for (int c : at) holder[static_cast<std::size_t>(c)] = -1;
+      if (!met.insert(std::move(key)).second) return false;
+      // The robot walks into the corral: it is a corral no more, and what happens in it is the
+      // arrangement search's to find.
+      for (int c : corral_places_) {
+        if (seen_[static_cast<std::size_t>(c)] == reach) return true;
+      }
+      Met entry{at, std::vector<bool>(at.size() * kDirections, false)};
+      for (std::size_t i = 0; i < at.size(); ++i) {
+        for (int d = 0; d < kDirections; ++d) {
+          const int stand = lattice_.neighbour(at[i], opposite(d));
+          entry.stands[i * kDirections + static_cast<std::size_t>(d)] = stand >= 0 && seen_[static_cast<std::size_t>(stand)] == reach;
+        }
+      }
+      open.push_back(std::move(entry));
+      return false;
+    };
+    if (meet(cells, robot_cell)) return true;
+    while (!open.empty()) {
+      if (static_cast<int>(met.size()) > kCorralArrangements) return true;
+      const Met from = std::move(open.front());
+      open.pop_front();
+      for (std::size_t i = 0; i < from.cells.size(); ++i) holder[static_cast<std::size_t>(from.cells[i])] = static_cast<int>(i);
+      std::vector<std::pair<std::vector<int>, int>> pushed;  // the arrangement, and the robot where the body was
+      for (std::size_t i = 0; i < from.cells.size(); ++i) {
+        for (int d = 0; d < kDirections; ++d) {
+          std::vector<int> next = from.cells;
+          if (from.stands[i * kDirections + static_cast<std::size_t>(d)] && push(bodies, holder, next, static_cast<int>(i), d)) {
+            pushed.emplace_back(std::move(next), from.cells[i]);
+          }
+        }
+      }
+      for (int c : from.cells) holder[static_cast<std::size_t>(c)] = -1;
+      for (auto& [next, robot] : pushed) {
+        if (placed(bodies, next) || meet(next, robot)) return true;
+      }
+    }
+    return false;
+  }
+
+  // Body i of `cells` pushed one place in direction d, with the bodies in a line ahead of it, by a robot
+  // behind it: into `cells`, or false.
+  bool push(const std::vector<int>& bodies, const std::vector<int>& holder, std::vector<int>& cells, int i, int d) const {
+    const int at = cells[static_cast<std::size_t>(i)];
+    std::vector<int> line{i};
+    for (int c = lattice_.neighbour(at, d); c >= 0 && holder[static_cast<std::size_t>(c)] >= 0; c = lattice_.neighbour(c, d)) {
+      line.push_back(holder[static_cast<std::size_t>(c)]);
+    }
+    for (int j : line) {
+      const int body = bodies[static_cast<std::size_t>(j)];
+      const int to = lattice_.neighbour(cells[static_cast<std::size_t>(j)], d);
+      if (!lattice_.can_push(body, d) || to < 0 || !lattice_.body_fits(body, to)) return false;
+      cells[static_cast<std::size_t>(j)] = to;
+    }
+    return line.size() > 1 || goals_.left(bodies[static_cast<std::size_t>(i)], cells[static_cast<std::size_t>(i)]) != kNever;
+  }
+
+  Verdicts& verdicts_;
+  const PushLattice& lattice_;
+  const PushSearcher::Goals& goals_;
+  const std::vector<int>& holder_;
+  const std::vector<int>& cells_;  // per lattice body, its place
+  const std::vector<int>& reach_;
+  int reached_;
+  std::vector<int> seen_;
+  int mark_ = 0;
+  int corral_ = -1;  // the mark of the corral's places in seen_
+  std::vector<int> corral_places_;
+};
+
+bool PushSearcher::corralled(int stage, const std::vector<int>& cells, int robot_cell) const {
+  std::vector<int> holder(static_cast<std::size_t>(lattice_.cells()), -1), seen(holder.size(), -1), queue;
+  for (std::size_t j = 0; j < cells.size(); ++j) holder[static_cast<std::size_t>(cells[j])] = static_cast<int>(j);
+  walk(lattice_, robot_cell, holder, seen, 0, queue);
+  std::vector<int> seeds;
+  for (int c = 0; c < lattice_.cells(); ++c) {
+    if (holder[static_cast<std::size_t>(c)] < 0 && lattice_.robot_fits(c) && seen[static_cast<std::size_t>(c)] != 0) seeds.push_back(c);
+  }
+  const Goals goals = goals_from(stage);
+  CorralTest::Verdicts verdicts;
+  return CorralTest(lattice_, goals, holder, cells, seen, 0, verdicts).deadlocked(robot_cell, seeds);
+}
+
 bool PushSearcher::frozen_apart(int stage, const std::vector<int>& cells, int k) const {
   std::vector<int> holder(static_cast<std::size_t>(lattice_.cells()), -1);
   for (std::size_t j = 0; j < cells.size(); ++j) holder[static_cast<std::size_t>(cells[j])] = static_cast<int>(j);
@@ -343,12 +556,27 @@ class ArrangementSearch {
     if (stages_.distance(next_stage) < 0 || stages_.dead(stages_.automaton_state_of(next_stage))) return -1;
     holder_[static_cast<std::size_t>(at)] = -1;
     holder_[static_cast<std::size_t>(to)] = k;
-    const bool frozen = searcher_.square_frozen(goals_, next, holder_, to) || FreezeTest(lattice_, goals_, holder_).deadlocked(to);
-    const int robot = frozen ? 0 : walk(lattice_, at, holder_, seen_after_, mark_++, queue_);
+    bool dead = searcher_.square_frozen(goals_, next, holder_, to) || FreezeTest(lattice_, goals_, holder_).deadlocked(to);
+    const int robot = dead ? 0 : walk(lattice_, at, holder_, seen_after_, mark_, queue_);
+    if (!dead) dead = corralled(next, to, at);
+    ++mark_;
     holder_[static_cast<std::size_t>(to)] = -1;
     holder_[static_cast<std::size_t>(at)] = k;
-    if (frozen) return -1;
+    if (dead) return -1;
     return add({robot, next_stage, index, {k, d, at, to, {}}, node.cost + 1}, next);
+  }
+
+  // After a push onto `to` (holder_ and seen_after_ marked mark_ as it leaves them, the robot on `robot_cell`):
+  // whether the places it closed off from the robot make a corral deadlock (CorralTest).
+  bool corralled(const std::vector<int>& cells, int to, int robot_cell) {
+    std::vector<int> seeds;
+    for (int d = 0; d < kDirections; ++d) {
+      const int c = lattice_.neighbour(to, d);
+      if (c >= 0 && holder_[static_cast<std::size_t>(c)] < 0 && lattice_.robot_fits(c) && seen_after_[static_cast<std::size_t>(c)] != mark_) {
+        seeds.push_back(c);
+      }
+    }
+    return !seeds.empty() && CorralTest(lattice_, goals_, holder_, cells, seen_after_, mark_, corral_verdicts_).deadlocked(robot_cell, seeds);
   }
 
   // Body k of `node` pushed in direction d with the bodies in a line ahead of it, end to end, as many
@@ -446,6 +674,7 @@ class ArrangementSearch {
   std::vector<int> seen_after_;  // and after it
   std::vector<int> queue_;
   int mark_ = 0;
+  CorralTest::Verdicts corral_verdicts_;
   std::size_t bodies_;
   // Node n and its places (block n / kArrangementsPerBlock, from (n % kArrangementsPerBlock) * bodies_ on),
   // in storage that grows without moving what it holds: a vector of millions of them, copied whole as it

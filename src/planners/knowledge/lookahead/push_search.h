@@ -10,7 +10,8 @@
 // four places in a square all held by walls or bodies, no two bodies side by side, one of them a body
 // not yet where the task needs it (none of them can move again), and more generally a body pushed where
 // it can be pushed along neither axis again, held so by walls, dead places or bodies that are themselves
-// held so (frozen), with one of those bodies not where the task needs it.
+// held so (frozen), with one of those bodies not where the task needs it; and places the robot cannot walk
+// to, closed off by bodies that cannot all get where the task needs them without it (a corral deadlock).
 
 #include "push_lattice.h"
 #include "physltl/base/deadline.h"
@@ -73,10 +74,14 @@ class PushSearcher {
   // Whether body k on cells[k] can be pushed along neither axis again, nor can a body that holds it so,
   // and one of them is not where the task wants it from `stage` (FreezeTest in push_search.cpp).
   bool frozen_apart(int stage, const std::vector<int>& cells, int k) const;
+  // Whether places the robot on `robot_cell` cannot walk to make a corral whose bodies, alone on the
+  // lattice, cannot all get where the task wants them (CorralTest in push_search.cpp).
+  bool corralled(int stage, const std::vector<int>& cells, int robot_cell) const;
 
  private:
   friend class ArrangementSearch;
   friend class FreezeTest;
+  friend class CorralTest;
   // Per lattice body, per place: the fewest pushes of that body alone to where the task wants it from a
   // stage (kNever where it can get there no more); no table for a body the task leaves free.
   struct Goals {
