@@ -50,6 +50,12 @@ int walk(const PushLattice& lattice, int from, const std::vector<int>& holder, s
   return smallest;
 }
 
+// `seed` with `n` places from `first` mixed in: the hash of an arrangement's places.
+std::size_t mix_places(std::size_t seed, const int* first, std::size_t n) {
+  for (std::size_t k = 0; k < n; ++k) seed = seed * 1'000'003 ^ static_cast<std::size_t>(first[k]);
+  return seed;
+}
+
 }  // namespace
 
 PushSearcher::PushSearcher(const PushLattice& lattice, const StageGraph& stages, const knowledge::Labelling& labelling)
@@ -264,11 +270,7 @@ class FreezeTest {
 // more than it pruned, docs/planner.md); it decides only when it settles every arrangement of those
 // bodies, within kCorralArrangements, without one.
 struct PlacesHash {
-  std::size_t operator()(const std::vector<int>& places) const {
-    std::size_t h = places.size();
-    for (int p : places) h = h * 1'000'003 ^ static_cast<std::size_t>(p);
-    return h;
-  }
+  std::size_t operator()(const std::vector<int>& places) const { return mix_places(places.size(), places.data(), places.size()); }
 };
 
 class CorralTest {
@@ -347,7 +349,6 @@ class CorralTest {
         } else if (lattice_.robot_passes(c, d) && seen_[static_cast<std::size_t>(next)] != mark) {
           seen_[static_cast<std::size_t>(next)] = mark;
           queue.push_back(next);
-          if (queue.size() > static_cast<std::size_t>(lattice_.cells())) return {};
         }
       }
     }
@@ -647,10 +648,8 @@ class ArrangementSearch {
     const ArrangementSearch* search;
     std::size_t operator()(int n) const {
       const Node& node = search->nodes_[static_cast<std::size_t>(n)];
-      std::size_t h = std::hash<long long>{}((static_cast<long long>(node.robot) << 32) ^ node.stage);
-      const int* cells = search->places(n);
-      for (std::size_t k = 0; k < search->bodies_; ++k) h = h * 1'000'003 ^ static_cast<std::size_t>(cells[k]);
-      return h;
+      const std::size_t h = std::hash<long long>{}((static_cast<long long>(node.robot) << 32) ^ node.stage);
+      return mix_places(h, search->places(n), search->bodies_);
     }
   };
   struct KeyEqual {

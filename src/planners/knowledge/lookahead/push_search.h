@@ -75,7 +75,8 @@ class PushSearcher {
   // and one of them is not where the task wants it from `stage` (FreezeTest in push_search.cpp).
   bool frozen_apart(int stage, const std::vector<int>& cells, int k) const;
   // Whether places the robot on `robot_cell` cannot walk to make a corral whose bodies, alone on the
-  // lattice, cannot all get where the task wants them (CorralTest in push_search.cpp).
+  // lattice, can neither all get where the task wants them nor let the robot in (CorralTest in
+  // push_search.cpp).
   bool corralled(int stage, const std::vector<int>& cells, int robot_cell) const;
 
  private:
