@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <memory>
 #include <optional>
 
 namespace physltl::knowledge {
@@ -188,47 +190,81 @@ class Explainer {
   std::optional<ConfigurationSpace> probe_;
 };
 
-// The verdict on BODY@REGION. The body's centre moves as a disc of its inscribed radius would at least:
-// wherever the body's centre can be, that disc fits too, so if the disc cannot get in, the body cannot.
-ObjectVerdict judge(const AbstractKnowledge& k, const ObjectProposition& object) {
-  const MovableBodyKnowledge& body = k.movable_bodies[static_cast<size_t>(object.body)];
-  const Proposition& region = k.propositions[static_cast<size_t>(object.region)];
-  ObjectVerdict verdict{object.name, body.name, region.name, true, false, ""};
-  const bool starts_inside = region.region.contains(body.footprint.pose.position);
-  if (body.body_class == BodyClass::kFixed) {
-    verdict.reachable = starts_inside;
-    verdict.always_true = starts_inside;
-    verdict.reason = starts_inside ? fmt::format("{}: always true: {} stands in {} and is {}", object.name, body.name,
-                                                 region.name, body.class_reason)
-                                   : fmt::format("{}: {} is {}", object.name, body.name, body.class_reason);
+// The verdicts on object propositions. A body's centre moves as a disc of its inscribed radius would at
+// least: wherever the body's centre can be, that disc fits too, so if the disc cannot get in, the body
+// cannot. The discs' fields are shared by the bodies of one size and the propositions of one region set
+// (a group of twenty boxes asks for one).
+class ObjectJudge {
+ public:
+  explicit ObjectJudge(const AbstractKnowledge& k) : k_(k) {}
+
+  // The verdict, and in `why` the kind of unreachability when it is unreachable.
+  ObjectVerdict judge(const ObjectProposition& object, Unreachability& why) {
+    ObjectVerdict verdict{object.name, "", "", object.bodies, object.regions, true, true, ""};
+    const std::size_t at = object.name.find('@');
+    verdict.body = object.name.substr(0, at), verdict.region = object.name.substr(at + 1);
+    std::string standing;  // the bodies that cannot move, inside
+    for (int b : object.bodies) {
+      const MovableBodyKnowledge& body = k_.movable_bodies[static_cast<size_t>(b)];
+      const bool fixed = body.body_class == BodyClass::kFixed;
+      const bool inside = starts_inside(body, object.regions);
+      verdict.always_true = verdict.always_true && fixed && inside;
+      if (fixed && inside) standing += (standing.empty() ? "" : ", ") + body.name;
+      if (inside || !verdict.reachable) continue;
+      if (fixed) {
+        verdict.reachable = false, why = Unreachability::kBodyCannotMove;
+        verdict.reason = fmt::format("{}: {} is {}", object.name, body.name, body.class_reason);
+      } else if (const double inscribed = body.footprint.shape.centre_clearance();
+                 !field(inscribed, object.regions).reaches_target(body.footprint.pose.position)) {
+        verdict.reachable = false, why = Unreachability::kBodyCannotGetThere;
+        const std::string unpushable = unpushable_names(k_);
+        verdict.reason = fmt::format("{}: no way for the centre of {} into {}: every way in is narrower than {} ({:.2f} m "
+                                     "across) among the fixed bodies{}",
+                                     object.name, body.name, verdict.region, body.name, 2 * inscribed,
+                                     unpushable.empty() ? "" : ", the bodies too heavy to push (" + unpushable + ")");
+      }
+    }
+    if (verdict.always_true) {
+      const MovableBodyKnowledge& first = k_.movable_bodies[static_cast<size_t>(object.bodies.front())];
+      verdict.reason = object.bodies.size() == 1
+                           ? fmt::format("{}: always true: {} stands in {} and is {}", object.name, first.name, verdict.region, first.class_reason)
+                           : fmt::format("{}: always true: {} stand in {} and none of them can be pushed", object.name, standing, verdict.region);
+    }
     return verdict;
   }
-  if (starts_inside) return verdict;
-  std::vector<geometry::Footprint> obstacles = blocking_footprints(k, false);
-  for (size_t b = 0; b < k.movable_bodies.size(); ++b) {
-    if (static_cast<int>(b) != object.body && k.movable_bodies[b].body_class == BodyClass::kFixed) {
-      obstacles.push_back(k.movable_bodies[b].footprint);
+
+ private:
+  bool starts_inside(const MovableBodyKnowledge& body, const std::vector<int>& regions) const {
+    return std::any_of(regions.begin(), regions.end(), [&](int r) {
+      return k_.propositions[static_cast<size_t>(r)].region.contains(body.footprint.pose.position);
+    });
+  }
+
+  // The field of a disc of radius `inscribed` towards `regions`, among what cannot move (the bodies too
+  // heavy to push included: none of them is a body being judged, which can move).
+  const geometry::DiscField& field(double inscribed, const std::vector<int>& regions) {
+    auto& known = fields_[{inscribed, regions}];
+    if (known) return *known;
+    std::vector<geometry::Footprint> obstacles = blocking_footprints(k_, false);
+    for (const auto& other : k_.movable_bodies) {
+      if (other.body_class == BodyClass::kFixed) obstacles.push_back(other.footprint);
     }
+    const Vec2 size = k_.workspace.size();
+    // Fine enough that the margin the soundness costs (half a cell diagonal) is a few centimetres; a
+    // million cells at most.
+    const double cell = std::max(std::clamp(inscribed / 10.0, 0.01, 0.05), std::sqrt(size.x() * size.y() / 1e6));
+    known = std::make_unique<geometry::DiscField>(k_.workspace, std::min(cell, inscribed), inscribed, obstacles);
+    known->compute_distances([&](const Vec2& centre, double half_edge) {
+      return std::any_of(regions.begin(), regions.end(), [&](int r) {
+        return geometry::distance(centre, k_.propositions[static_cast<size_t>(r)].region) <= half_edge * std::sqrt(2.0);
+      });
+    });
+    return *known;
   }
-  const double inscribed = body.footprint.shape.centre_clearance();
-  const Vec2 size = k.workspace.size();
-  // Fine enough that the margin the soundness costs (half a cell diagonal) is a few centimetres; a
-  // million cells at most.
-  const double cell = std::max(std::clamp(inscribed / 10.0, 0.01, 0.05), std::sqrt(size.x() * size.y() / 1e6));
-  geometry::DiscField field(k.workspace, std::min(cell, inscribed), inscribed, obstacles);
-  field.compute_distances([&](const Vec2& centre, double half_edge) {
-    return geometry::distance(centre, region.region) <= half_edge * std::sqrt(2.0);
-  });
-  if (!field.reaches_target(body.footprint.pose.position)) {
-    verdict.reachable = false;
-    const std::string unpushable = unpushable_names(k);
-    verdict.reason = fmt::format("{}: no way for the centre of {} into {}: every way in is narrower than {} ({:.2f} m "
-                                 "across) among the fixed bodies{}",
-                                 object.name, body.name, region.name, body.name, 2 * inscribed,
-                                 unpushable.empty() ? "" : ", the bodies too heavy to push (" + unpushable + ")");
-  }
-  return verdict;
-}
+
+  const AbstractKnowledge& k_;
+  std::map<std::pair<double, std::vector<int>>, std::unique_ptr<geometry::DiscField>> fields_;
+};
 
 }  // namespace
 
@@ -270,13 +306,13 @@ Feasibility evaluate_feasibility(const AbstractKnowledge& knowledge, std::span<c
   for (const Proposition& p : knowledge.propositions) {
     if (!reaches(grid, robot_space, p.region)) result.invalid.push_back(explainer.explain(p));
   }
+  ObjectJudge judge(knowledge);
   for (const ObjectProposition& object : objects) {
-    result.objects.push_back(judge(knowledge, object));
+    Unreachability why = Unreachability::kBodyCannotGetThere;
+    result.objects.push_back(judge.judge(object, why));
     const ObjectVerdict& verdict = result.objects.back();
     if (!verdict.reachable) {
-      const bool immovable = knowledge.movable_bodies[static_cast<size_t>(object.body)].body_class == BodyClass::kFixed;
-      result.invalid.push_back({object.name, immovable ? Unreachability::kBodyCannotMove : Unreachability::kBodyCannotGetThere,
-                                verdict.reason});
+      result.invalid.push_back({object.name, why, verdict.reason});
     }
   }
   return result;

@@ -19,39 +19,57 @@ int RegionMap::at(const scenario::Vec2& p) const {
   return -1;
 }
 
+bool Labelling::NamedPart::has_body(int body) const { return std::find(bodies.begin(), bodies.end(), body) != bodies.end(); }
+
+int Labelling::NamedPart::place_of_region(int region) const {
+  for (std::size_t k = 0; k < region_sets.size(); ++k) {
+    if (std::find(region_sets[k].begin(), region_sets[k].end(), region) != region_sets[k].end()) return static_cast<int>(k) + 1;
+  }
+  return 0;
+}
+
 Labelling::Labelling(const scenario::World& world, const ltl::Dfa& dfa)
     : map_(world), regions_count_(static_cast<int>(world.regions.size())), proposition_names_(dfa.propositions) {
   for (const auto& region : world.regions) robot_proposition_.push_back(dfa.proposition_index(region.name));
   for (int p = 0; p < static_cast<int>(dfa.propositions.size()); ++p) {
     const auto object = ltl::object_atom(dfa.propositions[static_cast<size_t>(p)]);
     if (!object) continue;
-    const int body = scenario::movable_body_index(world, object->body), region = scenario::region_index(world, object->region);
-    if (body < 0 || region < 0) {
+    std::vector<int> bodies = scenario::bodies_named(world, object->body), regions = scenario::regions_named(world, object->region);
+    if (bodies.empty() || regions.empty()) {
       // The scenario's validation refuses such formulas; a caller that skipped it gets told, not a crash.
       throw std::invalid_argument("'" + dfa.propositions[static_cast<size_t>(p)] +
                                   "' names no movable body and region of this world");
     }
-    auto named = std::find_if(named_.begin(), named_.end(), [&](const NamedBody& n) { return n.body == body; });
-    if (named == named_.end()) named = named_.insert(named_.end(), NamedBody{body, {}, {}, 0});
-    named->regions.push_back(region);
+    auto named = std::find_if(named_.begin(), named_.end(), [&](const NamedPart& n) { return n.name == object->body; });
+    if (named == named_.end()) named = named_.insert(named_.end(), NamedPart{object->body, std::move(bodies), {}, {}, {}, 1});
+    named->region_sets.push_back(std::move(regions));
+    named->set_names.push_back(object->region);
     named->propositions.push_back(p);
   }
-  std::sort(named_.begin(), named_.end(), [](const NamedBody& a, const NamedBody& b) { return a.body < b.body; });
-  for (NamedBody& n : named_) {
+  std::sort(named_.begin(), named_.end(), [](const NamedPart& a, const NamedPart& b) { return a.bodies < b.bodies; });
+  for (NamedPart& n : named_) {
     n.stride = fact_sets_;
-    fact_sets_ *= static_cast<int>(n.regions.size()) + 1;
+    fact_sets_ *= n.places();
     if (fact_sets_ > kMaxFactSets) {
       // A task the scenario may write but the planner cannot take: the author's to change (exit 2).
       throw scenario::ScenarioError({{world.task.where, "the task names " + std::to_string(named_.size()) + " bodies in " +
                                                             "more places together than the planner can tell apart (over " +
-                                                            std::to_string(kMaxFactSets) + "): name fewer bodies or regions"}});
+                                                            std::to_string(kMaxFactSets) + "): name fewer bodies or regions, " +
+                                                            "or name them together through groups (docs/scenarios.md#groups)"}});
     }
   }
 }
 
+int Labelling::part_of(int body) const {
+  for (std::size_t i = 0; i < named_.size(); ++i) {
+    if (named_[i].has_body(body)) return static_cast<int>(i);
+  }
+  return -1;
+}
+
 int Labelling::place(int facts, int named) const {
-  const NamedBody& n = named_[static_cast<size_t>(named)];
-  return facts / n.stride % (static_cast<int>(n.regions.size()) + 1);
+  const NamedPart& n = named_[static_cast<size_t>(named)];
+  return facts / n.stride % n.places();
 }
 
 int Labelling::with_place(int facts, int named, int place) const {
@@ -60,10 +78,14 @@ int Labelling::with_place(int facts, int named, int place) const {
 
 int Labelling::facts(const scenario::EnvironmentState& state) const {
   int facts = 0;
-  for (const NamedBody& n : named_) {
-    const int region = map_.at(state.movable_poses[static_cast<size_t>(n.body)].position);
-    const auto k = std::find(n.regions.begin(), n.regions.end(), region);
-    if (k != n.regions.end()) facts += (static_cast<int>(k - n.regions.begin()) + 1) * n.stride;
+  for (const NamedPart& n : named_) {
+    int place = -1;  // the place every body so far is in
+    for (int body : n.bodies) {
+      const int here = n.place_of_region(map_.at(state.movable_poses[static_cast<size_t>(body)].position));
+      place = place < 0 || place == here ? here : 0;
+      if (place == 0) break;
+    }
+    facts += std::max(place, 0) * n.stride;
   }
   return facts;
 }

@@ -10,12 +10,13 @@
 namespace physltl::knowledge {
 namespace {
 
-// The task's BODY@REGION propositions, with their body and region; validation made sure both exist.
+// The task's BODY@REGION propositions, with their bodies and regions (groups' members); validation made
+// sure they exist.
 std::vector<ObjectProposition> object_propositions(const scenario::World& world) {
   std::vector<ObjectProposition> objects;
   for (const std::string& p : ltl::propositions(world.task.parsed)) {
     if (const auto object = ltl::object_atom(p)) {
-      objects.push_back({p, scenario::movable_body_index(world, object->body), scenario::region_index(world, object->region)});
+      objects.push_back({p, scenario::bodies_named(world, object->body), scenario::regions_named(world, object->region)});
     }
   }
   return objects;
@@ -31,7 +32,10 @@ std::pair<std::vector<int>, std::string> initial_letter(const scenario::World& w
   for (const int p : holding) {
     const std::string& name = dfa.propositions[static_cast<size_t>(p)];
     const auto object = ltl::object_atom(name);
-    words += (words.empty() ? "" : ", ") + (object ? object->body + " is in " + object->region : "the robot is in " + name);
+    const bool one_body = object && scenario::movable_body_index(world, object->body) >= 0;
+    words += (words.empty() ? "" : ", ") + (!object    ? "the robot is in " + name
+                                            : one_body ? object->body + " is in " + object->region
+                                                       : "every body of " + object->body + " is in " + object->region);
   }
   return {holding, words.empty() ? "neither the robot nor any body the task names is in one of its regions" : words};
 }

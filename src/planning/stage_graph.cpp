@@ -6,12 +6,12 @@ namespace physltl::planning {
 
 namespace {
 
-// Per automaton state, the named bodies whose places can change what the automaton does from it or from
-// any state it can reach: a body matters at a state when moving it alone changes some step from there.
+// Per automaton state, the named parts whose places can change what the automaton does from it or from
+// any state it can reach: a part matters at a state when moving it alone changes some step from there.
 std::vector<std::uint64_t> relevant_bodies(const TaskAutomaton& task) {
   const knowledge::Labelling& labels = task.labelling;
   const int states = static_cast<int>(task.dfa.size());
-  const int named = static_cast<int>(labels.named_bodies().size());
+  const int named = static_cast<int>(labels.named_parts().size());
   std::vector<std::uint64_t> relevant(static_cast<std::size_t>(states), 0);
   std::vector<std::vector<int>> successors(static_cast<std::size_t>(states));
   for (int q = 0; q < states; ++q) {
@@ -20,7 +20,7 @@ std::vector<std::uint64_t> relevant_bodies(const TaskAutomaton& task) {
       successors[static_cast<std::size_t>(q)].push_back(next);
       const int facts = labels.facts_of(letter), region = labels.robot_region_of(letter);
       for (int i = 0; i < named; ++i) {
-        const int places = static_cast<int>(labels.named_bodies()[static_cast<std::size_t>(i)].regions.size()) + 1;
+        const int places = labels.named_parts()[static_cast<std::size_t>(i)].places();
         for (int place = 0; place < places; ++place) {
           if (task.step(q, labels.letter(labels.with_place(facts, i, place), region)) != next) {
             relevant[static_cast<std::size_t>(q)] |= std::uint64_t{1} << i;
@@ -104,8 +104,8 @@ void StageGraph::for_each_move(int stage, Visit visit) const {
   for (int region = -1; region < labels.regions(); ++region) {
     visit(this->stage(task_.step(q, labels.letter(facts, region)), facts), std::nullopt);
   }
-  for (int named = 0; named < static_cast<int>(labels.named_bodies().size()); ++named) {
-    const int places = static_cast<int>(labels.named_bodies()[static_cast<std::size_t>(named)].regions.size()) + 1;
+  for (int named = 0; named < static_cast<int>(labels.named_parts().size()); ++named) {
+    const int places = labels.named_parts()[static_cast<std::size_t>(named)].places();
     for (int place = 0; place < places; ++place) {
       if (place == labels.place(facts, named)) continue;
       // The robot pushes it there: it stands by the body, outside the regions (a region is where it goes, or
@@ -118,7 +118,7 @@ void StageGraph::for_each_move(int stage, Visit visit) const {
 
 int StageGraph::stage(int automaton_state, int facts) const {
   const std::uint64_t relevant = relevant_bodies_[static_cast<std::size_t>(automaton_state)];
-  for (int i = 0; i < static_cast<int>(task_.labelling.named_bodies().size()); ++i) {
+  for (int i = 0; i < static_cast<int>(task_.labelling.named_parts().size()); ++i) {
     if ((relevant >> i & 1) == 0) facts = task_.labelling.with_place(facts, i, 0);
   }
   return facts * states_ + automaton_state;

@@ -542,7 +542,7 @@ Diagnostic diagnostic_from_lua_message(const Sandbox& box, const std::string& me
 }  // namespace
 
 const std::vector<std::string>& element_kinds() {
-  static const std::vector<std::string> kinds = {"workspace", "robot",   "fixed",  "movable",    "region",
+  static const std::vector<std::string> kinds = {"workspace", "robot",   "fixed",  "movable",     "region", "group",
                                                  "task",      "planner", "render", "uncertainty", "expect"};
   return kinds;
 }

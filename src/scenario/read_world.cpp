@@ -24,7 +24,9 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 // stay well under a second: a script looping over constructors must not turn loading into a hang.
 constexpr std::size_t kMaxRegionCorners = 10'000;  // all regions together
 
-bool is_singleton(const std::string& kind) { return kind != "fixed" && kind != "movable" && kind != "region"; }
+bool is_singleton(const std::string& kind) {
+  return kind != "fixed" && kind != "movable" && kind != "region" && kind != "group";
+}
 
 bool written_in(const Element& e, const std::string& path) {
   std::error_code ec;
@@ -203,6 +205,21 @@ Region read_region(TableReader& r) {
   return region;
 }
 
+// Its members' names; validation checks them against the World once every element is read.
+Group read_group(TableReader& r) {
+  Group group;
+  group.name = r.string("name");
+  const bool has_bodies = r.has("bodies"), has_regions = r.has("regions");
+  if (has_bodies == has_regions) {
+    r.error("give exactly one of 'bodies' = {\"M1\", ...} or 'regions' = {\"goal1\", ...}");
+    r.skip_unread();
+    return group;
+  }
+  (has_bodies ? group.bodies : group.regions) = r.strings(has_bodies ? "bodies" : "regions");
+  if (group.bodies.empty() && group.regions.empty()) r.error(std::string("'") + (has_bodies ? "bodies" : "regions") + "' is empty");
+  return group;
+}
+
 void read_planner(TableReader& r, PlannerSettings& p) {
   p.time_limit = r.number("time_limit", p.time_limit);
   p.step_size = r.number("step_size", p.step_size);
@@ -301,6 +318,9 @@ void read_element(TableReader& r, const Element& e, int index, const std::string
     if (region_corners > kMaxRegionCorners) {
       r.error("the regions have more than " + std::to_string(kMaxRegionCorners) + " corners together");
     }
+  } else if (e.kind == "group") {
+    world.groups.push_back(read_group(r));
+    world.groups.back().where = e.where;
   } else if (e.kind == "task") {
     read_task(r, world.task);
     world.task.where = e.where;

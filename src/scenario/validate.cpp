@@ -9,6 +9,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <numbers>
 #include <optional>
 #include <set>
@@ -55,6 +56,7 @@ class Validator {
     for (const auto& b : world_.movable_bodies) check_movable(b);
     check_body_overlaps();
     check_regions();
+    check_groups();
     check_task();
     check_planner();
     check_render();
@@ -256,43 +258,125 @@ class Validator {
     }
   }
 
-  // The formula (parsed by the reader, which reports a syntax error) must name only regions and bodies of
-  // this scenario.
-  void check_task() {
-    const auto& t = world_.task;
-    if (t.where.file.empty()) return;  // missing: reported by the reader
-    const std::string what = "task: formula '" + t.formula + "'";
-    for (const std::string& p : ltl::propositions(t.parsed)) {
-      if (const std::optional<ltl::ObjectAtom> object = ltl::object_atom(p)) {
-        check_object_atom(what, p, *object);
-      } else {
-        check_region_named(what, p);
+  // A group: a word the formula can use, no name another body, region or group has, members that exist
+  // (movable bodies only: a fixed one never moves), each once.
+  void check_groups() {
+    std::map<std::string, Location> names;
+    for (const Group& g : world_.groups) {
+      const std::string what = "group '" + g.name + "'";
+      const auto word_char = [](char c) { return c == '_' || std::isalnum(static_cast<unsigned char>(c)); };
+      if (g.name.empty() || std::isdigit(static_cast<unsigned char>(g.name[0])) || !std::all_of(g.name.begin(), g.name.end(), word_char)) {
+        error(g.where, what + ": a group name must start with a letter or '_' and hold only letters, digits and '_' "
+                              "(it is part of a proposition in the formula)");
+      }
+      if (movable_body_index(world_, g.name) >= 0 || region_index(world_, g.name) >= 0 ||
+          std::any_of(world_.fixed_bodies.begin(), world_.fixed_bodies.end(), [&](const FixedBody& b) { return b.name == g.name; })) {
+        error(g.where, what + ": a body or region already has that name");
+      }
+      auto [it, fresh] = names.emplace(g.name, g.where);
+      if (!fresh) error(g.where, "group name '" + g.name + "' is used twice (also at " + it->second.str() + ")");
+      const bool of_bodies = !g.bodies.empty();
+      std::set<std::string> seen;
+      for (const std::string& member : of_bodies ? g.bodies : g.regions) {
+        if (!seen.insert(member).second) error(g.where, what + " lists '" + member + "' twice");
+        if (of_bodies && movable_body_index(world_, member) < 0) {
+          error(g.where, what + ": '" + member + "' is no movable body (" + known_movable_bodies() + ")");
+        } else if (!of_bodies && region_index(world_, member) < 0) {
+          error(g.where, what + ": '" + member + "' is no region (" + known_regions() + ")");
+        }
       }
     }
   }
 
-  void check_region_named(const std::string& what, const std::string& name) {
-    if (region_index(world_, name) >= 0) return;
+  std::string known_regions() const {
     std::string known;
     for (const auto& r : world_.regions) known += (known.empty() ? "" : ", ") + r.name;
-    error(world_.task.where, what + " names unknown region '" + name + "' (" +
-                                 (known.empty() ? "the scenario has no regions" : "known regions: " + known) + ")");
+    return known.empty() ? "the scenario has no regions" : "known regions: " + known;
+  }
+  std::string known_movable_bodies() const {
+    std::string known;
+    for (const auto& b : world_.movable_bodies) known += (known.empty() ? "" : ", ") + b.name;
+    return known.empty() ? "the scenario has no movable bodies" : "movable bodies: " + known;
+  }
+  bool is_group(const std::string& name, bool of_bodies) const {
+    return std::any_of(world_.groups.begin(), world_.groups.end(),
+                       [&](const Group& g) { return g.name == name && (of_bodies ? !g.bodies.empty() : !g.regions.empty()); });
   }
 
-  // BODY@REGION: a movable body of this scenario and one of its regions.
-  void check_object_atom(const std::string& what, const std::string& atom, const ltl::ObjectAtom& object) {
+  // The formula (parsed by the reader, which reports a syntax error) must name only regions and bodies of
+  // this scenario, or their groups; and what the automaton assumes must hold (check_exclusive_places).
+  void check_task() {
+    const auto& t = world_.task;
+    if (t.where.file.empty()) return;  // missing: reported by the reader
+    const std::string what = "task: formula '" + t.formula + "'";
+    std::vector<ltl::ObjectAtom> objects;
+    for (const std::string& p : ltl::propositions(t.parsed)) {
+      if (const std::optional<ltl::ObjectAtom> object = ltl::object_atom(p)) {
+        if (check_object_atom(what, p, *object)) objects.push_back(*object);
+      } else if (is_group(p, false)) {
+        error(t.where, what + " names region group '" + p + "' alone: the robot is in one region at a time, so its "
+                                   "propositions name one region each (groups are for BODY@REGIONS)");
+      } else {
+        check_region_named(what, p);
+      }
+    }
+    check_exclusive_places(what, objects);
+  }
+
+  void check_region_named(const std::string& what, const std::string& name) {
+    if (region_index(world_, name) >= 0) return;
+    error(world_.task.where, what + " names unknown region '" + name + "' (" + known_regions() + ")");
+  }
+
+  // BODY@REGION: a movable body of this scenario (or a group of them) and one of its regions (or a group of
+  // them). Whether both are known.
+  bool check_object_atom(const std::string& what, const std::string& atom, const ltl::ObjectAtom& object) {
     const Location& where = world_.task.where;
     const auto named = [&](const auto& body) { return body.name == object.body; };
+    bool known = true;
     if (std::any_of(world_.fixed_bodies.begin(), world_.fixed_bodies.end(), named)) {
       error(where, what + ": '" + atom + "' names fixed '" + object.body + "', which never moves: object propositions " +
                        "are about movable bodies");
-    } else if (movable_body_index(world_, object.body) < 0) {
-      std::string known;
-      for (const auto& b : world_.movable_bodies) known += (known.empty() ? "" : ", ") + b.name;
-      error(where, what + ": '" + atom + "' names unknown body '" + object.body + "' (" +
-                       (known.empty() ? "the scenario has no movable bodies" : "movable bodies: " + known) + ")");
+      known = false;
+    } else if (movable_body_index(world_, object.body) < 0 && !is_group(object.body, true)) {
+      error(where, what + ": '" + atom + "' names unknown body '" + object.body + "' (" + known_movable_bodies() + ")");
+      known = false;
     }
-    check_region_named(what, object.region);
+    if (region_index(world_, object.region) < 0 && !is_group(object.region, false)) {
+      check_region_named(what, object.region);
+      known = false;
+    }
+    return known;
+  }
+
+  // The automaton takes a body (or a group) to be in at most one of the regions the task names it with,
+  // and the planners give each body one such name: so the region sets one body part is named with must
+  // not share a region, and no body may be named both alone and in a group, or in two groups.
+  void check_exclusive_places(const std::string& what, const std::vector<ltl::ObjectAtom>& objects) {
+    const Location& where = world_.task.where;
+    std::map<std::string, std::vector<std::string>> regions_of_part;
+    for (const ltl::ObjectAtom& o : objects) regions_of_part[o.body].push_back(o.region);
+    std::map<int, std::string> part_of_body;
+    for (const auto& [part, region_names] : regions_of_part) {
+      std::map<int, std::string> named_with;
+      for (const std::string& r : region_names) {
+        for (int region : regions_named(world_, r)) {
+          auto [it, fresh] = named_with.emplace(region, r);
+          if (!fresh && it->second != r) {
+            error(where, what + ": " + part + "@" + it->second + " and " + part + "@" + r + " share region '" +
+                             world_.regions[static_cast<std::size_t>(region)].name + "': the regions one body or group " +
+                             "is named with must not overlap");
+          }
+        }
+      }
+      for (int body : bodies_named(world_, part)) {
+        auto [it, fresh] = part_of_body.emplace(body, part);
+        if (!fresh) {
+          error(where, what + ": " + world_.movable_bodies[static_cast<std::size_t>(body)].name + " is named both as " +
+                           it->second + " and as " + part + ": name each body alone or in one group");
+        }
+      }
+    }
   }
 
   void check_planner() {

@@ -54,4 +54,32 @@ int movable_body_index(const World& world, std::string_view name) { return index
 
 int region_index(const World& world, std::string_view name) { return index_by_name(world.regions, name); }
 
+namespace {
+
+// `one` for the name of a single body or region, else the members of the group of that name (of the kind
+// `members_of` picks), each looked up with `index`.
+template <class MembersOf, class Index>
+std::vector<int> named(const World& world, std::string_view name, int one, MembersOf members_of, Index index) {
+  if (one >= 0) return {one};
+  std::vector<int> indices;
+  const int group = index_by_name(world.groups, name);
+  if (group < 0) return indices;
+  for (const std::string& member : members_of(world.groups[static_cast<std::size_t>(group)])) {
+    const int i = index(world, member);
+    if (i < 0) return {};
+    indices.push_back(i);
+  }
+  return indices;
+}
+
+}  // namespace
+
+std::vector<int> bodies_named(const World& world, std::string_view name) {
+  return named(world, name, movable_body_index(world, name), [](const Group& g) { return g.bodies; }, movable_body_index);
+}
+
+std::vector<int> regions_named(const World& world, std::string_view name) {
+  return named(world, name, region_index(world, name), [](const Group& g) { return g.regions; }, region_index);
+}
+
 }  // namespace physltl::scenario

@@ -62,6 +62,11 @@ nlohmann::ordered_json to_json(const World& world) {
     for (const auto& v : r.polygon.vertices) polygon.push_back(point(v));
     regions.push_back({{"name", r.name}, {"polygon", polygon}, {"defined_at", r.where.str()}});
   }
+  json groups = json::array();
+  for (const auto& g : world.groups) {
+    groups.push_back({{"name", g.name}, {g.bodies.empty() ? "regions" : "bodies", g.bodies.empty() ? g.regions : g.bodies},
+                      {"defined_at", g.where.str()}});
+  }
   const auto& p = world.planner;
   const auto& rs = world.render;
   return {
@@ -74,6 +79,7 @@ nlohmann::ordered_json to_json(const World& world) {
       {"robot", robot_json(world.robot)},
       {"bodies", bodies},
       {"regions", regions},
+      {"groups", groups},
       {"formula", world.task.formula},
       {"planner",
        {{"time_limit", p.time_limit},

@@ -114,7 +114,7 @@ Feasibility object_feasibility(const scenario::World& w, const std::string& body
   int b = 0, r = 0;
   while (k.movable_bodies[static_cast<size_t>(b)].name != body) ++b;
   while (k.propositions[static_cast<size_t>(r)].name != region) ++r;
-  const ObjectProposition object{body + "@" + region, b, r};
+  const ObjectProposition object{body + "@" + region, {b}, {r}};
   return evaluate_feasibility(k, std::span(&object, 1));
 }
 
@@ -153,6 +153,28 @@ TEST(ObjectFeasibility, ABayWhoseOpeningIsNarrowerThanTheBodyIsRefusedWithItsRea
             "Wide@bay: no way for the centre of Wide into bay: every way in is narrower than Wide (0.60 m across) "
             "among the fixed bodies");
   EXPECT_EQ(object_feasibility(w, "Narrow", "bay").find("Narrow@bay"), nullptr);  // 0.4 m wide
+}
+
+// A group's proposition holds only when each of its bodies is in one of its regions: one body that can
+// get into none makes it unreachable, named in the reason; a region it can get into makes it reachable.
+TEST(ObjectFeasibility, AGroupIsUnreachableWhenOneOfItsBodiesCanGetIntoNoneOfItsRegions) {
+  auto w = open_world();
+  add_wall(w, "bay_west", {1.0, 1.0}, {1.2, 2.9});
+  add_wall(w, "bay_east", {1.7, 1.0}, {1.9, 2.9});
+  add_wall(w, "bay_back", {1.0, 2.9}, {1.9, 3.0});
+  add_region(w, "bay", {1.2, 2.0}, {1.7, 2.8});  // the opening is 0.5 m wide
+  add_region(w, "dock", {-2.5, -2.5}, {-1.5, -1.5});
+  add_box(w, "Narrow", {0.5, -1.0}, {0.4, 0.4});
+  add_box(w, "Wide", {-1.0, 0.0}, {0.6, 0.6});
+  const AbstractKnowledge k = formulate(w);
+  const std::vector<ObjectProposition> groups{{"boxes@bays", {0, 1}, {0}}, {"boxes@places", {0, 1}, {0, 1}}};
+  const Feasibility f = evaluate_feasibility(k, groups);
+  ASSERT_NE(f.find("boxes@bays"), nullptr);
+  EXPECT_EQ(f.find("boxes@bays")->why, Unreachability::kBodyCannotGetThere);
+  EXPECT_EQ(f.find("boxes@bays")->reason,
+            "boxes@bays: no way for the centre of Wide into bays: every way in is narrower than Wide (0.60 m across) "
+            "among the fixed bodies");
+  EXPECT_EQ(f.find("boxes@places"), nullptr);  // Wide into the dock, Narrow into either
 }
 
 TEST(ObjectFeasibility, ARegionPartlyInsideAWallStillCountsWhereTheCentreFits) {

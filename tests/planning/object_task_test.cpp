@@ -25,7 +25,7 @@ long first_step_with(const TestProblem& p, const Replay& r, const std::string& f
 TEST(Labelling, ALetterIsTheRobotsRegionAndWhereEachNamedBodyIs) {
   const TestProblem p("sorting.lua");
   const knowledge::Labelling& labels = p.original.labelling;
-  ASSERT_EQ(labels.named_bodies().size(), 3u);  // B1, B2, B3, each with one region
+  ASSERT_EQ(labels.named_parts().size(), 3u);  // B1, B2, B3, each with one region
   EXPECT_EQ(labels.fact_sets(), 8);
   scenario::EnvironmentState state = scenario::EnvironmentState::initial(p.world);
   EXPECT_EQ(labels.object_facts(labels.facts(state)), std::vector<std::string>{"B3@shelf"});
@@ -34,6 +34,36 @@ TEST(Labelling, ALetterIsTheRobotsRegionAndWhereEachNamedBodyIs) {
   const int letter = labels.letter(state);
   EXPECT_EQ(p.world.regions[static_cast<size_t>(labels.robot_region_of(letter))].name, "bay2");
   EXPECT_EQ(labels.object_facts(labels.facts_of(letter)), (std::vector<std::string>{"B1@bay1", "B3@shelf"}));
+}
+
+// crates@docks: one part of three bodies and two places, whatever the number of crates and docks; it
+// holds only when every crate is in some dock, each in its own or two in one.
+TEST(Labelling, AGroupIsOnePartThatHoldsWhenEveryBodyOfItIsInSomeRegionOfTheSet) {
+  const TestProblem p("../tests/planning/data/crates_to_docks.lua");
+  const knowledge::Labelling& labels = p.original.labelling;
+  ASSERT_EQ(labels.named_parts().size(), 1u);
+  EXPECT_EQ(labels.named_parts()[0].bodies, (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(labels.fact_sets(), 2);
+  scenario::EnvironmentState state = scenario::EnvironmentState::initial(p.world);
+  const auto holds = [&] { return labels.object_facts(labels.facts(state)) == std::vector<std::string>{"crates@docks"}; };
+  EXPECT_FALSE(holds());
+  state.movable_poses[0].position = {6.0, 4.5};  // C1 in dock3
+  state.movable_poses[1].position = {6.0, 1.5};  // C2 in dock1
+  EXPECT_FALSE(holds());                          // C3 still out
+  state.movable_poses[2].position = {6.1, 3.0};  // C3 in dock2
+  EXPECT_TRUE(holds());
+  state.movable_poses[2].position = {6.0, 5.2};  // C3 just past dock3's edge
+  EXPECT_FALSE(holds());
+}
+
+TEST(ObjectTask, TheKnowledgePlannerPutsEveryBodyOfAGroupInSomeRegionOfItsSetAndTheReplayAgrees) {
+  const TestProblem p("../tests/planning/data/crates_to_docks.lua");
+  const PlanResult result = p.solve(1);
+  ASSERT_TRUE(result.solved) << result.stop_reason;
+  const Replay r = p.check(result.plan);
+  ASSERT_TRUE(r.validated()) << r.failure;
+  EXPECT_GE(first_step_with(p, r, "crates@docks"), 0);
+  for (const auto& pose : r.states.back().movable_poses) EXPECT_GT(pose.position.x(), 5.6);
 }
 
 TEST(StageGraph, ABodyMoveComesFirstAndABodyNoLongerNeededIsForgotten) {
@@ -57,8 +87,8 @@ TEST(StageGraph, ABodyThatMustStayPutKillsTheTaskWhenItLeaves) {
   const knowledge::Labelling& labels = p.task.labelling;
   const int start = stages.stage(p.task.start_state(scenario::EnvironmentState::initial(p.world)), 0);
   int b3 = -1;
-  for (size_t i = 0; i < labels.named_bodies().size(); ++i) {
-    if (p.world.movable_bodies[static_cast<size_t>(labels.named_bodies()[i].body)].name == "B3") b3 = static_cast<int>(i);
+  for (size_t i = 0; i < labels.named_parts().size(); ++i) {
+    if (p.world.movable_bodies[static_cast<size_t>(labels.named_parts()[i].bodies.front())].name == "B3") b3 = static_cast<int>(i);
   }
   ASSERT_GE(b3, 0);
   const int facts = labels.facts_of(labels.letter(scenario::EnvironmentState::initial(p.world)));

@@ -20,17 +20,19 @@ enum class Unreachability {
   kBodyCannotGetThere,        // BODY@REGION: no way in for the body's centre among what cannot move
 };
 
-// An object proposition a task names, BODY@REGION: the centre of a movable body in a region.
+// An object proposition a task names, BODY@REGION: the centre of a movable body in a region; or, for
+// groups (scenario::Group), the centre of every body of the group in some region of the set.
 struct ObjectProposition {
-  std::string name;  // "crate@dock"
-  int body = 0;      // AbstractKnowledge::movable_bodies index
-  int region = 0;    // AbstractKnowledge::propositions index
+  std::string name;          // "crate@dock", "boxes@goals"
+  std::vector<int> bodies;   // AbstractKnowledge::movable_bodies indices
+  std::vector<int> regions;  // AbstractKnowledge::propositions indices
 };
 
 // What the knowledge layer concludes about one, before any planning. Sound only: a proposition is
 // called unreachable or always true only when no plan could make it otherwise.
 struct ObjectVerdict {
-  std::string name, body, region;
+  std::string name, body, region;  // the atom, its body part and its region part as written
+  std::vector<int> bodies, regions;  // as ObjectProposition
   bool reachable = true;     // the body's centre can be in the region at some time
   bool always_true = false;  // it is there and can never leave: the body cannot move
   std::string reason;        // why unreachable or always true; empty otherwise
@@ -61,7 +63,8 @@ double grid_cell_size(const AbstractKnowledge& knowledge);
 // `objects`: the task's object propositions. A body that cannot move (too heavy to push) makes its
 // propositions always true where it stands and unreachable elsewhere; a region its centre cannot get into,
 // a disc of its inscribed radius among the fixed bodies, the bodies too heavy to push and the workspace's
-// edge (geometry::DiscField), makes its proposition unreachable.
+// edge (geometry::DiscField), makes its proposition unreachable. A proposition about a group holds only
+// when each of its bodies is in one of its regions: one body that can be in none makes it unreachable.
 Feasibility evaluate_feasibility(const AbstractKnowledge& knowledge, std::span<const ObjectProposition> objects = {});
 
 }  // namespace physltl::knowledge

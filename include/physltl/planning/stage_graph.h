@@ -19,8 +19,8 @@
 
 namespace physltl::planning {
 
-// A named body (index into Labelling::named_bodies) and the place it must get to: 0 out of its named
-// regions, k + 1 inside its k-th.
+// A named part (index into Labelling::named_parts: a body or a group) and the place it must get to: 0 out
+// of its region sets, k + 1 inside its k-th.
 struct BodyMove {
   int named = 0;
   int place = 0;
@@ -58,7 +58,7 @@ class StageGraph {
   const TaskAutomaton& task_;
   int states_;
   int fact_sets_;
-  // Per automaton state, the named bodies (bit i: Labelling::named_bodies()[i]) whose places can still
+  // Per automaton state, the named parts (bit i: Labelling::named_parts()[i]) whose places can still
   // change what the automaton does, from that state or any it can reach.
   std::vector<std::uint64_t> relevant_bodies_;
   std::vector<int> distance_;

@@ -26,7 +26,7 @@ struct TaskAutomaton {
   // Whether a plan must end with the robot and the boxes at rest: tasks read as "stop and stay".
   bool ends_at_rest() const { return dfa.acceptance == ltl::Acceptance::kStopAndStay; }
   // Whether the task says where bodies must (not) be, besides where the robot goes.
-  bool names_bodies() const { return !labelling.named_bodies().empty(); }
+  bool names_bodies() const { return !labelling.named_parts().empty(); }
   // The automaton's state after it reads `letter`.
   int step(int state, int letter) const {
     return successors[static_cast<std::size_t>(state) * static_cast<std::size_t>(labelling.letters()) +

@@ -98,6 +98,16 @@ struct Region {
   Location where{};
 };
 
+// Several movable bodies, or several regions, under one name, so that one object proposition speaks of
+// them all: GROUP@REGIONS holds when every body of the group has its centre in some region of the set
+// ("every box on some goal", docs/scenarios.md#groups). Exactly one of the two lists is given.
+struct Group {
+  std::string name;
+  std::vector<std::string> bodies;   // movable bodies' names
+  std::vector<std::string> regions;  // regions' names
+  Location where{};
+};
+
 struct Task {
   std::string formula;  // as written
   // The formula, parsed once as the scenario is read: everything downstream takes it from here.
@@ -156,6 +166,7 @@ struct World {
   std::vector<FixedBody> fixed_bodies;
   std::vector<MovableBody> movable_bodies;
   std::vector<Region> regions;
+  std::vector<Group> groups;
   Task task;
   PlannerSettings planner;
   RenderSettings render;
@@ -179,5 +190,10 @@ std::optional<std::string> number_problem(double value, double lo, double hi, bo
 // or -1 when it has none of that name. Every name the task or a picture uses is turned into an index here.
 int movable_body_index(const World& world, std::string_view name);
 int region_index(const World& world, std::string_view name);
+// What the body part of an object atom names (a movable body, or a group of them) as World::movable_bodies
+// indices, and what its region part names (a region, or a group of them) as World::regions indices, in
+// the group's order; empty for a name that is neither, or a group member that is unknown.
+std::vector<int> bodies_named(const World& world, std::string_view name);
+std::vector<int> regions_named(const World& world, std::string_view name);
 
 }  // namespace physltl::scenario

@@ -1,8 +1,5 @@
 #include "sokoban_scenario.h"
 
-#include "goal_assignment.h"
-
-#include "physltl/knowledge/labelling.h"
 #include "physltl/scenario/world.h"
 
 #include <fmt/format.h>
@@ -51,22 +48,6 @@ std::vector<Rect> wall_rectangles(const SokobanLevel& level) {
   return done;
 }
 
-std::string task_formula(const SokobanLevel& level) {
-  const int n = static_cast<int>(level.boxes.size());
-  std::vector<std::string> goals;
-  if (n <= kMaxAnyBoxAnyGoal) {
-    for (int g = 0; g < n; ++g) {
-      std::vector<std::string> any;
-      for (int b = 0; b < n; ++b) any.push_back(fmt::format("M{}@goal{}", b + 1, g + 1));
-      goals.push_back(n == 1 ? any.front() : "(" + fmt::format("{}", fmt::join(any, " | ")) + ")");
-    }
-  } else {
-    const std::vector<int> goal_of = assign_goals(level);
-    for (int b = 0; b < n; ++b) goals.push_back(fmt::format("M{}@goal{}", b + 1, goal_of[static_cast<size_t>(b)] + 1));
-  }
-  return "F G(" + fmt::format("{}", fmt::join(goals, " & ")) + ")";
-}
-
 }  // namespace
 
 std::optional<std::string> beyond_limits(const SokobanLevel& level) {
@@ -77,12 +58,6 @@ std::optional<std::string> beyond_limits(const SokobanLevel& level) {
   }
   if (boxes > scenario::kMaxBodiesOfAKind) {
     return fmt::format("{} boxes, more than the {} movable bodies a scenario may hold", boxes, scenario::kMaxBodiesOfAKind);
-  }
-  // The task names each box with every goal up to kMaxAnyBoxAnyGoal boxes, with one goal beyond.
-  const double places = boxes <= static_cast<std::size_t>(kMaxAnyBoxAnyGoal) ? static_cast<double>(boxes) + 1 : 2.0;
-  if (std::pow(places, static_cast<double>(boxes)) > knowledge::Labelling::kMaxFactSets) {
-    return fmt::format("its {} boxes on their goals are more places together than the planner tells apart (over {})", boxes,
-                       knowledge::Labelling::kMaxFactSets);
   }
   return std::nullopt;
 }
@@ -125,7 +100,15 @@ std::string sokoban_scenario(const SokobanLevel& level, const std::string& sourc
                        "{{ {:.4f}, {:.4f} }} }} }}\n",
                        g + 1, x0, y0, x1, y0, x1, y1, x0, y1);
   }
-  lua += fmt::format("task {{ formula = \"{}\" }}\n", task_formula(level));
+  // Sokoban's goal: every box on some goal (as many goals as boxes), one proposition about two groups.
+  const auto names = [](const char* prefix, std::size_t count) {
+    std::vector<std::string> quoted;
+    for (std::size_t i = 1; i <= count; ++i) quoted.push_back(fmt::format("\"{}{}\"", prefix, i));
+    return fmt::format("{}", fmt::join(quoted, ", "));
+  };
+  lua += fmt::format("group {{ name = \"boxes\", bodies = {{ {} }} }}\n", names("M", level.boxes.size()));
+  lua += fmt::format("group {{ name = \"goals\", regions = {{ {} }} }}\n", names("goal", level.goals.size()));
+  lua += "task { formula = \"F G(boxes@goals)\" }\n";
   lua += "planner { time_limit = 60, seed = 1 }\n";
   return lua;
 }

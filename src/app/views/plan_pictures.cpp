@@ -66,6 +66,8 @@ PlanAnimation::PlanAnimation(const scenario::World& world, const knowledge::Reas
     goal.holds = true;
     overlay_.legend_room.push_back({not_yet, object_goal_line(world, goal)});
   }
+  const std::vector<std::string> all_in = object_group_lines(world, reasoning, replay.states.front(), true);
+  for (const std::string& line : all_in) overlay_.legend_room.push_back({line});
 }
 
 PlanAnimation::~PlanAnimation() = default;
@@ -99,6 +101,7 @@ render::Image PlanAnimation::draw(double time_s) {
   if (!mark_legend_.empty()) overlay_.legend.push_back(mark_legend_);
   overlay_.object_goals = object_goal_overlays(world_, reasoning_, state);
   for (const render::ObjectGoalOverlay& goal : overlay_.object_goals) overlay_.legend.push_back(object_goal_line(world_, goal));
+  for (std::string& line : object_group_lines(world_, reasoning_, state)) overlay_.legend.push_back(std::move(line));
   // The travelled path up to now: extended while frames go forward, as the video draws them.
   if (overlay_.path.size() > i + 1) overlay_.path.resize(i + 1);
   while (overlay_.path.size() <= i) overlay_.path.push_back(replay_.states[overlay_.path.size()].robot_position);

@@ -48,30 +48,61 @@ ObjectLead::ObjectLead(const scenario::World& world, const knowledge::AbstractKn
                        const decomposition::Decomposition& decomposition)
     : world_(world), knowledge_(knowledge), decomposition_(decomposition) {}
 
-ObjectLead::Goal ObjectLead::goal(const knowledge::Labelling& labelling, const BodyMove& move) {
-  const knowledge::Labelling::NamedBody& named = labelling.named_bodies()[static_cast<std::size_t>(move.named)];
-  std::unique_ptr<geometry::DiscField>& way = ways_[{named.body, move.place}];
-  if (!way) {
-    const auto& body = knowledge_.movable_bodies[static_cast<std::size_t>(named.body)];
-    std::vector<geometry::Footprint> obstacles;
-    for (const auto& f : knowledge_.fixed_bodies) obstacles.push_back(f.footprint);
-    for (std::size_t b = 0; b < knowledge_.movable_bodies.size(); ++b) {
-      const auto& other = knowledge_.movable_bodies[b];
-      if (static_cast<int>(b) != named.body && other.body_class == knowledge::BodyClass::kFixed) obstacles.push_back(other.footprint);
-    }
-    const double inscribed = body.footprint.shape.centre_clearance();
-    const Vec2 size = knowledge_.workspace.size();
-    const double cell = std::max({0.5 * inscribed, 0.05, std::sqrt(size.x() * size.y() / kMaxWayCells)});
-    way = std::make_unique<geometry::DiscField>(knowledge_.workspace, std::min(cell, inscribed), inscribed, obstacles);
-    std::vector<const geometry::Polygon*> regions;
-    for (int r : named.regions) regions.push_back(&world_.regions[static_cast<std::size_t>(r)].polygon);
-    const geometry::Polygon* target = move.place > 0 ? regions[static_cast<std::size_t>(move.place - 1)] : nullptr;
-    way->compute_distances([&](const Vec2& centre, double) {
-      if (target != nullptr) return target->contains(centre);
-      return std::none_of(regions.begin(), regions.end(), [&](const geometry::Polygon* r) { return r->contains(centre); });
-    });
+const geometry::DiscField& ObjectLead::way(const knowledge::Labelling::NamedPart& part, int body_index, int place) {
+  std::unique_ptr<geometry::DiscField>& way = ways_[{body_index, place}];
+  if (way) return *way;
+  const auto& body = knowledge_.movable_bodies[static_cast<std::size_t>(body_index)];
+  std::vector<geometry::Footprint> obstacles;
+  for (const auto& f : knowledge_.fixed_bodies) obstacles.push_back(f.footprint);
+  for (std::size_t b = 0; b < knowledge_.movable_bodies.size(); ++b) {
+    const auto& other = knowledge_.movable_bodies[b];
+    if (static_cast<int>(b) != body_index && other.body_class == knowledge::BodyClass::kFixed) obstacles.push_back(other.footprint);
   }
-  return {named.body, way.get()};
+  const double inscribed = body.footprint.shape.centre_clearance();
+  const Vec2 size = knowledge_.workspace.size();
+  const double cell = std::max({0.5 * inscribed, 0.05, std::sqrt(size.x() * size.y() / kMaxWayCells)});
+  way = std::make_unique<geometry::DiscField>(knowledge_.workspace, std::min(cell, inscribed), inscribed, obstacles);
+  const auto in = [&](const std::vector<int>& regions, const Vec2& centre) {
+    return std::any_of(regions.begin(), regions.end(), [&](int r) { return world_.regions[static_cast<std::size_t>(r)].polygon.contains(centre); });
+  };
+  way->compute_distances([&](const Vec2& centre, double) {
+    if (place > 0) return in(part.region_sets[static_cast<std::size_t>(place - 1)], centre);
+    return std::none_of(part.region_sets.begin(), part.region_sets.end(), [&](const std::vector<int>& set) { return in(set, centre); });
+  });
+  return *way;
+}
+
+bool ObjectLead::placed(const knowledge::Labelling::NamedPart& part, int place, const Vec2& centre) const {
+  int region = -1;
+  for (std::size_t r = 0; r < world_.regions.size() && region < 0; ++r) {
+    if (world_.regions[r].polygon.contains(centre)) region = static_cast<int>(r);
+  }
+  return part.place_of_region(region) == place;
+}
+
+ObjectLead::Goal ObjectLead::goal(const knowledge::Labelling& labelling, const BodyMove& move,
+                                  const std::function<Vec2(int)>& centre_of) {
+  const knowledge::Labelling::NamedPart& part = labelling.named_parts()[static_cast<std::size_t>(move.named)];
+  if (part.bodies.size() == 1) return {part.bodies.front(), &way(part, part.bodies.front(), move.place)};
+  Goal best{part.bodies.front(), nullptr};
+  double least = std::numeric_limits<double>::infinity();
+  for (int body : part.bodies) {
+    // A body already where the move wants it, as the labelling sees it, is not the one to push on.
+    const Vec2 centre = centre_of(body);
+    if (placed(part, move.place, centre)) continue;
+    const Goal goal{body, &way(part, body, move.place)};
+    const double left = remaining(goal, centre);
+    if (left < least || best.way == nullptr) best = goal, least = left;
+  }
+  if (best.way == nullptr) best.way = &way(part, best.body, move.place);
+  return best;
+}
+
+int ObjectLead::placed_bodies(const knowledge::Labelling& labelling, const BodyMove& move,
+                              const std::function<Vec2(int)>& centre_of) const {
+  const knowledge::Labelling::NamedPart& part = labelling.named_parts()[static_cast<std::size_t>(move.named)];
+  return static_cast<int>(std::count_if(part.bodies.begin(), part.bodies.end(),
+                                        [&](int body) { return placed(part, move.place, centre_of(body)); }));
 }
 
 double ObjectLead::remaining(const Goal& goal, const Vec2& centre) {

@@ -16,6 +16,7 @@
 #include "physltl/planning/random.h"
 #include "physltl/planning/stage_graph.h"
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -35,12 +36,15 @@ class ObjectLead {
   ObjectLead(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
              const decomposition::Decomposition& decomposition);
 
-  // The goal of `move`, its way computed on first use. Not thread-safe: the search calls it between
-  // batches.
-  Goal goal(const knowledge::Labelling& labelling, const BodyMove& move);
+  // The goal of `move` where `centre_of(body)` gives each body's centre, its way computed on first use:
+  // for a group, of its bodies not yet where the move wants them, the one with the least way left. Not
+  // thread-safe: the search calls it between batches.
+  Goal goal(const knowledge::Labelling& labelling, const BodyMove& move, const std::function<Vec2(int)>& centre_of);
 
   // Metres the body's centre at `centre` still has to travel; infinite when it cannot get there.
   static double remaining(const Goal& goal, const Vec2& centre);
+  // How many bodies of `move`'s part are where the move wants them (a group's progress within its stage).
+  int placed_bodies(const knowledge::Labelling& labelling, const BodyMove& move, const std::function<Vec2(int)>& centre_of) const;
 
   // Where the robot heads, from far away, to get to the body at `body`: a point a few triangles along the
   // decomposition's shortest way; nothing when the robot is near enough to act (target() takes over). Not
@@ -54,6 +58,10 @@ class ObjectLead {
 
  private:
   const std::vector<double>& distances_to_triangle(int triangle);
+  // Whether a body of `part` with its centre at `centre` is where place `place` of it wants it.
+  bool placed(const knowledge::Labelling::NamedPart& part, int place, const Vec2& centre) const;
+  // The way of World body `body` to place `place` of `part` (out of all its region sets for place 0).
+  const geometry::DiscField& way(const knowledge::Labelling::NamedPart& part, int body, int place);
 
   const scenario::World& world_;
   const knowledge::AbstractKnowledge& knowledge_;

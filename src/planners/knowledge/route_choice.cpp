@@ -46,12 +46,12 @@ std::vector<std::set<int>> entry_places(const scenario::World& world, const Task
       if (next != s) reach(next, region + 1);
     }
     if (const auto& move = stages.body_move(s)) {
-      const knowledge::Labelling::NamedBody& body = task.labelling.named_bodies()[static_cast<size_t>(move->named)];
+      const knowledge::Labelling::NamedPart& part = task.labelling.named_parts()[static_cast<size_t>(move->named)];
       const int facts = task.labelling.with_place(stages.facts_of(s), move->named, move->place);
       const int next = stages.after_letter(s, task.labelling.letter(facts, -1));
       const std::set<int> from = entries[static_cast<size_t>(s)];
       if (move->place > 0) {
-        reach(next, body.regions[static_cast<size_t>(move->place - 1)] + 1);
+        for (int region : part.region_sets[static_cast<size_t>(move->place - 1)]) reach(next, region + 1);
       } else {
         for (int place : from) reach(next, place);
       }
@@ -211,9 +211,7 @@ std::vector<bool> triangles_under_bodies(const scenario::World& world, const Tas
                                          const decomposition::Decomposition& decomposition) {
   std::vector<const geometry::Footprint*> bodies;
   for (size_t b = 0; b < world.movable_bodies.size(); ++b) {
-    const auto& named = task.labelling.named_bodies();
-    const bool moved_on_purpose =
-        std::any_of(named.begin(), named.end(), [&](const knowledge::Labelling::NamedBody& n) { return n.body == static_cast<int>(b); });
+    const bool moved_on_purpose = task.labelling.part_of(static_cast<int>(b)) >= 0;
     if (!moved_on_purpose) bodies.push_back(&world.movable_bodies[b].footprint);
   }
   std::vector<bool> under;

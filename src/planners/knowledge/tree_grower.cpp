@@ -34,7 +34,9 @@ TreeGrower::TreeGrower(const scenario::World& world, const TaskAutomaton& task, 
       max_speed_(world.robot.max_speed),
       named_(world.movable_bodies.size(), false),
       simulation_(world, knowledge, use_knowledge ? knowledge::ValidityMode::kKnowledge : knowledge::ValidityMode::kBaseline) {
-  for (const knowledge::Labelling::NamedBody& n : task.labelling.named_bodies()) named_[static_cast<size_t>(n.body)] = true;
+  for (const knowledge::Labelling::NamedPart& n : task.labelling.named_parts()) {
+    for (int body : n.bodies) named_[static_cast<size_t>(body)] = true;
+  }
 }
 
 void TreeGrower::grow(const Motion& from, const Vec2& target, const ObjectLead::Goal* goal, Guidance guidance,

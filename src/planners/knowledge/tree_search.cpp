@@ -321,11 +321,17 @@ class Search {
     e.goal = approach ? std::nullopt : std::optional<ObjectLead::Goal>(goal);
   }
 
-  // The object lead's choice of a node to grow from for `goal`: of the frontier stage's nodes, usually the
+  // The object lead's goal for `move` in the state of node `motion` (for a group: the body it pushes on).
+  ObjectLead::Goal goal_at(int motion, const BodyMove& move) {
+    return object_lead_.goal(task_.labelling, move, [&](int body) { return body_at(motion, body); });
+  }
+
+  // The object lead's choice of a node to grow from for `move`: of the frontier stage's nodes, usually the
   // one whose body is nearest its goal along its way of a few drawn at random, sometimes any of them.
-  int object_lead_node(const ObjectLead::Goal& goal) {
-    const std::vector<int>& nodes = stage_motions_[static_cast<size_t>(frontier_stage_)];
+  int object_lead_node(const BodyMove& move) {
+    const std::vector<int>& nodes = object_lead_nodes(move);
     const auto distance = [&](int m) {
+      const ObjectLead::Goal goal = goal_at(m, move);
       return ObjectLead::remaining(goal, body_at(m, goal.body)) +
              kObjectRobotWeight * (motions_[static_cast<size_t>(m)].robot - body_at(m, goal.body)).norm() +
              kObjectSelectionPenalty * chosen_[static_cast<size_t>(m)];
@@ -344,13 +350,37 @@ class Search {
     return from;
   }
 
+  // The nodes the object lead grows from for `move`: the frontier stage's; for a group's move, those of
+  // them with the most bodies of the group where the move wants them. A group's bodies go one by one
+  // within one stage, and each one placed is progress as a stage is (20 boxes a push above their goals:
+  // no plan in 60 s when all the stage's nodes were drawn from).
+  const std::vector<int>& object_lead_nodes(const BodyMove& move) {
+    const std::vector<int>& nodes = stage_motions_[static_cast<size_t>(frontier_stage_)];
+    if (task_.labelling.named_parts()[static_cast<size_t>(move.named)].bodies.size() == 1) return nodes;
+    GroupFrontier& g = group_frontier_;
+    if (g.stage != frontier_stage_) g = GroupFrontier{frontier_stage_, 0, -1, {}};
+    for (; g.known < nodes.size(); ++g.known) {
+      const int m = nodes[g.known];
+      const int placed = object_lead_.placed_bodies(task_.labelling, move, [&](int body) { return body_at(m, body); });
+      if (placed > g.placed) g.placed = placed, g.nodes.clear();
+      if (placed == g.placed) g.nodes.push_back(m);
+    }
+    return g.nodes;
+  }
+  struct GroupFrontier {
+    int stage = -1;          // the frontier stage it is of
+    std::size_t known = 0;   // that stage's nodes looked at so far
+    int placed = -1;         // the most bodies placed in one of them
+    std::vector<int> nodes;  // the nodes with that many
+  };
+  GroupFrontier group_frontier_;
+
   // The object lead's expansions, kBatch of them, for moving a body of the frontier stage.
   void choose_object_expansions(const BodyMove& move) {
-    const ObjectLead::Goal goal = object_lead_.goal(task_.labelling, move);
     expansions_.resize(kBatch);
     for (Expansion& e : expansions_) {
-      e.from = object_lead_node(goal);
-      aim_at_body(e, goal);
+      e.from = object_lead_node(move);
+      aim_at_body(e, goal_at(e.from, move));
       e.guidance = Guidance::kPushing;
       widen_if_stalled(e);
       e.seed = random_.next();
@@ -395,12 +425,11 @@ class Search {
   // know, must not keep the tree from what the baseline finds.
   void choose_push_expansions(const BodyMove& move) {
     if (++batches_since_push_progress_ * kBatch >= kReplanExpansions) replan_pushes();
-    const ObjectLead::Goal goal = object_lead_.goal(task_.labelling, move);
     const std::vector<int>& nodes = stage_motions_[static_cast<size_t>(frontier_stage_)];
     expansions_.resize(kBatch);
     for (Expansion& e : expansions_) {
       if (next_expansion_widened()) {
-        e.from = object_lead_node(goal);
+        e.from = object_lead_node(move);
         widen(e);
         e.seed = random_.next();
         continue;
@@ -426,7 +455,7 @@ class Search {
         e.goal.reset();
         e.guidance = Guidance::kPushingTo;
       } else {
-        aim_at_body(e, goal);
+        aim_at_body(e, goal_at(from, move));
       }
     }
   }
@@ -606,9 +635,9 @@ class Search {
     SearchEnd end;
     end.frontier = describe(frontier_stage_);
     if (const auto& move = stages_.body_move(frontier_stage_)) {
-      const knowledge::Labelling::NamedBody& body = task_.labelling.named_bodies()[static_cast<size_t>(move->named)];
-      const std::string& name = world_.movable_bodies[static_cast<size_t>(body.body)].name;
-      const auto region = [&](int place) { return world_.regions[static_cast<size_t>(body.regions[static_cast<size_t>(place - 1)])].name; };
+      const knowledge::Labelling::NamedPart& part = task_.labelling.named_parts()[static_cast<size_t>(move->named)];
+      const std::string& name = part.name;
+      const auto region = [&](int place) { return part.set_names[static_cast<size_t>(place - 1)]; };
       if (move->place > 0) {
         end.body_move = name + " to " + region(move->place);
       } else {

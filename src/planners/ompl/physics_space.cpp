@@ -84,8 +84,8 @@ TaskProduct::TaskProduct(const TaskAutomaton& automaton) : task(automaton), stag
     if (!stages.dead(q)) live.push_back(q);
   }
   // The robot is the physics state's first body, the movable bodies follow in World order.
-  for (const auto& named : task.labelling.named_bodies()) {
-    named_values.push_back(static_cast<std::size_t>(named.body + 1) * kValuesPerBody);
+  for (const auto& named : task.labelling.named_parts()) {
+    for (int body : named.bodies) named_values.push_back(static_cast<std::size_t>(body + 1) * kValuesPerBody);
   }
 }
 

@@ -192,7 +192,7 @@ class Replayer {
     r_.accepted = ltl::holds_when_staying(formula_.formula, letters) &&
                   (!good_prefix || formula_.dfa.accepting[r_.automaton_trace.back()]);
     if (!r_.accepted && r_.failure.empty()) {
-      r_.failure = labelling.named_bodies().empty() ? "the region trace does not satisfy the formula"
+      r_.failure = labelling.named_parts().empty() ? "the region trace does not satisfy the formula"
                                                     : "the trace of regions and body facts does not satisfy the formula";
     }
     r_.ends_at_rest = !formula_.ends_at_rest() || r_.states.back().at_rest();

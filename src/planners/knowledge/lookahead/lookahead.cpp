@@ -31,31 +31,40 @@ namespace {
 constexpr double kRobotDiametersBeside = 2.0;
 constexpr double kWayCell = 0.05;  // m: the grid of that check
 
+// Why the look-ahead applies for World body `b`: it cannot get to `regions` with room for the robot beside
+// it; nothing when it can (or cannot move at all).
+std::optional<std::string> narrow_way_of(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge, int b,
+                                         const std::vector<int>& regions) {
+  const auto& body = knowledge.movable_bodies[static_cast<std::size_t>(b)];
+  if (body.body_class == knowledge::BodyClass::kFixed) return std::nullopt;
+  std::vector<geometry::Footprint> obstacles;
+  for (const auto& f : knowledge.fixed_bodies) obstacles.push_back(f.footprint);
+  for (std::size_t other = 0; other < knowledge.movable_bodies.size(); ++other) {
+    if (static_cast<int>(other) != b) obstacles.push_back(knowledge.movable_bodies[other].footprint);
+  }
+  const double side = 2 * body.footprint.shape.half_extents().minCoeff();
+  const double width = side + kRobotDiametersBeside * 2 * knowledge.robot.radius;
+  const double cell = std::max(kWayCell, std::sqrt(knowledge.workspace.size().prod() / 250'000.0));
+  geometry::DiscField wide(knowledge.workspace, cell, width / 2, obstacles);
+  wide.compute_distances([&](const geometry::Vec2& centre, double) {
+    return std::any_of(regions.begin(), regions.end(), [&](int r) { return world.regions[static_cast<std::size_t>(r)].polygon.contains(centre); });
+  });
+  if (wide.reaches_target(body.footprint.pose.position)) return std::nullopt;
+  return fmt::format("{}'s way to its regions is narrower than {:.2f} m (its side {:.2f} m and two robot diameters) "
+                     "among the walls and the other bodies",
+                     body.name, width, side);
+}
+
 // Why the look-ahead applies: a named body cannot get to its regions with room for the robot beside it,
 // among the walls and the other bodies where they stand (boxes side by side need an order as much as a
 // corridor does). Nothing when every named body can.
 std::optional<std::string> narrow_way(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
                                       const knowledge::Labelling& labelling) {
-  for (const knowledge::Labelling::NamedBody& named : labelling.named_bodies()) {
-    const auto& body = knowledge.movable_bodies[static_cast<std::size_t>(named.body)];
-    if (body.body_class == knowledge::BodyClass::kFixed) continue;
-    std::vector<geometry::Footprint> obstacles;
-    for (const auto& f : knowledge.fixed_bodies) obstacles.push_back(f.footprint);
-    for (std::size_t b = 0; b < knowledge.movable_bodies.size(); ++b) {
-      if (static_cast<int>(b) != named.body) obstacles.push_back(knowledge.movable_bodies[b].footprint);
-    }
-    const double side = 2 * body.footprint.shape.half_extents().minCoeff();
-    const double width = side + kRobotDiametersBeside * 2 * knowledge.robot.radius;
-    const double cell = std::max(kWayCell, std::sqrt(knowledge.workspace.size().prod() / 250'000.0));
-    geometry::DiscField wide(knowledge.workspace, cell, width / 2, obstacles);
-    wide.compute_distances([&](const geometry::Vec2& centre, double) {
-      return std::any_of(named.regions.begin(), named.regions.end(),
-                         [&](int r) { return world.regions[static_cast<std::size_t>(r)].polygon.contains(centre); });
-    });
-    if (!wide.reaches_target(body.footprint.pose.position)) {
-      return fmt::format("{}'s way to its regions is narrower than {:.2f} m (its side {:.2f} m and two robot diameters) "
-                         "among the walls and the other bodies",
-                         body.name, width, side);
+  for (const knowledge::Labelling::NamedPart& named : labelling.named_parts()) {
+    std::vector<int> regions;
+    for (const std::vector<int>& set : named.region_sets) regions.insert(regions.end(), set.begin(), set.end());
+    for (int b : named.bodies) {
+      if (auto why = narrow_way_of(world, knowledge, b, regions)) return why;
     }
   }
   return std::nullopt;

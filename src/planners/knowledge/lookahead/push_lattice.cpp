@@ -22,17 +22,26 @@ bool square(double yaw) {
 std::optional<PushLattice> PushLattice::build(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
                                               const knowledge::Labelling& labelling, std::string& why_not) {
   PushLattice lattice;
-  if (labelling.named_bodies().empty()) {
+  if (labelling.named_parts().empty()) {
     why_not = "the task names no body";
     return std::nullopt;
   }
   std::vector<geometry::Footprint> walls;
   for (const auto& f : knowledge.fixed_bodies) walls.push_back(f.footprint);
   if (!lattice.take_bodies(knowledge, walls, why_not)) return std::nullopt;
-  const int anchor = labelling.named_bodies().front().body;
+  const int anchor = labelling.named_parts().front().bodies.front();
   if (knowledge.movable_bodies[static_cast<std::size_t>(anchor)].body_class == knowledge::BodyClass::kFixed) {
     why_not = knowledge.movable_bodies[static_cast<std::size_t>(anchor)].name + " is too heavy to push";
     return std::nullopt;
+  }
+  for (const knowledge::Labelling::NamedPart& part : labelling.named_parts()) {
+    for (int b : part.bodies) {
+      // A group's place is all its bodies' together: one the lattice leaves out would be left out of it.
+      if (part.bodies.size() > 1 && knowledge.movable_bodies[static_cast<std::size_t>(b)].body_class == knowledge::BodyClass::kFixed) {
+        why_not = knowledge.movable_bodies[static_cast<std::size_t>(b)].name + " of " + part.name + " is too heavy to push";
+        return std::nullopt;
+      }
+    }
   }
   lattice.push_force_ = knowledge.robot.push_force;
   lattice.anchor_at(knowledge.movable_bodies[static_cast<std::size_t>(anchor)].footprint.pose.position, knowledge.workspace);
@@ -68,6 +77,11 @@ void PushLattice::anchor_at(const geometry::Vec2& a, const geometry::Rect& ws) {
   origin_ = {a.x() - std::floor((a.x() - ws.min.x()) / s) * s, a.y() - std::floor((a.y() - ws.min.y()) / s) * s};
   places_ = geometry::UniformGrid(origin_, s, static_cast<int>(std::floor((ws.max.x() - origin_.x()) / s)) + 1,
                                   static_cast<int>(std::floor((ws.max.y() - origin_.y()) / s)) + 1);
+  // The search asks for neighbours in its innermost loops (the robot's walks): looked up, not computed.
+  neighbours_.resize(static_cast<std::size_t>(cells()) * kDirections);
+  for (std::size_t c = 0; c < static_cast<std::size_t>(cells()); ++c) {
+    for (int d = 0; d < kDirections; ++d) neighbours_[c * kDirections + static_cast<std::size_t>(d)] = static_cast<int>(places_.neighbour(c, kDx[d], kDy[d]));
+  }
 }
 
 void PushLattice::mark_robot_places(const std::vector<geometry::Footprint>& walls, const geometry::Rect& ws, double r) {
@@ -121,19 +135,14 @@ bool PushLattice::add_body(std::size_t k, const scenario::World& world, const kn
   friction_force_.push_back(body.floor_friction_force);
   const geometry::Rect extent = geometry::bounds(body.footprint.shape, body.footprint.pose);
   half_along_.push_back({extent.size().x() / 2, extent.size().y() / 2});
-  int named = -1;
-  for (std::size_t i = 0; i < labelling.named_bodies().size(); ++i) {
-    if (labelling.named_bodies()[i].body == b) named = static_cast<int>(i);
-  }
+  const int named = labelling.part_of(b);
   named_.push_back(named);
   std::vector<int> place(static_cast<std::size_t>(n), 0);
   if (named >= 0) {
-    const auto& regions = labelling.named_bodies()[static_cast<std::size_t>(named)].regions;
+    const knowledge::Labelling::NamedPart& part = labelling.named_parts()[static_cast<std::size_t>(named)];
     for (int c = 0; c < n; ++c) {
-      for (std::size_t i = 0; i < regions.size(); ++i) {
-        if (world.regions[static_cast<std::size_t>(regions[i])].polygon.contains(centre(c))) {
-          place[static_cast<std::size_t>(c)] = static_cast<int>(i) + 1;
-        }
+      for (std::size_t r = 0; r < world.regions.size(); ++r) {
+        if (world.regions[r].polygon.contains(centre(c))) place[static_cast<std::size_t>(c)] = part.place_of_region(static_cast<int>(r));
       }
     }
   }
@@ -165,10 +174,6 @@ int PushLattice::cell_at(const geometry::Vec2& p) const {
   const int column = static_cast<int>(std::lround((p.x() - origin_.x()) / step_));
   const int row = static_cast<int>(std::lround((p.y() - origin_.y()) / step_));
   return places_.contains(column, row) ? static_cast<int>(places_.index(column, row)) : -1;
-}
-
-int PushLattice::neighbour(int cell, int d) const {
-  return static_cast<int>(places_.neighbour(static_cast<std::size_t>(cell), kDx[d], kDy[d]));
 }
 
 std::optional<std::vector<int>> PushLattice::arrangement(const scenario::EnvironmentState& state) const {

@@ -42,7 +42,7 @@ class PushLattice {
   // The place nearest `p`, or -1 outside the lattice.
   int cell_at(const geometry::Vec2& p) const;
   // The next place in direction `d`, or -1 past the lattice's edge.
-  int neighbour(int cell, int d) const;
+  int neighbour(int cell, int d) const { return neighbours_[static_cast<std::size_t>(cell) * kDirections + static_cast<std::size_t>(d)]; }
 
   // The bodies on the lattice: World::movable_bodies indices of the pushable ones.
   const std::vector<int>& bodies() const { return bodies_; }
@@ -55,7 +55,7 @@ class PushLattice {
   // first: pushed one place on, the first closes the gaps before the others move. Nothing when the floor
   // friction of them all holds the drive back, or a body would end nearer another place than its own.
   std::optional<std::vector<double>> line_shortfalls(const std::vector<int>& line, int d) const;
-  // Labelling::named_bodies index of lattice body k, or -1 when the task does not name it.
+  // Labelling::named_parts index of lattice body k, or -1 when the task does not name it.
   int named(int k) const { return named_[static_cast<std::size_t>(k)]; }
   // The place (labelling.h) of named lattice body k at `cell`.
   int place(int k, int cell) const { return place_[static_cast<std::size_t>(k)][static_cast<std::size_t>(cell)]; }
@@ -85,6 +85,7 @@ class PushLattice {
   geometry::UniformGrid places_;  // row by row: a place's column and row
   std::vector<int> bodies_;
   std::vector<int> named_;
+  std::vector<int> neighbours_;                // per place and direction: neighbour()
   std::vector<std::vector<bool>> body_free_;   // per lattice body, per place
   std::vector<std::vector<bool>> pushable_;    // per lattice body, per direction
   std::vector<std::vector<int>> place_;        // per lattice body, per place

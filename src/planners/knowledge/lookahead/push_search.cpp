@@ -68,20 +68,34 @@ bool PushSearcher::ends_pushing(int stage) const {
 
 int PushSearcher::facts_of(int stage, const std::vector<int>& cells) const {
   int facts = stages_.facts_of(stage);
+  // A part's place is its bodies' common place: a group is in a region set only when all of it is.
+  std::vector<int> place(labelling_.named_parts().size(), -1);
   for (std::size_t k = 0; k < cells.size(); ++k) {
     const int named = lattice_.named(static_cast<int>(k));
-    if (named >= 0) facts = labelling_.with_place(facts, named, lattice_.place(static_cast<int>(k), cells[k]));
+    if (named < 0) continue;
+    const int here = lattice_.place(static_cast<int>(k), cells[k]);
+    int& common = place[static_cast<std::size_t>(named)];
+    common = common < 0 || common == here ? here : 0;
+  }
+  for (std::size_t i = 0; i < place.size(); ++i) {
+    if (place[i] >= 0) facts = labelling_.with_place(facts, static_cast<int>(i), place[i]);
   }
   return facts;
 }
 
 std::vector<int> PushSearcher::pushes_to(int k, const std::set<int>& places) const {
-  // Backwards from the wanted places: the body comes to `c` from `c - d`, pushed by a robot at `c - 2d`.
-  std::vector<int> left(static_cast<std::size_t>(lattice_.cells()), kNever);
-  std::vector<int> queue;
+  std::vector<int> targets;
   for (int c = 0; c < lattice_.cells(); ++c) {
-    if (lattice_.body_fits(k, c) && places.count(lattice_.place(k, c)) > 0) left[static_cast<std::size_t>(c)] = 0, queue.push_back(c);
+    if (lattice_.body_fits(k, c) && places.count(lattice_.place(k, c)) > 0) targets.push_back(c);
   }
+  return pushes_to_cells(k, targets);
+}
+
+std::vector<int> PushSearcher::pushes_to_cells(int k, const std::vector<int>& targets) const {
+  // Backwards from the targets: the body comes to `c` from `c - d`, pushed by a robot at `c - 2d`.
+  std::vector<int> left(static_cast<std::size_t>(lattice_.cells()), kNever);
+  std::vector<int> queue = targets;
+  for (int c : targets) left[static_cast<std::size_t>(c)] = 0;
   for (std::size_t i = 0; i < queue.size(); ++i) {
     const int c = queue[i];
     for (int d = 0; d < kDirections; ++d) {
@@ -132,7 +146,44 @@ PushSearcher::Goals PushSearcher::goals_from(int stage) const {
       if (place > 0) tables[static_cast<std::size_t>(place)] = pushes_to(k, {place});
     }
   }
+  add_matchings(goals);
   return goals;
+}
+
+void PushSearcher::add_matchings(Goals& goals) const {
+  const int bodies = static_cast<int>(lattice_.bodies().size());
+  goals.matched.assign(static_cast<std::size_t>(bodies), false);
+  std::set<std::pair<int, int>> wanted;  // (part, place) of the groups some ending wants in a region set
+  for (const std::vector<int>& ending : goals.endings) {
+    for (int k = 0; k < bodies; ++k) {
+      const int part = lattice_.named(k);
+      if (part >= 0 && labelling_.named_parts()[static_cast<std::size_t>(part)].bodies.size() > 1) {
+        goals.matched[static_cast<std::size_t>(k)] = true;
+        if (ending[static_cast<std::size_t>(k)] > 0) wanted.insert({part, ending[static_cast<std::size_t>(k)]});
+      }
+    }
+  }
+  for (const auto& [part, place] : wanted) {
+    Goals::Matching matching{part, place, {}, {}, {}};
+    for (int k = 0; k < bodies; ++k) {
+      if (lattice_.named(k) == part) matching.bodies.push_back(k);
+    }
+    for (int c = 0; c < lattice_.cells(); ++c) {
+      const bool fits = std::any_of(matching.bodies.begin(), matching.bodies.end(),
+                                    [&](int k) { return lattice_.body_fits(k, c) && lattice_.place(k, c) == place; });
+      if (fits) matching.targets.push_back(c);
+    }
+    const std::size_t targets = matching.targets.size();
+    for (int k : matching.bodies) {
+      auto& table = matching.pushes.emplace_back(static_cast<std::size_t>(lattice_.cells()) * targets, kNever);
+      for (std::size_t j = 0; j < targets; ++j) {
+        if (!lattice_.body_fits(k, matching.targets[j])) continue;
+        const std::vector<int> to_target = pushes_to_cells(k, {matching.targets[j]});
+        for (std::size_t c = 0; c < to_target.size(); ++c) table[c * targets + j] = to_target[c];
+      }
+    }
+    goals.matchings.push_back(std::move(matching));
+  }
 }
 
 int PushSearcher::estimate(int stage, const std::vector<int>& cells) const { return goals_from(stage).estimate(cells); }
@@ -146,6 +197,27 @@ int PushSearcher::Goals::left(int k, int cell) const {
   return table.empty() ? 0 : table[static_cast<std::size_t>(cell)];
 }
 
+int PushSearcher::Goals::Matching::cost(const std::vector<int>& cells, std::vector<int>& matrix, geometry::Assignment& assignment) const {
+  const int rows = static_cast<int>(bodies.size()), columns = static_cast<int>(targets.size());
+  matrix.resize(static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns));
+  for (int i = 0; i < rows; ++i) {
+    const auto cell = static_cast<std::size_t>(cells[static_cast<std::size_t>(bodies[static_cast<std::size_t>(i)])]);
+    const auto row = pushes[static_cast<std::size_t>(i)].begin() + static_cast<std::ptrdiff_t>(cell * static_cast<std::size_t>(columns));
+    std::copy(row, row + columns, matrix.begin() + static_cast<std::ptrdiff_t>(i) * columns);
+  }
+  if (rows <= kMaxMatchedBodies) return assignment.cheapest(matrix, rows, columns, kNever);
+  if (rows > columns) return kNever;
+  long long by_body = 0, by_place = 0;
+  for (int i = 0; i < rows; ++i) by_body += *std::min_element(matrix.begin() + i * columns, matrix.begin() + (i + 1) * columns);
+  for (int j = 0; j < columns && rows == columns; ++j) {
+    int cheapest = kNever;
+    for (int i = 0; i < rows; ++i) cheapest = std::min(cheapest, matrix[static_cast<std::size_t>(i * columns + j)]);
+    by_place += cheapest;
+  }
+  const long long bound = std::max(by_body, by_place);
+  return bound >= kNever ? kNever : static_cast<int>(bound);
+}
+
 int PushSearcher::Goals::estimate(const std::vector<int>& cells) const {
   int apart = 0;
   for (std::size_t k = 0; k < cells.size(); ++k) apart += left(static_cast<int>(k), cells[k]);
@@ -155,8 +227,14 @@ int PushSearcher::Goals::estimate(const std::vector<int>& cells) const {
     int sum = 0;
     for (std::size_t k = 0; k < cells.size() && sum < best; ++k) {
       const int place = ending[k];
-      if (place == 0 || pushes_to_place[k].empty()) continue;
+      if (place == 0 || pushes_to_place[k].empty() || matched[k]) continue;
       const int pushes = pushes_to_place[k][static_cast<std::size_t>(place)][static_cast<std::size_t>(cells[k])];
+      sum = pushes == kNever ? kNever : sum + pushes;
+    }
+    for (const Matching& m : matchings) {
+      if (sum >= best) break;
+      if (ending[static_cast<std::size_t>(m.bodies.front())] != m.place) continue;
+      const int pushes = m.cost(cells, scratch_, assignment_);
       sum = pushes == kNever ? kNever : sum + pushes;
     }
     best = std::min(best, sum);

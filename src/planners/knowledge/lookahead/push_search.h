@@ -3,9 +3,10 @@
 // task's stage, by pushes of one body one step (the robot walks, between pushes, through the places no
 // body holds), until the stage needs no more body moves; a line of bodies pushed end to end may end it.
 // Weighted A*: a push costs the bodies it moves, and the estimate is the fewest pushes, each named body
-// alone, to the places of one fact set that ends the pushing (for Sokoban's any box on any goal, the
-// cheapest matching of boxes to goals, so two boxes never count one goal); with more such fact sets than
-// kMaxEndings, each body's fewest pushes to any of its places. Pruned inside this search only: arrangements where the automaton dies, a body the task needs
+// alone, to the places of one fact set that ends the pushing; the bodies of a group the fact set wants in
+// a region set (Sokoban's any box on any goal) are matched to its places at least cost, so two boxes
+// never count one goal; with more such fact sets than kMaxEndings, each body's fewest pushes to any of
+// its places. Pruned inside this search only: arrangements where the automaton dies, a body the task needs
 // somewhere on a place it can never be pushed there from (a box against a wall its goal is not along),
 // four places in a square all held by walls or bodies, no two bodies side by side, one of them a body
 // not yet where the task needs it (none of them can move again), and more generally a body pushed where
@@ -15,6 +16,7 @@
 
 #include "push_lattice.h"
 #include "physltl/base/deadline.h"
+#include "physltl/geometry/assignment.h"
 #include "physltl/planning/stage_graph.h"
 
 #include <set>
@@ -33,6 +35,10 @@ inline constexpr long long kPreviewArrangements = 20'000;
 // The estimate weighs each arrangement against every ending fact set up to this many (a Sokoban level of
 // 6 boxes, any box on any goal, has 720); beyond it, the bodies' places are taken apart.
 inline constexpr int kMaxEndings = 1024;
+// A group of up to this many bodies is matched to its places exactly (O(n^3) per arrangement); a larger
+// one by the larger of two sums, each body's cheapest place and, as many places as bodies, each place's
+// cheapest body: both lower bounds on any matching.
+inline constexpr int kMaxMatchedBodies = 20;
 
 struct PushStep {
   int body = 0;  // lattice body: the one the robot pushes
@@ -92,10 +98,29 @@ class PushSearcher {
     // (empty when the endings are too many to weigh).
     std::vector<std::vector<int>> endings;
     std::vector<std::vector<std::vector<int>>> pushes_to_place;
+    // Per group whose bodies an ending wants in one of its region sets (`place`): its lattice bodies, the
+    // places of the set they fit on, and per body, per cell, per such place, the fewest pushes of the body
+    // alone there (pushes[i][cell * targets.size() + j]: a body's row of the cost matrix in one piece).
+    struct Matching {
+      int part = 0, place = 0;
+      std::vector<int> bodies, targets;
+      std::vector<std::vector<int>> pushes;
+      int cost(const std::vector<int>& cells, std::vector<int>& scratch, geometry::Assignment& assignment) const;
+    };
+    std::vector<Matching> matchings;
+    std::vector<bool> matched;  // per lattice body: in a group of several, weighed by the group's matching
     int left(int k, int cell) const;           // 0 for a body the task leaves free
-    // A lower bound on the body steps left: the cheapest ending, each body pushed alone.
+    // A lower bound on the body steps left: the cheapest ending, each body pushed alone, a group's bodies
+    // matched to distinct places.
     int estimate(const std::vector<int>& cells) const;
+
+   private:
+    mutable std::vector<int> scratch_;  // the cost matrix of a matching: a Goals belongs to one search
+    mutable geometry::Assignment assignment_;
   };
+  // Per place, the fewest pushes of lattice body k alone to one of `targets`.
+  std::vector<int> pushes_to_cells(int k, const std::vector<int>& targets) const;
+  void add_matchings(Goals& goals) const;
   // Per place, the fewest pushes of lattice body k alone to a place whose labelling place is in `places`.
   std::vector<int> pushes_to(int k, const std::set<int>& places) const;
   Goals goals_from(int stage) const;
