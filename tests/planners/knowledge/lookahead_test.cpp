@@ -62,6 +62,16 @@ TEST(LookAhead, AppliesWhereANamedBodyHasNoRoomBesideItOnItsWay) {
   EXPECT_NE(ahead_of(roomy).plan.rule.reason.find("room for the robot beside it"), std::string::npos) << ahead_of(roomy).plan.rule.reason;
 }
 
+// round_in_corridor: a named cylinder's width is its diameter, not a box's side (which a cylinder has not).
+TEST(LookAhead, ARoundBodysWidthInTheRuleIsItsDiameter) {
+  const TestProblem p(kWorlds + "round_in_corridor.lua");
+  const std::string& reason = ahead_of(p).plan.rule.reason;
+  EXPECT_FALSE(ahead_of(p).plan.rule.applies);
+  EXPECT_NE(reason.find("drum's way to its regions is narrower than 1.60 m (its width 0.60 m and two robot diameters)"),
+            std::string::npos) << reason;
+  EXPECT_NE(reason.find("drum is not a box standing square"), std::string::npos) << reason;
+}
+
 // side_by_side: two boxes next to each other in an open room; the walls alone leave room round them.
 TEST(LookAhead, AppliesWhereBoxesStandSideBySideInTheOpen) {
   const TestProblem p(kWorlds + "side_by_side.lua");

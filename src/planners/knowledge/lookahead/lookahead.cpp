@@ -42,7 +42,8 @@ std::optional<std::string> narrow_way_of(const scenario::World& world, const kno
   for (std::size_t other = 0; other < knowledge.movable_bodies.size(); ++other) {
     if (static_cast<int>(other) != b) obstacles.push_back(knowledge.movable_bodies[other].footprint);
   }
-  const double side = 2 * body.footprint.shape.half_extents().minCoeff();
+  // Across its centre at its narrowest: a box's shorter side, a disc's diameter.
+  const double side = 2 * body.footprint.shape.centre_clearance();
   const double width = side + kRobotDiametersBeside * 2 * knowledge.robot.radius;
   const double cell = std::max(kWayCell, std::sqrt(knowledge.workspace.size().prod() / 250'000.0));
   geometry::DiscField wide(knowledge.workspace, cell, width / 2, obstacles);
@@ -50,7 +51,7 @@ std::optional<std::string> narrow_way_of(const scenario::World& world, const kno
     return std::any_of(regions.begin(), regions.end(), [&](int r) { return world.regions[static_cast<std::size_t>(r)].polygon.contains(centre); });
   });
   if (wide.reaches_target(body.footprint.pose.position)) return std::nullopt;
-  return fmt::format("{}'s way to its regions is narrower than {:.2f} m (its side {:.2f} m and two robot diameters) "
+  return fmt::format("{}'s way to its regions is narrower than {:.2f} m (its width {:.2f} m and two robot diameters) "
                      "among the walls and the other bodies",
                      body.name, width, side);
 }
