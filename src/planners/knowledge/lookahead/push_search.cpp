@@ -9,6 +9,7 @@
 #include <tuple>
 #include <set>
 #include <memory_resource>
+#include <new>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -567,7 +568,7 @@ class ArrangementSearch {
         seen_(static_cast<std::size_t>(lattice.cells()), -1),
         seen_after_(static_cast<std::size_t>(lattice.cells()), -1),
         bodies_(lattice.bodies().size()),
-        known_(0, KeyHash{this}, KeyEqual{this}, &arena_) {}
+        known_(*new (arena_.allocate(sizeof(KnownSet), alignof(KnownSet))) KnownSet(0, KeyHash{this}, KeyEqual{this}, &arena_)) {}
 
   // The arrangement to start from; returns its node.
   int start(const std::vector<int>& cells, int robot_cell, int stage) {
@@ -581,7 +582,7 @@ class ArrangementSearch {
   int settle() {
     const int index = std::get<2>(open_.top());
     open_.pop();
-    const Node node = nodes_[static_cast<std::size_t>(index)];
+    const Node node = node_at(index);
     const std::vector<int> cells = cells_of(index);
     hold(cells);
     walk(lattice_, node.robot, holder_, seen_, mark_, queue_);
@@ -590,15 +591,15 @@ class ArrangementSearch {
       for (int d = 0; d < kDirections; ++d) {
         const int added = is_line(cells, static_cast<int>(k), d) ? finish_with_line(node, cells, index, static_cast<int>(k), d, reach)
                                                                   : push(node, cells, index, static_cast<int>(k), d, reach);
-        if (added >= 0 && searcher_.ends_pushing(nodes_[static_cast<std::size_t>(added)].stage)) return added;
+        if (added >= 0 && searcher_.ends_pushing(node_at(added).stage)) return added;
       }
     }
     return -1;
   }
   std::vector<PushStep> steps_to(int n) const {
     std::vector<PushStep> steps;
-    for (; nodes_[static_cast<std::size_t>(n)].parent >= 0; n = nodes_[static_cast<std::size_t>(n)].parent) {
-      steps.push_back(nodes_[static_cast<std::size_t>(n)].step);
+    for (; node_at(n).parent >= 0; n = node_at(n).parent) {
+      steps.push_back(node_at(n).step);
     }
     std::reverse(steps.begin(), steps.end());
     return steps;
@@ -697,12 +698,14 @@ class ArrangementSearch {
 
   // Stores `node` with its places; returns its number.
   int keep(Node node, const std::vector<int>& cells) {
-    const std::size_t n = nodes_.size();
+    const std::size_t n = stored_;
     if (n % kArrangementsPerBlock == 0 && n / kArrangementsPerBlock == pool_.size()) {
       pool_.push_back(std::make_unique<int[]>(kArrangementsPerBlock * bodies_));
+      node_blocks_.push_back(std::make_unique<Node[]>(kArrangementsPerBlock));
     }
     std::copy(cells.begin(), cells.end(), pool_[n / kArrangementsPerBlock].get() + n % kArrangementsPerBlock * bodies_);
-    nodes_.push_back(std::move(node));
+    node_blocks_[n / kArrangementsPerBlock][n % kArrangementsPerBlock] = std::move(node);
+    ++stored_;
     return static_cast<int>(n);
   }
   const int* places(int n) const {
@@ -715,17 +718,17 @@ class ArrangementSearch {
   int add(Node node, const std::vector<int>& cells) {
     const int index = keep(std::move(node), cells);
     if (!known_.insert(index).second) {
-      nodes_.pop_back();
+      --stored_;  // its slot is the next node's
       return -1;
     }
-    open_.push({nodes_.back().cost + weight_ * goals_.estimate(cells), order_++, index});
+    open_.push({node_at(index).cost + weight_ * goals_.estimate(cells), order_++, index});
     return index;
   }
 
   struct KeyHash {
     const ArrangementSearch* search;
     std::size_t operator()(int n) const {
-      const Node& node = search->nodes_[static_cast<std::size_t>(n)];
+      const Node& node = search->node_at(n);
       const std::size_t h = std::hash<long long>{}((static_cast<long long>(node.robot) << 32) ^ node.stage);
       return mix_places(h, search->places(n), search->bodies_);
     }
@@ -733,8 +736,8 @@ class ArrangementSearch {
   struct KeyEqual {
     const ArrangementSearch* search;
     bool operator()(int a, int b) const {
-      const Node& x = search->nodes_[static_cast<std::size_t>(a)];
-      const Node& y = search->nodes_[static_cast<std::size_t>(b)];
+      const Node& x = search->node_at(a);
+      const Node& y = search->node_at(b);
       const int* p = search->places(a);
       const int* q = search->places(b);
       return x.robot == y.robot && x.stage == y.stage && std::equal(p, p + search->bodies_, q);
@@ -753,16 +756,25 @@ class ArrangementSearch {
   int mark_ = 0;
   CorralTest::Verdicts corral_verdicts_;
   std::size_t bodies_;
-  // Node n and its places (block n / kArrangementsPerBlock, from (n % kArrangementsPerBlock) * bodies_ on),
-  // in storage that grows without moving what it holds: a vector of millions of them, copied whole as it
-  // grew, held the search for up to a second past its deadline (Microban II level 72, --time-limit 10:
-  // 11.14 s of wall time).
-  std::deque<Node> nodes_;
+  const Node& node_at(int n) const {
+    const auto i = static_cast<std::size_t>(n);
+    return node_blocks_[i / kArrangementsPerBlock][i % kArrangementsPerBlock];
+  }
+
+  // Node n and its places (block n / kArrangementsPerBlock, at n % kArrangementsPerBlock and from
+  // (n % kArrangementsPerBlock) * bodies_ on), in storage that grows without moving what it holds and is
+  // released a block at a time: a vector of millions of nodes, copied whole as it grew, held the search
+  // for up to a second past its deadline (Microban II level 72, --time-limit 10: 11.14 s of wall time),
+  // and a deque of them, freed block by block of nine, took 0.4 s of GRIGoRusha 19's 27 boxes to release.
+  std::vector<std::unique_ptr<Node[]>> node_blocks_;
   std::vector<std::unique_ptr<int[]>> pool_;
-  // The set's entries come from an arena released whole with the search: freed one by one, the
-  // entries of a search cut short at its deadline took over half a second (Microban II level 109).
+  std::size_t stored_ = 0;
+  // The set's entries and buckets come from an arena released whole with the search: freed one by one,
+  // the entries of a search cut short at its deadline took over half a second (Microban II level 109).
+  // The set itself lives in the arena and is never destroyed: its destructor would walk every entry.
   std::pmr::monotonic_buffer_resource arena_;
-  std::pmr::unordered_set<int, KeyHash, KeyEqual> known_;
+  using KnownSet = std::pmr::unordered_set<int, KeyHash, KeyEqual>;
+  KnownSet& known_;
   using Entry = std::tuple<double, long long, int>;  // priority, order of insertion, node
   std::priority_queue<Entry, std::deque<Entry>, std::greater<>> open_;
   long long order_ = 0;
