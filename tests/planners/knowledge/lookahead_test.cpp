@@ -200,6 +200,18 @@ TEST(LookAhead, TheEstimateGivesEachGoalOneBoxAndNeverExceedsTheFewestBodyStepsL
   }
 }
 
+// tunnel: the box is pushed through its passage as one macro, settling the start and the place before the
+// goal only (one push at a time settles each of the five places); the order keeps every step.
+TEST(LookAhead, PushesABoxOnThroughATunnelWithoutSettlingThePlacesBetween) {
+  const TestProblem p(kWorlds + "tunnel.lua");
+  ASSERT_TRUE(ahead_of(p).plan.rule.applies) << ahead_of(p).plan.rule.reason;
+  ASSERT_TRUE(ahead_of(p).plan.found) << ahead_of(p).plan.outcome;
+  EXPECT_EQ(ahead_of(p).plan.arrangements, 2);
+  EXPECT_EQ(ahead_of(p).steps.size(), 5u);
+  ASSERT_EQ(ahead_of(p).plan.pushes.size(), 1u);
+  EXPECT_NEAR(ahead_of(p).plan.pushes[0].distance, 3.0, 1e-9);
+}
+
 // under_the_wall: a box along the top wall, its goal at that wall's east end.
 TEST(LookAhead, PrunesABoxAgainstAWallItsGoalIsNotAlong) {
   const TestProblem p(kPuzzles + "under_the_wall.lua");

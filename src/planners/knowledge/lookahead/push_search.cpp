@@ -622,28 +622,61 @@ class ArrangementSearch {
   }
 
   // The arrangement after pushing body k of `node` one step in direction d, added unless it was met
-  // before or is pruned; its node, or -1.
+  // before or is pruned; its node, or -1. Pushed on through a tunnel (in_tunnel), each step kept for the
+  // order.
   int push(const Node& node, const std::vector<int>& cells, int index, int k, int d, int reach) {
-    const int at = cells[static_cast<std::size_t>(k)];
+    int at = cells[static_cast<std::size_t>(k)];
     if (!lattice_.can_push(k, d)) return -1;
     const int stand = lattice_.neighbour(at, opposite(d));
-    const int to = lattice_.neighbour(at, d);
+    int to = lattice_.neighbour(at, d);
     if (stand < 0 || to < 0 || seen_[static_cast<std::size_t>(stand)] != reach) return -1;
     if (!lattice_.body_fits(k, to) || holder_[static_cast<std::size_t>(to)] >= 0 || goals_.left(k, to) == kNever) return -1;
     std::vector<int> next = cells;
     next[static_cast<std::size_t>(k)] = to;
-    const int next_stage = searcher_.stage_after(node.stage, next);
+    int next_stage = searcher_.stage_after(node.stage, next);
     if (stages_.distance(next_stage) < 0 || stages_.dead(stages_.automaton_state_of(next_stage))) return -1;
-    holder_[static_cast<std::size_t>(at)] = -1;
+    int parent = index, cost = node.cost + 1;
+    while (in_tunnel(k, d, at, to, next, next_stage)) {
+      parent = keep({0, next_stage, parent, {k, d, at, to, {}}, cost}, next);
+      at = to, to = lattice_.neighbour(to, d), ++cost;
+      next[static_cast<std::size_t>(k)] = to;
+    }
+    holder_[static_cast<std::size_t>(cells[static_cast<std::size_t>(k)])] = -1;
     holder_[static_cast<std::size_t>(to)] = k;
     bool dead = searcher_.square_frozen(goals_, next, holder_, to) || FreezeTest(lattice_, goals_, holder_).deadlocked(to);
     const int robot = dead ? 0 : walk(lattice_, at, holder_, seen_after_, mark_, queue_);
     if (!dead) dead = corralled(next, to, at);
     ++mark_;
     holder_[static_cast<std::size_t>(to)] = -1;
-    holder_[static_cast<std::size_t>(at)] = k;
+    holder_[static_cast<std::size_t>(cells[static_cast<std::size_t>(k)])] = k;
     if (dead) return -1;
-    return add({robot, next_stage, index, {k, d, at, to, {}}, node.cost + 1}, next);
+    return add({robot, next_stage, parent, {k, d, at, to, {}}, cost}, next);
+  }
+
+  // Whether body k, just pushed from `at` to `to` in direction d (the arrangement `next`, its stage
+  // `stage`), is to be pushed on at once: a tunnel macro (Junghanns and Schaeffer's), kept short of the
+  // tunnel's exit. The robot on `at` and the body on `to` each have walls on both sides across d, and so
+  // has the place ahead, which is free, not where the task wants the body (nor is `to`), not dead, and
+  // keeps the stage: from the body's place on to the next, nothing but the body's place in the passage changes (the
+  // passage stays shut, the robot's reach the same on either side), and from the exit side the body can
+  // be pushed back. The exit itself, a goal in the passage and a change of stage are left to the search.
+  bool in_tunnel(int k, int d, int at, int to, const std::vector<int>& next, int stage) const {
+    const auto walled = [&](int c) {
+      for (int side : {0, 1}) {
+        const int across = lattice_.neighbour(c, d < 2 ? 2 + side : side);
+        if (across >= 0 && lattice_.robot_fits(across)) return false;
+      }
+      return true;
+    };
+    const int ahead = lattice_.neighbour(to, d);
+    if (ahead < 0 || !walled(at) || !walled(to) || !walled(ahead)) return false;
+    if (goals_.left(k, to) == 0) return false;  // where the task wants it: pushed on, it would leave
+    if (!lattice_.body_fits(k, ahead) || holder_[static_cast<std::size_t>(ahead)] >= 0) return false;
+    const int left = goals_.left(k, ahead);
+    if (left == 0 || left == kNever) return false;
+    std::vector<int> moved = next;
+    moved[static_cast<std::size_t>(k)] = ahead;
+    return searcher_.stage_after(stage, moved) == stage;
   }
 
   // After a push onto `to` (holder_ and seen_after_ marked mark_ as it leaves them, the robot on `robot_cell`):
