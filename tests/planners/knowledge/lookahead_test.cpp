@@ -212,6 +212,16 @@ TEST(LookAhead, PushesABoxOnThroughATunnelWithoutSettlingThePlacesBetween) {
   EXPECT_NEAR(ahead_of(p).plan.pushes[0].distance, 3.0, 1e-9);
 }
 
+// tunnel_goal_inside: the goal is inside the passage; the macro stops the box on it (a first version pushed
+// it on past the goal, and the search found no order).
+TEST(LookAhead, ATunnelMacroStopsABoxOnAGoalInsideThePassage) {
+  const TestProblem p(kWorlds + "tunnel_goal_inside.lua");
+  ASSERT_TRUE(ahead_of(p).plan.found) << ahead_of(p).plan.outcome;
+  ASSERT_EQ(ahead_of(p).plan.pushes.size(), 1u);
+  EXPECT_NEAR(ahead_of(p).plan.pushes[0].distance, 1.8, 1e-9);
+  EXPECT_NEAR(ahead_of(p).plan.pushes[0].to.x(), region_centre(p, "goal1").x(), 1e-9);
+}
+
 // under_the_wall: a box along the top wall, its goal at that wall's east end.
 TEST(LookAhead, PrunesABoxAgainstAWallItsGoalIsNotAlong) {
   const TestProblem p(kPuzzles + "under_the_wall.lua");
