@@ -3,6 +3,7 @@
 #include "obstacle.h"
 #include "physltl/geometry/disc_field.h"
 #include "physltl/geometry/free_space.h"
+#include "physltl/ltl/object_atom.h"
 
 #include <fmt/format.h>
 
@@ -200,9 +201,8 @@ class ObjectJudge {
 
   // The verdict, and in `why` the kind of unreachability when it is unreachable.
   ObjectVerdict judge(const ObjectProposition& object, Unreachability& why) {
-    ObjectVerdict verdict{object.name, "", "", object.bodies, object.regions, true, true, ""};
-    const std::size_t at = object.name.find('@');
-    verdict.body = object.name.substr(0, at), verdict.region = object.name.substr(at + 1);
+    const ltl::ObjectAtom atom = ltl::object_atom(object.name).value_or(ltl::ObjectAtom{object.name, object.name});
+    ObjectVerdict verdict{object.name, atom.body, atom.region, object.bodies, object.regions, true, true, ""};
     std::string standing;  // the bodies that cannot move, inside
     for (int b : object.bodies) {
       const MovableBodyKnowledge& body = k_.movable_bodies[static_cast<size_t>(b)];

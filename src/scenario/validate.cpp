@@ -32,13 +32,14 @@ constexpr double kMaxSpeed = 20.0;  // m/s: a mobile robot among boxes, and a bo
 constexpr double kMaxTurnRateDeg = 3600.0;  // deg/s: ten turns a second
 constexpr double kDegree = std::numbers::pi / 180.0;
 
-// [a-z_][a-zA-Z0-9_]*, checked by hand: std::regex recurses per character and overflows the stack on the
-// long names a script can make.
-bool is_proposition_name(const std::string& name) {
+// [a-z_][a-zA-Z0-9_]* (with `lower_first`) or [a-zA-Z_][a-zA-Z0-9_]*, checked by hand: std::regex recurses
+// per character and overflows the stack on the long names a script can make.
+bool is_word(const std::string& name, bool lower_first) {
   const auto word_char = [](char c) { return c == '_' || std::isalnum(static_cast<unsigned char>(c)); };
-  return !name.empty() && (name[0] == '_' || std::islower(static_cast<unsigned char>(name[0]))) &&
-         std::all_of(name.begin(), name.end(), word_char);
+  const auto first = static_cast<unsigned char>(name.empty() ? '0' : name[0]);
+  return (first == '_' || (lower_first ? std::islower(first) : std::isalpha(first))) && std::all_of(name.begin(), name.end(), word_char);
 }
+bool is_proposition_name(const std::string& name) { return is_word(name, true); }
 
 class Validator {
  public:
@@ -264,8 +265,7 @@ class Validator {
     std::map<std::string, Location> names;
     for (const Group& g : world_.groups) {
       const std::string what = "group '" + g.name + "'";
-      const auto word_char = [](char c) { return c == '_' || std::isalnum(static_cast<unsigned char>(c)); };
-      if (g.name.empty() || std::isdigit(static_cast<unsigned char>(g.name[0])) || !std::all_of(g.name.begin(), g.name.end(), word_char)) {
+      if (!is_word(g.name, false)) {
         error(g.where, what + ": a group name must start with a letter or '_' and hold only letters, digits and '_' "
                               "(it is part of a proposition in the formula)");
       }

@@ -46,7 +46,7 @@ bool crosses(const geometry::Shape& shape, const geometry::Pose2& pose, const Ve
 
 ObjectLead::ObjectLead(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
                        const decomposition::Decomposition& decomposition)
-    : world_(world), knowledge_(knowledge), decomposition_(decomposition) {}
+    : world_(world), knowledge_(knowledge), decomposition_(decomposition), regions_(world) {}
 
 const geometry::DiscField& ObjectLead::way(const knowledge::Labelling::NamedPart& part, int body_index, int place) {
   std::unique_ptr<geometry::DiscField>& way = ways_[{body_index, place}];
@@ -73,11 +73,7 @@ const geometry::DiscField& ObjectLead::way(const knowledge::Labelling::NamedPart
 }
 
 bool ObjectLead::placed(const knowledge::Labelling::NamedPart& part, int place, const Vec2& centre) const {
-  int region = -1;
-  for (std::size_t r = 0; r < world_.regions.size() && region < 0; ++r) {
-    if (world_.regions[r].polygon.contains(centre)) region = static_cast<int>(r);
-  }
-  return part.place_of_region(region) == place;
+  return part.place_of_region(regions_.at(centre)) == place;
 }
 
 ObjectLead::Goal ObjectLead::goal(const knowledge::Labelling& labelling, const BodyMove& move,

@@ -66,6 +66,7 @@ class ObjectLead {
   const scenario::World& world_;
   const knowledge::AbstractKnowledge& knowledge_;
   const decomposition::Decomposition& decomposition_;
+  const knowledge::RegionMap regions_;  // which region a body's centre is in, as the labelling reads it
   std::map<std::pair<int, int>, std::unique_ptr<geometry::DiscField>> ways_;  // by (body, place)
   std::map<int, std::vector<double>> triangle_distances_;                       // by target triangle
 };

@@ -46,8 +46,12 @@ std::optional<PushLattice> PushLattice::build(const scenario::World& world, cons
   lattice.push_force_ = knowledge.robot.push_force;
   lattice.anchor_at(knowledge.movable_bodies[static_cast<std::size_t>(anchor)].footprint.pose.position, knowledge.workspace);
   lattice.mark_robot_places(walls, knowledge.workspace, knowledge.robot.radius);
+  // The region of each place, the same for every body.
+  const knowledge::RegionMap regions(world);
+  std::vector<int> region_of(static_cast<std::size_t>(lattice.cells()));
+  for (int c = 0; c < lattice.cells(); ++c) region_of[static_cast<std::size_t>(c)] = regions.at(lattice.centre(c));
   for (std::size_t k = 0; k < lattice.bodies_.size(); ++k) {
-    if (!lattice.add_body(k, world, knowledge, labelling, walls, why_not)) return std::nullopt;
+    if (!lattice.add_body(k, region_of, knowledge, labelling, walls, why_not)) return std::nullopt;
   }
   return lattice;
 }
@@ -103,7 +107,7 @@ void PushLattice::mark_robot_places(const std::vector<geometry::Footprint>& wall
   }
 }
 
-bool PushLattice::add_body(std::size_t k, const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
+bool PushLattice::add_body(std::size_t k, const std::vector<int>& region_of, const knowledge::AbstractKnowledge& knowledge,
                            const knowledge::Labelling& labelling, const std::vector<geometry::Footprint>& walls,
                            std::string& why_not) {
   const int b = bodies_[k];
@@ -140,11 +144,7 @@ bool PushLattice::add_body(std::size_t k, const scenario::World& world, const kn
   std::vector<int> place(static_cast<std::size_t>(n), 0);
   if (named >= 0) {
     const knowledge::Labelling::NamedPart& part = labelling.named_parts()[static_cast<std::size_t>(named)];
-    for (int c = 0; c < n; ++c) {
-      for (std::size_t r = 0; r < world.regions.size(); ++r) {
-        if (world.regions[r].polygon.contains(centre(c))) place[static_cast<std::size_t>(c)] = part.place_of_region(static_cast<int>(r));
-      }
-    }
+    for (int c = 0; c < n; ++c) place[static_cast<std::size_t>(c)] = part.place_of_region(region_of[static_cast<std::size_t>(c)]);
   }
   place_.push_back(std::move(place));
   return true;

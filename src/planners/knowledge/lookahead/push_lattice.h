@@ -75,9 +75,9 @@ class PushLattice {
   // The places: one at `anchor`, the others a step apart from it across the workspace.
   void anchor_at(const geometry::Vec2& anchor, const geometry::Rect& workspace);
   void mark_robot_places(const std::vector<geometry::Footprint>& walls, const geometry::Rect& workspace, double robot_radius);
-  // Where lattice body k fits, how it may be pushed, its places for the task; false, with why_not, when
-  // it stands between places.
-  bool add_body(std::size_t k, const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
+  // Where lattice body k fits, how it may be pushed, its places for the task (`region_of`: each place's
+  // World region, -1 for none); false, with why_not, when it stands between places.
+  bool add_body(std::size_t k, const std::vector<int>& region_of, const knowledge::AbstractKnowledge& knowledge,
                 const knowledge::Labelling& labelling, const std::vector<geometry::Footprint>& walls, std::string& why_not);
 
   double step_ = 0.0;
