@@ -76,7 +76,7 @@ TEST(Cli, CheckSearchesPushOrdersWithinABudgetOfItsOwnAndSaysWhenItStoppedThere)
   const std::string level = (out / "microban_ii_47_1.lua").string();
   const Result text = run("check " + level + " --no-preview");
   ASSERT_EQ(text.exit_code, 0) << text.err;
-  EXPECT_NE(text.out.find("lookahead  no push order within check's budget of 20000 arrangements (a run searches up to 400000)"),
+  EXPECT_NE(text.out.find("lookahead  no push order within check's budget of 20000 arrangements (a run of 60 s searches up to 3000000)"),
             std::string::npos)
       << text.out;
   const auto checked = nlohmann::json::parse(run("check " + level + " --json --no-preview").out);
@@ -89,7 +89,7 @@ TEST(Cli, CheckSearchesPushOrdersWithinABudgetOfItsOwnAndSaysWhenItStoppedThere)
   const auto ran = nlohmann::json::parse(slurp(report));
   EXPECT_EQ(ran["lookahead"]["outcome"], "found");
   EXPECT_GT(ran["lookahead"]["arrangements"].get<long long>(), 20000);
-  EXPECT_EQ(ran["lookahead"]["arrangement_budget"], 400000);
+  EXPECT_EQ(ran["lookahead"]["arrangement_budget"], static_cast<long long>(3 * kSlowdown * 50000));
 }
 
 TEST(Cli, TheMainJobPrintsThePushOrderItFollowsAndReportJsonHoldsIt) {

@@ -24,9 +24,10 @@ std::vector<std::string> body_names(const scenario::World& world) {
 std::string lookahead_line(const PushPlan& plan, const scenario::World& world) {
   std::string line = "lookahead  ";
   if (!plan.rule.applies) return line + "off: " + plan.rule.reason;
-  if (!plan.found && plan.budget < lookahead::kMaxArrangements && plan.outcome == "search limit") {
-    return line + fmt::format("no push order within check's budget of {} arrangements (a run searches up to {}): {}", plan.budget,
-                              lookahead::kMaxArrangements, plan.rule.reason);
+  const long long run_budget = lookahead::run_arrangements(world.planner.time_limit);
+  if (!plan.found && plan.budget < run_budget && plan.outcome == "search limit") {
+    return line + fmt::format("no push order within check's budget of {} arrangements (a run of {:g} s searches up to {}): {}",
+                              plan.budget, world.planner.time_limit, run_budget, plan.rule.reason);
   }
   if (!plan.found) return line + fmt::format("no push order ({}, {} arrangements): {}", plan.outcome, plan.arrangements, plan.rule.reason);
   const std::vector<std::string> names = body_names(world);

@@ -19,7 +19,8 @@ std::shared_ptr<const PlannerData> prepare_knowledge(const Problem& problem, con
   // half a second to build.
   prepared->stages = std::make_shared<const planning::StageGraph>(problem.task);
   prepared->routes = planning::choose_routes(problem.world, problem.task, *prepared->stages, problem.decomposition, options.deadline);
-  const long long arrangements = options.preview ? planning::lookahead::kPreviewArrangements : planning::lookahead::kMaxArrangements;
+  const long long arrangements = options.preview ? planning::lookahead::kPreviewArrangements
+                                                 : planning::lookahead::run_arrangements(problem.world.planner.time_limit);
   prepared->lookahead = planning::lookahead::look_ahead(problem.world, problem.knowledge, problem.task, *prepared->stages, options.deadline, arrangements);
   prepared->task_names_bodies = problem.task.names_bodies();
   return prepared;

@@ -477,7 +477,7 @@ class Search {
       if (!cells || robot < 0) continue;
       ++lookahead_replans_;
       const lookahead::PushSearch search =
-          lookahead::PushSearcher(lattice, stages_, task_.labelling).search(node.stage, *cells, robot, {}, kReplanArrangements);
+          lookahead::PushSearcher(lattice, stages_, task_.labelling).search(node.stage, *cells, robot, {}, {kReplanArrangements});
       if (!search.found) return;
       order_steps_ = search.steps;
       push_lead_.emplace(lattice, *cells, order_steps_, knowledge_);

@@ -2,6 +2,7 @@
 // (tests/planning/data/puzzles/): when it applies, the push order it finds, what it prunes, and a puzzle
 // solved end to end by the knowledge planner following it.
 
+#include "lookahead/goal_room.h"
 #include "lookahead/lookahead.h"
 #include "physltl/planning/stage_graph.h"
 #include "planner_data.h"
@@ -12,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -159,10 +161,28 @@ TEST(LookAhead, FindsThePushOrderWhereTheWrongOrderIsDead) {
   EXPECT_EQ(wrong.outcome, "no order of pushes");
 }
 
+// A search ends at its memory cap as at its budget of arrangements, and says which: counted from its
+// tables, so the same search ends at the same arrangement on any machine.
+TEST(LookAhead, ASearchEndsAtItsMemoryCapAndSaysSo) {
+  const TestProblem p(kPuzzles + "order_line.lua");
+  const Searcher on(p);
+  const int stage = ahead_of(p).stage;
+  const int robot = on.lattice.robot_cell(p.world.robot.start);
+  const lookahead::PushSearch free = on.searcher.search(stage, ahead_of(p).start_cells, robot);
+  ASSERT_TRUE(free.found);
+  ASSERT_GT(free.settled, 2);
+  const lookahead::PushSearch capped = on.searcher.search(stage, ahead_of(p).start_cells, robot, {}, {lookahead::kMaxArrangements, 1});
+  EXPECT_FALSE(capped.found);
+  EXPECT_EQ(capped.outcome, "memory limit");
+  EXPECT_EQ(capped.settled, 1);
+  const lookahead::PushSearch counted = on.searcher.search(stage, ahead_of(p).start_cells, robot, {}, {free.settled - 1});
+  EXPECT_EQ(counted.outcome, "search limit");
+}
+
 // The fewest body steps of an order from `cells`, by a uniform-cost search (weight 0: the estimate only
 // breaks no ties); -1 when there is none.
 int fewest_body_steps(const lookahead::PushSearcher& searcher, int stage, const std::vector<int>& cells, int robot) {
-  const lookahead::PushSearch exact = searcher.search(stage, cells, robot, {}, lookahead::kMaxArrangements, 0.0);
+  const lookahead::PushSearch exact = searcher.search(stage, cells, robot, {}, {}, 0.0);
   if (!exact.found) return -1;
   int steps = 0;
   for (const lookahead::PushStep& step : exact.steps) steps += 1 + static_cast<int>(step.ahead.size());
@@ -220,6 +240,44 @@ TEST(LookAhead, ATunnelMacroStopsABoxOnAGoalInsideThePassage) {
   ASSERT_EQ(ahead_of(p).plan.pushes.size(), 1u);
   EXPECT_NEAR(ahead_of(p).plan.pushes[0].distance, 1.8, 1e-9);
   EXPECT_NEAR(ahead_of(p).plan.pushes[0].to.x(), region_centre(p, "goal1").x(), 1e-9);
+}
+
+// goal_room: four goals in a room behind a door one box wide, four boxes before it. The room is found
+// behind the door (and behind each place that cuts it off from the robot), its goals deepest first (the corners of the far row); each box pushed onto the door is
+// pushed on to a goal in the room in the same run of steps, the first one to a corner; the search settles
+// 19 arrangements, where pushing each box a step at a time settled 62.
+TEST(LookAhead, AGoalMacroTakesABoxFromARoomsDoorToTheDeepestFreeGoal) {
+  const TestProblem p(kWorlds + "goal_room.lua");
+  ASSERT_TRUE(ahead_of(p).plan.found) << ahead_of(p).plan.outcome;
+  const lookahead::PushLattice& lattice = *ahead_of(p).lattice;
+  const int door = lattice.cell_at({2.7, 3.3});
+  std::vector<bool> goal(static_cast<std::size_t>(lattice.cells()), false);
+  for (const char* name : {"goal1", "goal2", "goal3", "goal4"}) goal[static_cast<std::size_t>(lattice.cell_at(region_centre(p, name)))] = true;
+  const lookahead::GoalRooms rooms(lattice, goal, lattice.robot_cell(p.world.robot.start));
+  // Behind the door: the room's 15 places (and behind the place below it, the door as well).
+  const lookahead::GoalRoom* room = rooms.entered(door, 2);  // +y
+  ASSERT_NE(room, nullptr);
+  EXPECT_EQ(room->places.size(), 15u);
+  EXPECT_EQ(rooms.entered(door, 3), nullptr);
+  ASSERT_NE(rooms.entered(lattice.cell_at({2.7, 2.7}), 2), nullptr);
+  EXPECT_EQ(rooms.entered(lattice.cell_at({2.7, 2.7}), 2)->places.size(), 16u);
+  ASSERT_EQ(room->goals.size(), 4u);
+  for (int deepest : {room->goals[0], room->goals[1]}) EXPECT_NEAR(std::abs(lattice.centre(deepest).x() - 2.7), 1.2, 1e-9);
+
+  EXPECT_EQ(ahead_of(p).plan.arrangements, 19);
+  const std::vector<lookahead::PushStep>& steps = ahead_of(p).steps;
+  int entered = 0;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    if (steps[i].to != door) continue;
+    std::size_t last = i + 1;
+    while (last < steps.size() && steps[last].body == steps[i].body && !goal[static_cast<std::size_t>(steps[last].to)]) ++last;
+    ASSERT_LT(last, steps.size());
+    EXPECT_TRUE(goal[static_cast<std::size_t>(steps[last].to)]) << "step " << last;
+    if (entered++ == 0) {
+      EXPECT_NEAR(std::abs(lattice.centre(steps[last].to).x() - 2.7), 1.2, 1e-9);
+    }
+  }
+  EXPECT_EQ(entered, 4);
 }
 
 // under_the_wall: a box along the top wall, its goal at that wall's east end.

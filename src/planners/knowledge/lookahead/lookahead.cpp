@@ -129,7 +129,7 @@ Lookahead look_ahead(const scenario::World& world, const knowledge::AbstractKnow
     return result;
   }
   const PushSearch search =
-      PushSearcher(*result.lattice, stages, task.labelling).search(result.stage, result.start_cells, robot, deadline, max_arrangements);
+      PushSearcher(*result.lattice, stages, task.labelling).search(result.stage, result.start_cells, robot, deadline, {max_arrangements});
   plan.arrangements = search.settled;
   plan.budget = max_arrangements;
   plan.outcome = search.outcome;

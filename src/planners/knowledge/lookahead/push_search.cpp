@@ -1,33 +1,23 @@
 #include "push_search.h"
 
+#include "arrangement_store.h"
+#include "goal_room.h"
+
 #include <algorithm>
+#include <array>
+#include <map>
+#include <memory>
 #include <cstdint>
 #include <deque>
-#include <memory>
 #include <limits>
 #include <queue>
-#include <tuple>
 #include <set>
-#include <memory_resource>
-#include <new>
 #include <unordered_map>
-#include <unordered_set>
 
 namespace physltl::planning::lookahead {
 namespace {
 
 constexpr int kNever = std::numeric_limits<int>::max();
-constexpr std::size_t kArrangementsPerBlock = 4096;  // of the search's storage (ArrangementSearch::keep)
-
-// An arrangement met; its bodies' places are in ArrangementSearch's pool.
-struct Node {
-  int robot = 0;  // the smallest place the robot can walk to: the arrangement's robot component
-  int stage = 0;
-  int parent = -1;
-  PushStep step;
-  int cost = 0;  // body steps so far: a line of n bodies pushed one step costs n
-};
-
 
 // The places the robot can walk to from `from` without entering one a body holds (holder[c] >= 0),
 // marked with `mark` in `seen`; returns the smallest.
@@ -58,6 +48,11 @@ std::size_t mix_places(std::size_t seed, const int* first, std::size_t n) {
 }
 
 }  // namespace
+
+long long run_arrangements(double time_limit_s) {
+  if (!(time_limit_s > 0.0) || time_limit_s * kArrangementsPerSecond >= static_cast<double>(kMaxArrangements)) return kMaxArrangements;
+  return std::max(kPreviewArrangements, static_cast<long long>(time_limit_s * kArrangementsPerSecond));
+}
 
 PushSearcher::PushSearcher(const PushLattice& lattice, const StageGraph& stages, const knowledge::Labelling& labelling)
     : lattice_(lattice), stages_(stages), labelling_(labelling) {}
@@ -551,14 +546,12 @@ bool PushSearcher::frozen_apart(int stage, const std::vector<int>& cells, int k)
   return FreezeTest(lattice_, goals, holder).deadlocked(cells[static_cast<std::size_t>(k)]);
 }
 
-// One search's state: the arrangements met, the open ones by priority, and scratch space for the walks.
-// The arrangements' places are stored flat, one block of a place per body each, and the set of those met
-// holds node numbers hashed by those places, in an arena: a search cut short at a few hundred thousand
-// arrangements frees its memory at once rather than over half a second.
+// One search's state: the arrangements met (ArrangementStore), the open ones by priority, and scratch
+// space for the walks.
 class ArrangementSearch {
  public:
   ArrangementSearch(const PushLattice& lattice, const StageGraph& stages, const PushSearcher& searcher,
-                    const PushSearcher::Goals& goals, double weight)
+                    const PushSearcher::Goals& goals, double weight, const std::vector<int>& start_cells)
       : lattice_(lattice),
         stages_(stages),
         searcher_(searcher),
@@ -567,53 +560,98 @@ class ArrangementSearch {
         holder_(static_cast<std::size_t>(lattice.cells()), -1),
         seen_(static_cast<std::size_t>(lattice.cells()), -1),
         seen_after_(static_cast<std::size_t>(lattice.cells()), -1),
-        bodies_(lattice.bodies().size()),
-        known_(*new (arena_.allocate(sizeof(KnownSet), alignof(KnownSet))) KnownSet(0, KeyHash{this}, KeyEqual{this}, &arena_)) {}
+        store_(start_cells) {}
 
-  // The arrangement to start from; returns its node.
-  int start(const std::vector<int>& cells, int robot_cell, int stage) {
+  // Opens the arrangement to start from, the robot on `robot_cell`.
+  void start(int robot_cell, int stage, const std::vector<int>& cells) {
+    find_rooms(robot_cell);
     hold(cells);
-    return add({walk(lattice_, robot_cell, holder_, seen_, mark_++, queue_), stage, -1, {}, 0}, cells);
+    const int robot = walk(lattice_, robot_cell, holder_, seen_, mark_++, queue_);
+    open(store_.add({ArrangementStore::kStart, robot, stage, 0, 0, 0}), 0, cells);
   }
   bool exhausted() const { return open_.empty(); }
   // Settles the open arrangement of highest priority: adds every arrangement one push away, and where a
-  // body has others in a line ahead of it, the pushes of the line that end the pushing. Returns the first
-  // added that ends the pushing, or -1.
-  int settle() {
-    const int index = std::get<2>(open_.top());
+  // body has others in a line ahead of it, the pushes of the line that end the pushing. Returns whether
+  // one added ends the pushing; its order is then steps().
+  bool settle() {
+    const auto m = static_cast<int>(open_.top().met);
     open_.pop();
-    const Node node = node_at(index);
-    const std::vector<int> cells = cells_of(index);
-    hold(cells);
-    walk(lattice_, node.robot, holder_, seen_, mark_, queue_);
-    const int reach = mark_++;
-    for (std::size_t k = 0; k < cells.size(); ++k) {
+    const ArrangementStore::Met met = store_.met(m);
+    const int cost = cost_of(m);
+    const int settled = store_.settle(m, cost, cells_);
+    hold(cells_);
+    walk(lattice_, met.robot, holder_, seen_, mark_, queue_);
+    const Expansion from{settled, met.stage, cost, mark_++};
+    for (std::size_t k = 0; k < cells_.size(); ++k) {
       for (int d = 0; d < kDirections; ++d) {
-        const int added = is_line(cells, static_cast<int>(k), d) ? finish_with_line(node, cells, index, static_cast<int>(k), d, reach)
-                                                                  : push(node, cells, index, static_cast<int>(k), d, reach);
-        if (added >= 0 && searcher_.ends_pushing(node_at(added).stage)) return added;
+        if (is_line(cells_, static_cast<int>(k), d)) {
+          if (finish_with_line(from, static_cast<int>(k), d)) return true;
+          continue;
+        }
+        for (const int added : push(from, static_cast<int>(k), d)) {
+          if (added >= 0 && searcher_.ends_pushing(store_.met(added).stage)) {
+            steps_ = steps_to(added);
+            return true;
+          }
+        }
       }
     }
-    return -1;
+    return false;
   }
-  std::vector<PushStep> steps_to(int n) const {
-    std::vector<PushStep> steps;
-    for (; node_at(n).parent >= 0; n = node_at(n).parent) {
-      steps.push_back(node_at(n).step);
-    }
-    std::reverse(steps.begin(), steps.end());
-    return steps;
+  const std::vector<PushStep>& steps() const { return steps_; }
+  // The memory the search holds: the arrangements and the open list.
+  std::size_t bytes() const {
+    return store_.bytes() + open_.size() * sizeof(Open) + macro_bytes_ + corral_verdicts_.size() * kVerdictBytes;
   }
 
  private:
+  // The settled arrangement being expanded (its places in cells_, the robot's reach marked `reach`).
+  struct Expansion {
+    int settled = 0, stage = 0, cost = 0, reach = 0;
+  };
+  // An open arrangement: priority, then the order it was met in (its number) to break ties.
+  struct Open {
+    float priority = 0.0F;  // integral in practice (pushes plus a whole multiple of them), so exact
+    std::uint32_t met = 0;
+    bool operator>(const Open& other) const { return priority != other.priority ? priority > other.priority : met > other.met; }
+  };
+
+  void open(int m, int cost, const std::vector<int>& cells) {
+    if (m < 0) return;
+    open_.push({static_cast<float>(cost + weight_ * goals_.estimate(cells)), static_cast<std::uint32_t>(m)});
+  }
+
   void hold(const std::vector<int>& at) {
     std::fill(holder_.begin(), holder_.end(), -1);
     for (std::size_t k = 0; k < at.size(); ++k) holder_[static_cast<std::size_t>(at[k])] = static_cast<int>(k);
   }
 
-  std::vector<int> cells_of(int node) const {
-    const int* first = places(node);
-    return {first, first + bodies_};
+  // The pushes that made met arrangement m from its parent: its body, one place at a time.
+  std::vector<PushStep> run_of(int m) const {
+    const ArrangementStore::Met& met = store_.met(m);
+    if (met.macro) return macro_runs_.at(m);
+    std::vector<PushStep> run;
+    if (met.parent == ArrangementStore::kStart) return run;
+    const int from = store_.settled_places(static_cast<int>(met.parent))[met.body];
+    for (int at = from; at != met.to; at = lattice_.neighbour(at, met.direction)) {
+      run.push_back({met.body, met.direction, at, lattice_.neighbour(at, met.direction), {}});
+    }
+    return run;
+  }
+  int cost_of(int m) const {
+    const ArrangementStore::Met& met = store_.met(m);
+    if (met.parent == ArrangementStore::kStart) return 0;
+    return store_.settled_cost(static_cast<int>(met.parent)) + static_cast<int>(run_of(m).size());
+  }
+  // The order of pushes from the start to met arrangement m.
+  std::vector<PushStep> steps_to(int m) const {
+    std::vector<PushStep> steps;
+    for (; store_.met(m).parent != ArrangementStore::kStart; m = store_.settled_met(static_cast<int>(store_.met(m).parent))) {
+      const std::vector<PushStep> run = run_of(m);
+      steps.insert(steps.end(), run.rbegin(), run.rend());
+    }
+    std::reverse(steps.begin(), steps.end());
+    return steps;
   }
 
   bool is_line(const std::vector<int>& cells, int k, int d) const {
@@ -621,36 +659,110 @@ class ArrangementSearch {
     return ahead >= 0 && holder_[static_cast<std::size_t>(ahead)] >= 0;
   }
 
-  // The arrangement after pushing body k of `node` one step in direction d, added unless it was met
-  // before or is pruned; its node, or -1. Pushed on through a tunnel (in_tunnel), each step kept for the
-  // order.
-  int push(const Node& node, const std::vector<int>& cells, int index, int k, int d, int reach) {
+  // The arrangement after pushing body k of `from` one step in direction d, added unless it was met
+  // before or is pruned, and where that step takes the body into a goal room, the arrangement with it
+  // pushed on to the room's deepest free goal place (into_room); their numbers, or -1. Pushed on through
+  // a tunnel (in_tunnel), one arrangement.
+  std::array<int, 2> push(const Expansion& from, int k, int d) {
+    const std::vector<int>& cells = cells_;
     int at = cells[static_cast<std::size_t>(k)];
-    if (!lattice_.can_push(k, d)) return -1;
+    if (!lattice_.can_push(k, d)) return {-1, -1};
     const int stand = lattice_.neighbour(at, opposite(d));
     int to = lattice_.neighbour(at, d);
-    if (stand < 0 || to < 0 || seen_[static_cast<std::size_t>(stand)] != reach) return -1;
-    if (!lattice_.body_fits(k, to) || holder_[static_cast<std::size_t>(to)] >= 0 || goals_.left(k, to) == kNever) return -1;
+    if (stand < 0 || to < 0 || seen_[static_cast<std::size_t>(stand)] != from.reach) return {-1, -1};
+    if (!lattice_.body_fits(k, to) || holder_[static_cast<std::size_t>(to)] >= 0 || goals_.left(k, to) == kNever) return {-1, -1};
     std::vector<int> next = cells;
     next[static_cast<std::size_t>(k)] = to;
-    int next_stage = searcher_.stage_after(node.stage, next);
-    if (stages_.distance(next_stage) < 0 || stages_.dead(stages_.automaton_state_of(next_stage))) return -1;
-    int parent = index, cost = node.cost + 1;
+    const int next_stage = searcher_.stage_after(from.stage, next);
+    if (stages_.distance(next_stage) < 0 || stages_.dead(stages_.automaton_state_of(next_stage))) return {-1, -1};
+    int cost = from.cost + 1;
     while (in_tunnel(k, d, at, to, next, next_stage)) {
-      parent = keep({0, next_stage, parent, {k, d, at, to, {}}, cost}, next);
       at = to, to = lattice_.neighbour(to, d), ++cost;
       next[static_cast<std::size_t>(k)] = to;
     }
-    holder_[static_cast<std::size_t>(cells[static_cast<std::size_t>(k)])] = -1;
+    const int robot = settle_check(next, k, to, at);
+    if (robot < 0) return {-1, -1};
+    const int added = store_.add({static_cast<std::uint32_t>(from.settled), robot, next_stage, to, static_cast<std::uint16_t>(k),
+                                  static_cast<std::uint8_t>(d)});
+    open(added, cost, next);
+    return {added, into_room(from, k, d, to, next_stage)};
+  }
+
+  // Body k of `cells_` moved to `to` (the arrangement `next`), the robot on `robot_cell`: the robot's
+  // component, or -1 when the move leaves a deadlock (square_frozen, FreezeTest, a corral).
+  int settle_check(const std::vector<int>& next, int k, int to, int robot_cell) {
+    const int before = cells_[static_cast<std::size_t>(k)];
+    holder_[static_cast<std::size_t>(before)] = -1;
     holder_[static_cast<std::size_t>(to)] = k;
     bool dead = searcher_.square_frozen(goals_, next, holder_, to) || FreezeTest(lattice_, goals_, holder_).deadlocked(to);
-    const int robot = dead ? 0 : walk(lattice_, at, holder_, seen_after_, mark_, queue_);
-    if (!dead) dead = corralled(next, to, at);
+    const int robot = dead ? 0 : walk(lattice_, robot_cell, holder_, seen_after_, mark_, queue_);
+    if (!dead) dead = corralled(next, to, robot_cell);
     ++mark_;
     holder_[static_cast<std::size_t>(to)] = -1;
-    holder_[static_cast<std::size_t>(cells[static_cast<std::size_t>(k)])] = k;
-    if (dead) return -1;
-    return add({robot, next_stage, parent, {k, d, at, to, {}}, cost}, next);
+    holder_[static_cast<std::size_t>(before)] = k;
+    return dead ? -1 : robot;
+  }
+
+  // The goal rooms of each lattice body the task wants somewhere, one set per set of goal places.
+  void find_rooms(int robot_cell) {
+    std::map<std::vector<bool>, std::size_t> known;
+    rooms_of_.assign(lattice_.bodies().size(), nullptr);
+    for (std::size_t k = 0; k < lattice_.bodies().size(); ++k) {
+      std::vector<bool> goal(static_cast<std::size_t>(lattice_.cells()));
+      bool wanted = false;
+      for (int c = 0; c < lattice_.cells(); ++c) {
+        goal[static_cast<std::size_t>(c)] = goals_.left(static_cast<int>(k), c) == 0;
+        wanted = wanted || !goal[static_cast<std::size_t>(c)];
+      }
+      if (!wanted) continue;  // the task leaves it free: every place is one of its goal places
+      const auto [it, added] = known.try_emplace(std::move(goal), rooms_.size());
+      if (added) rooms_.push_back(std::make_unique<GoalRooms>(lattice_, it->first, robot_cell));
+      if (rooms_[it->second]->size() > 0) rooms_of_[k] = rooms_[it->second].get();
+    }
+  }
+
+  // The goal macro: body k, just pushed in direction d onto `entrance` (stage `stage`), a goal room's
+  // entrance with the room ahead, pushed on by the fewest pushes inside the room (the robot walking
+  // between them through the room) to the first goal place, deepest first, that is free and that it
+  // can get to, every place on the way keeping the stage. One more successor: the search keeps the
+  // others, so the macro only leads. Its number, or -1.
+  int into_room(const Expansion& from, int k, int d, int entrance, int stage) {
+    const GoalRooms* rooms = rooms_of_[static_cast<std::size_t>(k)];
+    const GoalRoom* room = rooms == nullptr ? nullptr : rooms->entered(entrance, d);
+    if (room == nullptr) return -1;
+    const int before = cells_[static_cast<std::size_t>(k)];
+    const auto may_stand = [&](int c) {
+      return lattice_.body_fits(k, c) && holder_[static_cast<std::size_t>(c)] < 0 && goals_.left(k, c) != kNever;
+    };
+    const std::vector<int> way = room->way_in(lattice_, k, d, may_stand, [&](int c) { return holder_[static_cast<std::size_t>(c)] >= 0 && c != before; });
+    if (way.empty()) return -1;
+    // The steps: the body's run onto the entrance, then the way, one place at a time.
+    std::vector<PushStep> run;
+    for (int at = before; at != entrance; at = lattice_.neighbour(at, d)) run.push_back({k, d, at, lattice_.neighbour(at, d), {}});
+    std::vector<int> next = cells_;
+    int at = entrance;
+    for (std::size_t i = 0; i < way.size(); ++i) {
+      const int to = way[i];
+      int direction = 0;
+      while (lattice_.neighbour(at, direction) != to) ++direction;
+      run.push_back({k, direction, at, to, {}});
+      next[static_cast<std::size_t>(k)] = to;
+      if (i + 1 < way.size() && searcher_.stage_after(stage, next) != stage) return -1;
+      at = to;
+    }
+    const int final_stage = searcher_.stage_after(stage, next);
+    if (stages_.distance(final_stage) < 0 || stages_.dead(stages_.automaton_state_of(final_stage))) return -1;
+    const int goal = way.back();
+    const int robot = settle_check(next, k, goal, run.back().from);
+    if (robot < 0) return -1;
+    const int added = store_.add({static_cast<std::uint32_t>(from.settled), robot, final_stage, goal, static_cast<std::uint16_t>(k),
+                                  static_cast<std::uint8_t>(d), true});
+    if (added < 0) return -1;
+    const int cost = from.cost + static_cast<int>(run.size());
+    macro_bytes_ += sizeof(PushStep) * run.size() + kMacroEntryBytes;
+    macro_runs_.emplace(added, std::move(run));
+    open(added, cost, next);
+    return added;
   }
 
   // Whether body k, just pushed from `at` to `to` in direction d (the arrangement `next`, its stage
@@ -692,90 +804,42 @@ class ArrangementSearch {
     return !seeds.empty() && CorralTest(lattice_, goals_, holder_, cells, seen_after_, mark_, corral_verdicts_).deadlocked(robot_cell, seeds);
   }
 
-  // Body k of `node` pushed in direction d with the bodies in a line ahead of it, end to end, as many
-  // places as it takes to end the pushing: the node where it does, or -1. A line only ends an order: its
-  // first push closes the gaps between the bodies, which then stand short of their places
+  // Body k of `from` pushed in direction d with the bodies in a line ahead of it, end to end, as many
+  // places as it takes to end the pushing: whether it does (its order is then steps()). A line only ends
+  // an order: its first push closes the gaps between the bodies, which then stand short of their places
   // (PushLattice::line_shortfalls), so no later push could start from the lattice.
-  int finish_with_line(const Node& node, const std::vector<int>& start, int index, int k, int d, int reach) {
-    const int at = start[static_cast<std::size_t>(k)];
+  bool finish_with_line(const Expansion& from, int k, int d) {
+    const int at = cells_[static_cast<std::size_t>(k)];
     const int stand = lattice_.neighbour(at, opposite(d));
-    if (stand < 0 || seen_[static_cast<std::size_t>(stand)] != reach) return -1;
+    if (stand < 0 || seen_[static_cast<std::size_t>(stand)] != from.reach) return false;
     std::vector<int> line{k};
     for (int c = lattice_.neighbour(at, d); c >= 0 && holder_[static_cast<std::size_t>(c)] >= 0; c = lattice_.neighbour(c, d)) {
       line.push_back(holder_[static_cast<std::size_t>(c)]);
     }
-    if (!lattice_.line_shortfalls(line, d)) return -1;
-    if (!std::all_of(line.begin(), line.end(), [&](int j) { return lattice_.can_push(j, d); })) return -1;
+    if (!lattice_.line_shortfalls(line, d)) return false;
+    if (!std::all_of(line.begin(), line.end(), [&](int j) { return lattice_.can_push(j, d); })) return false;
     const std::vector<int> ahead(line.begin() + 1, line.end());
-    std::vector<int> cells = start;
-    int parent = index;
-    for (int cost = node.cost;;) {
-      const int from = cells[static_cast<std::size_t>(k)];
+    std::vector<int> cells = cells_;
+    std::vector<PushStep> run;
+    while (true) {
+      const int before = cells[static_cast<std::size_t>(k)];
       for (int j : line) {
         const int to = lattice_.neighbour(cells[static_cast<std::size_t>(j)], d);
-        if (to < 0 || !lattice_.body_fits(j, to)) return -1;
+        if (to < 0 || !lattice_.body_fits(j, to)) return false;
         cells[static_cast<std::size_t>(j)] = to;
       }
       const int end = cells[static_cast<std::size_t>(line.back())];
       // The arrangement before the push: every body of the line stands behind its front's new place.
-      if (holder_[static_cast<std::size_t>(end)] >= 0) return -1;  // the line runs into another body
-      const int stage = searcher_.stage_after(node.stage, cells);
-      if (stages_.distance(stage) < 0 || stages_.dead(stages_.automaton_state_of(stage))) return -1;
-      cost += static_cast<int>(line.size());
-      Node moved{0, stage, parent, {k, d, from, cells[static_cast<std::size_t>(k)], ahead}, cost};
-      if (searcher_.ends_pushing(stage)) return add(std::move(moved), cells);
-      // A place on the way is no arrangement to search from: it is kept for the order only.
-      parent = keep(std::move(moved), cells);
+      if (holder_[static_cast<std::size_t>(end)] >= 0) return false;  // the line runs into another body
+      const int stage = searcher_.stage_after(from.stage, cells);
+      if (stages_.distance(stage) < 0 || stages_.dead(stages_.automaton_state_of(stage))) return false;
+      run.push_back({k, d, before, cells[static_cast<std::size_t>(k)], ahead});
+      if (searcher_.ends_pushing(stage)) break;
     }
+    steps_ = steps_to(store_.settled_met(from.settled));
+    steps_.insert(steps_.end(), run.begin(), run.end());
+    return true;
   }
-
-  // Stores `node` with its places; returns its number.
-  int keep(Node node, const std::vector<int>& cells) {
-    const std::size_t n = stored_;
-    if (n % kArrangementsPerBlock == 0 && n / kArrangementsPerBlock == pool_.size()) {
-      pool_.push_back(std::make_unique<int[]>(kArrangementsPerBlock * bodies_));
-      node_blocks_.push_back(std::make_unique<Node[]>(kArrangementsPerBlock));
-    }
-    std::copy(cells.begin(), cells.end(), pool_[n / kArrangementsPerBlock].get() + n % kArrangementsPerBlock * bodies_);
-    node_blocks_[n / kArrangementsPerBlock][n % kArrangementsPerBlock] = std::move(node);
-    ++stored_;
-    return static_cast<int>(n);
-  }
-  const int* places(int n) const {
-    const auto i = static_cast<std::size_t>(n);
-    return pool_[i / kArrangementsPerBlock].get() + i % kArrangementsPerBlock * bodies_;
-  }
-
-  // Keeps `node` and opens it unless its arrangement (places, robot component, stage) was met before;
-  // its number, or -1.
-  int add(Node node, const std::vector<int>& cells) {
-    const int index = keep(std::move(node), cells);
-    if (!known_.insert(index).second) {
-      --stored_;  // its slot is the next node's
-      return -1;
-    }
-    open_.push({node_at(index).cost + weight_ * goals_.estimate(cells), order_++, index});
-    return index;
-  }
-
-  struct KeyHash {
-    const ArrangementSearch* search;
-    std::size_t operator()(int n) const {
-      const Node& node = search->node_at(n);
-      const std::size_t h = std::hash<long long>{}((static_cast<long long>(node.robot) << 32) ^ node.stage);
-      return mix_places(h, search->places(n), search->bodies_);
-    }
-  };
-  struct KeyEqual {
-    const ArrangementSearch* search;
-    bool operator()(int a, int b) const {
-      const Node& x = search->node_at(a);
-      const Node& y = search->node_at(b);
-      const int* p = search->places(a);
-      const int* q = search->places(b);
-      return x.robot == y.robot && x.stage == y.stage && std::equal(p, p + search->bodies_, q);
-    }
-  };
 
   const PushLattice& lattice_;
   const StageGraph& stages_;
@@ -788,55 +852,56 @@ class ArrangementSearch {
   std::vector<int> queue_;
   int mark_ = 0;
   CorralTest::Verdicts corral_verdicts_;
-  std::size_t bodies_;
-  const Node& node_at(int n) const {
-    const auto i = static_cast<std::size_t>(n);
-    return node_blocks_[i / kArrangementsPerBlock][i % kArrangementsPerBlock];
-  }
-
-  // Node n and its places (block n / kArrangementsPerBlock, at n % kArrangementsPerBlock and from
-  // (n % kArrangementsPerBlock) * bodies_ on), in storage that grows without moving what it holds and is
-  // released a block at a time: a vector of millions of nodes, copied whole as it grew, held the search
-  // for up to a second past its deadline (Microban II level 72, --time-limit 10: 11.14 s of wall time),
-  // and a deque of them, freed block by block of nine, took 0.4 s of GRIGoRusha 19's 27 boxes to release.
-  std::vector<std::unique_ptr<Node[]>> node_blocks_;
-  std::vector<std::unique_ptr<int[]>> pool_;
-  std::size_t stored_ = 0;
-  // The set's entries and buckets come from an arena released whole with the search: freed one by one,
-  // the entries of a search cut short at its deadline took over half a second (Microban II level 109).
-  // The set itself lives in the arena and is never destroyed: its destructor would walk every entry.
-  std::pmr::monotonic_buffer_resource arena_;
-  using KnownSet = std::pmr::unordered_set<int, KeyHash, KeyEqual>;
-  KnownSet& known_;
-  using Entry = std::tuple<double, long long, int>;  // priority, order of insertion, node
-  std::priority_queue<Entry, std::deque<Entry>, std::greater<>> open_;
-  long long order_ = 0;
+  ArrangementStore store_;
+  std::vector<int> cells_;  // the places of the arrangement being settled
+  // Open arrangements, in a deque: it grows without copying what it holds (a vector of tens of millions
+  // copied whole as it grew held the search past its deadline).
+  std::priority_queue<Open, std::deque<Open>, std::greater<>> open_;
+  std::vector<PushStep> steps_;  // the order found
+  // Goal rooms (goal_room.h): per lattice body, its rooms or nullptr; the ways of the goal macros'
+  // arrangements, which a place and a direction do not tell, and what they hold.
+  static constexpr std::size_t kMacroEntryBytes = 64;  // a map entry and a vector, besides the steps
+  // A corral verdict: a map entry, its bucket and its key of up to 2 * kMaxCorralBodies + 1 places.
+  static constexpr std::size_t kVerdictBytes = 128;
+  std::vector<std::unique_ptr<GoalRooms>> rooms_;
+  std::vector<const GoalRooms*> rooms_of_;
+  std::unordered_map<int, std::vector<PushStep>> macro_runs_;
+  std::size_t macro_bytes_ = 0;
 };
 
 PushSearch PushSearcher::search(int stage, const std::vector<int>& cells, int robot_cell, const Deadline& deadline,
-                                long long max_arrangements, double weight) const {
+                                SearchBudget budget, double weight) const {
   PushSearch result;
   const Goals goals = goals_from(stage);
   result.outcome = "no order of pushes";
   for (std::size_t k = 0; k < cells.size(); ++k) {
     if (goals.left(static_cast<int>(k), cells[k]) == kNever) return result;
   }
-  ArrangementSearch search(lattice_, stages_, *this, goals, weight);
-  int solution = search.start(cells, robot_cell, stage);
-  if (!ends_pushing(stage)) solution = -1;
-  while (solution < 0 && !search.exhausted()) {
-    if (++result.settled > max_arrangements) {
+  if (ends_pushing(stage)) {
+    result.found = true;
+    result.outcome = "found";
+    return result;
+  }
+  ArrangementSearch search(lattice_, stages_, *this, goals, weight, cells);
+  search.start(robot_cell, stage, cells);
+  while (!search.exhausted()) {
+    if (++result.settled > budget.arrangements) {
       result.outcome = "search limit";
+      return result;
+    }
+    if (search.bytes() > budget.bytes) {
+      result.outcome = "memory limit";
       return result;
     }
     // Every settle: one of 16 boxes walks the robot's places some 60 times, and 256 of them took 0.7 s.
     deadline.check();
-    solution = search.settle();
+    if (search.settle()) {
+      result.steps = search.steps();
+      result.found = true;
+      result.outcome = "found";
+      return result;
+    }
   }
-  if (solution < 0) return result;
-  result.steps = search.steps_to(solution);
-  result.found = true;
-  result.outcome = "found";
   return result;
 }
 

@@ -13,12 +13,16 @@
 // it can be pushed along neither axis again, held so by walls, dead places or bodies that are themselves
 // held so (frozen), with one of those bodies not where the task needs it; and places the robot cannot walk
 // to, closed off by bodies that cannot all get where the task needs them without it (a corral deadlock).
+// Macros: a box in a tunnel is pushed on through it (in_tunnel), and a box pushed into a goal room also
+// on to the room's deepest free goal (goal_room.h). The arrangements met are kept compactly
+// (arrangement_store.h), within a budget of arrangements and of memory.
 
 #include "push_lattice.h"
 #include "physltl/base/deadline.h"
 #include "physltl/geometry/assignment.h"
 #include "physltl/planning/stage_graph.h"
 
+#include <cstddef>
 #include <set>
 #include <string>
 #include <vector>
@@ -28,7 +32,12 @@ namespace physltl::planning::lookahead {
 // Measured on the look-ahead puzzles (docs/benchmarks.md): 2 finds orders for the hardest in seconds
 // with pushes within a few of the fewest; 1 (plain A*) settled ten times as many arrangements.
 inline constexpr double kHeuristicWeight = 2.0;
-inline constexpr long long kMaxArrangements = 400'000;
+// A run's budget grows with its time limit (run_arrangements), up to kMaxArrangements, well under the
+// memory cap below (an arrangement met costs some 40 bytes, one settled 8 more and 4 a body).
+inline constexpr long long kMaxArrangements = 4'000'000;
+inline constexpr long long kArrangementsPerSecond = 50'000;
+// The most memory one search may hold (arrangement_store.h); past it, the search ends ("memory limit").
+inline constexpr std::size_t kMaxSearchBytes = std::size_t{2} << 30;
 // `check`'s budget (a preview, planner_entry.h): about a second on the slowest level of the collections
 // measured (docs/planner.md), the same answer on any machine.
 inline constexpr long long kPreviewArrangements = 20'000;
@@ -39,6 +48,21 @@ inline constexpr int kMaxEndings = 1024;
 // one by the larger of two sums, each body's cheapest place and, as many places as bodies, each place's
 // cheapest body: both lower bounds on any matching.
 inline constexpr int kMaxMatchedBodies = 20;
+
+// The arrangements a run with a time limit of `time_limit_s` may settle: kArrangementsPerSecond for each
+// second, from kPreviewArrangements to kMaxArrangements (all of it without a limit). A search that takes
+// the whole limit leaves the physics nothing: Microban II 130 needs 5 pushes that the look-ahead does not
+// find in 4 million arrangements, and the physics search finds them in a second. Measured, the look-ahead
+// settles 60,000 to 300,000 a second, so it keeps half a minute's run for the physics at the least; and a
+// function of the limit the user gave, not of the clock, it searches alike on any machine.
+long long run_arrangements(double time_limit_s);
+
+// What one search may spend: the arrangements it settles and the memory it holds, both counted from
+// what it did (not from the clock or the machine), so that a search ends the same way everywhere.
+struct SearchBudget {
+  long long arrangements = kMaxArrangements;
+  std::size_t bytes = kMaxSearchBytes;
+};
 
 struct PushStep {
   int body = 0;  // lattice body: the one the robot pushes
@@ -59,19 +83,19 @@ struct PushSearch {
   bool found = false;
   std::vector<PushStep> steps;
   long long settled = 0;
-  std::string outcome;  // "found", "no order of pushes", "search limit"
+  std::string outcome;  // "found", "no order of pushes", "search limit", "memory limit"
 };
 
 class PushSearcher {
  public:
   PushSearcher(const PushLattice& lattice, const StageGraph& stages, const knowledge::Labelling& labelling);
 
-  // From `stage` with the lattice bodies on `cells` and the robot on `robot_cell`. The arrangements are
-  // its work budget (the same order on any machine); `deadline` only ends it early (DeadlineReached).
-  // `weight` scales the estimate against the cost so far: 0 is a uniform-cost search, whose order has
-  // the fewest body steps (for tests of the estimate).
+  // From `stage` with the lattice bodies on `cells` and the robot on `robot_cell`, within `budget` (the
+  // same order on any machine); `deadline` only ends it early (DeadlineReached). `weight` scales the
+  // estimate against the cost so far: 0 is a uniform-cost search, whose order has the fewest body steps
+  // (for tests of the estimate).
   PushSearch search(int stage, const std::vector<int>& cells, int robot_cell, const Deadline& deadline = {},
-                    long long max_arrangements = kMaxArrangements, double weight = kHeuristicWeight) const;
+                    SearchBudget budget = {}, double weight = kHeuristicWeight) const;
   // The estimate the search ranks arrangements by: never more than the body steps left from `cells`.
   int estimate(int stage, const std::vector<int>& cells) const;
   // Whether body k on `cell` can still get to where the task needs it, pushed alone; always true for a
