@@ -23,9 +23,10 @@ template <typename T, std::size_t kBlock>
 class BlockArray {
  public:
   explicit BlockArray(std::size_t width = 1) : width_(width) {}
-  // Appends `width` uninitialised elements; returns the first.
+  // Appends `width` uninitialised elements (a block is not zeroed: a small search touches little of
+  // its first); returns the first.
   T* append() {
-    if (size_ % kBlock == 0 && size_ / kBlock == blocks_.size()) blocks_.push_back(std::make_unique<T[]>(kBlock * width_));
+    if (size_ % kBlock == 0 && size_ / kBlock == blocks_.size()) blocks_.push_back(std::make_unique_for_overwrite<T[]>(kBlock * width_));
     return at(size_++);
   }
   void pop_back() { --size_; }

@@ -708,13 +708,9 @@ class ArrangementSearch {
     std::map<std::vector<bool>, std::size_t> known;
     rooms_of_.assign(lattice_.bodies().size(), nullptr);
     for (std::size_t k = 0; k < lattice_.bodies().size(); ++k) {
+      if (goals_.pushes_left[k].empty()) continue;  // the task leaves it free: every place is one of its goal places
       std::vector<bool> goal(static_cast<std::size_t>(lattice_.cells()));
-      bool wanted = false;
-      for (int c = 0; c < lattice_.cells(); ++c) {
-        goal[static_cast<std::size_t>(c)] = goals_.left(static_cast<int>(k), c) == 0;
-        wanted = wanted || !goal[static_cast<std::size_t>(c)];
-      }
-      if (!wanted) continue;  // the task leaves it free: every place is one of its goal places
+      for (int c = 0; c < lattice_.cells(); ++c) goal[static_cast<std::size_t>(c)] = goals_.left(static_cast<int>(k), c) == 0;
       const auto [it, added] = known.try_emplace(std::move(goal), rooms_.size());
       if (added) rooms_.push_back(std::make_unique<GoalRooms>(lattice_, it->first, robot_cell));
       if (rooms_[it->second]->size() > 0) rooms_of_[k] = rooms_[it->second].get();
