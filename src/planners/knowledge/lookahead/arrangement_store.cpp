@@ -54,8 +54,7 @@ bool ArrangementStore::same(std::uint32_t a, std::uint32_t b) const {
 int ArrangementStore::add(const Met& met) {
   const auto m = static_cast<std::uint32_t>(mets_.size());
   *mets_.append() = met;
-  hashed_ = kStart;
-  hashed_value_ = hash(m);
+  hashed_value_ = hash(m);  // hashed_ is kStart between adds
   hashed_ = m;
   Shard& shard = shards_[hashed_value_ >> (64 - kShardBits)];
   const bool added = shard.insert(m).second;

@@ -5,11 +5,11 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
-#include <memory>
 #include <cstdint>
 #include <deque>
 #include <limits>
+#include <map>
+#include <memory>
 #include <queue>
 #include <set>
 #include <unordered_map>
@@ -599,7 +599,8 @@ class ArrangementSearch {
     return false;
   }
   const std::vector<PushStep>& steps() const { return steps_; }
-  // The memory the search holds: the arrangements and the open list.
+  // The memory the search holds: the arrangements, the open list, the goal macros' ways and the corral
+  // verdicts.
   std::size_t bytes() const {
     return store_.bytes() + open_.size() * sizeof(Open) + macro_bytes_ + corral_verdicts_.size() * kVerdictBytes;
   }
@@ -626,22 +627,30 @@ class ArrangementSearch {
     for (std::size_t k = 0; k < at.size(); ++k) holder_[static_cast<std::size_t>(at[k])] = static_cast<int>(k);
   }
 
+  // Body k pushed from place `from` in direction d until it stands on `to`, one place at a time.
+  std::vector<PushStep> straight_run(int k, int d, int from, int to) const {
+    std::vector<PushStep> run;
+    for (int at = from; at != to; at = lattice_.neighbour(at, d)) run.push_back({k, d, at, lattice_.neighbour(at, d), {}});
+    return run;
+  }
   // The pushes that made met arrangement m from its parent: its body, one place at a time.
   std::vector<PushStep> run_of(int m) const {
     const ArrangementStore::Met& met = store_.met(m);
     if (met.macro) return macro_runs_.at(m);
-    std::vector<PushStep> run;
-    if (met.parent == ArrangementStore::kStart) return run;
-    const int from = store_.settled_places(static_cast<int>(met.parent))[met.body];
-    for (int at = from; at != met.to; at = lattice_.neighbour(at, met.direction)) {
-      run.push_back({met.body, met.direction, at, lattice_.neighbour(at, met.direction), {}});
-    }
-    return run;
+    if (met.parent == ArrangementStore::kStart) return {};
+    return straight_run(met.body, met.direction, store_.settled_places(static_cast<int>(met.parent))[met.body], met.to);
   }
+  // Its body steps so far: its parent's and as many as the places its push moved its body.
   int cost_of(int m) const {
     const ArrangementStore::Met& met = store_.met(m);
     if (met.parent == ArrangementStore::kStart) return 0;
-    return store_.settled_cost(static_cast<int>(met.parent)) + static_cast<int>(run_of(m).size());
+    int steps = 0;
+    if (met.macro) {
+      steps = static_cast<int>(macro_runs_.at(m).size());
+    } else {
+      for (int at = store_.settled_places(static_cast<int>(met.parent))[met.body]; at != met.to; at = lattice_.neighbour(at, met.direction)) ++steps;
+    }
+    return store_.settled_cost(static_cast<int>(met.parent)) + steps;
   }
   // The order of pushes from the start to met arrangement m.
   std::vector<PushStep> steps_to(int m) const {
@@ -733,8 +742,7 @@ class ArrangementSearch {
     const std::vector<int> way = room->way_in(lattice_, k, d, may_stand, [&](int c) { return holder_[static_cast<std::size_t>(c)] >= 0 && c != before; });
     if (way.empty()) return -1;
     // The steps: the body's run onto the entrance, then the way, one place at a time.
-    std::vector<PushStep> run;
-    for (int at = before; at != entrance; at = lattice_.neighbour(at, d)) run.push_back({k, d, at, lattice_.neighbour(at, d), {}});
+    std::vector<PushStep> run = straight_run(k, d, before, entrance);
     std::vector<int> next = cells_;
     int at = entrance;
     for (std::size_t i = 0; i < way.size(); ++i) {
