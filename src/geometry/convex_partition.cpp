@@ -110,4 +110,25 @@ std::vector<Polygon> convex_partition_of_union(const std::vector<Polygon>& polyg
   return out;
 }
 
+std::optional<Polygon> union_outline(const std::vector<Polygon>& polygons) {
+  using Polygon2 = CGAL::Polygon_2<Exact>;
+  using WithHoles = CGAL::Polygon_with_holes_2<Exact>;
+  std::vector<Polygon2> inputs;
+  for (const Polygon& polygon : polygons) {
+    if (polygon.vertices.size() < 3 || std::abs(polygon.signed_area()) < 1e-12 || !polygon.is_simple()) return std::nullopt;
+    Polygon2 p;
+    for (const Vec2& v : counter_clockwise(polygon).vertices) p.push_back(Exact::Point_2(v.x(), v.y()));
+    inputs.push_back(std::move(p));
+  }
+  if (inputs.empty()) return std::nullopt;
+  CGAL::Polygon_set_2<Exact> united;
+  united.join(inputs.begin(), inputs.end());
+  std::vector<WithHoles> regions;
+  united.polygons_with_holes(std::back_inserter(regions));
+  if (regions.size() != 1 || regions.front().has_holes() || regions.front().is_unbounded()) return std::nullopt;
+  Polygon outline = counter_clockwise(without_straight_corners(regions.front().outer_boundary().container()));
+  if (!outline.is_simple()) return std::nullopt;  // pieces that meet at a corner only
+  return outline;
+}
+
 }  // namespace physltl::geometry

@@ -34,10 +34,15 @@ MovableBodyKnowledge movable_knowledge(const scenario::MovableBody& body, const 
   FaceSet pushable;
   for (int face : body.push_from) pushable.insert(face);
   const bool authored = !body.push_from.empty() && !(pushable == FaceSet::first(k.faces));
-  for (int face = 0; face < k.faces && authored; ++face) {
-    if (pushable.contains(face)) {
-      k.authored_sides.push_back(kind_of(body.footprint.shape).face_template(body.footprint.shape, face, depth, robot.radius));
+  std::vector<MRegionTemplate> touchable;
+  for (int face = 0; face < k.faces; ++face) {
+    if (auto m = kind_of(body.footprint.shape).face_template(body.footprint.shape, face, depth, robot.radius)) {
+      touchable.push_back(*m);
+      k.touchable_faces.insert(face);
     }
+  }
+  for (const MRegionTemplate& m : touchable) {
+    if (authored && pushable.contains(m.face)) k.authored_sides.push_back(m);
   }
   if (k.floor_friction_force >= robot.push_force) {
     k.body_class = BodyClass::kFixed;
@@ -49,10 +54,9 @@ MovableBodyKnowledge movable_knowledge(const scenario::MovableBody& body, const 
   }
   if (!authored) {
     k.body_class = BodyClass::kFreelyMovable;
-    k.class_reason = "pushable from every side";
-    for (int face = 0; face < k.faces; ++face) {
-      k.mregions.push_back(kind_of(body.footprint.shape).face_template(body.footprint.shape, face, depth, robot.radius));
-    }
+    k.mregions = touchable;
+    k.class_reason = static_cast<int>(k.mregions.size()) == k.faces ? "pushable from every side"
+                                                                     : "pushable from every side the robot can touch";
   } else {
     k.body_class = BodyClass::kConstraintOriented;
     k.class_reason = "pushable only from the authored sides " + face_list(body.footprint.shape, body.push_from);

@@ -1,6 +1,7 @@
 #include "physltl/knowledge/kappa.h"
 
 #include "obstacle.h"
+#include "shape_kinds.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,10 +12,6 @@ namespace physltl::knowledge {
 namespace {
 
 using geometry::Vec2;
-
-// The robot needs this much of a side's contact segment free to push: a gap that admits it at a single
-// point only is a numerical accident, not a place to stand.
-constexpr double kMinFreeStretch = 1e-3;  // m
 
 // The robot's centre sliding along one side of a body, at one robot radius from it.
 struct ContactSegment {
@@ -107,7 +104,7 @@ Vec2 to_world(const geometry::Pose2& pose, double cos_yaw, double sin_yaw, const
 
 BodyType type_of(const MovableBodyKnowledge& body, FaceSet active) {
   if (body.body_class == BodyClass::kFixed || active.empty()) return BodyType::kImmovable;
-  return active == FaceSet::first(body.faces) ? BodyType::kFree : BodyType::kConstraintOriented;
+  return active == body.touchable_faces ? BodyType::kFree : BodyType::kConstraintOriented;
 }
 
 BodyKappa infer_body(const AbstractKnowledge& knowledge, const scenario::EnvironmentState& state,

@@ -96,7 +96,7 @@ MRegionTemplate cylinder_sector(int sector, double radius, double depth, double 
 
 namespace box {
 
-MRegionTemplate face(const geometry::Shape& shape, int face, double depth, double robot_radius) {
+std::optional<MRegionTemplate> face(const geometry::Shape& shape, int face, double depth, double robot_radius) {
   return box_side(static_cast<scenario::Side>(face), shape.half_extents(), depth, robot_radius);
 }
 
@@ -127,7 +127,7 @@ constexpr ShapeKindKnowledge kRow{face, distance, closer_than};
 namespace cylinder {
 
 constexpr ShapeKindKnowledge kRow{
-    [](const geometry::Shape& shape, int face, double depth, double robot_radius) {
+    [](const geometry::Shape& shape, int face, double depth, double robot_radius) -> std::optional<MRegionTemplate> {
       return cylinder_sector(face, shape.radius(), depth, robot_radius);
     },
     [](const Obstacle& o, const Vec2& p) { return geometry::distance(o.shape(), o.pose(), p); },
@@ -140,13 +140,39 @@ constexpr ShapeKindKnowledge kRow{
 
 namespace polygon {
 
-MRegionTemplate face(const geometry::Shape& shape, int face, double depth, double robot_radius) {
+void closer_than(const Obstacle& obstacle, const Vec2& origin, const Vec2& direction, double radius, std::vector<Interval>& out);
+
+// The longest stretch of [0, length] that no interval of `blocked` covers, as [lo, hi].
+Interval longest_free(std::vector<Interval>& blocked, double length) {
+  std::sort(blocked.begin(), blocked.end(), [](const Interval& a, const Interval& b) { return a.lo < b.lo; });
+  Interval best{0.0, 0.0};
+  double t = 0.0;
+  for (const Interval& b : blocked) {
+    if (b.lo - t > best.hi - best.lo) best = {t, std::min(b.lo, length)};
+    t = std::max(t, b.hi);
+  }
+  if (length - t > best.hi - best.lo) best = {t, length};
+  return best;
+}
+
+// Face k from corner k to corner k + 1. On a concave outline, only the stretch of it the robot can touch
+// without overlapping the body's other parts (a notch's sides and bottom are out of its reach when the
+// notch is narrower than the robot): the longest such stretch, nothing when none is kMinFreeStretch long.
+std::optional<MRegionTemplate> face(const geometry::Shape& shape, int face, double depth, double robot_radius) {
   const auto& v = shape.outline().vertices;
   const Vec2 a = v[static_cast<size_t>(face)], b = v[(static_cast<size_t>(face) + 1) % v.size()];
   const Vec2 edge = (b - a).normalized();
   // The outside of a counter-clockwise outline is on the right of each side, of a clockwise one on the left.
   const double turn = shape.outline().signed_area() > 0 ? 1.0 : -1.0;
-  return straight_face(face, a, b, turn * Vec2(edge.y(), -edge.x()), depth, robot_radius);
+  const Vec2 normal = turn * Vec2(edge.y(), -edge.x());
+  if (shape.parts().size() <= 1) return straight_face(face, a, b, normal, depth, robot_radius);
+  // The robot touching the face stands at its radius from it: a hair less counts only the other parts.
+  constexpr double kTouching = 1e-6;  // m
+  std::vector<Interval> blocked;
+  closer_than(Obstacle(shape, {}), a + robot_radius * normal, edge, robot_radius - kTouching, blocked);
+  const Interval free = longest_free(blocked, (b - a).norm());
+  if (free.hi - free.lo < kMinFreeStretch) return std::nullopt;
+  return straight_face(face, a + free.lo * edge, a + free.hi * edge, normal, depth, robot_radius);
 }
 
 // The convex polygon grown by a disc is the polygon, a rectangle outside each side and a disc at each

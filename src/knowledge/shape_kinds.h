@@ -7,13 +7,19 @@
 
 #include "physltl/knowledge/abstract_knowledge.h"
 
+#include <optional>
 #include <vector>
 
 namespace physltl::knowledge {
 
+// The robot needs this much of a face's contact segment free to push: a gap that admits it at a single
+// point only is a numerical accident, not a place to stand.
+inline constexpr double kMinFreeStretch = 1e-3;  // m
+
 struct ShapeKindKnowledge {
-  // The mRegion in front of face `face` (scenario::face_count numbers them), `depth` deep.
-  MRegionTemplate (*face_template)(const geometry::Shape& shape, int face, double depth, double robot_radius);
+  // The mRegion in front of face `face` (scenario::face_count numbers them), `depth` deep; nothing for a
+  // face the robot cannot touch, one inside a notch of the body narrower than the robot (a concave polygon).
+  std::optional<MRegionTemplate> (*face_template)(const geometry::Shape& shape, int face, double depth, double robot_radius);
   double (*distance)(const Obstacle& obstacle, const geometry::Vec2& p);
   // Obstacle::closer_than: appends the non-empty intervals.
   void (*closer_than)(const Obstacle& obstacle, const geometry::Vec2& origin, const geometry::Vec2& direction, double radius,

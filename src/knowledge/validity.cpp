@@ -148,7 +148,9 @@ int face_pushed_from(const AbstractKnowledge& knowledge, int body, const geometr
   int nearest = -1;
   double best = std::numeric_limits<double>::infinity();
   for (int face = 0; face < b.faces; ++face) {
-    const MRegionTemplate m = kind_of(b.footprint.shape).face_template(b.footprint.shape, face, 0.0, knowledge.robot.radius);
+    const std::optional<MRegionTemplate> touchable = kind_of(b.footprint.shape).face_template(b.footprint.shape, face, 0.0, knowledge.robot.radius);
+    if (!touchable) continue;
+    const MRegionTemplate& m = *touchable;
     const geometry::Vec2 from = geometry::to_world(pose, m.contact_from), to = geometry::to_world(pose, m.contact_to);
     const geometry::Vec2 along = to - from;
     const double t = along.squaredNorm() > 0 ? std::clamp((robot_centre - from).dot(along) / along.squaredNorm(), 0.0, 1.0) : 0.0;

@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <map>
 #include <numbers>
+#include <optional>
 
 namespace physltl::scenario {
 namespace {
@@ -44,36 +45,68 @@ std::string element_label(const Element& e, int index_of_kind) {
 // them in 32 bits).
 constexpr std::size_t kMaxFixedPolygonCorners = 1000;
 constexpr std::size_t kMaxMovablePolygonCorners = 32;
+constexpr std::size_t kMaxParts = 64;
 
 geometry::Pose2 read_pose(TableReader& r) { return {r.point("center"), r.number("yaw_deg", 0.0) * kDegree}; }
 
-// A polygon given as `polygon` (world frame) or as `points` about `center` turned by `yaw_deg`: its pose is
-// its area centroid with that heading, its outline the corners about it. A movable polygon must be convex;
-// a fixed one may be any simple polygon, cut into convex parts here.
+// A compound body's `parts`: convex polygons that overlap or touch along edges into one piece without
+// holes; the outline of their union (faces are numbered along it, counter-clockwise), or nothing with the
+// error said.
+std::optional<geometry::Polygon> read_parts_outline(TableReader& r, std::size_t corner_limit) {
+  const std::vector<std::vector<Vec2>> lists = r.point_lists("parts");
+  if (lists.empty() || lists.size() > kMaxParts) {
+    r.error("'parts' lists 1 to " + std::to_string(kMaxParts) + " convex polygons {{x, y}, ...}");
+    return std::nullopt;
+  }
+  std::vector<geometry::Polygon> parts;
+  for (std::size_t i = 0; i < lists.size(); ++i) {
+    const geometry::Polygon part{lists[i]};
+    if (part.vertices.size() < 3 || part.vertices.size() > corner_limit || !part.is_simple() || !geometry::is_convex(part)) {
+      r.error("part " + std::to_string(i + 1) + " of 'parts' must be a convex polygon of 3 to " + std::to_string(corner_limit) +
+              " corners with a positive area");
+      return std::nullopt;
+    }
+    parts.push_back(part);
+  }
+  std::optional<geometry::Polygon> outline = geometry::union_outline(parts);
+  if (!outline) {
+    r.error("'parts' must join into one piece without holes (each part overlapping or sharing an edge with another, "
+            "not meeting at a corner only)");
+  } else if (outline->vertices.size() > corner_limit) {
+    r.error("the outline of 'parts' has " + std::to_string(outline->vertices.size()) + " corners, more than the " +
+            std::to_string(corner_limit) + " a body of this kind may have");
+    return std::nullopt;
+  }
+  return outline;
+}
+
+// A polygon given as `polygon` (world frame), as `points` about `center` turned by `yaw_deg`, or as the
+// union of convex `parts` about `center` (a compound body): its pose is its area centroid with that
+// heading, its outline the corners about it, cut into convex parts for the physics and every query. A
+// movable body is one rigid body whatever its outline.
 geometry::Footprint read_polygon(TableReader& r, bool movable) {
-  const bool in_world = r.has("polygon"), about_centre = r.has("points");
-  if (in_world == about_centre) {
-    r.error("a polygon takes exactly one of 'polygon' = {{x, y}, ...} (world frame) or 'points' = {{x, y}, ...} "
-            "about 'center'");
+  const int forms = int{r.has("polygon")} + int{r.has("points")} + int{r.has("parts")};
+  if (forms != 1) {
+    r.error("a polygon takes exactly one of 'polygon' = {{x, y}, ...} (world frame), 'points' = {{x, y}, ...} "
+            "about 'center', or 'parts' = {{{x, y}, ...}, ...} (convex pieces about 'center')");
+    r.skip_unread();
     return {};
   }
+  const bool in_world = r.has("polygon");
   geometry::Pose2 placed;
-  std::vector<Vec2> corners;
-  if (in_world) {
-    corners = r.points("polygon");
-  } else {
-    placed = read_pose(r);
-    corners = r.points("points");
-  }
+  if (!in_world) placed = read_pose(r);
   const std::size_t limit = movable ? kMaxMovablePolygonCorners : kMaxFixedPolygonCorners;
+  std::vector<Vec2> corners;
+  if (r.has("parts")) {
+    std::optional<geometry::Polygon> outline = read_parts_outline(r, limit);
+    if (!outline) return {};
+    corners = outline->vertices;
+  } else {
+    corners = r.points(in_world ? "polygon" : "points");
+  }
   const geometry::Polygon authored{corners};
   if (corners.size() < 3 || corners.size() > limit || !authored.is_simple()) {
     r.error("a polygon needs 3 to " + std::to_string(limit) + " corners, a positive area and no crossing edges");
-    return {};
-  }
-  if (movable && !geometry::is_convex(authored)) {
-    r.error("a movable polygon must be convex (it is one rigid body ODE collides as a convex shape); split it, or "
-            "make it fixed");
     return {};
   }
   // The centre the pose names, and the object propositions test, is the area centroid.

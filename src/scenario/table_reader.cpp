@@ -169,6 +169,25 @@ std::vector<geometry::Vec2> TableReader::points(const std::string& key) {
   return result;
 }
 
+std::vector<std::vector<geometry::Vec2>> TableReader::point_lists(const std::string& key) {
+  const LuaValue* v = take(key, LuaValue::Kind::kTable, "a list of lists of points {{{x, y}, ...}, ...}");
+  std::vector<std::vector<geometry::Vec2>> result;
+  if (v == nullptr) return result;
+  for (const auto& list : v->array) {
+    if (list.kind != LuaValue::Kind::kTable || !list.fields.empty() || !v->fields.empty()) {
+      error("'" + key + "' must be a list of lists of points {{{x, y}, ...}, ...}");
+      return {};
+    }
+    std::vector<geometry::Vec2>& points = result.emplace_back();
+    for (const auto& item : list.array) {
+      auto p = to_point(item, key);
+      if (!p) return {};
+      points.push_back(*p);
+    }
+  }
+  return result;
+}
+
 std::vector<std::string> TableReader::strings(const std::string& key) {
   const LuaValue* v = take(key, LuaValue::Kind::kTable, "a list of strings");
   std::vector<std::string> result;

@@ -31,6 +31,8 @@ class TableReader {
   geometry::Vec2 point(const std::string& key);
   geometry::Vec2 point(const std::string& key, const geometry::Vec2& fallback);
   std::vector<geometry::Vec2> points(const std::string& key);  // a list of {x, y}
+  // A list of lists of {x, y} (a body's parts); empty when one is not.
+  std::vector<std::vector<geometry::Vec2>> point_lists(const std::string& key);
   std::vector<std::string> strings(const std::string& key);    // a list of strings; empty when absent
   std::vector<int> integers(const std::string& key);           // a list of whole numbers; empty when absent
   // The raw list under `key` (values of mixed types, read by the caller); null when absent or not a table.

@@ -66,6 +66,9 @@ struct MovableBodyKnowledge {
   double friction = 0.0;            // the body's own coefficient
   double floor_friction_force = 0.0;  // N needed to start it sliding
   std::vector<MRegionTemplate> mregions;  // the pushable faces; empty for class kFixed
+  // The faces the robot can touch (all but those inside a notch narrower than it): all of them active, the
+  // body is free.
+  FaceSet touchable_faces;
   // The world's rule, not knowledge: the faces the author listed in push_from, as mRegions, whatever the
   // body's class (empty when it lists none: every face). Every planner keeps it (check_validity, both
   // modes); which of them kappa switches off, and the classes, are knowledge.

@@ -177,11 +177,13 @@ Vec2 ObjectLead::target(const Goal& goal, const scenario::EnvironmentState& stat
   const geometry::Shape round = geometry::grown(body.footprint.shape, r + kRoundClearance);
   Vec2 corner_target = contact;
   double shortest = std::numeric_limits<double>::infinity();
-  const geometry::Polygon round_corners = geometry::convex_parts_at(round, pose, geometry::CircleAs::kCircumscribed).front();
-  for (const Vec2& corner : round_corners.vertices) {
-    if (crosses(blocking, pose, robot, corner)) continue;
-    const double way = (corner - robot).norm() + (contact - corner).norm();
-    if (way < shortest) shortest = way, corner_target = corner;
+  // Every part's corners: a compound body's outline is the union of its parts.
+  for (const geometry::Polygon& part : geometry::convex_parts_at(round, pose, geometry::CircleAs::kCircumscribed)) {
+    for (const Vec2& corner : part.vertices) {
+      if (crosses(blocking, pose, robot, corner)) continue;
+      const double way = (corner - robot).norm() + (contact - corner).norm();
+      if (way < shortest) shortest = way, corner_target = corner;
+    }
   }
   return corner_target;
 }
