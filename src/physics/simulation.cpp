@@ -36,6 +36,9 @@ double mix_friction(double a, double b) { return std::sqrt(a * b); }
 
 struct Geom {
   dGeomID id = nullptr;
+  // A compound movable body's other convex parts, each about `offset` in the body's frame (the first, `id`,
+  // is about the body's centre when it is the only one, about its own centroid otherwise: parts.front()).
+  std::vector<PartGeom> parts;
   dBodyID body = nullptr;  // null for fixed bodies, and for dynamic ones ODE does not hold now
   dJointID planar = nullptr;  // a dynamic body's plane-2D joint while ODE holds the body
   scenario::RobotContact::Body kind = scenario::RobotContact::Body::kFixed;
@@ -115,7 +118,7 @@ struct Simulation::Impl {
     dMassSetSphereTotal(&mass, r.mass, r.radius);
     // The robot rolls on its wheels: no sliding friction with the floor, only what its drive applies.
     const bool differential = r.drive == scenario::Drive::kDifferential;
-    add_dynamic(dCreateSphere(nullptr, r.radius), mass, r.friction, r.radius, -1, 0.0,
+    add_dynamic({{dCreateSphere(nullptr, r.radius)}}, mass, r.friction, r.radius, -1, 0.0,
                 differential ? 0.0 : kHeadingHoldTorque);
     drive = {r.mass, mass.I[2 * 4 + 2], r.radius, r.max_force};
     if (differential) add_wheel_grip(mix_friction(floor, r.friction) * r.mass * kGravity);
@@ -124,8 +127,8 @@ struct Simulation::Impl {
       const auto& b = w.movable_bodies[i];
       const geometry::Shape& shape = b.footprint.shape;
       const double floor_force = mix_friction(floor, b.friction) * b.mass * kGravity;
-      // A movable body is convex: one geom.
-      add_dynamic(make_geoms(shape, convex_store).front().id, body_mass(shape, b.mass), b.friction, shape.bound_radius(),
+      // One ODE body, whatever its outline: a geom per convex part, all carried by it.
+      add_dynamic(make_geoms(shape, convex_store), body_mass(shape, b.mass), b.friction, shape.bound_radius(),
                   static_cast<int>(i), floor_force, floor_torque(shape, floor_force));
     }
     std::vector<geometry::Rect> fixed_bounds;
@@ -154,7 +157,9 @@ struct Simulation::Impl {
   }
 
   ~Impl() {
-    for (auto& g : dynamic) dGeomDestroy(g.id);
+    for (auto& g : dynamic) {
+      for (const PartGeom& part : g.parts) dGeomDestroy(part.id);
+    }
     for (auto& g : fixed) dGeomDestroy(g.id);
     dJointGroupDestroy(contact_group);
     dWorldDestroy(ode_world);  // also destroys bodies and joints
@@ -169,10 +174,11 @@ struct Simulation::Impl {
   }
 
   // Boxes start outside ODE (hold_awake() brings them in); the robot is made at once and stays.
-  void add_dynamic(dGeomID geom, const dMass& mass, double friction, double bound_radius, int index,
+  void add_dynamic(std::vector<PartGeom> parts, const dMass& mass, double friction, double bound_radius, int index,
                    double floor_force, double floor_torque) {
     Geom g;
-    g.id = geom;
+    g.id = parts.front().id;
+    g.parts = std::move(parts);
     g.kind = scenario::RobotContact::Body::kMovable;
     g.index = index;
     g.friction = friction;
@@ -194,7 +200,10 @@ struct Simulation::Impl {
     Geom& g = dynamic[i];
     g.body = dBodyCreate(ode_world);
     dBodySetMass(g.body, &g.mass);
-    dGeomSetBody(g.id, g.body);
+    for (const PartGeom& part : g.parts) {
+      dGeomSetBody(part.id, g.body);
+      if (g.parts.size() > 1) dGeomSetOffsetPosition(part.id, part.offset.x(), part.offset.y(), 0.0);
+    }
     // The plane-2D joint keeps the body on the floor; its motors, driven to zero velocity with a force
     // bound, are the floor's Coulomb friction (static and kinetic) solved together with the contacts.
     g.planar = dJointCreatePlane2D(ode_world, nullptr);
@@ -351,14 +360,34 @@ struct Simulation::Impl {
     }
   }
 
+  // Every convex part of `a` against every part of `b`, in their order; the robot's contact with `b` is
+  // reported once, where it first touches.
   void collide(const Geom& a, const Geom& b, std::vector<scenario::RobotContact>& robot_contacts) {
-    const int found = dCollide(a.id, b.id, kMaxContactsPerPair, contact_buffer, sizeof(dContactGeom));
+    if (a.parts.size() <= 1 && b.parts.size() <= 1) return collide_parts(a, a.id, b, b.id, robot_contacts);
+    const std::size_t reported = robot_contacts.size();
+    for_each_part(a, [&](dGeomID part_a) {
+      for_each_part(b, [&](dGeomID part_b) {
+        collide_parts(a, part_a, b, part_b, robot_contacts);
+        if (robot_contacts.size() > reported + 1) robot_contacts.pop_back();
+      });
+    });
+  }
+
+  // A fixed body's geom is one convex part (a fixed body has a Geom per part); a dynamic body's are its parts.
+  template <class F>
+  static void for_each_part(const Geom& g, F&& f) {
+    if (g.parts.empty()) return f(g.id);
+    for (const PartGeom& part : g.parts) f(part.id);
+  }
+
+  void collide_parts(const Geom& a, dGeomID part_a, const Geom& b, dGeomID part_b, std::vector<scenario::RobotContact>& robot_contacts) {
+    const int found = dCollide(part_a, part_b, kMaxContactsPerPair, contact_buffer, sizeof(dContactGeom));
     // Tall boxes touch at the top and the bottom of the same vertical edge; in the plane those are one
     // contact, and the duplicate rows make the LCP singular ("LCP internal error"), so keep one.
     // ODE's separating-axis test for convex prisms, at zero depth (bodies that just touch, as a polygon
     // placed flush against a wall), picks any axis: a contact along the wall that holds the body fast.
     // Touching without depth pushes nothing; the next step, with depth, has the true normal.
-    const bool convex = dGeomGetClass(a.id) == dConvexClass || dGeomGetClass(b.id) == dConvexClass;
+    const bool convex = dGeomGetClass(part_a) == dConvexClass || dGeomGetClass(part_b) == dConvexClass;
     int n = 0;
     for (int i = 0; i < found; ++i) {
       if (convex && (contact_buffer[i].depth <= 1e-9 || std::abs(contact_buffer[i].normal[2]) > 0.5)) continue;

@@ -1,9 +1,13 @@
 // OntologyFormulation: body classes, robot capabilities and mRegion templates from a World.
 
 #include "physltl/knowledge/abstract_knowledge.h"
+#include "physltl/geometry/convex_partition.h"
+#include "physltl/knowledge/kappa.h"
 #include "test_worlds.h"
 
 #include <gtest/gtest.h>
+
+#include <set>
 
 namespace physltl::knowledge {
 namespace {
@@ -28,6 +32,43 @@ TEST(Formulate, MovableBodyWithoutAuthoredSidesIsFreelyMovableWithAnMRegionOnEac
   ASSERT_EQ(k.movable_bodies.size(), 1u);
   EXPECT_EQ(k.movable_bodies[0].body_class, BodyClass::kFreelyMovable);
   EXPECT_EQ(k.movable_bodies[0].mregions.size(), 4u);
+}
+
+// A U of outline width 1.6 m and depth 1 m about the origin, its notch `notch` wide and 0.6 m deep, open
+// towards +y: faces 3, 4 and 5 (counted from 0; push_from says 4 to 6) are its right side, bottom and left side.
+scenario::MovableBody& add_u(scenario::World& w, double notch) {
+  const double h = notch / 2;
+  geometry::Polygon outline{{{-0.8, -0.5}, {0.8, -0.5}, {0.8, 0.5}, {h, 0.5}, {h, -0.1}, {-h, -0.1}, {-h, 0.5}, {-0.8, 0.5}}};
+  const Vec2 centroid = outline.centroid();
+  for (Vec2& v : outline.vertices) v -= centroid;
+  scenario::MovableBody body;
+  body.name = "U";
+  body.mass = 1.0;
+  body.footprint = {{centroid, 0.0}, geometry::Shape::polygon(outline, geometry::convex_partition(outline))};
+  w.movable_bodies.push_back(body);
+  return w.movable_bodies.back();
+}
+
+std::set<int> faces_of(const MovableBodyKnowledge& body) {
+  std::set<int> faces;
+  for (const MRegionTemplate& m : body.mregions) faces.insert(m.face);
+  return faces;
+}
+
+TEST(Formulate, NoMRegionInsideANotchNarrowerThanTheRobotButOnEveryFaceOfAWideOne) {
+  auto narrow = open_world();  // the robot: 0.25 m radius
+  add_u(narrow, 0.4);
+  const auto k = formulate(narrow);
+  const MovableBodyKnowledge& u = k.movable_bodies[0];
+  EXPECT_EQ(faces_of(u), (std::set<int>{0, 1, 2, 6, 7})) << "the notch's sides and bottom are out of the robot's reach";
+  EXPECT_EQ(u.body_class, BodyClass::kFreelyMovable);
+  EXPECT_NE(u.class_reason.find("the robot can touch"), std::string::npos) << u.class_reason;
+  // Open space all round: every face it has is active, so it is free (the notch does not count against it).
+  EXPECT_EQ(infer(k, scenario::EnvironmentState::initial(narrow)).bodies[0].type, BodyType::kFree);
+
+  auto wide = open_world();
+  add_u(wide, 0.8);
+  EXPECT_EQ(faces_of(formulate(wide).movable_bodies[0]).size(), 8u) << "a notch the robot fits in is pushed from inside";
 }
 
 TEST(Formulate, AuthoredPushSidesMakeABodyConstraintOrientedWithOnlyThoseMRegions) {

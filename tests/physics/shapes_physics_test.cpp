@@ -103,5 +103,38 @@ TEST(ShapesPhysics, AFixedPolygonCollidesAsItsOutlineWhereverItIsConcave) {
   EXPECT_NEAR(sim.environment().robot_position.x(), 6.0 - 0.25, 0.02);  // stopped by the L's upright
 }
 
+TEST(ShapesPhysics, AnLPushedByItsOuterFaceMovesAsOneBodyEveryPartColliding) {
+  // A movable L: a bar 2 x 0.4 m along y = 5 and an arm 0.4 x 0.6 m up from its right end. A post stands
+  // in the arm's way only (above the bar): the robot pushing the bar's left end drives the whole L until
+  // the arm, a part the robot never touches, meets the post, which holds it (a body of the first part
+  // alone would pass under the post's left side).
+  scenario::World w = floor_with({}, {});
+  const geometry::Polygon l{{{-1, -0.2}, {1, -0.2}, {1, 0.8}, {0.6, 0.8}, {0.6, 0.2}, {-1, 0.2}}};
+  const Vec2 centroid = l.centroid();
+  geometry::Polygon outline;
+  for (const Vec2& v : l.vertices) outline.vertices.push_back(v - centroid);
+  const geometry::Shape shape = geometry::Shape::polygon(outline, geometry::convex_partition(outline));
+  ASSERT_GE(shape.parts().size(), 2u);
+  w.movable_bodies[0].footprint = {{Vec2(3.0, 5.0) + centroid, 0.0}, shape};
+  w.movable_bodies[0].mass = 0.5;
+  w.robot.start = {1.6, 5.0};
+  scenario::FixedBody post;
+  post.name = "post";
+  post.footprint = {{{5.3, 5.6}, 0.0}, geometry::Shape::box({0.2, 0.2})};  // x 5.1 to 5.5, y 5.4 to 5.8
+  w.fixed_bodies.push_back(post);
+  Simulation sim(w);
+  double moved = 0.0;
+  for (int i = 0; i < 120; ++i) {  // 6 s at 1 m/s: far beyond the post without it
+    sim.step({1, 0}, contacts);
+    const geometry::Pose2 pose = sim.environment().movable_poses[0];
+    moved = pose.position.x() - w.movable_bodies[0].footprint.pose.position.x();
+    // At every step the whole outline, every part where the one pose puts it, stays out of the post.
+    ASSERT_FALSE(geometry::overlap(shape, pose, post.footprint.shape, post.footprint.pose, 0.05)) << "step " << i;
+  }
+  EXPECT_GT(moved, 0.8) << "the robot pushed the L along";
+  // Held at the arm and pushed at the bar's end, the L turns about the post, as one body.
+  EXPECT_GT(sim.environment().movable_poses[0].yaw, 0.2);
+}
+
 }  // namespace shapes_physics
 }  // namespace physltl::physics

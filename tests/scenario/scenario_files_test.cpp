@@ -195,6 +195,56 @@ TEST(ScenarioHelpers, AMisplacedDoorwayNamesTheAuthorsLine) {
   }
 }
 
+TEST(ScenarioFiles, AConcaveMovablePolygonIsCutIntoConvexPartsAndLoadedAsOneBody) {
+  // An L: a bar 2 x 0.4 m and an arm 0.4 x 0.6 m on its right end.
+  const World w = world_from("concave", "movable { name = 'L', shape = 'polygon', mass = 1.0, polygon = {\n"
+                                        "  { 2, 2 }, { 4, 2 }, { 4, 3 }, { 3.6, 3 }, { 3.6, 2.4 }, { 2, 2.4 } } }\n");
+  const MovableBody& l = movable(w, "L");
+  const geometry::Shape& shape = l.footprint.shape;
+  EXPECT_EQ(shape.outline().vertices.size(), 6u);
+  EXPECT_GE(shape.parts().size(), 2u) << "cut into convex parts for the physics";
+  EXPECT_NEAR(shape.area(), 0.8 + 0.24, 1e-9);
+  // Its pose is the whole outline's centroid, and its parts tile the outline about it.
+  const Vec2 centroid = (0.8 * Vec2(3.0, 2.2) + 0.24 * Vec2(3.8, 2.7)) / 1.04;
+  EXPECT_TRUE(l.footprint.pose.position.isApprox(centroid, 1e-9)) << l.footprint.pose.position.transpose();
+  EXPECT_TRUE(geometry::contains(shape, l.footprint.pose, {3.8, 2.9}));   // in the arm
+  EXPECT_FALSE(geometry::contains(shape, l.footprint.pose, {3.0, 2.8}));  // in the notch
+}
+
+TEST(ScenarioFiles, AMovableBodyOfPartsIsTheirUnionNumberedAlongItsOutline) {
+  // The same L as its two parts about a centre: one body, the union's outline, the same area and centre.
+  const World w = world_from("parts", "movable { name = 'L', shape = 'polygon', center = { 3, 2.2 }, mass = 1.0, parts = {\n"
+                                      "  { { -1, -0.2 }, { 1, -0.2 }, { 1, 0.2 }, { -1, 0.2 } },\n"
+                                      "  { { 0.6, 0.1 }, { 1, 0.1 }, { 1, 0.8 }, { 0.6, 0.8 } } } }\n");
+  const MovableBody& l = movable(w, "L");
+  EXPECT_EQ(l.footprint.shape.outline().vertices.size(), 6u) << "overlapping parts make one outline";
+  EXPECT_NEAR(l.footprint.shape.area(), 1.04, 1e-9);
+  EXPECT_TRUE(l.footprint.pose.position.isApprox((0.8 * Vec2(3.0, 2.2) + 0.24 * Vec2(3.8, 2.7)) / 1.04, 1e-9));
+  EXPECT_GT(l.footprint.shape.outline().signed_area(), 0.0) << "faces run counter-clockwise";
+}
+
+TEST(ScenarioHelpers, AGridLetterIsOneBodyOfItsCellsAndItsLowercaseLettersItsGoal) {
+  const std::string shapes = std::string(PHYSLTL_SOURCE_DIR) + "/tests/planning/data/shapes/";
+  const World t = load_scenario(shapes + "t_to_goal.lua");
+  const MovableBody& body = movable(t, "T");
+  EXPECT_EQ(body.footprint.shape.outline().vertices.size(), 8u) << "a T of four cells";
+  // Four cells of 0.6 m, the gap between neighbours kept: 0.05 m in from every outer side.
+  EXPECT_NEAR(body.footprint.shape.area(), 1.7 * 0.5 + 0.5 * 0.6, 1e-9);
+  EXPECT_NEAR(body.mass, 1.0, 1e-12) << "0.5 kg times the square root of its cells";
+  // Its goal: half a cell about the centre of the goal's cells, as far from the body's start as the cells.
+  const Region& goal = region(t, "goalT");
+  const Vec2 goal_centre = goal.polygon.centroid();
+  EXPECT_NEAR((goal_centre - body.footprint.pose.position).x(), 3 * 0.6, 0.01);
+  EXPECT_NEAR((goal_centre - body.footprint.pose.position).y(), -3 * 0.6, 0.01);
+  EXPECT_NEAR(std::abs(goal.polygon.signed_area()), 0.3 * 0.3, 1e-9);
+  EXPECT_NE(t.task.formula.find("T@goalT"), std::string::npos) << t.task.formula;
+  // Letters that fill a rectangle are boxes: a 3x3 block and a bar of three.
+  const World b = load_scenario(shapes + "block_then_bar.lua");
+  EXPECT_TRUE(movable(b, "B").footprint.shape.is_box());
+  EXPECT_TRUE(movable(b, "B").footprint.shape.half_extents().isApprox(Vec2(0.85, 0.85)));
+  EXPECT_TRUE(movable(b, "A").footprint.shape.half_extents().isApprox(Vec2(0.25, 0.85)));
+}
+
 TEST(ScenarioFiles, ElementsKeepTheLineOfTheAuthorsCallEvenThroughHelpers) {
   const World w = load_scenario(kScenarios + "/rooms.lua");
   const auto& b1 = movable(w, "B1");
