@@ -62,11 +62,19 @@ constexpr int kWayAhead = 3;
 
 geometry::Vec2 direction_of(int d) { return {kDx[d], kDy[d]}; }
 
-// Robot steps from every place to `goal` round the places held in `held`.
+// Where the robot stands to push lattice body k on `cell` in direction d: nearest the body's centre line
+// of the places behind it that it fits in.
+int stand_of(const lookahead::PushLattice& lattice, int k, int cell, int d) {
+  return lattice.first_stand(k, cell, d, [&](int c) { return lattice.robot_fits(c); });
+}
+
+// Robot steps from every place to `goal` round the places the lattice bodies on `held` cover.
 std::vector<int> walk_to(const lookahead::PushLattice& lattice, int goal, const std::vector<int>& held) {
   std::vector<int> steps(static_cast<std::size_t>(lattice.cells()), kNever);
   std::vector<bool> blocked(static_cast<std::size_t>(lattice.cells()), false);
-  for (int c : held) blocked[static_cast<std::size_t>(c)] = true;
+  for (std::size_t k = 0; k < held.size(); ++k) {
+    lattice.for_each_cover(static_cast<int>(k), held[k], [&](int c) { blocked[static_cast<std::size_t>(c)] = true; });
+  }
   if (goal < 0 || !lattice.robot_fits(goal) || blocked[static_cast<std::size_t>(goal)]) return steps;
   std::vector<int> queue{goal};
   steps[static_cast<std::size_t>(goal)] = 0;
@@ -120,18 +128,18 @@ PushPlanLead::PushPlanLead(const lookahead::PushLattice& lattice, const std::vec
     for (int k : step.ahead) cells[static_cast<std::size_t>(k)] = lattice.neighbour(cells[static_cast<std::size_t>(k)], step.direction);
   }
   for (Run& run : runs_) {
-    run.walk = walk_to(lattice, lattice.neighbour(run.from, lookahead::opposite(run.direction)), run.before);
-    run.length = (lattice.centre(run.to) - lattice.centre(run.from)).norm();
+    run.walk = walk_to(lattice, stand_of(lattice, run.body, run.from, run.direction), run.before);
+    run.length = (lattice.body_centre(run.body, run.to) - lattice.body_centre(run.body, run.from)).norm();
   }
   for (int j = static_cast<int>(runs_.size()) - 2; j >= 0; --j) {
     const Run& next = runs_[static_cast<std::size_t>(j) + 1];
     const Run& run = runs_[static_cast<std::size_t>(j)];
-    const int robot_after = lattice.neighbour(run.to, lookahead::opposite(run.direction));
+    const int robot_after = stand_of(lattice, run.body, run.to, run.direction);
     const int walk = robot_after < 0 ? kNever : next.walk[static_cast<std::size_t>(robot_after)];
     runs_[static_cast<std::size_t>(j)].after =
         next.after + next.length + (walk == kNever ? kNoWay : (walk + kGetReady) * lattice.step());
   }
-  for (int k : cells) end_positions_.push_back(lattice.centre(k));
+  for (std::size_t k = 0; k < cells.size(); ++k) end_positions_.push_back(lattice.body_centre(static_cast<int>(k), cells[k]));
   if (!runs_.empty() && !runs_.back().ahead.empty()) {
     // A line ends the order short of its places: the gaps between its bodies closed.
     const Run& last = runs_.back();
@@ -152,7 +160,7 @@ const std::vector<int>& PushPlanLead::walk_behind(int j, int body_cell) const {
   if (walk.empty()) {
     std::vector<int> held = run.before;
     held[static_cast<std::size_t>(run.body)] = body_cell;
-    walk = walk_to(lattice_, lattice_.neighbour(body_cell, lookahead::opposite(run.direction)), held);
+    walk = walk_to(lattice_, stand_of(lattice_, run.body, body_cell, run.direction), held);
   }
   return walk;
 }
@@ -177,13 +185,13 @@ std::optional<PushPlanLead::Along> PushPlanLead::along(const physics::PhysicsSta
   };
   for (std::size_t k = 0; k < places.size(); ++k) {
     if (moving(static_cast<int>(k))) continue;
-    if ((position(state, static_cast<int>(k)) - lattice_.centre(places[k])).norm() > tolerance) return std::nullopt;
+    if ((position(state, static_cast<int>(k)) - lattice_.body_centre(static_cast<int>(k), places[k])).norm() > tolerance) return std::nullopt;
   }
   const Run& run = runs_[static_cast<std::size_t>(j)];
   const geometry::Vec2 d = direction_of(run.direction);
   // How far body k has come along the push from its place before it, and how far off the push's line.
   const auto offset_of = [&](int k) -> std::optional<Along> {
-    const geometry::Vec2 offset = position(state, k) - lattice_.centre(places[static_cast<std::size_t>(k)]);
+    const geometry::Vec2 offset = position(state, k) - lattice_.body_centre(k, places[static_cast<std::size_t>(k)]);
     const double a = offset.dot(d);
     const double lateral = std::abs(geometry::cross(offset, d));
     if (lateral > tolerance || a < -tolerance || a > run.length + tolerance) return std::nullopt;
@@ -213,7 +221,7 @@ bool PushPlanLead::ready_to_push(const geometry::Vec2& robot, const geometry::Ve
 double PushPlanLead::robot_way(const geometry::Vec2& robot, const geometry::Vec2& body, int j) const {
   if (ready_to_push(robot, body, j)) return 0.0;
   const int cell = lattice_.robot_cell(robot);
-  const int body_cell = lattice_.cell_at(body);
+  const int body_cell = lattice_.body_cell(runs_[static_cast<std::size_t>(j)].body, body);
   if (cell < 0 || body_cell < 0) return kNoWay;
   const std::vector<int>& walk = walk_behind(j, body_cell);
   if (walk[static_cast<std::size_t>(cell)] == kNever) return kNoWay;
@@ -250,7 +258,7 @@ std::optional<PushPlanLead::Target> PushPlanLead::target(const physics::PhysicsS
   const auto [run, d, robot, body, touching] = situation(state, push);
   // Pushing: to where the robot stands behind the body on its place, which also steers the body back onto
   // the lattice's line.
-  if (ready_to_push(robot, body, push)) return Target{lattice_.centre(run.to) - touching * d, true};
+  if (ready_to_push(robot, body, push)) return Target{lattice_.body_centre(run.body, run.to) - touching * d, true};
   const geometry::Vec2 behind = body - (touching + kBehindGap) * d;
   const Way way = way_ahead(robot, push, body, kWalkAhead);
   if (way.places.empty()) return std::nullopt;
@@ -260,7 +268,7 @@ std::optional<PushPlanLead::Target> PushPlanLead::target(const physics::PhysicsS
 
 PushPlanLead::Way PushPlanLead::way_ahead(const geometry::Vec2& robot, int j, const geometry::Vec2& body, int ahead) const {
   int cell = lattice_.robot_cell(robot);
-  const int body_cell = lattice_.cell_at(body);
+  const int body_cell = lattice_.body_cell(runs_[static_cast<std::size_t>(j)].body, body);
   if (cell < 0 || body_cell < 0) return {};
   const std::vector<int>& walk = walk_behind(j, body_cell);
   const auto steps = [&](int c) { return c < 0 ? kNever : walk[static_cast<std::size_t>(c)]; };
@@ -298,7 +306,7 @@ std::optional<PushPlanLead::Steer> PushPlanLead::steer(const physics::PhysicsSta
   const double depth = (body - robot).dot(d);
   const bool square_behind = std::abs(geometry::cross(d, robot - body)) <= kSquareBehind;
   if (ready_to_push(robot, body, push) && (square_behind || depth <= touching + kTouching)) {
-    const double left = run.length - (body - lattice_.centre(run.from)).dot(d);
+    const double left = run.length - (body - lattice_.body_centre(run.body, run.from)).dot(d);
     const double speed = std::clamp(left / kArriveTime, kCreep * max_speed, kPushSpeed * max_speed);
     // Along the push, closing the robot's offset from the line through the body's centre sideways.
     const geometry::Vec2 side(-d.y(), d.x());

@@ -81,13 +81,13 @@ std::vector<PlannedPush> runs_of(const PushLattice& lattice, const std::vector<P
     if (!runs.empty() && i > 0 && same_run(steps[i - 1], step)) {
       runs.back().cells += 1;
       runs.back().distance = runs.back().cells * lattice.step();
-      runs.back().to = lattice.centre(step.to);
+      runs.back().to = lattice.body_centre(step.body, step.to);
       continue;
     }
     std::vector<int> ahead;
     for (int k : step.ahead) ahead.push_back(lattice.bodies()[static_cast<std::size_t>(k)]);
     runs.push_back({body, std::move(ahead), kDx[step.direction], kDy[step.direction], 1, lattice.step(),
-                    lattice.centre(step.from), lattice.centre(step.to)});
+                    lattice.body_centre(step.body, step.from), lattice.body_centre(step.body, step.to)});
   }
   return runs;
 }

@@ -2,8 +2,11 @@
 
 #include "physltl/knowledge/kappa.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace physltl::planning::lookahead {
@@ -11,6 +14,11 @@ namespace {
 
 constexpr double kTouch = 1e-6;  // m: touching a wall is not overlapping it
 constexpr double kAlongAxis = 0.9;  // cosine: a face's push counts as a lattice direction
+// Bodies and walls share a grid when their sides, and the bodies' with half the gap round them, lie a
+// whole number of cells apart to this share of a cell; an outline covers its places when it reaches
+// this far past none of them.
+constexpr double kWholeCells = 0.02;
+constexpr double kCoverTolerance = 1e-6;  // m
 
 bool square(double yaw) {
   const double quarter = std::numbers::pi / 2;
@@ -44,36 +52,157 @@ std::optional<PushLattice> PushLattice::build(const scenario::World& world, cons
     }
   }
   lattice.push_force_ = knowledge.robot.push_force;
-  lattice.anchor_at(knowledge.movable_bodies[static_cast<std::size_t>(anchor)].footprint.pose.position, knowledge.workspace);
+  // Unit bodies: the anchor's centre is a place; on a grid, the centre of the cell at its lower left.
+  const geometry::Footprint& anchor_body = knowledge.movable_bodies[static_cast<std::size_t>(anchor)].footprint;
+  const geometry::Vec2 first_place =
+      lattice.unit_bodies_ ? anchor_body.pose.position
+                           : geometry::bounds(anchor_body.shape, anchor_body.pose).min + geometry::Vec2::Constant((lattice.step_ - kLatticeGap) / 2);
+  lattice.anchor_at(first_place, knowledge.workspace);
   lattice.mark_robot_places(walls, knowledge.workspace, knowledge.robot.radius);
   // The region of each place, the same for every body.
   const knowledge::RegionMap regions(world);
   std::vector<int> region_of(static_cast<std::size_t>(lattice.cells()));
   for (int c = 0; c < lattice.cells(); ++c) region_of[static_cast<std::size_t>(c)] = regions.at(lattice.centre(c));
   for (std::size_t k = 0; k < lattice.bodies_.size(); ++k) {
-    if (!lattice.add_body(k, region_of, knowledge, labelling, walls, why_not)) return std::nullopt;
+    if (!lattice.take_cover(k, knowledge)) {
+      why_not = knowledge.movable_bodies[static_cast<std::size_t>(lattice.bodies_[k])].name + " does not cover whole places of the grid";
+      return std::nullopt;
+    }
+    if (!lattice.add_body(k, regions, region_of, knowledge, labelling, walls, why_not)) return std::nullopt;
   }
   return lattice;
 }
 
 bool PushLattice::take_bodies(const knowledge::AbstractKnowledge& knowledge, std::vector<geometry::Footprint>& walls,
                               std::string& why_not) {
-  double largest_side = 0.0;
+  double largest_side = 0.0, smallest_side = std::numeric_limits<double>::infinity();
+  bool boxes = true;
   for (std::size_t b = 0; b < knowledge.movable_bodies.size(); ++b) {
     const auto& body = knowledge.movable_bodies[b];
     if (body.body_class == knowledge::BodyClass::kFixed) {
       walls.push_back(body.footprint);
       continue;
     }
-    if (!body.footprint.shape.is_box() || !square(body.footprint.pose.yaw)) {
-      why_not = body.name + " is not a box standing square";
+    const geometry::Shape& shape = body.footprint.shape;
+    if (shape.kind() == geometry::Shape::Kind::kCircle || !square(body.footprint.pose.yaw)) {
+      why_not = body.name + " is not a box or a polygon standing square";
       return false;
     }
-    largest_side = std::max(largest_side, 2 * body.footprint.shape.half_extents().maxCoeff());
+    boxes &= shape.is_box();
+    const geometry::Vec2 extent = geometry::bounds(shape, body.footprint.pose).size();
+    largest_side = std::max(largest_side, extent.maxCoeff());
+    smallest_side = std::min(smallest_side, extent.minCoeff());
     bodies_.push_back(static_cast<int>(b));
+    start_yaw_.push_back(body.footprint.pose.yaw);
+  }
+  if (take_grid(knowledge, walls, smallest_side)) return true;
+  // Off any common grid: boxes, each on a place of the largest box's size.
+  if (!boxes) {
+    why_not = "its bodies and walls stand on no common grid of cells as wide as the robot";
+    return false;
   }
   step_ = largest_side + kLatticeGap;
   return true;
+}
+
+bool PushLattice::take_grid(const knowledge::AbstractKnowledge& knowledge, const std::vector<geometry::Footprint>& walls,
+                            double smallest_side) {
+  if (bodies_.empty()) return false;
+  // Lengths measured from the lower left of the first body's first cell (its bounds less half the gap).
+  const geometry::Footprint& first = knowledge.movable_bodies[static_cast<std::size_t>(bodies_.front())].footprint;
+  const geometry::Vec2 origin = geometry::bounds(first.shape, first.pose).min - geometry::Vec2::Constant(kLatticeGap / 2);
+  std::vector<double> lengths;
+  const auto add_rect = [&](const geometry::Rect& r, double grown) {
+    for (const geometry::Vec2& corner : {r.min, r.max}) {
+      const geometry::Vec2 from = corner - origin + geometry::Vec2::Constant(corner == r.min ? -grown : grown);
+      lengths.insert(lengths.end(), {from.x(), from.y()});
+    }
+  };
+  for (int b : bodies_) {
+    const geometry::Footprint& f = knowledge.movable_bodies[static_cast<std::size_t>(b)].footprint;
+    add_rect(geometry::bounds(f.shape, f.pose), kLatticeGap / 2);
+  }
+  for (const geometry::Footprint& wall : walls) add_rect(geometry::bounds(wall.shape, wall.pose), 0.0);
+  const auto whole = [&](double cell) {
+    return std::all_of(lengths.begin(), lengths.end(), [&](double l) { return std::abs(l / cell - std::round(l / cell)) <= kWholeCells; });
+  };
+  // The largest cell, a whole share of the smallest body's side and the gap, that the robot fits in.
+  const double robot_width = 2 * knowledge.robot.radius;
+  for (int share = 1; (smallest_side + kLatticeGap) / share >= robot_width; ++share) {
+    const double cell = (smallest_side + kLatticeGap) / share;
+    if (!whole(cell)) continue;
+    step_ = cell;
+    unit_bodies_ = std::all_of(bodies_.begin(), bodies_.end(), [&](int b) {
+      const geometry::Footprint& f = knowledge.movable_bodies[static_cast<std::size_t>(b)].footprint;
+      return ((geometry::bounds(f.shape, f.pose).size().array() + kLatticeGap) / cell).maxCoeff() < 1 + kWholeCells;
+    });
+    return true;
+  }
+  return false;
+}
+
+bool PushLattice::take_cover(std::size_t k, const knowledge::AbstractKnowledge& knowledge) {
+  const geometry::Footprint& f = knowledge.movable_bodies[static_cast<std::size_t>(bodies_[k])].footprint;
+  if (unit_bodies_) {
+    const int at = cell_at(f.pose.position);
+    cover_.push_back({{0, 0}});
+    centre_offset_.push_back(geometry::Vec2::Zero());
+    return at >= 0;
+  }
+  // The places whose centres the outline holds, from the lower left of its bounds.
+  const geometry::Rect bounds = geometry::bounds(f.shape, f.pose);
+  const int first = cell_at(bounds.min + geometry::Vec2::Constant((step_ - kLatticeGap) / 2));
+  if (first < 0) return false;
+  std::vector<int> covered;
+  const geometry::Vec2 cells = (bounds.size() + geometry::Vec2::Constant(kLatticeGap)) / step_;
+  for (int row = 0; row < static_cast<int>(std::lround(cells.y())); ++row) {
+    for (int column = 0; column < static_cast<int>(std::lround(cells.x())); ++column) {
+      const int c = shifted(first, {column, row});
+      if (c >= 0 && geometry::contains(f.shape, f.pose, centre(c))) covered.push_back(c);
+    }
+  }
+  if (covered.empty()) return false;
+  // Every corner of the outline within one of them: the outline is those places, less the gap.
+  const double half = step_ / 2 + kCoverTolerance;
+  for (const geometry::Polygon& part : geometry::convex_parts_at(f.shape, f.pose, geometry::CircleAs::kInscribed)) {
+    for (const geometry::Vec2& corner : part.vertices) {
+      const bool inside = std::any_of(covered.begin(), covered.end(), [&](int c) {
+        return ((corner - centre(c)).cwiseAbs().array() <= half).all();
+      });
+      if (!inside) return false;
+    }
+  }
+  const int anchor = *std::min_element(covered.begin(), covered.end());
+  auto& offsets = cover_.emplace_back();
+  for (int c : covered) {
+    offsets.push_back({places_.column_of(static_cast<std::size_t>(c)) - places_.column_of(static_cast<std::size_t>(anchor)),
+                       places_.row_of(static_cast<std::size_t>(c)) - places_.row_of(static_cast<std::size_t>(anchor))});
+  }
+  centre_offset_.push_back(f.pose.position - centre(anchor));
+  add_places_behind(offsets);
+  return true;
+}
+
+void PushLattice::add_places_behind(const std::vector<std::array<int, 2>>& cover) {
+  auto& behind = behind_.emplace_back();
+  const geometry::Vec2 middle = centre_offset_.back() / step_;  // in places, from the anchor
+  for (int d = 0; d < kDirections; ++d) {
+    std::vector<std::pair<double, std::array<int, 2>>> places;
+    for (const std::array<int, 2>& offset : cover) {
+      const std::array<int, 2> back{offset[0] - kDx[d], offset[1] - kDy[d]};
+      if (std::find(cover.begin(), cover.end(), back) != cover.end()) continue;
+      const double off = std::abs(geometry::cross(geometry::Vec2(back[0], back[1]) - middle, geometry::Vec2(kDx[d], kDy[d])));
+      places.push_back({off, back});
+    }
+    std::stable_sort(places.begin(), places.end(), [](const auto& a, const auto& b) { return a.first < b.first - kCoverTolerance; });
+    for (const auto& [off, back] : places) behind[static_cast<std::size_t>(d)].push_back(back);
+  }
+}
+
+int PushLattice::shifted(int cell, const std::array<int, 2>& offset) const {
+  const int column = places_.column_of(static_cast<std::size_t>(cell)) + offset[0];
+  const int row = places_.row_of(static_cast<std::size_t>(cell)) + offset[1];
+  return places_.contains(column, row) ? static_cast<int>(places_.index(column, row)) : -1;
 }
 
 void PushLattice::anchor_at(const geometry::Vec2& a, const geometry::Rect& ws) {
@@ -107,22 +236,26 @@ void PushLattice::mark_robot_places(const std::vector<geometry::Footprint>& wall
   }
 }
 
-bool PushLattice::add_body(std::size_t k, const std::vector<int>& region_of, const knowledge::AbstractKnowledge& knowledge,
+bool PushLattice::add_body(std::size_t k, const knowledge::RegionMap& regions, const std::vector<int>& region_of,
+                           const knowledge::AbstractKnowledge& knowledge,
                            const knowledge::Labelling& labelling, const std::vector<geometry::Footprint>& walls,
                            std::string& why_not) {
   const int b = bodies_[k];
   const auto& body = knowledge.movable_bodies[static_cast<std::size_t>(b)];
-  const int at = cell_at(body.footprint.pose.position);
-  if (at < 0 || (centre(at) - body.footprint.pose.position).norm() > kSnapShare * step_) {
+  const int at = body_cell(static_cast<int>(k), body.footprint.pose.position);
+  if (at < 0 || (body_centre(static_cast<int>(k), at) - body.footprint.pose.position).norm() > kSnapShare * step_) {
     why_not = body.name + " stands between the lattice's places (step " + std::to_string(step_).substr(0, 4) + " m)";
     return false;
   }
   const int n = cells();
   std::vector<bool> fits(static_cast<std::size_t>(n));
+  const std::size_t cover = cover_[k].size();
   for (int c = 0; c < n; ++c) {
-    const geometry::Pose2 pose{centre(c), body.footprint.pose.yaw};
+    const geometry::Pose2 pose{body_centre(static_cast<int>(k), c), body.footprint.pose.yaw};
+    std::size_t covered = 0;
+    for_each_cover(static_cast<int>(k), c, [&](int) { ++covered; });
     fits[static_cast<std::size_t>(c)] =
-        geometry::inside(body.footprint.shape, pose, knowledge.workspace, kTouch) &&
+        covered == cover && geometry::inside(body.footprint.shape, pose, knowledge.workspace, kTouch) &&
         std::none_of(walls.begin(), walls.end(), [&](const geometry::Footprint& w) {
           return geometry::overlap(body.footprint.shape, pose, w.shape, w.pose, kTouch);
         });
@@ -144,7 +277,11 @@ bool PushLattice::add_body(std::size_t k, const std::vector<int>& region_of, con
   std::vector<int> place(static_cast<std::size_t>(n), 0);
   if (named >= 0) {
     const knowledge::Labelling::NamedPart& part = labelling.named_parts()[static_cast<std::size_t>(named)];
-    for (int c = 0; c < n; ++c) place[static_cast<std::size_t>(c)] = part.place_of_region(region_of[static_cast<std::size_t>(c)]);
+    for (int c = 0; c < n; ++c) {
+      // A unit body's centre is on its place; a larger one's, where its offset puts it.
+      const int region = unit_bodies_ ? region_of[static_cast<std::size_t>(c)] : regions.at(body_centre(static_cast<int>(k), c));
+      place[static_cast<std::size_t>(c)] = part.place_of_region(region);
+    }
   }
   place_.push_back(std::move(place));
   return true;
@@ -178,10 +315,14 @@ int PushLattice::cell_at(const geometry::Vec2& p) const {
 
 std::optional<std::vector<int>> PushLattice::arrangement(const scenario::EnvironmentState& state) const {
   std::vector<int> cells;
-  for (int b : bodies_) {
-    const geometry::Pose2& pose = state.movable_poses[static_cast<std::size_t>(b)];
-    const int at = cell_at(pose.position);
-    if (at < 0 || (centre(at) - pose.position).norm() > kSnapShare * step_ || !square(pose.yaw)) return std::nullopt;
+  for (std::size_t k = 0; k < bodies_.size(); ++k) {
+    const geometry::Pose2& pose = state.movable_poses[static_cast<std::size_t>(bodies_[k])];
+    const int at = body_cell(static_cast<int>(k), pose.position);
+    if (at < 0 || (body_centre(static_cast<int>(k), at) - pose.position).norm() > kSnapShare * step_) return std::nullopt;
+    // A unit box may stand turned by quarter turns; a body of several places covers them turned as it started.
+    const bool turned_as_before =
+        unit_bodies_ ? square(pose.yaw) : std::abs(std::remainder(pose.yaw - start_yaw_[k], 2 * std::numbers::pi)) <= kSquareYaw;
+    if (!turned_as_before) return std::nullopt;
     cells.push_back(at);
   }
   return cells;

@@ -1,9 +1,16 @@
 #pragma once
 // The look-ahead's lattice: places one step apart where the pushable bodies may stand, anchored at a
 // named body's start, and what each place allows: a body there touches no wall, the robot there touches
-// none, the robot may walk to the next place. The step is the bodies' largest side plus kLatticeGap, so
-// bodies on neighbouring places do not touch and a push of one step leaves the robot in the place the
-// body left.
+// none, the robot may walk to the next place. Two ways to lay it:
+// - bodies of one size (boxes, as Sokoban has them): the step is the bodies' largest side plus
+//   kLatticeGap, so bodies on neighbouring places do not touch and a push of one step leaves the robot in
+//   the place the body left; each body covers one place.
+// - bodies of any sizes and shapes on one grid with the walls (bars, blocks, L and T shapes made of
+//   cells, as grid puzzles have them): the step is the common cell, the largest whole share of the
+//   smallest body's side and kLatticeGap that the robot fits in and that every body's and wall's sides
+//   lie on, and a body covers the places its outline covers. Its place is the first of them (its
+//   anchor); a push moves it one place, the robot behind the face it pushes, nearest the body's centre.
+//   Bodies of one size on the walls' grid make the first way (Sokoban's levels).
 
 #include "physltl/geometry/uniform_grid.h"
 #include "physltl/knowledge/abstract_knowledge.h"
@@ -37,6 +44,9 @@ class PushLattice {
                                           const knowledge::Labelling& labelling, std::string& why_not);
 
   double step() const { return step_; }
+  // Whether every body covers one place (the first way above): the search's deadlock rules, tunnels, goal
+  // rooms and lines of bodies hold for such bodies only.
+  bool unit_bodies() const { return unit_bodies_; }
   int cells() const { return static_cast<int>(places_.size()); }
   geometry::Vec2 centre(int cell) const;
   // The place nearest `p`, or -1 outside the lattice.
@@ -47,6 +57,33 @@ class PushLattice {
   // The bodies on the lattice: World::movable_bodies indices of the pushable ones.
   const std::vector<int>& bodies() const { return bodies_; }
   bool body_fits(int k, int cell) const { return body_free_[static_cast<std::size_t>(k)][static_cast<std::size_t>(cell)]; }
+  // Where lattice body k's centre is with its place on `cell`, and the place of body k whose centre is at `p`.
+  geometry::Vec2 body_centre(int k, int cell) const { return centre(cell) + centre_offset_[static_cast<std::size_t>(k)]; }
+  int body_cell(int k, const geometry::Vec2& p) const { return cell_at(p - centre_offset_[static_cast<std::size_t>(k)]); }
+  // The places lattice body k covers with its place on `cell`, each passed to `f` (one for a unit body);
+  // those off the lattice are left out (the body does not fit there).
+  template <class F>
+  void for_each_cover(int k, int cell, F&& f) const {
+    for (const std::array<int, 2>& offset : cover_[static_cast<std::size_t>(k)]) {
+      const int c = shifted(cell, offset);
+      if (c >= 0) f(c);
+    }
+  }
+  // The place the robot pushes lattice body k on `cell` in direction d from: of the places behind the
+  // face it pushes, the first that `usable` accepts, nearest the line through the body's centre first
+  // (a push there turns the body least); -1 when none does. For a unit body, the place behind it.
+  template <class F>
+  int first_stand(int k, int cell, int d, F&& usable) const {
+    if (unit_bodies_) {
+      const int stand = neighbour(cell, opposite(d));
+      return stand >= 0 && usable(stand) ? stand : -1;
+    }
+    for (const std::array<int, 2>& offset : behind_[static_cast<std::size_t>(k)][static_cast<std::size_t>(d)]) {
+      const int stand = shifted(cell, offset);
+      if (stand >= 0 && usable(stand)) return stand;
+    }
+    return -1;
+  }
   bool can_push(int k, int d) const { return pushable_[static_cast<std::size_t>(k)][static_cast<std::size_t>(d)]; }
   // Half lattice body k's extent along direction d.
   double half_along(int k, int d) const { return half_along_[static_cast<std::size_t>(k)][static_cast<std::size_t>(d / 2)]; }
@@ -68,6 +105,16 @@ class PushLattice {
   int robot_cell(const geometry::Vec2& p) const;
 
  private:
+  // The place `offset` (columns, rows) from `cell`, or -1 off the lattice.
+  int shifted(int cell, const std::array<int, 2>& offset) const;
+  // The step when the bodies and the walls stand on one grid of cells the robot fits in: the largest whole
+  // share of the smallest body's side and the gap; false when there is none.
+  bool take_grid(const knowledge::AbstractKnowledge& knowledge, const std::vector<geometry::Footprint>& walls, double smallest_side);
+  // Lattice body k's cover, anchor and centre offset from where it stands; false when its outline is not
+  // the places it covers.
+  bool take_cover(std::size_t k, const knowledge::AbstractKnowledge& knowledge);
+  // behind_ of the body just covered, whose places are `cover`.
+  void add_places_behind(const std::vector<std::array<int, 2>>& cover);
   PushLattice() = default;
   // The pushable bodies (fixed ones join `walls`) and the step; false, with why_not, when one is not a
   // box standing square.
@@ -76,8 +123,10 @@ class PushLattice {
   void anchor_at(const geometry::Vec2& anchor, const geometry::Rect& workspace);
   void mark_robot_places(const std::vector<geometry::Footprint>& walls, const geometry::Rect& workspace, double robot_radius);
   // Where lattice body k fits, how it may be pushed, its places for the task (`region_of`: each place's
-  // World region, -1 for none); false, with why_not, when it stands between places.
-  bool add_body(std::size_t k, const std::vector<int>& region_of, const knowledge::AbstractKnowledge& knowledge,
+  // World region, -1 for none, where a unit body's centre is; `regions` for a larger body's centre);
+  // false, with why_not, when it stands between places.
+  bool add_body(std::size_t k, const knowledge::RegionMap& regions, const std::vector<int>& region_of,
+                const knowledge::AbstractKnowledge& knowledge,
                 const knowledge::Labelling& labelling, const std::vector<geometry::Footprint>& walls, std::string& why_not);
 
   double step_ = 0.0;
@@ -91,6 +140,13 @@ class PushLattice {
   std::vector<std::vector<int>> place_;        // per lattice body, per place
   std::vector<double> friction_force_;         // per lattice body: N to start it sliding
   std::vector<std::array<double, 2>> half_along_;  // per lattice body: half its extent along x and y
+  bool unit_bodies_ = true;
+  std::vector<std::vector<std::array<int, 2>>> cover_;  // per lattice body: its places' offsets from its anchor
+  // Per lattice body, per direction: the offsets of the places behind the face pushed that way, nearest the
+  // line through its centre first.
+  std::vector<std::array<std::vector<std::array<int, 2>>, kDirections>> behind_;
+  std::vector<geometry::Vec2> centre_offset_;          // per lattice body: its centre from its anchor's
+  std::vector<double> start_yaw_;                      // per lattice body
   double push_force_ = 0.0;                    // N: the robot's drive
   std::vector<bool> robot_free_;
   std::vector<bool> robot_passes_;             // per place and direction

@@ -98,8 +98,7 @@ std::vector<int> PushSearcher::pushes_to_cells(int k, const std::vector<int>& ta
       if (!lattice_.can_push(k, d)) continue;
       const int before = lattice_.neighbour(c, opposite(d));
       if (before < 0 || !lattice_.body_fits(k, before) || left[static_cast<std::size_t>(before)] != kNever) continue;
-      const int stand = lattice_.neighbour(before, opposite(d));
-      if (stand < 0 || !lattice_.robot_fits(stand)) continue;
+      if (lattice_.first_stand(k, before, d, [&](int stand) { return lattice_.robot_fits(stand); }) < 0) continue;
       left[static_cast<std::size_t>(before)] = left[static_cast<std::size_t>(c)] + 1;
       queue.push_back(before);
     }
@@ -624,7 +623,17 @@ class ArrangementSearch {
 
   void hold(const std::vector<int>& at) {
     std::fill(holder_.begin(), holder_.end(), -1);
-    for (std::size_t k = 0; k < at.size(); ++k) holder_[static_cast<std::size_t>(at[k])] = static_cast<int>(k);
+    for (std::size_t k = 0; k < at.size(); ++k) mark(static_cast<int>(k), at[k], static_cast<int>(k));
+  }
+  // holder_ of the places body k covers on `cell` set to `to`.
+  void mark(int k, int cell, int to) {
+    lattice_.for_each_cover(k, cell, [&](int c) { holder_[static_cast<std::size_t>(c)] = to; });
+  }
+  // Whether body k moved to `to` covers only places no other body holds.
+  bool room_for(int k, int to) const {
+    bool free = true;
+    lattice_.for_each_cover(k, to, [&](int c) { free &= holder_[static_cast<std::size_t>(c)] < 0 || holder_[static_cast<std::size_t>(c)] == k; });
+    return free;
   }
 
   // Body k pushed from place `from` in direction d until it stands on `to`, one place at a time.
@@ -663,9 +672,10 @@ class ArrangementSearch {
     return steps;
   }
 
+  // Lines of unit bodies only: a line's gaps are closed as a unit body's are (PushLattice::line_shortfalls).
   bool is_line(const std::vector<int>& cells, int k, int d) const {
     const int ahead = lattice_.neighbour(cells[static_cast<std::size_t>(k)], d);
-    return ahead >= 0 && holder_[static_cast<std::size_t>(ahead)] >= 0;
+    return lattice_.unit_bodies() && ahead >= 0 && holder_[static_cast<std::size_t>(ahead)] >= 0;
   }
 
   // The arrangement after pushing body k of `from` one step in direction d, added unless it was met
@@ -676,20 +686,23 @@ class ArrangementSearch {
     const std::vector<int>& cells = cells_;
     int at = cells[static_cast<std::size_t>(k)];
     if (!lattice_.can_push(k, d)) return {-1, -1};
-    const int stand = lattice_.neighbour(at, opposite(d));
+    const int stand = lattice_.first_stand(k, at, d, [&](int c) { return seen_[static_cast<std::size_t>(c)] == from.reach; });
     int to = lattice_.neighbour(at, d);
-    if (stand < 0 || to < 0 || seen_[static_cast<std::size_t>(stand)] != from.reach) return {-1, -1};
-    if (!lattice_.body_fits(k, to) || holder_[static_cast<std::size_t>(to)] >= 0 || goals_.left(k, to) == kNever) return {-1, -1};
+    if (stand < 0 || to < 0) return {-1, -1};
+    if (!lattice_.body_fits(k, to) || !room_for(k, to) || goals_.left(k, to) == kNever) return {-1, -1};
     std::vector<int> next = cells;
     next[static_cast<std::size_t>(k)] = to;
     const int next_stage = searcher_.stage_after(from.stage, next);
     if (stages_.distance(next_stage) < 0 || stages_.dead(stages_.automaton_state_of(next_stage))) return {-1, -1};
     int cost = from.cost + 1;
+    // The robot ends on the place behind the one it pushed from (the body's place, for a unit body).
+    int robot_on = lattice_.neighbour(stand, d);
     while (in_tunnel(k, d, at, to, next, next_stage)) {
       at = to, to = lattice_.neighbour(to, d), ++cost;
+      robot_on = at;
       next[static_cast<std::size_t>(k)] = to;
     }
-    const int robot = settle_check(next, k, to, at);
+    const int robot = settle_check(next, k, to, robot_on);
     if (robot < 0) return {-1, -1};
     const int added = store_.add({static_cast<std::uint32_t>(from.settled), robot, next_stage, to, static_cast<std::uint16_t>(k),
                                   static_cast<std::uint8_t>(d)});
@@ -701,14 +714,17 @@ class ArrangementSearch {
   // component, or -1 when the move leaves a deadlock (square_frozen, FreezeTest, a corral).
   int settle_check(const std::vector<int>& next, int k, int to, int robot_cell) {
     const int before = cells_[static_cast<std::size_t>(k)];
-    holder_[static_cast<std::size_t>(before)] = -1;
-    holder_[static_cast<std::size_t>(to)] = k;
-    bool dead = searcher_.square_frozen(goals_, next, holder_, to) || FreezeTest(lattice_, goals_, holder_).deadlocked(to);
+    mark(k, before, -1);
+    mark(k, to, k);
+    // The deadlock rules are of unit bodies (a body of several places is pruned only where it can never
+    // get where the task wants it, alone: Goals).
+    const bool unit = lattice_.unit_bodies();
+    bool dead = unit && (searcher_.square_frozen(goals_, next, holder_, to) || FreezeTest(lattice_, goals_, holder_).deadlocked(to));
     const int robot = dead ? 0 : walk(lattice_, robot_cell, holder_, seen_after_, mark_, queue_);
-    if (!dead) dead = corralled(next, to, robot_cell);
+    if (!dead && unit) dead = corralled(next, to, robot_cell);
     ++mark_;
-    holder_[static_cast<std::size_t>(to)] = -1;
-    holder_[static_cast<std::size_t>(before)] = k;
+    mark(k, to, -1);
+    mark(k, before, k);
     return dead ? -1 : robot;
   }
 
@@ -716,7 +732,7 @@ class ArrangementSearch {
   void find_rooms(int robot_cell) {
     std::map<std::vector<bool>, std::size_t> known;
     rooms_of_.assign(lattice_.bodies().size(), nullptr);
-    for (std::size_t k = 0; k < lattice_.bodies().size(); ++k) {
+    for (std::size_t k = 0; k < lattice_.bodies().size() && lattice_.unit_bodies(); ++k) {
       if (goals_.pushes_left[k].empty()) continue;  // the task leaves it free: every place is one of its goal places
       std::vector<bool> goal(static_cast<std::size_t>(lattice_.cells()));
       for (int c = 0; c < lattice_.cells(); ++c) goal[static_cast<std::size_t>(c)] = goals_.left(static_cast<int>(k), c) == 0;
@@ -785,7 +801,7 @@ class ArrangementSearch {
       return true;
     };
     const int ahead = lattice_.neighbour(to, d);
-    if (ahead < 0 || !walled(at) || !walled(to) || !walled(ahead)) return false;
+    if (!lattice_.unit_bodies() || ahead < 0 || !walled(at) || !walled(to) || !walled(ahead)) return false;
     if (goals_.left(k, to) == 0) return false;  // where the task wants it: pushed on, it would leave
     if (!lattice_.body_fits(k, ahead) || holder_[static_cast<std::size_t>(ahead)] >= 0) return false;
     const int left = goals_.left(k, ahead);
