@@ -186,6 +186,22 @@ TEST(Cli, CheckWritesPreviewPngAtTheScenariosRenderSize) {
   EXPECT_EQ(std::distance(fs::directory_iterator(out), fs::directory_iterator()), 1) << "a temporary folder was left";
 }
 
+TEST(Cli, CheckPreviewsACompoundBodyAsOneBodyOfConvexParts) {
+  const fs::path out = fresh_out_dir();
+  const std::string scenario = kSource + "/tests/planning/data/shapes/u_shape.lua";  // a U of five cells
+  const Result r = run("check " + scenario + " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("U        polygon of 8 corners"), std::string::npos) << r.out;
+  EXPECT_EQ(physltl::render::read_png(out / "u_shape" / "preview.png").width, 640);
+  const Result json = run("check " + scenario + " --json --no-preview");
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const nlohmann::json world = nlohmann::json::parse(json.out);
+  const auto& u = entry_named(world["bodies"], "U");
+  EXPECT_EQ(u["kind"], "movable");
+  EXPECT_EQ(u["points"].size(), 8u) << "one outline";
+  EXPECT_GE(u["convex_parts"].size(), 2u) << "cut into convex parts";
+}
+
 TEST(Cli, CheckReplacesOnlyPreviewPngBesideAPlansOutputs) {
   const fs::path folder = fresh_out_dir() / "ordered";
   fs::create_directories(folder);

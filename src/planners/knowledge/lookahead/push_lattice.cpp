@@ -89,13 +89,17 @@ bool PushLattice::take_bodies(const knowledge::AbstractKnowledge& knowledge, std
       return false;
     }
     boxes &= shape.is_box();
-    const geometry::Vec2 extent = geometry::bounds(shape, body.footprint.pose).size();
+    // A box's sides as authored (its bounds' differ in the last bit).
+    const geometry::Vec2 extent = shape.is_box() ? geometry::Vec2(2 * shape.half_extents()) : geometry::bounds(shape, body.footprint.pose).size();
     largest_side = std::max(largest_side, extent.maxCoeff());
     smallest_side = std::min(smallest_side, extent.minCoeff());
     bodies_.push_back(static_cast<int>(b));
     start_yaw_.push_back(body.footprint.pose.yaw);
   }
-  if (take_grid(knowledge, walls, smallest_side)) return true;
+  if (take_grid(knowledge, walls, smallest_side)) {
+    if (unit_bodies_) step_ = largest_side + kLatticeGap;  // the same step, to the bit, as bodies off a grid get
+    return true;
+  }
   // Off any common grid: boxes, each on a place of the largest box's size.
   if (!boxes) {
     why_not = "its bodies and walls stand on no common grid of cells as wide as the robot";
