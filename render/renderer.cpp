@@ -321,8 +321,7 @@ struct Renderer::Impl {
   }
 
   static void add_shadow(ShadowGeometry& shadows, const geometry::Shape& shape, const Pose2& pose, double height) {
-    const ShadowShape shadow = kind_of(shape).shadow(shape, pose);
-    shadows.add(shadow.pose, shadow.half_extents, shadow.corner_radius, height);
+    for (const ShadowShape& shadow : kind_of(shape).shadows(shape, pose)) shadows.add(shadow.pose, shadow.half_extents, shadow.corner_radius, height);
   }
 
   ShadowGeometry fixed_shadows() const {

@@ -7,6 +7,7 @@
 #include "physltl/geometry/shape.h"
 
 #include <optional>
+#include <vector>
 
 namespace physltl::render {
 
@@ -22,7 +23,8 @@ struct ShapeKindDrawing {
   std::optional<geometry::Vec2> (*as_cube)(const geometry::Shape& shape);
   // Its own mesh on the floor, `height` tall, in its frame: made once a shape.
   TriangleMesh (*mesh)(const geometry::Shape& shape, double height);
-  ShadowShape (*shadow)(const geometry::Shape& shape, const geometry::Pose2& pose);
+  // One shadow, or one per convex part of a concave polygon (none falls in its notches).
+  std::vector<ShadowShape> (*shadows)(const geometry::Shape& shape, const geometry::Pose2& pose);
 };
 
 const ShapeKindDrawing& kind_of(const geometry::Shape& shape);
