@@ -109,8 +109,11 @@ constexpr ShapeKindGeometry kRow{
 // A polygon: convex parts that tile it, its area centroid at the origin.
 namespace polygon {
 
+// 0 where the centre lies outside the outline (a concave body's centroid may: a chevron's, a thin L's).
 double centre_clearance(const Shape& s) {
   const auto& v = s.outline().vertices;
+  const bool centre_inside = std::any_of(s.parts().begin(), s.parts().end(), [](const Polygon& part) { return distance_to_convex(part, Vec2::Zero()) == 0.0; });
+  if (!centre_inside) return 0.0;
   double nearest = std::numeric_limits<double>::infinity();
   for (size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) nearest = std::min(nearest, distance_to_segment(Vec2::Zero(), v[j], v[i]));
   return v.empty() ? 0.0 : nearest;

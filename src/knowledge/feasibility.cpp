@@ -215,7 +215,8 @@ class ObjectJudge {
         verdict.reachable = false, why = Unreachability::kBodyCannotMove;
         verdict.reason = fmt::format("{}: {} is {}", object.name, body.name, body.class_reason);
       } else if (const double inscribed = body.footprint.shape.centre_clearance();
-                 !field(inscribed, object.regions).reaches_target(body.footprint.pose.position)) {
+                 // A centre outside its body (a concave one's) says nothing of where the body fits.
+                 inscribed > 0.0 && !field(inscribed, object.regions).reaches_target(body.footprint.pose.position)) {
         verdict.reachable = false, why = Unreachability::kBodyCannotGetThere;
         const std::string unpushable = unpushable_names(k_);
         verdict.reason = fmt::format("{}: no way for the centre of {} into {}: every way in is narrower than {} ({:.2f} m "

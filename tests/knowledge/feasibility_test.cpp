@@ -155,6 +155,22 @@ TEST(ObjectFeasibility, ABayWhoseOpeningIsNarrowerThanTheBodyIsRefusedWithItsRea
   EXPECT_EQ(object_feasibility(w, "Narrow", "bay").find("Narrow@bay"), nullptr);  // 0.4 m wide
 }
 
+// A U whose centroid lies in its notch, round a post standing there: its centre starts on the post, where
+// no disc fits, yet the U moves freely. A centre outside its body says nothing of where the body fits.
+TEST(ObjectFeasibility, ABodyWhoseCentreLiesOutsideItIsNotJudgedByItsCentre) {
+  auto w = open_world();
+  const scenario::MovableBody& u = testing::add_polygon(
+      w, "U", {{-0.6, -0.5}, {0.6, -0.5}, {0.6, 0.6}, {0.3, 0.6}, {0.3, -0.3}, {-0.3, -0.3}, {-0.3, 0.6}, {-0.6, 0.6}});
+  ASSERT_FALSE(geometry::contains(u.footprint.shape, u.footprint.pose, u.footprint.pose.position)) << "the centroid is in the notch";
+  EXPECT_EQ(u.footprint.shape.centre_clearance(), 0.0);
+  scenario::FixedBody post;
+  post.name = "post";
+  post.footprint = {u.footprint.pose, geometry::Shape::circle(0.15)};
+  w.fixed_bodies.push_back(post);
+  add_region(w, "dock", {1.5, 1.5}, {2.5, 2.5});
+  EXPECT_EQ(object_feasibility(w, "U", "dock").find("U@dock"), nullptr);
+}
+
 // A group's proposition holds only when each of its bodies is in one of its regions: one body that can
 // get into none makes it unreachable, named in the reason; a region it can get into makes it reachable.
 TEST(ObjectFeasibility, AGroupIsUnreachableWhenOneOfItsBodiesCanGetIntoNoneOfItsRegions) {

@@ -1,7 +1,6 @@
 // OntologyFormulation: body classes, robot capabilities and mRegion templates from a World.
 
 #include "physltl/knowledge/abstract_knowledge.h"
-#include "physltl/geometry/convex_partition.h"
 #include "physltl/knowledge/kappa.h"
 #include "test_worlds.h"
 
@@ -34,19 +33,11 @@ TEST(Formulate, MovableBodyWithoutAuthoredSidesIsFreelyMovableWithAnMRegionOnEac
   EXPECT_EQ(k.movable_bodies[0].mregions.size(), 4u);
 }
 
-// A U of outline width 1.6 m and depth 1 m about the origin, its notch `notch` wide and 0.6 m deep, open
-// towards +y: faces 3, 4 and 5 (counted from 0; push_from says 4 to 6) are its right side, bottom and left side.
+// A U of outline width 1.6 m and depth 1 m, its notch `notch` wide and 0.6 m deep, open towards +y:
+// faces 3, 4 and 5 (counted from 0; push_from says 4 to 6) are its right side, bottom and left side.
 scenario::MovableBody& add_u(scenario::World& w, double notch) {
   const double h = notch / 2;
-  geometry::Polygon outline{{{-0.8, -0.5}, {0.8, -0.5}, {0.8, 0.5}, {h, 0.5}, {h, -0.1}, {-h, -0.1}, {-h, 0.5}, {-0.8, 0.5}}};
-  const Vec2 centroid = outline.centroid();
-  for (Vec2& v : outline.vertices) v -= centroid;
-  scenario::MovableBody body;
-  body.name = "U";
-  body.mass = 1.0;
-  body.footprint = {{centroid, 0.0}, geometry::Shape::polygon(outline, geometry::convex_partition(outline))};
-  w.movable_bodies.push_back(body);
-  return w.movable_bodies.back();
+  return testing::add_polygon(w, "U", {{-0.8, -0.5}, {0.8, -0.5}, {0.8, 0.5}, {h, 0.5}, {h, -0.1}, {-h, -0.1}, {-h, 0.5}, {-0.8, 0.5}});
 }
 
 std::set<int> faces_of(const MovableBodyKnowledge& body) {

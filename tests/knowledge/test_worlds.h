@@ -1,6 +1,7 @@
 #pragma once
 // Small worlds built in code, so each test shows the geometry it relies on.
 
+#include "physltl/geometry/convex_partition.h"
 #include "physltl/knowledge/abstract_knowledge.h"
 #include "physltl/knowledge/kappa.h"
 #include "physltl/scenario/load.h"
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace physltl::knowledge {
 
@@ -48,6 +50,20 @@ inline scenario::MovableBody& add_box(scenario::World& w, const std::string& nam
   b.footprint.shape = geometry::Shape::box(0.5 * size);
   b.mass = mass;
   w.movable_bodies.push_back(b);
+  return w.movable_bodies.back();
+}
+
+// A movable polygon of `corners` (world frame, any simple outline: concave ones are cut into convex parts
+// as the scenario reader cuts them), its pose its area centroid.
+inline scenario::MovableBody& add_polygon(scenario::World& w, const std::string& name, const std::vector<Vec2>& corners) {
+  geometry::Polygon outline{corners};
+  const Vec2 centroid = outline.centroid();
+  for (Vec2& v : outline.vertices) v -= centroid;
+  scenario::MovableBody body;
+  body.name = name;
+  body.mass = 1.0;
+  body.footprint = {{centroid, 0.0}, geometry::Shape::polygon(outline, geometry::convex_partition(outline))};
+  w.movable_bodies.push_back(body);
   return w.movable_bodies.back();
 }
 

@@ -61,7 +61,8 @@ const geometry::DiscField& ObjectLead::way(const knowledge::Labelling::NamedPart
   const double inscribed = body.footprint.shape.centre_clearance();
   const Vec2 size = knowledge_.workspace.size();
   const double cell = std::max({0.5 * inscribed, 0.05, std::sqrt(size.x() * size.y() / kMaxWayCells)});
-  way = std::make_unique<geometry::DiscField>(knowledge_.workspace, std::min(cell, inscribed), inscribed, obstacles);
+  // A centre outside its (concave) body: the centre's own way, on the grid of the workspace's size.
+  way = std::make_unique<geometry::DiscField>(knowledge_.workspace, inscribed > 0.0 ? std::min(cell, inscribed) : cell, inscribed, obstacles);
   const auto in = [&](const std::vector<int>& regions, const Vec2& centre) {
     return std::any_of(regions.begin(), regions.end(), [&](int r) { return world_.regions[static_cast<std::size_t>(r)].polygon.contains(centre); });
   };
