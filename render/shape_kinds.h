@@ -23,7 +23,8 @@ struct ShapeKindDrawing {
   std::optional<geometry::Vec2> (*as_cube)(const geometry::Shape& shape);
   // Its own mesh on the floor, `height` tall, in its frame: made once a shape.
   TriangleMesh (*mesh)(const geometry::Shape& shape, double height);
-  // One shadow, or one per convex part of a concave polygon (none falls in its notches).
+  // One shadow, or one per convex part of a concave polygon (the bounds of its parts: an L's notch
+  // stays lit).
   std::vector<ShadowShape> (*shadows)(const geometry::Shape& shape, const geometry::Pose2& pose);
 };
 

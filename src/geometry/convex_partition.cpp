@@ -82,27 +82,42 @@ std::vector<Polygon> convex_partition(const Polygon& polygon) {
   return out;
 }
 
-std::vector<Polygon> convex_partition_of_union(const std::vector<Polygon>& polygons) {
-  using Polygon2 = CGAL::Polygon_2<Exact>;
-  using WithHoles = CGAL::Polygon_with_holes_2<Exact>;
-  std::vector<Polygon2> inputs;
+namespace {
+
+using ExactPolygon = CGAL::Polygon_2<Exact>;
+using WithHoles = CGAL::Polygon_with_holes_2<Exact>;
+
+// The union of `polygons` (any orientation, overlapping or touching) as CGAL's regions with holes; a
+// degenerate polygon adds nothing, or with `strict` makes it nothing at all.
+std::optional<std::vector<WithHoles>> united(const std::vector<Polygon>& polygons, bool strict) {
+  std::vector<ExactPolygon> inputs;
   for (const Polygon& polygon : polygons) {
-    if (polygon.vertices.size() < 3 || std::abs(polygon.signed_area()) < 1e-12 || !polygon.is_simple()) continue;
-    Polygon2 p;
+    if (polygon.vertices.size() < 3 || std::abs(polygon.signed_area()) < 1e-12 || !polygon.is_simple()) {
+      if (strict) return std::nullopt;
+      continue;
+    }
+    ExactPolygon p;
     for (const Vec2& v : counter_clockwise(polygon).vertices) p.push_back(Exact::Point_2(v.x(), v.y()));
     inputs.push_back(std::move(p));
   }
-  if (inputs.empty()) return {};
-  CGAL::Polygon_set_2<Exact> united;
-  united.join(inputs.begin(), inputs.end());
   std::vector<WithHoles> regions;
-  united.polygons_with_holes(std::back_inserter(regions));
+  if (inputs.empty()) return regions;
+  CGAL::Polygon_set_2<Exact> set;
+  set.join(inputs.begin(), inputs.end());
+  set.polygons_with_holes(std::back_inserter(regions));
+  return regions;
+}
+
+}  // namespace
+
+std::vector<Polygon> convex_partition_of_union(const std::vector<Polygon>& polygons) {
   CGAL::Polygon_vertical_decomposition_2<Exact> decompose;
   std::vector<Polygon> out;
+  const std::vector<WithHoles> regions = *united(polygons, false);
   for (const WithHoles& region : regions) {
-    std::list<Polygon2> pieces;
+    std::list<ExactPolygon> pieces;
     decompose(region, std::back_inserter(pieces));
-    for (const Polygon2& piece : pieces) {
+    for (const ExactPolygon& piece : pieces) {
       Polygon p = counter_clockwise(without_straight_corners(piece.container()));
       if (p.vertices.size() >= 3 && std::abs(p.signed_area()) > 1e-12) out.push_back(std::move(p));
     }
@@ -111,22 +126,9 @@ std::vector<Polygon> convex_partition_of_union(const std::vector<Polygon>& polyg
 }
 
 std::optional<Polygon> union_outline(const std::vector<Polygon>& polygons) {
-  using Polygon2 = CGAL::Polygon_2<Exact>;
-  using WithHoles = CGAL::Polygon_with_holes_2<Exact>;
-  std::vector<Polygon2> inputs;
-  for (const Polygon& polygon : polygons) {
-    if (polygon.vertices.size() < 3 || std::abs(polygon.signed_area()) < 1e-12 || !polygon.is_simple()) return std::nullopt;
-    Polygon2 p;
-    for (const Vec2& v : counter_clockwise(polygon).vertices) p.push_back(Exact::Point_2(v.x(), v.y()));
-    inputs.push_back(std::move(p));
-  }
-  if (inputs.empty()) return std::nullopt;
-  CGAL::Polygon_set_2<Exact> united;
-  united.join(inputs.begin(), inputs.end());
-  std::vector<WithHoles> regions;
-  united.polygons_with_holes(std::back_inserter(regions));
-  if (regions.size() != 1 || regions.front().has_holes() || regions.front().is_unbounded()) return std::nullopt;
-  Polygon outline = counter_clockwise(without_straight_corners(regions.front().outer_boundary().container()));
+  const std::optional<std::vector<WithHoles>> regions = united(polygons, true);
+  if (!regions || regions->size() != 1 || regions->front().has_holes() || regions->front().is_unbounded()) return std::nullopt;
+  Polygon outline = counter_clockwise(without_straight_corners(regions->front().outer_boundary().container()));
   if (!outline.is_simple()) return std::nullopt;  // pieces that meet at a corner only
   return outline;
 }

@@ -31,9 +31,6 @@ MovableBodyKnowledge movable_knowledge(const scenario::MovableBody& body, const 
   k.floor_friction_force =
       combined_friction(body.friction, world.workspace.floor_friction) * body.mass * settings.gravity;
   const double depth = body.mregion_depth.value_or(2.0 * robot.radius + settings.mregion_margin);
-  FaceSet pushable;
-  for (int face : body.push_from) pushable.insert(face);
-  const bool authored = !body.push_from.empty() && !(pushable == FaceSet::first(k.faces));
   std::vector<MRegionTemplate> touchable;
   for (int face = 0; face < k.faces; ++face) {
     if (auto m = kind_of(body.footprint.shape).face_template(body.footprint.shape, face, depth, robot.radius)) {
@@ -41,6 +38,10 @@ MovableBodyKnowledge movable_knowledge(const scenario::MovableBody& body, const 
       k.touchable_faces.insert(face);
     }
   }
+  // Listing every face, or every face the robot can touch, is listing none.
+  FaceSet pushable;
+  for (int face : body.push_from) pushable.insert(face);
+  const bool authored = !body.push_from.empty() && !(pushable == FaceSet::first(k.faces)) && !(pushable == k.touchable_faces);
   for (const MRegionTemplate& m : touchable) {
     if (authored && pushable.contains(m.face)) k.authored_sides.push_back(m);
   }

@@ -148,7 +148,9 @@ Interval longest_free(std::vector<Interval>& blocked, double length) {
   Interval best{0.0, 0.0};
   double t = 0.0;
   for (const Interval& b : blocked) {
-    if (b.lo - t > best.hi - best.lo) best = {t, std::min(b.lo, length)};
+    if (t >= length) break;
+    const double end = std::min(b.lo, length);  // intervals may run past the face
+    if (end - t > best.hi - best.lo) best = {t, end};
     t = std::max(t, b.hi);
   }
   if (length - t > best.hi - best.lo) best = {t, length};

@@ -36,8 +36,8 @@ double mix_friction(double a, double b) { return std::sqrt(a * b); }
 
 struct Geom {
   dGeomID id = nullptr;
-  // A compound movable body's other convex parts, each about `offset` in the body's frame (the first, `id`,
-  // is about the body's centre when it is the only one, about its own centroid otherwise: parts.front()).
+  // A dynamic body's convex parts, each about `offset` in the body's frame (one at its centre for a box, a
+  // cylinder, the robot and a convex polygon; `id` is the first); empty for a fixed body's part.
   std::vector<PartGeom> parts;
   dBodyID body = nullptr;  // null for fixed bodies, and for dynamic ones ODE does not hold now
   dJointID planar = nullptr;  // a dynamic body's plane-2D joint while ODE holds the body
@@ -96,6 +96,7 @@ struct Simulation::Impl {
   bool last_step_solved = true;
   dJointID wheel_grip = nullptr;  // differential drive only
   dContactGeom contact_buffer[kMaxContactsPerPair];
+  std::vector<dContactGeom> pair_contacts;  // collide()'s, kept between calls: no allocation per pair
 
   explicit Impl(const scenario::World& w) : world(w) {
     ensure_ode_ready_on_this_thread();
@@ -360,48 +361,15 @@ struct Simulation::Impl {
     }
   }
 
-  // Every convex part of `a` against every part of `b`, in their order; the robot's contact with `b` is
-  // reported once, where it first touches.
+  // Every convex part of `a` against every part of `b`, in their order, the contacts of all of them kept
+  // once each (two parts sharing a corner both find it); the robot's contact with `b` is where it first
+  // touches.
   void collide(const Geom& a, const Geom& b, std::vector<scenario::RobotContact>& robot_contacts) {
-    if (a.parts.size() <= 1 && b.parts.size() <= 1) return collide_parts(a, a.id, b, b.id, robot_contacts);
-    const std::size_t reported = robot_contacts.size();
-    for_each_part(a, [&](dGeomID part_a) {
-      for_each_part(b, [&](dGeomID part_b) {
-        collide_parts(a, part_a, b, part_b, robot_contacts);
-        if (robot_contacts.size() > reported + 1) robot_contacts.pop_back();
-      });
-    });
-  }
-
-  // A fixed body's geom is one convex part (a fixed body has a Geom per part); a dynamic body's are its parts.
-  template <class F>
-  static void for_each_part(const Geom& g, F&& f) {
-    if (g.parts.empty()) return f(g.id);
-    for (const PartGeom& part : g.parts) f(part.id);
-  }
-
-  void collide_parts(const Geom& a, dGeomID part_a, const Geom& b, dGeomID part_b, std::vector<scenario::RobotContact>& robot_contacts) {
-    const int found = dCollide(part_a, part_b, kMaxContactsPerPair, contact_buffer, sizeof(dContactGeom));
-    // Tall boxes touch at the top and the bottom of the same vertical edge; in the plane those are one
-    // contact, and the duplicate rows make the LCP singular ("LCP internal error"), so keep one.
-    // ODE's separating-axis test for convex prisms, at zero depth (bodies that just touch, as a polygon
-    // placed flush against a wall), picks any axis: a contact along the wall that holds the body fast.
-    // Touching without depth pushes nothing; the next step, with depth, has the true normal.
-    const bool convex = dGeomGetClass(part_a) == dConvexClass || dGeomGetClass(part_b) == dConvexClass;
-    int n = 0;
-    for (int i = 0; i < found; ++i) {
-      if (convex && (contact_buffer[i].depth <= 1e-9 || std::abs(contact_buffer[i].normal[2]) > 0.5)) continue;
-      const dReal* p = contact_buffer[i].pos;
-      bool duplicate = false;
-      for (int k = 0; k < n; ++k) {
-        const dReal* q = contact_buffer[k].pos;
-        duplicate |= std::abs(p[0] - q[0]) < 1e-4 && std::abs(p[1] - q[1]) < 1e-4;
-      }
-      if (!duplicate) contact_buffer[n++] = contact_buffer[i];
-    }
-    for (int i = 0; i < n; ++i) {
+    pair_contacts.clear();
+    for_each_part(a, [&](dGeomID part_a) { for_each_part(b, [&](dGeomID part_b) { gather_contacts(part_a, part_b); }); });
+    for (const dContactGeom& found : pair_contacts) {
       dContact contact{};
-      contact.geom = contact_buffer[i];
+      contact.geom = found;
       // One friction row, horizontal: the second tangent is vertical, where the plane-2D joint already
       // holds the bodies, and a duplicate row makes the LCP singular.
       const dReal* normal = contact.geom.normal;
@@ -416,11 +384,38 @@ struct Simulation::Impl {
       dJointID joint = dJointCreateContact(ode_world, contact_group, &contact);
       dJointAttach(joint, a.body, b.body);
     }
-    if (n > 0 && a.index < 0) {  // `a` is the robot: it is always the first of a pair
-      const dReal* p = contact_buffer[0].pos;
+    if (!pair_contacts.empty() && a.index < 0) {  // `a` is the robot: it is always the first of a pair
+      const dReal* p = pair_contacts.front().pos;
       robot_contacts.push_back({b.kind, b.index, {p[0], p[1]}});
     }
   }
+
+  // A fixed body's geom is one convex part (a fixed body has a Geom per part); a dynamic body's are its parts.
+  template <class F>
+  static void for_each_part(const Geom& g, F&& f) {
+    if (g.parts.empty()) return f(g.id);
+    for (const PartGeom& part : g.parts) f(part.id);
+  }
+
+  // The contacts of two convex parts, added to pair_contacts unless one there is at the same point.
+  void gather_contacts(dGeomID part_a, dGeomID part_b) {
+    const int found = dCollide(part_a, part_b, kMaxContactsPerPair, contact_buffer, sizeof(dContactGeom));
+    // Tall boxes touch at the top and the bottom of the same vertical edge; in the plane those are one
+    // contact, and the duplicate rows make the LCP singular ("LCP internal error"), so keep one.
+    // ODE's separating-axis test for convex prisms, at zero depth (bodies that just touch, as a polygon
+    // placed flush against a wall), picks any axis: a contact along the wall that holds the body fast.
+    // Touching without depth pushes nothing; the next step, with depth, has the true normal.
+    const bool convex = dGeomGetClass(part_a) == dConvexClass || dGeomGetClass(part_b) == dConvexClass;
+    for (int i = 0; i < found; ++i) {
+      if (convex && (contact_buffer[i].depth <= 1e-9 || std::abs(contact_buffer[i].normal[2]) > 0.5)) continue;
+      const dReal* p = contact_buffer[i].pos;
+      const bool duplicate = std::any_of(pair_contacts.begin(), pair_contacts.end(), [&](const dContactGeom& q) {
+        return std::abs(p[0] - q.pos[0]) < 1e-4 && std::abs(p[1] - q.pos[1]) < 1e-4;
+      });
+      if (!duplicate) pair_contacts.push_back(contact_buffer[i]);
+    }
+  }
+
 
   // After each step: remove the solver's drift out of the plane, and bring slow boxes to rest.
   void settle(size_t i) {

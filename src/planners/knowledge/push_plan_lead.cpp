@@ -62,10 +62,17 @@ constexpr int kWayAhead = 3;
 
 geometry::Vec2 direction_of(int d) { return {kDx[d], kDy[d]}; }
 
-// Where the robot stands to push lattice body k on `cell` in direction d: nearest the body's centre line
-// of the places behind it that it fits in.
-int stand_of(const lookahead::PushLattice& lattice, int k, int cell, int d) {
-  return lattice.first_stand(k, cell, d, [&](int c) { return lattice.robot_fits(c); });
+// Where the robot stands to push lattice body k on `cell` in direction d, the lattice bodies on `held`:
+// nearest the body's centre line of the places behind it that it fits in and no other body covers.
+int stand_of(const lookahead::PushLattice& lattice, int k, int cell, int d, const std::vector<int>& held) {
+  return lattice.first_stand(k, cell, d, [&](int c) {
+    if (!lattice.robot_fits(c)) return false;
+    bool free = true;
+    for (std::size_t j = 0; j < held.size() && free; ++j) {
+      if (static_cast<int>(j) != k) lattice.for_each_cover(static_cast<int>(j), held[j], [&](int covered) { free &= covered != c; });
+    }
+    return free;
+  });
 }
 
 // Robot steps from every place to `goal` round the places the lattice bodies on `held` cover.
@@ -128,13 +135,22 @@ PushPlanLead::PushPlanLead(const lookahead::PushLattice& lattice, const std::vec
     for (int k : step.ahead) cells[static_cast<std::size_t>(k)] = lattice.neighbour(cells[static_cast<std::size_t>(k)], step.direction);
   }
   for (Run& run : runs_) {
-    run.walk = walk_to(lattice, stand_of(lattice, run.body, run.from, run.direction), run.before);
+    const int stand = stand_of(lattice, run.body, run.from, run.direction, run.before);
+    run.walk = walk_to(lattice, stand, run.before);
     run.length = (lattice.body_centre(run.body, run.to) - lattice.body_centre(run.body, run.from)).norm();
+    run.touching = lattice.half_along(run.body, run.direction) + robot_radius_;
+    if (!lattice.unit_bodies() && stand >= 0) {
+      // On the stand's line, touching the face of the place ahead of it: half the gap into that place.
+      const geometry::Vec2 d = direction_of(run.direction);
+      const geometry::Vec2 from_centre = lattice.centre(stand) - lattice.body_centre(run.body, run.from);
+      run.touching = -from_centre.dot(d) - (lattice.step() + lookahead::kLatticeGap) / 2 + robot_radius_;
+      run.beside = from_centre - from_centre.dot(d) * d;
+    }
   }
   for (int j = static_cast<int>(runs_.size()) - 2; j >= 0; --j) {
     const Run& next = runs_[static_cast<std::size_t>(j) + 1];
     const Run& run = runs_[static_cast<std::size_t>(j)];
-    const int robot_after = stand_of(lattice, run.body, run.to, run.direction);
+    const int robot_after = stand_of(lattice, run.body, run.to, run.direction, next.before);
     const int walk = robot_after < 0 ? kNever : next.walk[static_cast<std::size_t>(robot_after)];
     runs_[static_cast<std::size_t>(j)].after =
         next.after + next.length + (walk == kNever ? kNoWay : (walk + kGetReady) * lattice.step());
@@ -160,7 +176,7 @@ const std::vector<int>& PushPlanLead::walk_behind(int j, int body_cell) const {
   if (walk.empty()) {
     std::vector<int> held = run.before;
     held[static_cast<std::size_t>(run.body)] = body_cell;
-    walk = walk_to(lattice_, stand_of(lattice_, run.body, body_cell, run.direction), held);
+    walk = walk_to(lattice_, stand_of(lattice_, run.body, body_cell, run.direction, held), held);
   }
   return walk;
 }
@@ -210,9 +226,11 @@ std::optional<PushPlanLead::Along> PushPlanLead::along(const physics::PhysicsSta
 bool PushPlanLead::ready_to_push(const geometry::Vec2& robot, const geometry::Vec2& body, int j) const {
   const Run& run = runs_[static_cast<std::size_t>(j)];
   const geometry::Vec2 d = direction_of(run.direction);
-  const geometry::Vec2 v = body - robot;
-  const double touching = lattice_.half_along(run.body, run.direction) + robot_radius_;
-  const double half_width = lattice_.half_along(run.body, lookahead::perpendicular(run.direction));
+  const geometry::Vec2 v = body + run.beside - robot;
+  const double touching = run.touching;
+  // A unit body's half width; a larger one is pushed from one place, as wide as a unit body.
+  const double half_width = lattice_.unit_bodies() ? lattice_.half_along(run.body, lookahead::perpendicular(run.direction))
+                                                   : (lattice_.step() - lookahead::kLatticeGap) / 2;
   const double depth = v.dot(d);
   const double lateral = std::abs(geometry::cross(v, d));
   return depth >= touching - kReadyDepth && depth <= touching + kReadyDepth && lateral <= kReadyLateral * half_width;
@@ -249,8 +267,7 @@ PushPlanLead::Progress PushPlanLead::progress(const physics::PhysicsState& state
 
 PushPlanLead::Situation PushPlanLead::situation(const physics::PhysicsState& state, int push) const {
   const Run& run = runs_[static_cast<std::size_t>(push)];
-  return {run, direction_of(run.direction), state.robot_position(), position(state, run.body),
-          lattice_.half_along(run.body, run.direction) + robot_radius_};
+  return {run, direction_of(run.direction), state.robot_position(), position(state, run.body) + run.beside, run.touching};
 }
 
 std::optional<PushPlanLead::Target> PushPlanLead::target(const physics::PhysicsState& state, int push) const {
@@ -258,9 +275,9 @@ std::optional<PushPlanLead::Target> PushPlanLead::target(const physics::PhysicsS
   const auto [run, d, robot, body, touching] = situation(state, push);
   // Pushing: to where the robot stands behind the body on its place, which also steers the body back onto
   // the lattice's line.
-  if (ready_to_push(robot, body, push)) return Target{lattice_.body_centre(run.body, run.to) - touching * d, true};
+  if (ready_to_push(robot, body - run.beside, push)) return Target{lattice_.body_centre(run.body, run.to) + run.beside - touching * d, true};
   const geometry::Vec2 behind = body - (touching + kBehindGap) * d;
-  const Way way = way_ahead(robot, push, body, kWalkAhead);
+  const Way way = way_ahead(robot, push, body - run.beside, kWalkAhead);
   if (way.places.empty()) return std::nullopt;
   const double off_line = std::abs(geometry::cross(robot - body, d));
   return Target{way.arriving && off_line <= kOnLine ? behind : lattice_.centre(way.places.back()), false};
@@ -305,15 +322,15 @@ std::optional<PushPlanLead::Steer> PushPlanLead::steer(const physics::PhysicsSta
   // Once touching, it keeps pushing and closes the offset as it goes.
   const double depth = (body - robot).dot(d);
   const bool square_behind = std::abs(geometry::cross(d, robot - body)) <= kSquareBehind;
-  if (ready_to_push(robot, body, push) && (square_behind || depth <= touching + kTouching)) {
-    const double left = run.length - (body - lattice_.body_centre(run.body, run.from)).dot(d);
+  if (ready_to_push(robot, body - run.beside, push) && (square_behind || depth <= touching + kTouching)) {
+    const double left = run.length - (body - run.beside - lattice_.body_centre(run.body, run.from)).dot(d);
     const double speed = std::clamp(left / kArriveTime, kCreep * max_speed, kPushSpeed * max_speed);
     // Along the push, closing the robot's offset from the line through the body's centre sideways.
     const geometry::Vec2 side(-d.y(), d.x());
     const geometry::Vec2 velocity = speed * d - (geometry::cross(d, robot - body) / kCloseTime) * side;
     return Steer{velocity.normalized(), std::min(max_speed, velocity.norm()), std::min(kPushControlTime, left / speed), true};
   }
-  const Way ahead = way_ahead(robot, push, body, kWayAhead);
+  const Way ahead = way_ahead(robot, push, body - run.beside, kWayAhead);
   if (ahead.places.empty()) return std::nullopt;
   const bool arriving = ahead.arriving;
   // The way: the places' centres from the robot's place on, the last the point behind the body.

@@ -65,6 +65,11 @@ class PushPlanLead {
     std::vector<int> walk;         // per place, robot steps to the place the push starts from
     double after = 0.0;            // metres of work in the pushes after this one
     double length = 0.0;           // metres the body goes in this one
+    // Where the robot touches the body to push it, from the body's centre: `touching` metres behind it
+    // along the push and `beside` it across (zero for a unit body: pushed through its centre; a body of
+    // several places is pushed from the place behind it its search chose, on that place's line).
+    double touching = 0.0;
+    geometry::Vec2 beside = geometry::Vec2::Zero();
   };
   // Per place, robot steps to the place behind the pushed body of run j standing on `body_cell`, round
   // the other bodies; computed on first use.
@@ -79,8 +84,9 @@ class PushPlanLead {
   };
   Way way_ahead(const geometry::Vec2& robot, int j, const geometry::Vec2& body, int ahead) const;
   geometry::Vec2 position(const physics::PhysicsState& state, int k) const;
-  // Push j as `state` stands: its run, direction, the robot's and the pushed body's centres, and how far
-  // apart they are when the robot touches the body's side it pushes.
+  // Push j as `state` stands: its run, direction, the robot's centre and the point on the push's line
+  // level with the pushed body's centre (the centre itself for a unit body), and how far behind that
+  // point the robot's centre is when it touches the body's side it pushes.
   struct Situation {
     const Run& run;
     geometry::Vec2 direction, robot, body;

@@ -42,8 +42,10 @@ std::optional<std::string> narrow_way_of(const scenario::World& world, const kno
   for (std::size_t other = 0; other < knowledge.movable_bodies.size(); ++other) {
     if (static_cast<int>(other) != b) obstacles.push_back(knowledge.movable_bodies[other].footprint);
   }
-  // Across its centre at its narrowest: a box's shorter side, a disc's diameter.
-  const double side = 2 * body.footprint.shape.centre_clearance();
+  // Across its centre at its narrowest: a box's shorter side, a disc's diameter; a concave body's centre
+  // may lie near its inner corner or outside it, so its width is its bounds' narrower side.
+  const geometry::Shape& shape = body.footprint.shape;
+  const double side = shape.parts().size() > 1 ? geometry::bounds(shape, {}).size().minCoeff() : 2 * shape.centre_clearance();
   const double width = side + kRobotDiametersBeside * 2 * knowledge.robot.radius;
   const double cell = std::max(kWayCell, std::sqrt(knowledge.workspace.size().prod() / 250'000.0));
   geometry::DiscField wide(knowledge.workspace, cell, width / 2, obstacles);

@@ -2,8 +2,6 @@
 
 #include "physltl/knowledge/kappa.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -59,10 +57,10 @@ std::optional<PushLattice> PushLattice::build(const scenario::World& world, cons
                            : geometry::bounds(anchor_body.shape, anchor_body.pose).min + geometry::Vec2::Constant((lattice.step_ - kLatticeGap) / 2);
   lattice.anchor_at(first_place, knowledge.workspace);
   lattice.mark_robot_places(walls, knowledge.workspace, knowledge.robot.radius);
-  // The region of each place, the same for every body.
+  // The region of each place, the same for every unit body (a larger body's centre is off its place).
   const knowledge::RegionMap regions(world);
-  std::vector<int> region_of(static_cast<std::size_t>(lattice.cells()));
-  for (int c = 0; c < lattice.cells(); ++c) region_of[static_cast<std::size_t>(c)] = regions.at(lattice.centre(c));
+  std::vector<int> region_of(lattice.unit_bodies_ ? static_cast<std::size_t>(lattice.cells()) : 0);
+  for (std::size_t c = 0; c < region_of.size(); ++c) region_of[c] = regions.at(lattice.centre(static_cast<int>(c)));
   for (std::size_t k = 0; k < lattice.bodies_.size(); ++k) {
     if (!lattice.take_cover(k, knowledge)) {
       why_not = knowledge.movable_bodies[static_cast<std::size_t>(lattice.bodies_[k])].name + " does not cover whole places of the grid";
@@ -96,7 +94,7 @@ bool PushLattice::take_bodies(const knowledge::AbstractKnowledge& knowledge, std
     bodies_.push_back(static_cast<int>(b));
     start_yaw_.push_back(body.footprint.pose.yaw);
   }
-  if (take_grid(knowledge, walls, smallest_side)) {
+  if (take_grid(knowledge, smallest_side)) {
     if (unit_bodies_) step_ = largest_side + kLatticeGap;  // the same step, to the bit, as bodies off a grid get
     return true;
   }
@@ -109,8 +107,7 @@ bool PushLattice::take_bodies(const knowledge::AbstractKnowledge& knowledge, std
   return true;
 }
 
-bool PushLattice::take_grid(const knowledge::AbstractKnowledge& knowledge, const std::vector<geometry::Footprint>& walls,
-                            double smallest_side) {
+bool PushLattice::take_grid(const knowledge::AbstractKnowledge& knowledge, double smallest_side) {
   if (bodies_.empty()) return false;
   // Lengths measured from the lower left of the first body's first cell (its bounds less half the gap).
   const geometry::Footprint& first = knowledge.movable_bodies[static_cast<std::size_t>(bodies_.front())].footprint;
@@ -122,11 +119,9 @@ bool PushLattice::take_grid(const knowledge::AbstractKnowledge& knowledge, const
       lengths.insert(lengths.end(), {from.x(), from.y()});
     }
   };
-  for (int b : bodies_) {
-    const geometry::Footprint& f = knowledge.movable_bodies[static_cast<std::size_t>(b)].footprint;
-    add_rect(geometry::bounds(f.shape, f.pose), kLatticeGap / 2);
-  }
-  for (const geometry::Footprint& wall : walls) add_rect(geometry::bounds(wall.shape, wall.pose), 0.0);
+  // Movable bodies (those too heavy to push too) stand half the gap inside their cells; walls fill theirs.
+  for (const auto& body : knowledge.movable_bodies) add_rect(geometry::bounds(body.footprint.shape, body.footprint.pose), kLatticeGap / 2);
+  for (const auto& wall : knowledge.fixed_bodies) add_rect(wall.bounds, 0.0);
   const auto whole = [&](double cell) {
     return std::all_of(lengths.begin(), lengths.end(), [&](double l) { return std::abs(l / cell - std::round(l / cell)) <= kWholeCells; });
   };
@@ -148,10 +143,9 @@ bool PushLattice::take_grid(const knowledge::AbstractKnowledge& knowledge, const
 bool PushLattice::take_cover(std::size_t k, const knowledge::AbstractKnowledge& knowledge) {
   const geometry::Footprint& f = knowledge.movable_bodies[static_cast<std::size_t>(bodies_[k])].footprint;
   if (unit_bodies_) {
-    const int at = cell_at(f.pose.position);
     cover_.push_back({{0, 0}});
     centre_offset_.push_back(geometry::Vec2::Zero());
-    return at >= 0;
+    return true;  // add_body says where it stands off its place
   }
   // The places whose centres the outline holds, from the lower left of its bounds.
   const geometry::Rect bounds = geometry::bounds(f.shape, f.pose);
@@ -166,8 +160,14 @@ bool PushLattice::take_cover(std::size_t k, const knowledge::AbstractKnowledge& 
     }
   }
   if (covered.empty()) return false;
-  // Every corner of the outline within one of them: the outline is those places, less the gap.
+  // Sides along the axes only, and every corner of the outline within one of the places: the outline is
+  // then those places, less the gap (a slanted side could cut a place it does not cover).
   const double half = step_ / 2 + kCoverTolerance;
+  const geometry::Polygon outline = f.shape.is_box() ? geometry::Polygon{} : geometry::to_world(f.pose, f.shape.outline());
+  for (std::size_t i = 0; i < outline.vertices.size(); ++i) {
+    const geometry::Vec2 side = outline.vertices[(i + 1) % outline.vertices.size()] - outline.vertices[i];
+    if (std::min(std::abs(side.x()), std::abs(side.y())) > kCoverTolerance) return false;
+  }
   for (const geometry::Polygon& part : geometry::convex_parts_at(f.shape, f.pose, geometry::CircleAs::kInscribed)) {
     for (const geometry::Vec2& corner : part.vertices) {
       const bool inside = std::any_of(covered.begin(), covered.end(), [&](int c) {
@@ -191,14 +191,15 @@ void PushLattice::add_places_behind(const std::vector<std::array<int, 2>>& cover
   auto& behind = behind_.emplace_back();
   const geometry::Vec2 middle = centre_offset_.back() / step_;  // in places, from the anchor
   for (int d = 0; d < kDirections; ++d) {
-    std::vector<std::pair<double, std::array<int, 2>>> places;
+    // By their distance from the centre line in millionths of a place: equal ones stay in cover order.
+    std::vector<std::pair<long, std::array<int, 2>>> places;
     for (const std::array<int, 2>& offset : cover) {
       const std::array<int, 2> back{offset[0] - kDx[d], offset[1] - kDy[d]};
       if (std::find(cover.begin(), cover.end(), back) != cover.end()) continue;
       const double off = std::abs(geometry::cross(geometry::Vec2(back[0], back[1]) - middle, geometry::Vec2(kDx[d], kDy[d])));
-      places.push_back({off, back});
+      places.push_back({std::lround(off * 1e6), back});
     }
-    std::stable_sort(places.begin(), places.end(), [](const auto& a, const auto& b) { return a.first < b.first - kCoverTolerance; });
+    std::stable_sort(places.begin(), places.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     for (const auto& [off, back] : places) behind[static_cast<std::size_t>(d)].push_back(back);
   }
 }

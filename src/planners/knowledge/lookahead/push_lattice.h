@@ -109,15 +109,15 @@ class PushLattice {
   int shifted(int cell, const std::array<int, 2>& offset) const;
   // The step when the bodies and the walls stand on one grid of cells the robot fits in: the largest whole
   // share of the smallest body's side and the gap; false when there is none.
-  bool take_grid(const knowledge::AbstractKnowledge& knowledge, const std::vector<geometry::Footprint>& walls, double smallest_side);
+  bool take_grid(const knowledge::AbstractKnowledge& knowledge, double smallest_side);
   // Lattice body k's cover, anchor and centre offset from where it stands; false when its outline is not
   // the places it covers.
   bool take_cover(std::size_t k, const knowledge::AbstractKnowledge& knowledge);
   // behind_ of the body just covered, whose places are `cover`.
   void add_places_behind(const std::vector<std::array<int, 2>>& cover);
   PushLattice() = default;
-  // The pushable bodies (fixed ones join `walls`) and the step; false, with why_not, when one is not a
-  // box standing square.
+  // The pushable bodies (fixed ones join `walls`) and the step; false, with why_not, when one is neither a
+  // box nor a polygon standing square, or polygons stand on no grid with the walls.
   bool take_bodies(const knowledge::AbstractKnowledge& knowledge, std::vector<geometry::Footprint>& walls, std::string& why_not);
   // The places: one at `anchor`, the others a step apart from it across the workspace.
   void anchor_at(const geometry::Vec2& anchor, const geometry::Rect& workspace);

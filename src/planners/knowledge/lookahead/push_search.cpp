@@ -88,7 +88,8 @@ std::vector<int> PushSearcher::pushes_to(int k, const std::set<int>& places) con
 }
 
 std::vector<int> PushSearcher::pushes_to_cells(int k, const std::vector<int>& targets) const {
-  // Backwards from the targets: the body comes to `c` from `c - d`, pushed by a robot at `c - 2d`.
+  // Backwards from the targets: the body comes to `c` from `c - d`, pushed by a robot behind it (at
+  // `c - 2d` for a unit body).
   std::vector<int> left(static_cast<std::size_t>(lattice_.cells()), kNever);
   std::vector<int> queue = targets;
   for (int c : targets) left[static_cast<std::size_t>(c)] = 0;
@@ -695,7 +696,8 @@ class ArrangementSearch {
     const int next_stage = searcher_.stage_after(from.stage, next);
     if (stages_.distance(next_stage) < 0 || stages_.dead(stages_.automaton_state_of(next_stage))) return {-1, -1};
     int cost = from.cost + 1;
-    // The robot ends on the place behind the one it pushed from (the body's place, for a unit body).
+    // The robot ends on the place the body's face left, ahead of the one it pushed from (the body's place,
+    // for a unit body).
     int robot_on = lattice_.neighbour(stand, d);
     while (in_tunnel(k, d, at, to, next, next_stage)) {
       at = to, to = lattice_.neighbour(to, d), ++cost;
