@@ -13,8 +13,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace physltl::planning {
@@ -185,6 +187,84 @@ TEST(LookAhead, OrdersA3x3BlockAndABarOnTheGridTheyStandOn) {
     });
     EXPECT_LT((last->to - region_centre(p, std::string("goal") + name)).norm(), 0.05) << name;
   }
+}
+
+// A mixed-size puzzle's reference solution, from its comment: the robot's moves in LURD (capitals push),
+// and the pushes it claims.
+std::pair<std::string, int> reference_of(const std::string& path) {
+  std::ifstream in(path);
+  std::string line, moves;
+  int pushes = -1;
+  while (std::getline(in, line) && line.rfind("--", 0) == 0) {
+    const std::size_t at = line.find(" pushes:");
+    if (at != std::string::npos) {
+      pushes = std::stoi(line.substr(line.rfind(' ', at - 1) + 1));
+      moves = line.substr(at + 8);
+    } else if (pushes >= 0) {
+      moves += line.substr(2);
+    }
+    std::erase(moves, ' ');
+  }
+  return {moves, pushes};
+}
+
+// The lattice body covering place `c` of arrangement `cells`, or -1.
+int covering(const lookahead::PushLattice& lattice, const std::vector<int>& cells, int c) {
+  int found = -1;
+  for (std::size_t k = 0; k < cells.size(); ++k) lattice.for_each_cover(static_cast<int>(k), cells[k], [&](int p) { found = p == c ? static_cast<int>(k) : found; });
+  return found;
+}
+
+// Each puzzle of tests/planning/data/shapes replays its reference solution on its grid lattice, one move
+// at a time (a walk between places no body covers, a push moving one body one place into places none
+// covers), its pushes as many as its comment says, and ends with every named body where the task wants
+// it: the references are right, and the lattice admits them.
+TEST(LookAhead, EveryMixedSizePuzzlesReferenceSolutionReplaysOnItsGrid) {
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(PHYSLTL_SOURCE_DIR) + "/tests/planning/data/shapes")) {
+    files.push_back(entry.path().filename().string());
+  }
+  std::sort(files.begin(), files.end());
+  ASSERT_GE(files.size(), 15u);
+  int long_ones = 0;
+  for (const std::string& file : files) {
+    const TestProblem p(kShapes + file);
+    std::string why_not;
+    const auto lattice = lookahead::PushLattice::build(p.world, p.knowledge, p.task.labelling, why_not);
+    ASSERT_TRUE(lattice.has_value()) << file << ": " << why_not;
+    EXPECT_FALSE(lattice->unit_bodies()) << file;
+    const auto [moves, claimed] = reference_of(std::string(PHYSLTL_SOURCE_DIR) + "/tests/planning/data/shapes/" + file);
+    ASSERT_FALSE(moves.empty()) << file;
+    std::vector<int> cells = *lattice->arrangement(scenario::EnvironmentState::initial(p.world));
+    int robot = lattice->robot_cell(p.world.robot.start);
+    int pushes = 0;
+    for (const char move : moves) {
+      const int d = std::string("rlud").find(static_cast<char>(std::tolower(move)));
+      const int next = lattice->neighbour(robot, d);
+      ASSERT_GE(next, 0) << file;
+      const int k = covering(*lattice, cells, next);
+      if (k >= 0) {
+        ASSERT_TRUE(std::isupper(move)) << file << ": walks into a body";
+        const int to = lattice->neighbour(cells[static_cast<std::size_t>(k)], d);
+        ASSERT_TRUE(to >= 0 && lattice->can_push(k, d) && lattice->body_fits(k, to)) << file << ": push " << pushes + 1;
+        cells[static_cast<std::size_t>(k)] = to;
+        lattice->for_each_cover(k, to, [&](int c) {
+          const int other = covering(*lattice, cells, c);
+          EXPECT_EQ(other, k) << file << ": push " << pushes + 1 << " runs into another body";
+        });
+        ++pushes;
+      } else {
+        ASSERT_TRUE(std::islower(move) && lattice->robot_passes(robot, d)) << file << ": a walk the lattice does not allow";
+      }
+      robot = next;
+    }
+    EXPECT_EQ(pushes, claimed) << file;
+    long_ones += claimed >= 20;
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      if (lattice->named(static_cast<int>(k)) >= 0) EXPECT_GT(lattice->place(static_cast<int>(k), cells[k]), 0) << file << ": body " << k;
+    }
+  }
+  EXPECT_GE(long_ones, 8) << "puzzles whose reference needs 20 pushes or more";
 }
 
 // A search ends at its memory cap as at its budget of arrangements, and says which: counted from its
