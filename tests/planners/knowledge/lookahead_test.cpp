@@ -189,6 +189,16 @@ TEST(LookAhead, OrdersA3x3BlockAndABarOnTheGridTheyStandOn) {
   }
 }
 
+// The files of tests/planning/data/`folder`, in name order.
+std::vector<std::string> files_in(const std::string& folder) {
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(PHYSLTL_SOURCE_DIR) + "/tests/planning/data/" + folder)) {
+    files.push_back(entry.path().filename().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
 // A mixed-size puzzle's reference solution, from its comment: the robot's moves in LURD (capitals push),
 // and the pushes it claims.
 std::pair<std::string, int> reference_of(const std::string& path) {
@@ -220,11 +230,7 @@ int covering(const lookahead::PushLattice& lattice, const std::vector<int>& cell
 // covers), its pushes as many as its comment says, and ends with every named body where the task wants
 // it: the references are right, and the lattice admits them.
 TEST(LookAhead, EveryMixedSizePuzzlesReferenceSolutionReplaysOnItsGrid) {
-  std::vector<std::string> files;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(PHYSLTL_SOURCE_DIR) + "/tests/planning/data/shapes")) {
-    files.push_back(entry.path().filename().string());
-  }
-  std::sort(files.begin(), files.end());
+  const std::vector<std::string> files = files_in("shapes");
   ASSERT_GE(files.size(), 15u);
   int long_ones = 0;
   for (const std::string& file : files) {
@@ -546,11 +552,7 @@ TEST(PushPrimitive, ASearchStoppedShortNamesThePushOfTheOrderItDidNotCarryOut) {
 
 // The puzzles of docs/benchmarks.md ("Push puzzles"), seed 1: each solved and validated by replay.
 TEST(LookAhead, EveryPuzzleOfOursIsSolvedAndItsReplayAgrees) {
-  std::vector<std::string> files;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(PHYSLTL_SOURCE_DIR) + "/tests/planning/data/puzzles")) {
-    files.push_back(entry.path().filename().string());
-  }
-  std::sort(files.begin(), files.end());
+  const std::vector<std::string> files = files_in("puzzles");
   ASSERT_GE(files.size(), 20u);
   for (const std::string& file : files) {
     const TestProblem p(kPuzzles + file);
