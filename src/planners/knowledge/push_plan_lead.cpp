@@ -161,7 +161,8 @@ PushPlanLead::PushPlanLead(const lookahead::PushLattice& lattice, const std::vec
     const Run& last = runs_.back();
     std::vector<int> line{last.body};
     line.insert(line.end(), last.ahead.begin(), last.ahead.end());
-    const std::vector<double> shortfalls = lattice.line_shortfalls(line, last.direction).value_or(std::vector<double>(last.ahead.size()));
+    const std::vector<double> shortfalls =
+        lattice.line_shortfalls(line, last.before, last.direction).value_or(std::vector<double>(last.ahead.size()));
     for (std::size_t i = 0; i < last.ahead.size(); ++i) {
       end_positions_[static_cast<std::size_t>(last.ahead[i])] -= shortfalls[i] * direction_of(last.direction);
     }

@@ -107,6 +107,24 @@ TEST(LookAhead, PushesALineOfBoxesEndToEndWhereNoBoxCanGoAlone) {
   EXPECT_EQ(replay.moved_bodies.size(), 2u);
 }
 
+// line_of_shapes: on a grid, a bar of two cells pushes the box ahead of it, as the physics does: the
+// order's one push moves both, and the knowledge planner carries it out.
+TEST(LookAhead, PushesABarAndABoxAheadOfItTogetherOnTheGrid) {
+  const TestProblem p(kWorlds + "line_of_shapes.lua");
+  ASSERT_TRUE(ahead_of(p).lattice.has_value());
+  EXPECT_FALSE(ahead_of(p).lattice->unit_bodies());
+  ASSERT_TRUE(ahead_of(p).plan.found) << ahead_of(p).plan.outcome;
+  ASSERT_EQ(ahead_of(p).plan.pushes.size(), 1u);
+  std::vector<std::string> names;
+  for (const auto& b : p.world.movable_bodies) names.push_back(b.name);
+  EXPECT_EQ(describe(ahead_of(p).plan.pushes.front(), names), "A (with M1) +x 1.2 m");
+  const PlanResult result = p.solve(1);
+  ASSERT_TRUE(result.solved) << result.stop_reason;
+  const Replay replay = p.check(result.plan);
+  EXPECT_TRUE(replay.validated()) << replay.failure;
+  EXPECT_EQ(replay.moved_bodies.size(), 2u);
+}
+
 // Pushing a line, the body in front must meet its place too (a box into a one-cell pocket has 5 cm to
 // either side): a node whose front box has drifted off the push's line ranks behind one whose line is
 // straight, though the box the robot pushes is on it in both.

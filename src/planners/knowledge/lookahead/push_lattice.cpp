@@ -292,11 +292,34 @@ bool PushLattice::add_body(std::size_t k, const knowledge::RegionMap& regions, c
   return true;
 }
 
-std::optional<std::vector<double>> PushLattice::line_shortfalls(const std::vector<int>& line, int d) const {
+std::optional<std::vector<double>> PushLattice::line_shortfalls(const std::vector<int>& line, const std::vector<int>& cells, int d) const {
   double held = 0.0;
   for (int k : line) held += friction_force_[static_cast<std::size_t>(k)];
   if (held >= push_force_) return std::nullopt;
   std::vector<double> shortfalls;
+  if (!unit_bodies_) {
+    // On a grid every gap is kLatticeGap: a body ends as many gaps short as there are contacts between
+    // it and the pushed one (its level: one more than the body ahead of which it stands).
+    std::vector<int> level(line.size(), -1);
+    level[0] = 0;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      if (level[i] < 0) return std::nullopt;  // it touches no body before it
+      for_each_cover(line[i], cells[static_cast<std::size_t>(line[i])], [&](int c) {
+        const int ahead = neighbour(c, d);
+        for (std::size_t j = i + 1; j < line.size() && ahead >= 0; ++j) {
+          bool covers = false;
+          for_each_cover(line[j], cells[static_cast<std::size_t>(line[j])], [&](int p) { covers |= p == ahead; });
+          if (covers && level[j] < 0) level[j] = level[i] + 1;
+        }
+      });
+    }
+    for (std::size_t i = 1; i < line.size(); ++i) {
+      const double shortfall = level[i] * kLatticeGap;
+      if (shortfall >= step_ / 2) return std::nullopt;
+      shortfalls.push_back(shortfall);
+    }
+    return shortfalls;
+  }
   double shortfall = 0.0;
   for (std::size_t i = 1; i < line.size(); ++i) {
     shortfall += step_ - half_along(line[i - 1], d) - half_along(line[i], d);

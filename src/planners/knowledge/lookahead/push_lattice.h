@@ -87,11 +87,12 @@ class PushLattice {
   bool can_push(int k, int d) const { return pushable_[static_cast<std::size_t>(k)][static_cast<std::size_t>(d)]; }
   // Half lattice body k's extent along direction d.
   double half_along(int k, int d) const { return half_along_[static_cast<std::size_t>(k)][static_cast<std::size_t>(d / 2)]; }
-  // Whether the robot's drive moves the bodies `line` (lattice bodies, end to end, the robot's first) at
-  // once in direction d, and how far short of their next places the bodies ahead of the first end, nearest
-  // first: pushed one place on, the first closes the gaps before the others move. Nothing when the floor
-  // friction of them all holds the drive back, or a body would end nearer another place than its own.
-  std::optional<std::vector<double>> line_shortfalls(const std::vector<int>& line, int d) const;
+  // Whether the robot's drive moves the bodies `line` (lattice bodies on `cells`, end to end, the robot's
+  // first; bodies of several places: each the first ahead of one before it, each touching one before it)
+  // at once in direction d, and how far short of their next places the bodies ahead of the first end, in
+  // line order: pushed one place on, the first closes the gaps before the others move. Nothing when the
+  // floor friction of them all holds the drive back, or a body would end nearer another place than its own.
+  std::optional<std::vector<double>> line_shortfalls(const std::vector<int>& line, const std::vector<int>& cells, int d) const;
   // Labelling::named_parts index of lattice body k, or -1 when the task does not name it.
   int named(int k) const { return named_[static_cast<std::size_t>(k)]; }
   // The place (labelling.h) of named lattice body k at `cell`.

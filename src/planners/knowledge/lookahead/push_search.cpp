@@ -673,10 +673,24 @@ class ArrangementSearch {
     return steps;
   }
 
-  // Lines of unit bodies only: a line's gaps are closed as a unit body's are (PushLattice::line_shortfalls).
+  // Whether body k pushed in direction d would move others: one covers a place it would move into.
   bool is_line(const std::vector<int>& cells, int k, int d) const {
-    const int ahead = lattice_.neighbour(cells[static_cast<std::size_t>(k)], d);
-    return lattice_.unit_bodies() && ahead >= 0 && holder_[static_cast<std::size_t>(ahead)] >= 0;
+    const int to = lattice_.neighbour(cells[static_cast<std::size_t>(k)], d);
+    return to >= 0 && !room_for(k, to);
+  }
+
+  // Body k of cells_ and the bodies it would push in direction d, each the first time it stands in the
+  // way of one before it (a unit body's: those end to end ahead of it).
+  std::vector<int> line_from(int k, int d) const {
+    std::vector<int> line{k};
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      lattice_.for_each_cover(line[i], cells_[static_cast<std::size_t>(line[i])], [&](int c) {
+        const int ahead = lattice_.neighbour(c, d);
+        const int held = ahead < 0 ? -1 : holder_[static_cast<std::size_t>(ahead)];
+        if (held >= 0 && std::find(line.begin(), line.end(), held) == line.end()) line.push_back(held);
+      });
+    }
+    return line;
   }
 
   // The arrangement after pushing body k of `from` one step in direction d, added unless it was met
@@ -832,13 +846,9 @@ class ArrangementSearch {
   // (PushLattice::line_shortfalls), so no later push could start from the lattice.
   bool finish_with_line(const Expansion& from, int k, int d) {
     const int at = cells_[static_cast<std::size_t>(k)];
-    const int stand = lattice_.neighbour(at, opposite(d));
-    if (stand < 0 || seen_[static_cast<std::size_t>(stand)] != from.reach) return false;
-    std::vector<int> line{k};
-    for (int c = lattice_.neighbour(at, d); c >= 0 && holder_[static_cast<std::size_t>(c)] >= 0; c = lattice_.neighbour(c, d)) {
-      line.push_back(holder_[static_cast<std::size_t>(c)]);
-    }
-    if (!lattice_.line_shortfalls(line, d)) return false;
+    if (lattice_.first_stand(k, at, d, [&](int c) { return seen_[static_cast<std::size_t>(c)] == from.reach; }) < 0) return false;
+    const std::vector<int> line = line_from(k, d);
+    if (!lattice_.line_shortfalls(line, cells_, d)) return false;
     if (!std::all_of(line.begin(), line.end(), [&](int j) { return lattice_.can_push(j, d); })) return false;
     const std::vector<int> ahead(line.begin() + 1, line.end());
     std::vector<int> cells = cells_;
@@ -850,9 +860,16 @@ class ArrangementSearch {
         if (to < 0 || !lattice_.body_fits(j, to)) return false;
         cells[static_cast<std::size_t>(j)] = to;
       }
-      const int end = cells[static_cast<std::size_t>(line.back())];
-      // The arrangement before the push: every body of the line stands behind its front's new place.
-      if (holder_[static_cast<std::size_t>(end)] >= 0) return false;  // the line runs into another body
+      // holder_ holds the arrangement before the line's first push: no body off the line may stand where
+      // one of the line moves to.
+      bool runs_into = false;
+      for (int j : line) {
+        lattice_.for_each_cover(j, cells[static_cast<std::size_t>(j)], [&](int c) {
+          const int held = holder_[static_cast<std::size_t>(c)];
+          runs_into |= held >= 0 && std::find(line.begin(), line.end(), held) == line.end();
+        });
+      }
+      if (runs_into) return false;
       const int stage = searcher_.stage_after(from.stage, cells);
       if (stages_.distance(stage) < 0 || stages_.dead(stages_.automaton_state_of(stage))) return false;
       run.push_back({k, d, before, cells[static_cast<std::size_t>(k)], ahead});
