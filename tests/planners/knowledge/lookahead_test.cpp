@@ -107,6 +107,24 @@ TEST(LookAhead, PushesALineOfBoxesEndToEndWhereNoBoxCanGoAlone) {
   EXPECT_EQ(replay.moved_bodies.size(), 2u);
 }
 
+// frozen_block: a 2x2 block is frozen in a corner as a box is, through the places it covers: pruned in
+// any corner but its goal's.
+TEST(LookAhead, PrunesABlockFrozenInACornerNotItsGoals) {
+  const TestProblem p(kWorlds + "frozen_block.lua");
+  ASSERT_TRUE(ahead_of(p).lattice.has_value()) << ahead_of(p).plan.rule.reason;
+  const Searcher s(p);
+  const int block = lattice_body(p, "B");
+  std::vector<int> cells = ahead_of(p).start_cells;
+  EXPECT_FALSE(s.searcher.frozen_apart(ahead_of(p).stage, cells, block)) << "in the open";
+  // The block's centre where it covers the top left 2x2 of the room (cells 0.6 m, the room's inside from
+  // x = 0.6 and up to y = 3.6), then the bottom right, its goal.
+  cells[static_cast<std::size_t>(block)] = s.lattice.body_cell(block, {1.2, 3.0});
+  ASSERT_GE(cells[static_cast<std::size_t>(block)], 0);
+  EXPECT_TRUE(s.searcher.frozen_apart(ahead_of(p).stage, cells, block)) << "in a corner, not its goal";
+  cells[static_cast<std::size_t>(block)] = s.lattice.body_cell(block, {3.6, 1.2});
+  EXPECT_FALSE(s.searcher.frozen_apart(ahead_of(p).stage, cells, block)) << "in its goal's corner";
+}
+
 // line_of_shapes: on a grid, a bar of two cells pushes the box ahead of it, as the physics does: the
 // order's one push moves both, and the knowledge planner carries it out.
 TEST(LookAhead, PushesABarAndABoxAheadOfItTogetherOnTheGrid) {

@@ -269,68 +269,89 @@ bool PushSearcher::square_frozen(const Goals& goals, const std::vector<int>& cel
 }
 
 // A body is frozen when it can be pushed along neither axis again. Along an axis, each way is shut by
-// the lattice (the body cannot be pushed that way: no side to push, no room ahead, no room behind for the
-// robot, or a place from which it could never get where the task wants it), or by a frozen body ahead or
-// behind; a body already looked at counts as frozen (it stands in the way of the one that asked). A body
-// ahead that the pushed one can move as a line leaves the way open: a line may end an order.
+// the lattice (the body cannot be pushed that way: no side to push, no room ahead, no place behind for the
+// robot, or a place from which it could never get where the task wants it), or by frozen bodies behind it
+// (on every place the robot could push from) or ahead of it; a body already looked at counts as frozen (it
+// stands in the way of the one that asked). Bodies ahead that the pushed one can move as a line leave the
+// way open: a line may end an order. Bodies of several places alike, through the places they cover.
 class FreezeTest {
  public:
-  FreezeTest(const PushLattice& lattice, const PushSearcher::Goals& goals, const std::vector<int>& holder)
-      : lattice_(lattice), goals_(goals), holder_(holder) {}
+  // `cells`: per lattice body, its place; `holder`: per place, the body covering it or -1.
+  FreezeTest(const PushLattice& lattice, const PushSearcher::Goals& goals, const std::vector<int>& holder, const std::vector<int>& cells)
+      : lattice_(lattice), goals_(goals), holder_(holder), cells_(cells) {}
 
-  // Whether the body on `at` is frozen with a body frozen with it (itself included) not where the task
+  // Whether lattice body k is frozen with a body frozen with it (itself included) not where the task
   // wants it: an arrangement no push can resolve.
-  bool deadlocked(int at) {
+  bool deadlocked(int k) {
     looked_at_.clear();
-    if (!frozen(at)) return false;
-    return std::any_of(looked_at_.begin(), looked_at_.end(), [&](int c) {
-      const int k = holder_[static_cast<std::size_t>(c)];
-      return goals_.left(k, c) != 0;
-    });
+    if (!frozen(k)) return false;
+    return std::any_of(looked_at_.begin(), looked_at_.end(), [&](int j) { return goals_.left(j, place(j)) != 0; });
   }
 
  private:
-  bool held(int c) const { return c >= 0 && holder_[static_cast<std::size_t>(c)] >= 0; }
+  int place(int k) const { return cells_[static_cast<std::size_t>(k)]; }
+  int holder(int c) const { return c < 0 ? -1 : holder_[static_cast<std::size_t>(c)]; }
 
-  bool frozen(int at) {
-    looked_at_.push_back(at);
-    return axis_shut(at, 0) && axis_shut(at, 2);
+  bool frozen(int k) {
+    looked_at_.push_back(k);
+    return axis_shut(k, 0) && axis_shut(k, 2);
   }
 
   // Both ways along the axis of direction d shut.
-  bool axis_shut(int at, int d) { return way_shut(at, d) && way_shut(at, opposite(d)); }
+  bool axis_shut(int k, int d) { return way_shut(k, d) && way_shut(k, opposite(d)); }
 
-  bool way_shut(int at, int d) {
-    const int k = holder_[static_cast<std::size_t>(at)];
+  bool way_shut(int k, int d) {
+    const int at = place(k);
     const int to = lattice_.neighbour(at, d);
-    const int stand = lattice_.neighbour(at, opposite(d));
-    if (!lattice_.can_push(k, d) || to < 0 || stand < 0 || !lattice_.robot_fits(stand)) return true;
+    const auto fits = [&](int stand) { return lattice_.robot_fits(stand); };
+    if (!lattice_.can_push(k, d) || to < 0 || lattice_.first_stand(k, at, d, fits) < 0) return true;
     if (!lattice_.body_fits(k, to) || goals_.left(k, to) == kNever) return true;
-    if (held(stand) && stops(stand)) return true;
-    return held(to) && stops(to) && !line_moves(at, d);
+    // Every place the robot could push from held by a body that stays.
+    const auto open = [&](int stand) { return fits(stand) && (holder(stand) < 0 || !stops(holder(stand))); };
+    if (lattice_.first_stand(k, at, d, open) < 0) return true;
+    bool blocked = false;
+    lattice_.for_each_cover(k, to, [&](int c) {
+      const int ahead = holder(c);
+      blocked = blocked || (ahead >= 0 && ahead != k && stops(ahead));
+    });
+    return blocked && !line_moves(k, d);
   }
 
-  // Whether the body on c stands in the way for good: looked at already, or frozen.
-  bool stops(int c) {
-    if (std::find(looked_at_.begin(), looked_at_.end(), c) != looked_at_.end()) return true;
+  // Whether the body k stands in the way for good: looked at already, or frozen.
+  bool stops(int k) {
+    if (std::find(looked_at_.begin(), looked_at_.end(), k) != looked_at_.end()) return true;
     const std::size_t mark = looked_at_.size();
-    if (frozen(c)) return true;
+    if (frozen(k)) return true;
     looked_at_.resize(mark);  // it may move: what it was frozen with is not
     return false;
   }
 
-  // The bodies from `at` on in direction d, end to end, pushed together one place.
-  bool line_moves(int at, int d) const {
-    int c = at;
-    while (held(lattice_.neighbour(c, d))) c = lattice_.neighbour(c, d);
-    const int beyond = lattice_.neighbour(c, d);
-    return beyond >= 0 && lattice_.body_fits(holder_[static_cast<std::size_t>(c)], beyond);
+  // The bodies from k on in direction d (end to end; of several places, each the first time it stands
+  // ahead of one before it), pushed together one place.
+  bool line_moves(int k, int d) const {
+    if (lattice_.unit_bodies()) {
+      int c = place(k);
+      while (holder(lattice_.neighbour(c, d)) >= 0) c = lattice_.neighbour(c, d);
+      const int beyond = lattice_.neighbour(c, d);
+      return beyond >= 0 && lattice_.body_fits(holder(c), beyond);
+    }
+    std::vector<int> line{k};
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      const int to = lattice_.neighbour(place(line[i]), d);
+      if (to < 0 || !lattice_.body_fits(line[i], to)) return false;
+      lattice_.for_each_cover(line[i], to, [&](int c) {
+        const int ahead = holder(c);
+        if (ahead >= 0 && std::find(line.begin(), line.end(), ahead) == line.end()) line.push_back(ahead);
+      });
+    }
+    return true;
   }
 
   const PushLattice& lattice_;
   const PushSearcher::Goals& goals_;
   const std::vector<int>& holder_;
-  std::vector<int> looked_at_;  // places of the bodies looked at, frozen so far
+  const std::vector<int>& cells_;
+  std::vector<int> looked_at_;  // the bodies looked at, frozen so far
 };
 
 // A corral: places the robot cannot walk to, closed off by bodies, and the bodies on its edge. Every other
@@ -541,9 +562,11 @@ bool PushSearcher::corralled(int stage, const std::vector<int>& cells, int robot
 
 bool PushSearcher::frozen_apart(int stage, const std::vector<int>& cells, int k) const {
   std::vector<int> holder(static_cast<std::size_t>(lattice_.cells()), -1);
-  for (std::size_t j = 0; j < cells.size(); ++j) holder[static_cast<std::size_t>(cells[j])] = static_cast<int>(j);
+  for (std::size_t j = 0; j < cells.size(); ++j) {
+    lattice_.for_each_cover(static_cast<int>(j), cells[j], [&](int c) { holder[static_cast<std::size_t>(c)] = static_cast<int>(j); });
+  }
   const Goals goals = goals_from(stage);
-  return FreezeTest(lattice_, goals, holder).deadlocked(cells[static_cast<std::size_t>(k)]);
+  return FreezeTest(lattice_, goals, holder, cells).deadlocked(k);
 }
 
 // One search's state: the arrangements met (ArrangementStore), the open ones by priority, and scratch
@@ -732,10 +755,9 @@ class ArrangementSearch {
     const int before = cells_[static_cast<std::size_t>(k)];
     mark(k, before, -1);
     mark(k, to, k);
-    // The deadlock rules are of unit bodies (a body of several places is pruned only where it can never
-    // get where the task wants it, alone: Goals).
+    // The square and corral rules are of unit bodies; a body of any shape is frozen or not.
     const bool unit = lattice_.unit_bodies();
-    bool dead = unit && (searcher_.square_frozen(goals_, next, holder_, to) || FreezeTest(lattice_, goals_, holder_).deadlocked(to));
+    bool dead = (unit && searcher_.square_frozen(goals_, next, holder_, to)) || FreezeTest(lattice_, goals_, holder_, next).deadlocked(k);
     const int robot = dead ? 0 : walk(lattice_, robot_cell, holder_, seen_after_, mark_, queue_);
     if (!dead && unit) dead = corralled(next, to, robot_cell);
     ++mark_;
