@@ -64,6 +64,7 @@ class PushLattice {
   // those off the lattice are left out (the body does not fit there).
   template <class F>
   void for_each_cover(int k, int cell, F&& f) const {
+    if (unit_bodies_) return f(cell);  // the search's innermost loops: no column and row to work out
     for (const std::array<int, 2>& offset : cover_[static_cast<std::size_t>(k)]) {
       const int c = shifted(cell, offset);
       if (c >= 0) f(c);
