@@ -93,6 +93,32 @@ TEST(Run, ADifferentialRobotsPlanCarriesItsHeadingAndKeepsItsLimits) {
   }
 }
 
+// plan.json keeps what moves: every body's pose once at the start, then per state only the bodies whose
+// pose changed, each listed pose different from that body's one before (format 2, docs/outputs.md).
+TEST(Run, PlanJsonRecordsEachBodysPoseOnlyWhereItChanges) {
+  const fs::path out = fresh_out_dir();
+  const Result r = run(kSource + "/scenarios/ordered.lua --seed 3 --improve 0 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto plan = nlohmann::json::parse(slurp(out / "ordered" / "plan.json"));
+  EXPECT_EQ(plan["format"], 2);
+  auto poses = plan["initial_bodies"];
+  ASSERT_EQ(poses.size(), plan["body_names"].size());
+  std::size_t listed = 0;
+  for (const auto& state : plan["states"]) {
+    for (const auto& moved : state["bodies"]) {
+      ASSERT_EQ(moved.size(), 4u);  // index, x, y, yaw
+      const std::size_t b = moved[0].get<std::size_t>();
+      const nlohmann::json pose = {moved[1], moved[2], moved[3]};
+      EXPECT_NE(pose, poses[b]) << "a body listed where it did not move";
+      poses[b] = pose;
+      ++listed;
+    }
+  }
+  EXPECT_TRUE(plan["states"].front()["bodies"].empty());
+  EXPECT_GT(listed, 0u) << "ordered.lua's plan moves the boxes on p1 and p3";
+  EXPECT_LT(listed, plan["states"].size() * poses.size() / 2) << "the bodies at rest are not repeated";
+}
+
 TEST(Run, ImproveZeroKeepsThePlanTheSearchFound) {
   const fs::path out = fresh_out_dir();
   const Result r = run(kSource + "/scenarios/ordered.lua --seed 3 --improve 0 --out " + out.string());

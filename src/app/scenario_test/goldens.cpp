@@ -1,6 +1,7 @@
 #include "goldens.h"
 
 #include "common/files.h"
+#include "views/report_files.h"
 
 #include "physltl/render/png.h"
 
@@ -32,6 +33,7 @@ constexpr std::size_t kMaxGoldenBytes = std::size_t{64} << 20;
 // only those the plan moves: for the same controls the replay between is the same physics, and a golden of
 // every step of 200 bodies would weigh megabytes. One state per line, so a diff names the control.
 std::string golden_plan_text(nlohmann::ordered_json plan) {
+  plan = plan_with_every_pose(std::move(plan));
   plan["scenario"] = std::filesystem::path(plan["scenario"].get<std::string>()).filename().string();
   std::vector<std::size_t> steps{0};
   for (const auto& control : plan["controls"]) steps.push_back(steps.back() + control["steps"].get<std::size_t>());

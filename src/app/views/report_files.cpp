@@ -98,10 +98,22 @@ json plan_json(const RunSummary& run) {
     control["duration_s"] = c.steps * dt;
     controls.push_back(control);
   }
+  // Format 2: every body's pose once, at the start; then, per state, only the bodies whose pose changed
+  // since the state before, as [index, x, y, yaw] (a world of thousands of boxes moves a few).
+  const auto pose_json = [](const geometry::Pose2& pose) { return json{pose.position.x(), pose.position.y(), pose.yaw}; };
+  json initial_bodies = json::array();
+  for (const auto& pose : replay.states.front().movable_poses) initial_bodies.push_back(pose_json(pose));
   json states = json::array();
-  for (const auto& s : replay.states) {
+  for (std::size_t i = 0; i < replay.states.size(); ++i) {
+    const scenario::EnvironmentState& s = replay.states[i];
     json bodies = json::array();
-    for (const auto& pose : s.movable_poses) bodies.push_back({pose.position.x(), pose.position.y(), pose.yaw});
+    for (std::size_t b = 0; i > 0 && b < s.movable_poses.size(); ++b) {
+      const geometry::Pose2& pose = s.movable_poses[b], &before = replay.states[i - 1].movable_poses[b];
+      if (pose.position == before.position && pose.yaw == before.yaw) continue;
+      json moved = pose_json(pose);
+      moved.insert(moved.begin(), b);
+      bodies.push_back(std::move(moved));
+    }
     json robot = point(s.robot_position);
     if (differential) robot.push_back(s.robot_yaw);
     states.push_back({{"robot", robot}, {"bodies", bodies}});
@@ -109,6 +121,7 @@ json plan_json(const RunSummary& run) {
   json moved_bodies = json::array();
   for (int b : replay.moved_bodies) moved_bodies.push_back(world.movable_bodies[static_cast<size_t>(b)].name);
   return {
+      {"format", kPlanFormat},
       {"scenario", world.source_file},
       {"seed", world.planner.seed},
       {"step_size_s", dt},
@@ -119,6 +132,7 @@ json plan_json(const RunSummary& run) {
          return names;
        }()},
       {"controls", controls},
+      {"initial_bodies", initial_bodies},
       {"states", states},
       {"region_trace", planning::region_names(world, replay.region_trace)},
       {"object_trace", [&] {
@@ -130,6 +144,17 @@ json plan_json(const RunSummary& run) {
       {"pushing", replay.pushing},
       {"moved_bodies", moved_bodies},
   };
+}
+
+json plan_with_every_pose(json plan) {
+  json poses = plan["initial_bodies"];
+  for (json& state : plan["states"]) {
+    for (const json& moved : state["bodies"]) poses[moved[0].get<std::size_t>()] = json{moved[1], moved[2], moved[3]};
+    state["bodies"] = poses;
+  }
+  plan.erase("format");
+  plan.erase("initial_bodies");
+  return plan;
 }
 
 }  // namespace physltl::app

@@ -30,7 +30,13 @@ struct RunSummary {
 };
 
 nlohmann::ordered_json report_json(const RunSummary& run);
-nlohmann::ordered_json plan_json(const RunSummary& run);  // needs a replay
+// plan.json (docs/outputs.md), format kPlanFormat: the bodies' poses at the start, then per state only
+// those that changed. Needs a replay.
+inline constexpr int kPlanFormat = 2;
+nlohmann::ordered_json plan_json(const RunSummary& run);
+// The same plan with every body's pose at every state, as plan.json had it before formats (no "format"
+// nor "initial_bodies"; each state's "bodies" every body's [x, y, yaw]): what goldens keep.
+nlohmann::ordered_json plan_with_every_pose(nlohmann::ordered_json plan);
 
 
 }  // namespace physltl::app
