@@ -1,7 +1,8 @@
 -- A warehouse: columns of boxes (0.8 m x 0.5 m) with 1 m aisles between the columns and free margins
 -- around them; visit three corners in order, F(a & F(b & F c)), from the fourth. A route exists that
 -- touches no box at all, so a good plan pushes nothing.
---   --set columns=10 rows=20   200 boxes on a 20 m x 20 m floor
+--   --set columns=10 rows=20   200 boxes on a 20 m x 20 m floor (columns and rows up to 200 each)
+--   --set boxes=6400            6,400 boxes in 52 columns of up to 124, a floor about as deep as it is wide
 --   default columns=4 rows=8    32 boxes
 --   --set gap=0.4 margin_x=1.2 margin_y=1.2   the boxes of a column 0.4 m apart (too close for the robot
 --       to pass between) and lanes 1 m wide along the walls: scenarios/warehouse_rows.lua
@@ -16,14 +17,24 @@
 
 local P = require "physltl"
 
-local function count(name, default)
+local function count(name, default, most)
   local v = params[name] or default
-  if math.type(v) ~= "integer" or v < 1 or v > 40 then
-    error("params." .. name .. " must be a whole number from 1 to 40, got " .. tostring(v))
+  if math.type(v) ~= "integer" or v < 1 or v > most then
+    error("params." .. name .. " must be a whole number from 1 to " .. most .. ", got " .. tostring(v))
   end
   return v
 end
-local columns, rows = count("columns", 4), count("rows", 8)
+-- `boxes = N`: N boxes in columns of the same length but the last, the floor about as deep as it is wide.
+local columns, rows, boxes
+if params.boxes ~= nil then
+  if params.columns ~= nil or params.rows ~= nil then error("params.boxes takes the place of columns and rows: give one or the other") end
+  boxes = count("boxes", nil, 10000)
+  rows = math.ceil(boxes / math.ceil(math.sqrt(boxes / 2.4)))
+  columns = math.ceil(boxes / rows)
+else
+  columns, rows = count("columns", 4, 200), count("rows", 8, 200)
+  boxes = columns * rows
+end
 local function length(name, default, low, high)
   local v = params[name] or default
   if type(v) ~= "number" or v < low or v > high then
@@ -46,7 +57,7 @@ P.boundary { min = { 0, 0 }, max = { width, height }, thickness = 0.2 }
 
 for c = 1, columns do
   local x = margin_x + (c - 1) * (box_x + aisle) + box_x / 2
-  for r = 1, rows do
+  for r = 1, math.min(rows, boxes - (c - 1) * rows) do
     local y = margin_y + (r - 1) * (box_y + gap) + box_y / 2
     P.box { name = "B" .. c .. "_" .. r, at = { x, y }, size = { box_x, box_y }, mass = 0.5 }
   end

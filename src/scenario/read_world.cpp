@@ -397,9 +397,9 @@ World read_world(const std::vector<Element>& elements, const std::string& path, 
       diagnostics.push_back({e.where, e.kind + " is given twice (first at " + first_of[e.kind]->where.str() + ")"});
       continue;
     }
-    if ((e.kind == "fixed" || e.kind == "movable") && index > kMaxBodiesOfAKind) {
-      if (index == kMaxBodiesOfAKind + 1) {
-        diagnostics.push_back({e.where, "more than " + std::to_string(kMaxBodiesOfAKind) + " " + e.kind + " bodies"});
+    if ((e.kind == "fixed" || e.kind == "movable") && index > max_bodies_of_kind(e.kind)) {
+      if (index == max_bodies_of_kind(e.kind) + 1) {
+        diagnostics.push_back({e.where, "more than " + std::to_string(max_bodies_of_kind(e.kind)) + " " + e.kind + " bodies"});
       }
       continue;
     }

@@ -67,17 +67,17 @@ TEST(Crash, ATaskOfTwentyNamedBodiesIsRefusedWithExitTwoByEveryCommandAndNeverAb
 
 TEST(Crash, AnImportWritesTheLevelsCheckWouldTakeAndRefusesTheOthersNamingThem) {
   const fs::path dir = test_dir();
-  // Level 2: 5 rows of 420 boxes above 5 rows of 420 goals, more movable bodies than a scenario may hold.
+  // Level 2: 25 rows of 420 boxes above 25 rows of 420 goals, more movable bodies than a scenario may hold.
   std::ofstream levels(dir / "levels.txt");
   levels << "#####\n#@$.#\n#####\n\n" << std::string(424, '#') << "\n#@" << std::string(421, ' ') << "#\n";
-  for (int row = 0; row < 5; ++row) levels << "# " << std::string(420, '$') << " #\n";
-  for (int row = 0; row < 5; ++row) levels << "# " << std::string(420, '.') << " #\n";
+  for (int row = 0; row < 25; ++row) levels << "# " << std::string(420, '$') << " #\n";
+  for (int row = 0; row < 25; ++row) levels << "# " << std::string(420, '.') << " #\n";
   levels << std::string(424, '#') << "\n";
   levels.close();
   const fs::path out = fresh_out_dir();
   const Result r = run("import sokoban " + (dir / "levels.txt").string() + " --out " + out.string());
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find("levels.txt:5: level 2 not imported: 2100 boxes, more than the 2000 movable bodies"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("levels.txt:5: level 2 not imported: 10500 boxes, more than the 10000 movable bodies"), std::string::npos) << r.err;
   EXPECT_TRUE(fs::exists(out / "levels_1.lua"));
   EXPECT_FALSE(fs::exists(out / "levels_2.lua"));
 }

@@ -108,6 +108,19 @@ TEST(ScenarioFiles, RoomsNRejectsOtherRoomCountsWithAClearMessage) {
   }
 }
 
+TEST(ScenarioFiles, WarehouseTakesABoxCountUpToTheReadersCap) {
+  LoadOptions options;
+  for (const int boxes : {7, 6400}) {
+    options.params["boxes"] = std::to_string(boxes);
+    EXPECT_EQ(load_scenario(kScenarios + "/warehouse.lua", options).movable_bodies.size(), static_cast<std::size_t>(boxes));
+  }
+  options.params["boxes"] = std::to_string(kMaxMovableBodies + 1);
+  EXPECT_THROW(load_scenario(kScenarios + "/warehouse.lua", options), ScenarioError);
+  options.params["columns"] = "4";  // boxes takes the place of columns and rows
+  options.params["boxes"] = "7";
+  EXPECT_THROW(load_scenario(kScenarios + "/warehouse.lua", options), ScenarioError);
+}
+
 TEST(ScenarioFiles, RoomsHasFourRegionsThreeDoorwayBoxesAndThePapersTask) {
   const World w = load_scenario(kScenarios + "/rooms.lua");
   EXPECT_EQ(w.name, "rooms");

@@ -174,9 +174,11 @@ struct World {
   std::optional<Expectations> expect;  // the top-level file's expect { ... }, for `physltl-studio test`
 };
 
-// The most bodies of a kind (fixed, movable) a scenario may hold: far beyond any world the planner can take,
-// and few enough that validation's pairwise checks stay under a second.
-inline constexpr int kMaxBodiesOfAKind = 2000;
+// The most bodies of a kind a scenario may hold: beyond the warehouses logistics users simulate (6,400
+// boxes: docs/benchmarks.md), and few enough that loading and validation stay under a second.
+inline constexpr int kMaxFixedBodies = 2000;
+inline constexpr int kMaxMovableBodies = 10000;
+inline constexpr int max_bodies_of_kind(const std::string_view kind) { return kind == "movable" ? kMaxMovableBodies : kMaxFixedBodies; }
 
 // A number as messages show it: six significant digits, 1e+300 rather than 301 of them.
 std::string number_text(double value);

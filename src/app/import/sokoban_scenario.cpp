@@ -52,12 +52,12 @@ std::vector<Rect> wall_rectangles(const SokobanLevel& level) {
 
 std::optional<std::string> beyond_limits(const SokobanLevel& level) {
   const std::size_t walls = wall_rectangles(level).size(), boxes = level.boxes.size();
-  if (walls > scenario::kMaxBodiesOfAKind) {
+  if (walls > scenario::kMaxFixedBodies) {
     return fmt::format("its walls make {} rectangles, more than the {} fixed bodies a scenario may hold", walls,
-                       scenario::kMaxBodiesOfAKind);
+                       scenario::kMaxFixedBodies);
   }
-  if (boxes > scenario::kMaxBodiesOfAKind) {
-    return fmt::format("{} boxes, more than the {} movable bodies a scenario may hold", boxes, scenario::kMaxBodiesOfAKind);
+  if (boxes > scenario::kMaxMovableBodies) {
+    return fmt::format("{} boxes, more than the {} movable bodies a scenario may hold", boxes, scenario::kMaxMovableBodies);
   }
   return std::nullopt;
 }

@@ -27,7 +27,7 @@ std::string sokoban_scenario(const SokobanLevel& level, const std::string& sourc
                              const std::optional<ReferenceSolution>& reference = std::nullopt);
 
 // Why `check` would refuse the scenario of `level`, with the limit it shares with the scenario reader and
-// the planner: more wall rectangles or boxes than a scenario may hold (scenario::kMaxBodiesOfAKind); nothing
+// the planner: more wall rectangles or boxes than a scenario may hold (scenario::kMaxFixedBodies, kMaxMovableBodies); nothing
 // when it would not.
 std::optional<std::string> beyond_limits(const SokobanLevel& level);
 
