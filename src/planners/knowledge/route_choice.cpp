@@ -151,7 +151,7 @@ RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& tas
                           const decomposition::Decomposition& decomposition, const Deadline& deadline) {
   const int count = stages.stages();
   RouteChoice choice{std::vector<bool>(static_cast<size_t>(count), false), {}};
-  const std::vector<bool> under = triangles_under_bodies(world, task, decomposition);
+  const std::vector<bool> under = triangles_under_bodies(world, task, decomposition, deadline);
   if (std::none_of(under.begin(), under.end(), [](bool u) { return u; })) return choice;
 
   // The ways for each set of forbidden regions the stages have (geometry::FreeSpace, exact).
@@ -208,7 +208,7 @@ RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& tas
 }
 
 std::vector<bool> triangles_under_bodies(const scenario::World& world, const TaskAutomaton& task,
-                                         const decomposition::Decomposition& decomposition) {
+                                         const decomposition::Decomposition& decomposition, const Deadline& deadline) {
   std::vector<const geometry::Footprint*> bodies;
   for (size_t b = 0; b < world.movable_bodies.size(); ++b) {
     const bool moved_on_purpose = task.labelling.part_of(static_cast<int>(b)) >= 0;
@@ -217,6 +217,7 @@ std::vector<bool> triangles_under_bodies(const scenario::World& world, const Tas
   std::vector<bool> under;
   under.reserve(decomposition.triangles().size());
   for (const auto& triangle : decomposition.triangles()) {
+    deadline.check();  // every body against every triangle: thousands of boxes make it seconds (issue 47)
     under.push_back(std::any_of(bodies.begin(), bodies.end(), [&](const geometry::Footprint* f) {
       return geometry::overlap(f->shape, f->pose, triangle.centroid, world.robot.radius);
     }));

@@ -48,6 +48,6 @@ RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& tas
 // Per triangle: the robot's centre at the triangle's centroid would overlap a movable body as the World
 // places it, other than the bodies the task names (those are moved on purpose).
 std::vector<bool> triangles_under_bodies(const scenario::World& world, const TaskAutomaton& task,
-                                         const decomposition::Decomposition& decomposition);
+                                         const decomposition::Decomposition& decomposition, const Deadline& deadline = {});
 
 }  // namespace physltl::planning
