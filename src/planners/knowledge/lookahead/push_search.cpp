@@ -47,6 +47,21 @@ std::size_t mix_places(std::size_t seed, const int* first, std::size_t n) {
   return seed;
 }
 
+// Body k on `cells` (`holder`: per place, the body covering it or -1) and the bodies it would push in
+// direction d, each the first time it stands in the way of one before it: for unit bodies, those end to
+// end ahead of it.
+std::vector<int> line_ahead(const PushLattice& lattice, const std::vector<int>& cells, const std::vector<int>& holder, int k, int d) {
+  std::vector<int> line{k};
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    lattice.for_each_cover(line[i], cells[static_cast<std::size_t>(line[i])], [&](int c) {
+      const int ahead = lattice.neighbour(c, d);
+      const int held = ahead < 0 ? -1 : holder[static_cast<std::size_t>(ahead)];
+      if (held >= 0 && std::find(line.begin(), line.end(), held) == line.end()) line.push_back(held);
+    });
+  }
+  return line;
+}
+
 }  // namespace
 
 long long run_arrangements(double time_limit_s) {
@@ -335,16 +350,11 @@ class FreezeTest {
       const int beyond = lattice_.neighbour(c, d);
       return beyond >= 0 && lattice_.body_fits(holder(c), beyond);
     }
-    std::vector<int> line{k};
-    for (std::size_t i = 0; i < line.size(); ++i) {
-      const int to = lattice_.neighbour(place(line[i]), d);
-      if (to < 0 || !lattice_.body_fits(line[i], to)) return false;
-      lattice_.for_each_cover(line[i], to, [&](int c) {
-        const int ahead = holder(c);
-        if (ahead >= 0 && std::find(line.begin(), line.end(), ahead) == line.end()) line.push_back(ahead);
-      });
-    }
-    return true;
+    const std::vector<int> line = line_ahead(lattice_, cells_, holder_, k, d);
+    return std::all_of(line.begin(), line.end(), [&](int j) {
+      const int to = lattice_.neighbour(place(j), d);
+      return to >= 0 && lattice_.body_fits(j, to);
+    });
   }
 
   const PushLattice& lattice_;
@@ -702,19 +712,6 @@ class ArrangementSearch {
     return to >= 0 && !room_for(k, to);
   }
 
-  // Body k of cells_ and the bodies it would push in direction d, each the first time it stands in the
-  // way of one before it (a unit body's: those end to end ahead of it).
-  std::vector<int> line_from(int k, int d) const {
-    std::vector<int> line{k};
-    for (std::size_t i = 0; i < line.size(); ++i) {
-      lattice_.for_each_cover(line[i], cells_[static_cast<std::size_t>(line[i])], [&](int c) {
-        const int ahead = lattice_.neighbour(c, d);
-        const int held = ahead < 0 ? -1 : holder_[static_cast<std::size_t>(ahead)];
-        if (held >= 0 && std::find(line.begin(), line.end(), held) == line.end()) line.push_back(held);
-      });
-    }
-    return line;
-  }
 
   // The arrangement after pushing body k of `from` one step in direction d, added unless it was met
   // before or is pruned, and where that step takes the body into a goal room, the arrangement with it
@@ -869,7 +866,7 @@ class ArrangementSearch {
   bool finish_with_line(const Expansion& from, int k, int d) {
     const int at = cells_[static_cast<std::size_t>(k)];
     if (lattice_.first_stand(k, at, d, [&](int c) { return seen_[static_cast<std::size_t>(c)] == from.reach; }) < 0) return false;
-    const std::vector<int> line = line_from(k, d);
+    const std::vector<int> line = line_ahead(lattice_, cells_, holder_, k, d);
     if (!lattice_.line_shortfalls(line, cells_, d)) return false;
     if (!std::all_of(line.begin(), line.end(), [&](int j) { return lattice_.can_push(j, d); })) return false;
     const std::vector<int> ahead(line.begin() + 1, line.end());
