@@ -96,7 +96,7 @@ double clearance_at(const scenario::World& model, const scenario::Vec2& at) {
 std::vector<double> planned_clearance(const scenario::World& model, const planning::Replay& nominal) {
   std::vector<double> clearance;
   clearance.reserve(nominal.states.size());
-  for (const auto& state : nominal.states) clearance.push_back(clearance_at(model, state.robot_position));
+  for (size_t s = 0; s < nominal.states.size(); ++s) clearance.push_back(clearance_at(model, nominal.states.robot_position(s)));
   return clearance;
 }
 
@@ -116,7 +116,7 @@ bool offset_touches(const scenario::World& model, const planning::Replay& nomina
   const size_t end = std::min(nominal.states.size(), t + horizon + 1);
   for (size_t s = t; s < end; ++s) {
     if (clearance[s] >= drift) continue;  // shifted by `drift` at most, it stays clear
-    const double shifted = clearance_at(model, nominal.states[s].robot_position + offset);
+    const double shifted = clearance_at(model, nominal.states.robot_position(s) + offset);
     if (shifted < 0.0 && shifted < clearance[s]) return true;
   }
   return false;
@@ -126,12 +126,11 @@ bool offset_touches(const scenario::World& model, const planning::Replay& nomina
 // than the tolerance from where the plan has it, or the robot's offset taking it into a fixed body.
 bool deviates(const scenario::World& model, const scenario::EnvironmentState& observed, const planning::Replay& nominal,
               const std::vector<double>& clearance, size_t t, double tolerance) {
-  const scenario::EnvironmentState& planned = nominal.states[t];
-  const scenario::Vec2 offset = observed.robot_position - planned.robot_position;
+  const scenario::Vec2 offset = observed.robot_position - nominal.states.robot_position(t);
   if (offset.norm() > tolerance || offset_touches(model, nominal, clearance, t, offset)) return true;
   for (const int b : nominal.moved_bodies) {
     const auto i = static_cast<size_t>(b);
-    if ((observed.movable_poses[i].position - planned.movable_poses[i].position).norm() > tolerance) return true;
+    if ((observed.movable_poses[i].position - nominal.states.body_pose(i, t).position).norm() > tolerance) return true;
   }
   return false;
 }

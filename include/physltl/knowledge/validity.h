@@ -35,6 +35,7 @@ struct Validity {
   int body_index = -1;
 
   bool valid() const { return violation == Violation::kNone; }
+  bool operator==(const Validity&) const = default;
 };
 
 // How far a body may poke out of the workspace before it counts as having left (contact solvers let

@@ -24,6 +24,7 @@ struct EnvironmentState {
   static EnvironmentState initial(const World& world);
   // The robot below kRestSpeed (moving and turning) and every box stopped.
   bool at_rest() const;
+  bool operator==(const EnvironmentState& other) const;  // every number equal
 };
 
 // A contact of the robot with a body during one physics step.

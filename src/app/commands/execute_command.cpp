@@ -54,7 +54,7 @@ void render_execution(const scenario::World& model, const knowledge::Reasoning& 
   std::vector<render::SegmentOverlay> marks;
   const render::Color planned{0.55f, 0.55f, 0.55f, 1.0f}, replanned{0.9f, 0.1f, 0.1f, 1.0f};
   for (size_t i = 1; i < nominal.states.size(); ++i) {
-    marks.push_back({nominal.states[i - 1].robot_position, nominal.states[i].robot_position, planned});
+    marks.push_back({nominal.states.robot_position(i - 1), nominal.states.robot_position(i), planned});
   }
   for (const int step : shown.run.replan_steps) {
     const scenario::Vec2 at = shown.run.states[static_cast<size_t>(step)].robot_position;

@@ -104,7 +104,7 @@ render::Image PlanAnimation::draw(double time_s) {
   for (std::string& line : object_group_lines(world_, reasoning_, state)) overlay_.legend.push_back(std::move(line));
   // The travelled path up to now: extended while frames go forward, as the video draws them.
   if (overlay_.path.size() > i + 1) overlay_.path.resize(i + 1);
-  while (overlay_.path.size() <= i) overlay_.path.push_back(replay_.states[overlay_.path.size()].robot_position);
+  while (overlay_.path.size() <= i) overlay_.path.push_back(replay_.states.robot_position(overlay_.path.size()));
   return renderer_->draw(state, overlay_, render::View::kPerspective);
 }
 

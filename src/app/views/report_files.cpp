@@ -104,18 +104,19 @@ json plan_json(const RunSummary& run) {
   json initial_bodies = json::array();
   for (const auto& pose : replay.states.front().movable_poses) initial_bodies.push_back(pose_json(pose));
   json states = json::array();
+  std::vector<geometry::Pose2> poses = replay.states.front().movable_poses;  // as of the state before
   for (std::size_t i = 0; i < replay.states.size(); ++i) {
-    const scenario::EnvironmentState& s = replay.states[i];
     json bodies = json::array();
-    for (std::size_t b = 0; i > 0 && b < s.movable_poses.size(); ++b) {
-      const geometry::Pose2& pose = s.movable_poses[b], &before = replay.states[i - 1].movable_poses[b];
-      if (pose.position == before.position && pose.yaw == before.yaw) continue;
-      json moved = pose_json(pose);
-      moved.insert(moved.begin(), b);
+    for (const scenario::StateTrace::BodyChange& change : replay.states.changes(i)) {
+      geometry::Pose2& before = poses[static_cast<std::size_t>(change.body)];
+      if (change.pose.position == before.position && change.pose.yaw == before.yaw) continue;  // only its speed changed
+      before = change.pose;
+      json moved = pose_json(change.pose);
+      moved.insert(moved.begin(), change.body);
       bodies.push_back(std::move(moved));
     }
-    json robot = point(s.robot_position);
-    if (differential) robot.push_back(s.robot_yaw);
+    json robot = point(replay.states.robot_position(i));
+    if (differential) robot.push_back(replay.states.robot_yaw(i));
     states.push_back({{"robot", robot}, {"bodies", bodies}});
   }
   json moved_bodies = json::array();

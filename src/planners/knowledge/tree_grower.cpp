@@ -94,7 +94,7 @@ bool TreeGrower::valid_step(const Vec2& setpoint, bool may_push, Growth& growth)
       return c.body == scenario::RobotContact::Body::kMovable && !named_[static_cast<size_t>(c.index)];
     });
   };
-  const knowledge::Violation violation = simulation_.step(setpoint);
+  const knowledge::Violation violation = simulation_.step(setpoint).violation;
   if (violation == knowledge::Violation::kNone && (may_push || !pushes_unasked())) return true;
   growth.stopped_by_invalid_step = true;
   if (violation == knowledge::Violation::kNone) {

@@ -38,7 +38,7 @@ std::optional<Plan> ProductGoal::braking(const ob::State* state) const {
   const int max_steps = static_cast<int>(std::ceil(kMaxBrakingTime / world.planner.step_size));
   int steps = 0;  // of the braking control under way
   for (int step = 1; step <= max_steps; ++step) {
-    if (simulation_.step(Vec2::Zero()) != knowledge::Violation::kNone) return std::nullopt;
+    if (!simulation_.step(Vec2::Zero()).valid()) return std::nullopt;
     q = product.task.step(q, product.task.labelling.letter(simulation_.environment()));
     if (product.stages.dead(q)) return std::nullopt;
     ++steps;

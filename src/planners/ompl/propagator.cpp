@@ -33,7 +33,7 @@ void PhysicsPropagator::propagate(const ob::State* from, const oc::Control* cont
   int automaton_state = product != nullptr ? static_cast<int>(in[n + kAutomatonState]) : 0;
   int triangle = product != nullptr ? -1 : decomposition_.locate({in[0], in[1]});
   for (int s = 0; s < steps && valid && !beyond_graph; ++s) {
-    const knowledge::Violation violation = simulation_.step(setpoint);
+    const knowledge::Violation violation = simulation_.step(setpoint).violation;
     ++counts_.steps;
     valid = violation == knowledge::Violation::kNone;
     if (!valid) counts_.refused.add(*refusal_of(violation));

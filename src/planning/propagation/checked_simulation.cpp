@@ -18,17 +18,16 @@ void CheckedSimulation::restore(const physics::PhysicsState& state) {
   }
 }
 
-knowledge::Violation CheckedSimulation::step(const scenario::Vec2& setpoint) {
+knowledge::Validity CheckedSimulation::step(const scenario::Vec2& setpoint) {
   simulation_.step(setpoint, contacts_);
   // Only the robot and the bodies the step integrated changed: read, test and infer for those.
   simulation_.update_environment(environment_);
   const std::span<const int> movers = simulation_.last_step_movers();
   // VALIDITYCHECKER(E_new, kappa_j), then kappa_{j+1} = INFERENCE(E_new, kappa_j).
-  const knowledge::Violation violation =
-      knowledge::check_validity_after_step(knowledge_, kappa_, environment_, contacts_, mode_, movers).violation;
-  if (violation != knowledge::Violation::kNone) return violation;
+  const knowledge::Validity validity =
+      knowledge::check_validity_after_step(knowledge_, kappa_, environment_, contacts_, mode_, movers);
   if (mode_ == knowledge::ValidityMode::kKnowledge) knowledge::reinfer(knowledge_, environment_, kappa_poses_, kappa_, movers);
-  return violation;
+  return validity;
 }
 
 }  // namespace physltl::planning

@@ -78,7 +78,7 @@ PlanMeasures measure(const scenario::World& world, const Plan& plan, const Repla
   m.pushes = replay.pushes;
   m.bodies_moved = static_cast<int>(replay.moved_bodies.size());
   for (std::size_t i = 1; i < replay.states.size(); ++i) {
-    m.path_length_m += (replay.states[i].robot_position - replay.states[i - 1].robot_position).norm();
+    m.path_length_m += (replay.states.robot_position(i) - replay.states.robot_position(i - 1)).norm();
   }
   return m;
 }

@@ -4,7 +4,7 @@
 
 #include "physltl/knowledge/kappa.h"
 #include "physltl/ltl/lasso.h"
-#include "physltl/physics/simulation.h"
+#include "physltl/planning/propagation/checked_simulation.h"
 
 #include <fmt/format.h>
 
@@ -43,15 +43,19 @@ std::string control_out_of_bounds(const scenario::World& world, const Control& c
 namespace {
 
 // One replay: the plan's controls run in a fresh physics world, every step checked, the trace judged.
+// Each step reads, checks and infers for the bodies it moved (CheckedSimulation) and the trace keeps only
+// their changes, so a step costs what moves, however many bodies stand still.
 class Replayer {
  public:
   Replayer(const scenario::World& world, const Plan& plan, const TaskAutomaton& formula,
            const knowledge::AbstractKnowledge& knowledge, const ReplayOptions& options)
-      : world_(world), plan_(plan), formula_(formula), knowledge_(knowledge), options_(options), simulation_(world) {}
+      : world_(world), plan_(plan), formula_(formula), knowledge_(knowledge), options_(options),
+        simulation_(world, knowledge, options.mode) {}
 
   Replay run() {
-    record(formula_.dfa.start, false);
-    kappa_ = knowledge::infer(knowledge_, r_.states.back());
+    simulation_.restore(simulation_.physics().save());  // reads the start and infers kappa_0 from scratch
+    r_.states = scenario::StateTrace(simulation_.environment());
+    record_letter(formula_.dfa.start, false);
     r_.reproduces_plan = plan_.states.size() == plan_.controls.size();
     r_.valid = true;
     r_.within_limits = true;
@@ -65,8 +69,12 @@ class Replayer {
 
  private:
   void record(int automaton_state, bool pushing) {
-    r_.states.push_back(simulation_.environment());
-    const int letter = formula_.labelling.letter(r_.states.back());
+    r_.states.push_back(simulation_.environment(), simulation_.physics().last_step_movers());
+    record_letter(automaton_state, pushing);
+  }
+
+  void record_letter(int automaton_state, bool pushing) {
+    const int letter = formula_.labelling.letter(simulation_.environment());
     r_.region_trace.push_back(formula_.labelling.robot_region_of(letter));
     r_.facts_trace.push_back(formula_.labelling.facts_of(letter));
     r_.automaton_trace.push_back(formula_.step(automaton_state, letter));
@@ -100,7 +108,7 @@ class Replayer {
       r_.pushes += std::any_of(begin, done.pushing.begin() + static_cast<std::ptrdiff_t>(steps) + 1, [](bool p) { return p; });
     }
     const auto end = static_cast<std::ptrdiff_t>(steps) + 1;
-    r_.states.assign(done.states.begin(), done.states.begin() + end);
+    r_.states = done.states.prefix(static_cast<std::size_t>(end));
     r_.region_trace.assign(done.region_trace.begin(), done.region_trace.begin() + end);
     r_.facts_trace.assign(done.facts_trace.begin(), done.facts_trace.begin() + end);
     r_.automaton_trace.assign(done.automaton_trace.begin(), done.automaton_trace.begin() + end);
@@ -108,8 +116,7 @@ class Replayer {
     for (std::size_t step : done.unsolved_steps) {
       if (step < static_cast<std::size_t>(end)) r_.unsolved_steps.push_back(step);
     }
-    for (size_t i = 1; i < r_.states.size(); ++i) r_.peak_speed = std::max(r_.peak_speed, r_.states[i].robot_velocity.norm());
-    kappa_ = knowledge::infer(knowledge_, r_.states.back());
+    for (size_t i = 1; i < r_.states.size(); ++i) r_.peak_speed = std::max(r_.peak_speed, r_.states.robot_velocity(i).norm());
     simulation_.restore(plan_.states[prefix.controls - 1]);
     return prefix.controls;
   }
@@ -122,38 +129,38 @@ class Replayer {
     }
     bool pushed = false;
     for (int s = 0; s < control.steps; ++s) {
-      simulation_.step(control.setpoint, contacts_);
+      if (options_.audit_inference) kappa_before_ = simulation_.kappa();
+      const knowledge::Validity validity = simulation_.step(control.setpoint);
       bool touching_movable = false;
-      for (const auto& contact : contacts_) touching_movable |= contact.body == scenario::RobotContact::Body::kMovable;
+      for (const auto& contact : simulation_.contacts()) touching_movable |= contact.body == scenario::RobotContact::Body::kMovable;
       pushed |= touching_movable;
       record(r_.automaton_trace.back(), touching_movable);
-      check_step(c);
+      check_step(c, validity);
+      if (options_.audit_inference) audit(c, validity);
       if ((r_.states.size() & 15) == 0) check_deadline();
       if (stopping()) return false;
-      knowledge::infer(knowledge_, r_.states.back(), kappa_);
     }
     r_.pushes += pushed;
-    if (r_.reproduces_plan && !(simulation_.save() == plan_.states[c])) {
+    if (r_.reproduces_plan && !(simulation_.physics().save() == plan_.states[c])) {
       fail(r_.reproduces_plan, fmt::format("control {} ends in a different state than planned", c));
     }
     return !stopping();
   }
 
   // The robot's limits and the validity rules at the step just recorded.
-  void check_step(size_t c) {
-    const auto& state = r_.states.back();
+  void check_step(size_t c, const knowledge::Validity& validity) {
+    const auto& state = simulation_.environment();
     const size_t step = r_.states.size() - 1;
     r_.peak_speed = std::max(r_.peak_speed, state.robot_velocity.norm());
-    if (!simulation_.last_step_solved()) r_.unsolved_steps.push_back(step);
+    if (!simulation_.physics().last_step_solved()) r_.unsolved_steps.push_back(step);
     const double force_bound = world_.robot.max_force * (1.0 + 1e-9);  // rounding of the norm only
-    if (simulation_.last_drive().force.norm() > force_bound) {
+    if (simulation_.physics().last_drive().force.norm() > force_bound) {
       fail(r_.within_limits, fmt::format("step {} (control {}): drive force above max_force", step, c));
     }
     if (!knowledge::within_robot_limits(knowledge_.robot, state)) {
       fail(r_.within_limits, fmt::format("step {} (control {}): {:.3f} m/s, {:.1f} deg/s beyond the robot's limits",
                                          step, c, state.robot_velocity.norm(), state.robot_turn_rate * kDegreesPerRadian));
     }
-    const auto validity = knowledge::check_validity(knowledge_, kappa_, state, contacts_, options_.mode);
     if (!validity.valid()) {
       std::string why = fmt::format("step {} (control {}, {:.2f} s): {}", step, c, step * world_.planner.step_size,
                                     violation_words(validity, state));
@@ -162,6 +169,23 @@ class Replayer {
         r_.violation_messages.push_back(why);
       }
       fail(r_.valid, std::move(why));
+    }
+  }
+
+  // ReplayOptions::audit_inference: the step's state, verdict and kappa, kept up to date for the bodies
+  // that moved, against the same read and inferred from scratch.
+  void audit(size_t c, const knowledge::Validity& validity) {
+    simulation_.physics().read_environment(audited_);
+    const size_t step = r_.states.size() - 1;
+    const auto differs = [&](const char* what) {
+      fail(r_.valid, fmt::format("step {} (control {}): the {} kept for what moved differs from the one from scratch", step, c, what));
+    };
+    if (!(audited_ == simulation_.environment()) || !(audited_ == r_.states[step])) return differs("state");
+    if (!(knowledge::check_validity(knowledge_, kappa_before_, audited_, simulation_.contacts(), options_.mode) == validity)) {
+      return differs("verdict");
+    }
+    if (options_.mode == knowledge::ValidityMode::kKnowledge && !(knowledge::infer(knowledge_, audited_) == simulation_.kappa())) {
+      differs("kappa");
     }
   }
 
@@ -207,9 +231,9 @@ class Replayer {
   const TaskAutomaton& formula_;
   const knowledge::AbstractKnowledge& knowledge_;
   const ReplayOptions& options_;
-  physics::Simulation simulation_;
-  std::vector<scenario::RobotContact> contacts_;
-  knowledge::Kappa kappa_;
+  CheckedSimulation simulation_;
+  knowledge::Kappa kappa_before_;        // audit_inference only
+  scenario::EnvironmentState audited_;   // audit_inference only
   Replay r_;
 };
 

@@ -25,15 +25,17 @@ class CheckedSimulation {
 
   // Puts the world in `state` and kappa in step with it.
   void restore(const physics::PhysicsState& state);
-  // One physics step with the drive tracking `setpoint`; the rule it broke, kNone for a valid step (after
-  // an invalid one the world stands in the invalid state).
-  knowledge::Violation step(const scenario::Vec2& setpoint);
+  // One physics step with the drive tracking `setpoint`; the rule it broke and the body at fault, kNone
+  // for a valid step (after an invalid one the world stands in the invalid state, kappa inferred there).
+  knowledge::Validity step(const scenario::Vec2& setpoint);
   void save(physics::PhysicsState& out) const { simulation_.save(out); }
 
   const scenario::EnvironmentState& environment() const { return environment_; }
   // The robot's contacts during the last step.
   const std::vector<scenario::RobotContact>& contacts() const { return contacts_; }
   const knowledge::Kappa& kappa() const { return kappa_; }
+  // The physics under the checks: its drive, solver and the bodies the last step moved.
+  const physics::Simulation& physics() const { return simulation_; }
 
  private:
   const knowledge::AbstractKnowledge& knowledge_;

@@ -7,6 +7,7 @@
 #include "physltl/knowledge/validity.h"
 #include "physltl/planning/plan.h"
 #include "physltl/planning/task.h"
+#include "physltl/scenario/state_trace.h"
 
 #include <string>
 #include <vector>
@@ -14,8 +15,8 @@
 namespace physltl::planning {
 
 struct Replay {
-  // One entry per physics step, the initial state first.
-  std::vector<scenario::EnvironmentState> states;
+  // One entry per physics step, the initial state first; each body kept where it changed.
+  scenario::StateTrace states;
   std::vector<int> region_trace;     // the robot's region at each state, -1 outside every region
   // Where the bodies the formula names are at each state: the fact set of its labelling (labelling.h);
   // with region_trace, the letter the automaton reads.
@@ -68,6 +69,10 @@ struct ReplayOptions {
   bool stop_at_first_failure = false;
   const ReplayedPrefix* prefix = nullptr;  // steps already replayed, taken as they are
   Deadline deadline{};  // checked every few physics steps (Replay::cut_short)
+  // Also read every body and infer kappa from scratch at every step, and fail the replay (not valid) where
+  // the state, the verdict or kappa kept for the bodies that moved differ: the tests' proof that the
+  // incremental way equals the paper's INFERENCE from scratch.
+  bool audit_inference = false;
 };
 
 // Replays `plan` and checks it against `formula` (the task as written, not the simplified one the search
