@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
-#include <optional>
 
 namespace physltl::planning {
 namespace {
@@ -41,24 +40,6 @@ std::vector<Control> direct_controls(const scenario::World& world, const scenari
   return controls;
 }
 
-// `plan`'s first `kept` controls followed by `rest`, the latter run in `simulation` from where the kept
-// ones end (restoring is exact, so this is the plan run from the start), with the state after each control;
-// nothing when `deadline` comes first.
-std::optional<Plan> splice(physics::Simulation& simulation, const Plan& plan, std::size_t kept,
-                           const std::vector<Control>& rest, const Deadline& deadline) {
-  Plan spliced;
-  spliced.controls.assign(plan.controls.begin(), plan.controls.begin() + static_cast<std::ptrdiff_t>(kept));
-  spliced.states.assign(plan.states.begin(), plan.states.begin() + static_cast<std::ptrdiff_t>(kept));
-  std::vector<scenario::RobotContact> contacts;
-  for (const Control& c : rest) {
-    if (deadline.reached()) return std::nullopt;
-    for (int s = 0; s < c.steps; ++s) simulation.step(c.setpoint, contacts);
-    spliced.controls.push_back(c);
-    spliced.states.push_back(simulation.save());
-  }
-  return spliced;
-}
-
 // The index of the replay state at the end of control `c` (0: the start, before any control).
 std::size_t state_after(const Plan& plan, std::size_t controls) {
   std::size_t steps = 0;
@@ -90,8 +71,6 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
   result.first = result.improved = measure(problem.world, plan, replay);
   // A generator of its own, from the run's seed: improving never changes what the search drew.
   Random random(seed ^ 0x1A2B3C4D5E6F7081ull);
-  physics::Simulation simulation(problem.world);
-  const physics::PhysicsState start = simulation.save();
   for (; result.candidates < budget; ++result.candidates) {
     if (deadline.reached()) {
       result.stopped = deadline.reason();
@@ -104,18 +83,24 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
     const int last = random.uniform_int(first + 2, n);
     const auto& from = replay.states[state_after(plan, static_cast<std::size_t>(first))];
     const auto& to = replay.states[state_after(plan, static_cast<std::size_t>(last))];
-    std::vector<Control> rest = direct_controls(problem.world, from, to);
-    rest.insert(rest.end(), plan.controls.begin() + last, plan.controls.end());
-    simulation.restore(first > 0 ? plan.states[static_cast<std::size_t>(first) - 1] : start);
-    std::optional<Plan> spliced = splice(simulation, plan, static_cast<std::size_t>(first), rest, deadline);
-    if (!spliced) continue;  // the deadline: said at the loop's head
-    Plan candidate = std::move(*spliced);
+    // The plan's first `first` controls, a direct way, and its controls from `last` on.
+    Plan candidate;
+    candidate.controls.assign(plan.controls.begin(), plan.controls.begin() + first);
+    for (const Control& c : direct_controls(problem.world, from, to)) candidate.controls.push_back(c);
+    candidate.controls.insert(candidate.controls.end(), plan.controls.begin() + last, plan.controls.end());
     if (candidate.total_steps() > plan.total_steps()) continue;  // longer: not worth a replay
     // Most candidates fail a check early (a shortcut through a wall or past a needed push): stop there.
-    // The kept controls were checked in the current plan's replay: start after them.
+    // The kept controls were checked in the current plan's replay: start after them; the replay records
+    // the states after the new ones.
+    candidate.states.assign(plan.states.begin(), plan.states.begin() + first);
     const ReplayedPrefix kept{replay, static_cast<std::size_t>(first)};
-    Replay checked = planning::replay(problem.world, candidate, problem.formula, problem.knowledge, {.mode = mode, .stop_at_first_failure = true, .prefix = &kept, .deadline = deadline});
+    Replay checked = planning::replay(problem.world, candidate, problem.formula, problem.knowledge,
+                                      {.mode = mode, .stop_at_first_failure = true, .prefix = &kept, .deadline = deadline,
+                                       .record_control_states = true});
     if (!checked.validated()) continue;
+    candidate.states.insert(candidate.states.end(), std::make_move_iterator(checked.control_states.begin()),
+                            std::make_move_iterator(checked.control_states.end()));
+    checked.control_states.clear();
     const PlanMeasures measures = measure(problem.world, candidate, checked);
     if (!better(measures, result.improved)) continue;
     plan = std::move(candidate);

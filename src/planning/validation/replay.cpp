@@ -56,7 +56,7 @@ class Replayer {
     simulation_.restore(simulation_.physics().save());  // reads the start and infers kappa_0 from scratch
     r_.states = scenario::StateTrace(simulation_.environment());
     record_letter(formula_.dfa.start, false);
-    r_.reproduces_plan = plan_.states.size() == plan_.controls.size();
+    r_.reproduces_plan = options_.record_control_states || plan_.states.size() == plan_.controls.size();
     r_.valid = true;
     r_.within_limits = true;
     const size_t first_control = options_.prefix != nullptr ? take_prefix(*options_.prefix) : 0;
@@ -141,7 +141,9 @@ class Replayer {
       if (stopping()) return false;
     }
     r_.pushes += pushed;
-    if (r_.reproduces_plan && !(simulation_.physics().save() == plan_.states[c])) {
+    if (options_.record_control_states) {
+      r_.control_states.push_back(simulation_.physics().save());
+    } else if (r_.reproduces_plan && !(simulation_.physics().save() == plan_.states[c])) {
       fail(r_.reproduces_plan, fmt::format("control {} ends in a different state than planned", c));
     }
     return !stopping();

@@ -5,6 +5,7 @@
 #include "physltl/base/deadline.h"
 #include "physltl/knowledge/abstract_knowledge.h"
 #include "physltl/knowledge/validity.h"
+#include "physltl/physics/simulation.h"
 #include "physltl/planning/plan.h"
 #include "physltl/planning/task.h"
 #include "physltl/scenario/state_trace.h"
@@ -28,6 +29,8 @@ struct Replay {
   std::vector<int> moved_bodies;
 
   bool reproduces_plan = false;  // every state after a control equals the planned one, bit for bit
+  // With ReplayOptions::record_control_states: the physics state after each control past the prefix.
+  std::vector<physics::PhysicsState> control_states;
   bool valid = false;            // every step passes the validity rules of the mode it was planned in
   // Each rule some step broke, once, in the order first broken (a step reports the first rule it breaks,
   // in check_validity's order: limits, workspace, fixed bodies, then kappa's).
@@ -73,6 +76,9 @@ struct ReplayOptions {
   // the state, the verdict or kappa kept for the bodies that moved differ: the tests' proof that the
   // incremental way equals the paper's INFERENCE from scratch.
   bool audit_inference = false;
+  // The plan holds states only for the prefix's controls (a candidate made of a kept part and new
+  // controls): record the state after each later control (Replay::control_states) instead of comparing.
+  bool record_control_states = false;
 };
 
 // Replays `plan` and checks it against `formula` (the task as written, not the simplified one the search
