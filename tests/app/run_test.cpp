@@ -30,6 +30,12 @@ TEST(Run, SolvesOrderedAndWritesAValidatedReportAndPlan) {
   EXPECT_EQ(report["formula"], "F(p1 & F(p3 & F(p2 & F p4)))");
   EXPECT_EQ(report["invalid_propositions"], nlohmann::json::array());
   EXPECT_GT(report["planning_time_s"].get<double>(), 0.0);
+  // What each part took, the search's time as above, and the process's peak memory.
+  const auto& times = report["times_s"];
+  EXPECT_EQ(times["search"], report["planning_time_s"]);
+  EXPECT_EQ(times["improve"], report["improvement"]["time_s"]);
+  for (const char* part : {"prepare", "replay", "write_plan"}) EXPECT_GT(times[part].get<double>(), 0.0) << part;
+  EXPECT_GT(report["peak_memory_mb"].get<double>(), 1.0);
   const auto plan = nlohmann::json::parse(slurp(out / "ordered" / "plan.json"));
   EXPECT_GE(report["bodies_moved"].get<int>(), 1);  // the boxes on p1 and p3
   const auto& improvement = report["improvement"];  // 100 candidates by default

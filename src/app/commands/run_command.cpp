@@ -8,6 +8,7 @@
 #include "common/stop_signal.h"
 #include "common/files.h"
 #include "common/output_folder.h"
+#include "common/peak_memory.h"
 #include "physltl/ltl/formula.h"
 #include "run/main_job.h"
 #include "run/planner_names.h"
@@ -107,8 +108,8 @@ void say_solution(const planning::ValidatedPlan& solution, const scenario::World
   }
   const planning::Plan& plan = solution.result.plan;
   const std::size_t unsolved = solution.replay->unsolved_steps.size();
-  say(fmt::format("plan       {} controls, {:.1f} s of motion, {} pushes, validated by replay{}", plan.controls.size(),
-                  plan.total_steps() * world.planner.step_size, solution.replay->pushes,
+  say(fmt::format("plan       {} controls, {:.1f} s of motion, {} pushes, validated by replay ({:.2f} s){}", plan.controls.size(),
+                  plan.total_steps() * world.planner.step_size, solution.replay->pushes, solution.replay_s,
                   unsolved == 0 ? "" : fmt::format(" ({} steps the physics solver did not solve: docs/physics.md)", unsolved)));
 }
 
@@ -150,8 +151,16 @@ void write_plan_files(const PlanningRun& run, const planning::ValidatedPlan& sol
   RunSummary summary = run.summary(solution);
   summary.robustness = robustness ? &*robustness : nullptr;
   summary.uncertainty = &world.uncertainty;
-  write_json_file(out.path() / "report.json", report_json(summary));
+  const auto started = std::chrono::steady_clock::now();
   write_json_file(out.path() / "plan.json", plan_json(summary));
+  RunCosts costs{.prepare_s = run.problem().preparation_s(run.planner()),
+                 .search_s = solution.result.stats.planning_time_s,
+                 .replay_s = solution.replay_s,
+                 .improve_s = solution.improvement ? solution.improvement->time_s : 0.0,
+                 .write_plan_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(),
+                 .peak_memory_mb = peak_memory_mb()};
+  summary.costs = &costs;
+  write_json_file(out.path() / "report.json", report_json(summary));
 }
 
 int run(const RunArgs& args) {

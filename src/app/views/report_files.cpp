@@ -49,6 +49,11 @@ json report_json(const RunSummary& run) {
       {"refused", refusals_json(refusal_counts(registry(), run.planner, r.stats.refused))},
   };
   add_planner_keys(report, registry().report_keys(), account_of(run.planner, r.own.get(), run.world).report);
+  if (run.costs != nullptr) {
+    report["times_s"] = {{"prepare", run.costs->prepare_s}, {"search", run.costs->search_s}, {"replay", run.costs->replay_s},
+                         {"improve", run.costs->improve_s}, {"write_plan", run.costs->write_plan_s}};
+    report["peak_memory_mb"] = run.costs->peak_memory_mb;
+  }
   if (run.replay != nullptr) {
     report["validation"] = {
         {"reproduces_plan", run.replay->reproduces_plan},

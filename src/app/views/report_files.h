@@ -17,6 +17,12 @@
 
 namespace physltl::app {
 
+// What each part of a run took (s) and the process's peak memory (MB) by the time report.json is written.
+struct RunCosts {
+  double prepare_s = 0.0, search_s = 0.0, replay_s = 0.0, improve_s = 0.0, write_plan_s = 0.0;
+  double peak_memory_mb = 0.0;
+};
+
 struct RunSummary {
   const scenario::World& world;
   const knowledge::Reasoning& reasoning;
@@ -27,6 +33,7 @@ struct RunSummary {
   const planning::Improvement* improvement = nullptr;  // when the plan was improved
   const execution::Robustness* robustness = nullptr;    // with --robustness N
   const scenario::Uncertainty* uncertainty = nullptr;  // what the robustness was measured under
+  const RunCosts* costs = nullptr;  // the main job's: what each part of the run took
 };
 
 nlohmann::ordered_json report_json(const RunSummary& run);

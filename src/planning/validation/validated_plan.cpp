@@ -2,6 +2,8 @@
 
 #include "physltl/planning/validation/improve.h"
 
+#include <chrono>
+
 namespace physltl::planning {
 
 ValidatedPlan plan_and_validate(const Problem& p, const PlannerEntry& planner, const PlannerData* prepared,
@@ -10,7 +12,9 @@ ValidatedPlan plan_and_validate(const Problem& p, const PlannerEntry& planner, c
   if (validated.result.solved) {
     const knowledge::ValidityMode mode =
         planner.uses_knowledge ? knowledge::ValidityMode::kKnowledge : knowledge::ValidityMode::kBaseline;
+    const auto started = std::chrono::steady_clock::now();
     validated.replay = replay(p.world, validated.result.plan, p.formula, p.knowledge, {.mode = mode, .deadline = options.deadline});
+    validated.replay_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     if (options.improve > 0 && validated.replay->validated()) {
       validated.improvement =
           improve(p, mode, options.seed, options.improve, validated.result.plan, *validated.replay, options.deadline);

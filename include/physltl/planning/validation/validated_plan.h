@@ -35,6 +35,7 @@ struct ValidatedPlan {
   PlanResult result;             // result.plan is the improved plan when improvement ran
   std::optional<Replay> replay;  // of result.plan, when the search solved
   std::optional<Improvement> improvement;  // when options.improve > 0 and the first plan validated
+  double replay_s = 0.0;  // the first plan's replay
 
   // A search that solved but whose plan failed replay is a bug, kept so it can be reported.
   bool solved() const { return replay.has_value() && replay->validated(); }
