@@ -9,6 +9,7 @@
 #include "physltl/planning/plan.h"
 #include "physltl/planning/validation/replay.h"
 #include "physltl/planning/task.h"
+#include "physltl/scenario/state_trace.h"
 
 #include <functional>
 #include <optional>
@@ -43,7 +44,7 @@ struct Execution {
   double planning_s = 0.0;           // wall time of the replanning, not simulated time
   int steps = 0;                     // physics steps executed
   std::string stopped;               // why execution ended before the task was done: "", "no plan", "task lost", "braking"
-  std::vector<scenario::EnvironmentState> states;  // the observed state after each step, the initial one first
+  scenario::StateTrace states;  // the observed state after each step, the initial one first; each body kept where it changed
 };
 
 // Runs `plan` (validated in `model`, whose replay is `nominal`; `formula` is the task as written) in any

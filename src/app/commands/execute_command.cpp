@@ -57,7 +57,7 @@ void render_execution(const scenario::World& model, const knowledge::Reasoning& 
     marks.push_back({nominal.states.robot_position(i - 1), nominal.states.robot_position(i), planned});
   }
   for (const int step : shown.run.replan_steps) {
-    const scenario::Vec2 at = shown.run.states[static_cast<size_t>(step)].robot_position;
+    const scenario::Vec2 at = shown.run.states.robot_position(static_cast<size_t>(step));
     // Segments are drawn one pixel wide: a cross of three strokes each, to be seen beside the path.
     for (const scenario::Vec2& arm : {scenario::Vec2(0.25, 0.25), scenario::Vec2(0.25, -0.25)}) {
       for (const double shift : {-0.02, 0.0, 0.02}) {
