@@ -118,13 +118,25 @@ void GlFramebuffer::release() {
   fbo_ = color_ = depth_ = 0;
 }
 
-void copy_framebuffer(GLuint from, int from_width, int from_height, GLuint to, int to_width, int to_height,
-                      GLbitfield mask, GLenum filter) {
+namespace {
+
+void blit(GLuint from, GLuint to, const PixelArea& source, const PixelArea& target, GLbitfield mask, GLenum filter) {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, from);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
-  glBlitFramebuffer(0, 0, from_width, from_height, 0, 0, to_width, to_height, mask, filter);
+  glBlitFramebuffer(source.x0, source.y0, source.x1, source.y1, target.x0, target.y0, target.x1, target.y1, mask, filter);
   const GLenum error = glGetError();
   if (error != GL_NO_ERROR) throw std::runtime_error("OpenGL refused to copy a framebuffer (error " + std::to_string(error) + ")");
+}
+
+}  // namespace
+
+void copy_framebuffer(GLuint from, int from_width, int from_height, GLuint to, int to_width, int to_height,
+                      GLbitfield mask, GLenum filter) {
+  blit(from, to, {0, 0, from_width, from_height}, {0, 0, to_width, to_height}, mask, filter);
+}
+
+void copy_framebuffer_area(GLuint from, GLuint to, const PixelArea& area, GLbitfield mask) {
+  blit(from, to, area, area, mask, GL_NEAREST);
 }
 
 }  // namespace physltl::render

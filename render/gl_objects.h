@@ -50,6 +50,7 @@ class GlFramebuffer {
   GlFramebuffer& operator=(const GlFramebuffer&) = delete;
 
   GLuint id() const { return fbo_; }
+  GLuint color_texture() const { return color_; }
   int width() const { return width_; }
   int height() const { return height_; }
 
@@ -67,5 +68,13 @@ class GlFramebuffer {
 // scaling with `filter`; throws when the driver refuses (e.g. depth formats that differ).
 void copy_framebuffer(GLuint from, int from_width, int from_height, GLuint to, int to_width, int to_height,
                       GLbitfield mask, GLenum filter);
+
+// Pixels [x0, x1) x [y0, y1) of a framebuffer, rows counted upwards as OpenGL does.
+struct PixelArea {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool empty() const { return x1 <= x0 || y1 <= y0; }
+};
+// Copies `mask` of `area` from one framebuffer to the same place in another of the same size.
+void copy_framebuffer_area(GLuint from, GLuint to, const PixelArea& area, GLbitfield mask);
 
 }  // namespace physltl::render

@@ -153,6 +153,7 @@ struct Renderer::Impl {
   GlProgram flat{shaders::kFlatVertex, shaders::kFlatFragment};
   GlProgram shadow{shaders::kShadowVertex, shaders::kShadowFragment};
   GlProgram text{shaders::kTextVertex, shaders::kTextFragment};
+  GlProgram layer_program{shaders::kLayerVertex, shaders::kLayerFragment};
 
   const TriangleMesh cube = unit_cube_mesh();
   mutable std::map<const geometry::Shape*, TriangleMesh> shape_meshes;  // of the World's cylinders and polygons
@@ -169,6 +170,10 @@ struct Renderer::Impl {
   GlMesh path_layer{3, 4};
   GlMesh panel_layer{3, 4};
   GlMesh glyph_layer{2, 2};
+  GlMesh resting_mregion_layer{3, 4};
+  GlMesh resting_shadow_layer{3, 2, 4, 1};
+  GlMesh resting_body_layer{3, 3, 4};
+  GlMesh frame_quad{2};
 
   FontAtlas font;
   GLuint font_texture = 0;
@@ -203,6 +208,25 @@ struct Renderer::Impl {
   };
   std::optional<Framing> framing;
 
+  // The movable bodies at rest, drawn once into a layer of their own (their mRegions, shadows and bodies,
+  // in the order a frame draws them) that every frame lays over the background: a frame then draws only
+  // the bodies that moved since and the robot, so a warehouse of thousands of resting boxes costs what
+  // moves. The layer keeps its colours premultiplied by alpha and its depth (the background's and the
+  // resting bodies'), so laying it over the background is drawing its contents there in the same order,
+  // up to a unit of rounding in a channel. A body that moves, or whose mRegions change, is drawn by every
+  // frame from then on (the layer drawn again without it).
+  struct RestingLayer {
+    View view;
+    Matrix4f view_projection;
+    std::vector<std::pair<int, int>> goals;  // object goals' (body, region): the bodies' colours
+    std::vector<Pose2> poses;                // each movable body's pose as drawn
+    std::vector<MRegionOverlay> mregions;    // the overlay's mRegions when it was drawn
+    std::vector<bool> moving;                // bodies every frame draws instead
+    std::unique_ptr<GlFramebuffer> framebuffer;
+    PixelArea area;                          // where the layer has something: what a frame lays
+  };
+  std::optional<RestingLayer> resting;
+
   Impl(const scenario::World& w, std::unique_ptr<OffscreenContext> c)
       : world(w),
         context(made_current(std::move(c))),
@@ -211,6 +235,8 @@ struct Renderer::Impl {
         font(PHYSLTL_FONT_FILE, std::max(11.0f, std::round(height / 26.0f))) {
     upload_fixed_bodies();
     upload_font();
+    const float corners[] = {-1, -1, 1, -1, -1, 1, 1, 1};
+    frame_quad.upload(corners, std::size(corners), GL_STATIC_DRAW);
   }
 
   ~Impl() {
@@ -246,12 +272,20 @@ struct Renderer::Impl {
     add_mesh(vertices, mesh->second, body_transform(pose, 0, Vector3f::Ones()), color);
   }
 
-  std::vector<float> moving_bodies(const scenario::EnvironmentState& state, const Overlay& overlay) const {
+  // The movable bodies `moving` says (true: those drawn by every frame, with the robot; false: the resting
+  // ones, without it).
+  std::vector<float> movable_bodies(const scenario::EnvironmentState& state, const Overlay& overlay, bool moving) const {
     std::vector<float> vertices;
     for (std::size_t i = 0; i < world.movable_bodies.size(); ++i) {
+      if (resting->moving[i] != moving) continue;
       const scenario::MovableBody& body = world.movable_bodies[i];
       add_body(vertices, body.footprint.shape, state.movable_poses[i], body.height, body_color(overlay, static_cast<int>(i)));
     }
+    if (moving) add_robot(vertices, state);
+    return vertices;
+  }
+
+  void add_robot(std::vector<float>& vertices, const scenario::EnvironmentState& state) const {
     const float r = static_cast<float>(world.robot.radius);
     add_mesh(vertices, sphere, body_transform({state.robot_position, 0.0}, r, Vector3f::Constant(r)),
              palette::kRobot);
@@ -263,7 +297,6 @@ struct Renderer::Impl {
       add_mesh(vertices, cube, body_transform(nose, 1.95f * r, Vector3f(1.3f * r, 0.35f * r, 0.2f * r)),
                palette::kRobotNose);
     }
-    return vertices;
   }
 
   void upload_font() {
@@ -310,9 +343,11 @@ struct Renderer::Impl {
     return paint;
   }
 
-  static FlatGeometry mregion_paint(const Overlay& overlay, double metres_per_pixel) {
+  // The mRegions of the moving bodies (and those of no body), or of the resting ones.
+  FlatGeometry mregion_paint(const Overlay& overlay, double metres_per_pixel, bool moving) const {
     FlatGeometry paint;
     for (const MRegionOverlay& m : overlay.mregions) {
+      if ((m.body < 0 || resting->moving[static_cast<std::size_t>(m.body)]) != moving) continue;
       paint.polygon(m.polygon, m.active ? palette::kActiveMRegion : palette::kInactiveMRegion);
       paint.outline(m.polygon, kEdgeWidth * metres_per_pixel,
                     m.active ? palette::kActiveMRegionEdge : palette::kInactiveMRegionEdge);
@@ -330,13 +365,14 @@ struct Renderer::Impl {
     return result;
   }
 
-  ShadowGeometry moving_shadows(const scenario::EnvironmentState& state) const {
+  ShadowGeometry movable_shadows(const scenario::EnvironmentState& state, bool moving) const {
     ShadowGeometry result;
     for (std::size_t i = 0; i < world.movable_bodies.size(); ++i) {
+      if (resting->moving[i] != moving) continue;
       const scenario::MovableBody& body = world.movable_bodies[i];
       add_shadow(result, body.footprint.shape, state.movable_poses[i], body.height);
     }
-    result.add({state.robot_position, 0.0}, Vec2::Zero(), 0.8 * world.robot.radius, world.robot.radius);
+    if (moving) result.add({state.robot_position, 0.0}, Vec2::Zero(), 0.8 * world.robot.radius, world.robot.radius);
     return result;
   }
 
@@ -478,13 +514,140 @@ struct Renderer::Impl {
   }
 
   void upload_layers(const scenario::EnvironmentState& state, const Overlay& overlay, const CameraView& view) {
-    const double metres_per_pixel = view.metres_per_pixel;
-    upload(mregion_layer, mregion_paint(overlay, metres_per_pixel));
-    const std::vector<float> bodies = moving_bodies(state, overlay);
+    upload(mregion_layer, mregion_paint(overlay, view.metres_per_pixel, true));
+    const std::vector<float> bodies = movable_bodies(state, overlay, true);
     moving_layer.upload(bodies.data(), bodies.size());
-    const ShadowGeometry shadow_geometry = moving_shadows(state);
+    const ShadowGeometry shadow_geometry = movable_shadows(state, true);
     shadow_layer.upload(shadow_geometry.floats().data(), shadow_geometry.floats().size());
     upload_text(view, overlay);
+  }
+
+  // Keeps the resting layer true to `state` and `overlay`: drawn again, without them, when bodies it
+  // holds moved or their mRegions changed, and from scratch for another view or other object goals.
+  void keep_resting_layer(View view_kind, const CameraView& view, const Overlay& overlay,
+                          const scenario::EnvironmentState& state) {
+    std::vector<std::pair<int, int>> goals;
+    for (const ObjectGoalOverlay& goal : overlay.object_goals) goals.emplace_back(goal.body, goal.region);
+    bool redraw = !resting || resting->view != view_kind || resting->view_projection != view.view_projection ||
+                  resting->goals != goals || resting->mregions.size() != overlay.mregions.size();
+    if (redraw) {
+      std::unique_ptr<GlFramebuffer> framebuffer = resting ? std::move(resting->framebuffer) : nullptr;
+      resting = RestingLayer{view_kind, view.view_projection, goals, {}, {}, std::vector<bool>(world.movable_bodies.size()),
+                             std::move(framebuffer)};
+    } else {
+      // A resting body the physics woke moves by rounding errors: what moves less than a hundredth of a
+      // pixel is drawn where the layer has it.
+      const double still = 0.01 * view.metres_per_pixel;
+      for (std::size_t i = 0; i < world.movable_bodies.size(); ++i) {
+        const Pose2& was = resting->poses[i], &now = state.movable_poses[i];
+        const double reach = world.movable_bodies[i].footprint.shape.bound_radius();
+        if (resting->moving[i] || ((was.position - now.position).norm() <= still && std::abs(was.yaw - now.yaw) * reach <= still)) continue;
+        resting->moving[i] = redraw = true;
+      }
+      for (std::size_t k = 0; k < overlay.mregions.size(); ++k) {
+        const MRegionOverlay &was = resting->mregions[k], &now = overlay.mregions[k];
+        if (now.body < 0 || resting->moving[static_cast<std::size_t>(now.body)] || same_to_the_eye(was, now, still)) continue;
+        resting->moving[static_cast<std::size_t>(now.body)] = redraw = true;
+      }
+    }
+    if (!redraw) return;
+    resting->poses = state.movable_poses;
+    resting->mregions = overlay.mregions;
+    draw_resting_layer(view, overlay, state);
+  }
+
+  static bool same_to_the_eye(const MRegionOverlay& a, const MRegionOverlay& b, double still) {
+    const auto& u = a.polygon.vertices;
+    const auto& v = b.polygon.vertices;
+    if (a.active != b.active || a.body != b.body || u.size() != v.size()) return false;
+    for (std::size_t i = 0; i < u.size(); ++i) {
+      if ((u[i] - v[i]).norm() > still) return false;
+    }
+    return true;
+  }
+
+  void draw_resting_layer(const CameraView& view, const Overlay& overlay, const scenario::EnvironmentState& state) {
+    upload(resting_mregion_layer, mregion_paint(overlay, view.metres_per_pixel, false));
+    const ShadowGeometry shadows = movable_shadows(state, false);
+    resting_shadow_layer.upload(shadows.floats().data(), shadows.floats().size(), GL_STATIC_DRAW);
+    const std::vector<float> bodies = movable_bodies(state, overlay, false);
+    resting_body_layer.upload(bodies.data(), bodies.size(), GL_STATIC_DRAW);
+    if (!resting->framebuffer) resting->framebuffer = std::make_unique<GlFramebuffer>(width, height);
+    resting->area = resting_area(view, overlay, state);
+    const GlFramebuffer& layer = *resting->framebuffer;
+    copy_framebuffer(background->framebuffer->id(), width, height, layer.id(), width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, layer.id());
+    glViewport(0, 0, width, height);
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glEnable(GL_BLEND);
+    // Colour blended as usual but kept premultiplied, alpha accumulated: the layer is "over" its contents.
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    draw_movable_things(resting_mregion_layer, resting_shadow_layer, resting_body_layer, view);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  }
+
+  // Flat things on the floor, depth tested against the walls and bodies already drawn but never written;
+  // then the bodies.
+  void draw_movable_things(const GlMesh& mregions, const GlMesh& shadows, const GlMesh& bodies, const CameraView& view) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    draw_flat(mregions, view.view_projection);
+    draw_shadows(shadows, view);
+    glDepthMask(GL_TRUE);
+    draw_lit(bodies, view);
+    glDisable(GL_DEPTH_TEST);
+  }
+
+  // The pixels the resting bodies, their shadows and mRegions may cover (a few pixels more for edges
+  // and rounding): a frame lays only that part of the layer, so a world of few bodies pays for few pixels.
+  PixelArea resting_area(const CameraView& view, const Overlay& overlay, const scenario::EnvironmentState& state) const {
+    Eigen::AlignedBox2f box;
+    const auto add = [&](const Vec2& p, double z) {
+      box.extend(view.to_pixels(Vector3f(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(z))));
+    };
+    for (std::size_t i = 0; i < world.movable_bodies.size(); ++i) {
+      if (resting->moving[i]) continue;
+      const scenario::MovableBody& body = world.movable_bodies[i];
+      const geometry::Rect footprint = geometry::bounds(body.footprint.shape, state.movable_poses[i]);
+      const geometry::Rect shadow = ShadowGeometry::reach(footprint, body.height);
+      for (const auto& [r, z] : {std::pair{shadow, 0.0}, std::pair{footprint, body.height}}) {
+        for (double x : {r.min.x(), r.max.x()}) {
+          for (double y : {r.min.y(), r.max.y()}) add({x, y}, z);
+        }
+      }
+    }
+    for (const MRegionOverlay& m : overlay.mregions) {
+      if (m.body < 0 || resting->moving[static_cast<std::size_t>(m.body)]) continue;
+      for (const Vec2& v : m.polygon.vertices) add(v, 0.0);
+    }
+    if (box.isEmpty()) return {};
+    constexpr float kMargin = 4.0f;  // px: edges drawn half their width outside, rounding
+    const auto clamp = [](float v, int most) { return std::clamp(static_cast<int>(std::floor(v)), 0, most); };
+    // Pixel rows go downwards, OpenGL's upwards.
+    return {clamp(box.min().x() - kMargin, width), clamp(static_cast<float>(height) - box.max().y() - kMargin, height),
+            clamp(box.max().x() + kMargin + 1, width), clamp(static_cast<float>(height) - box.min().y() + kMargin + 1, height)};
+  }
+
+  // The resting layer over the frame, with its depth, where it has something.
+  void lay_resting_layer() {
+    const PixelArea& area = resting->area;
+    if (area.empty()) return;
+    const GlFramebuffer& layer = *resting->framebuffer;
+    copy_framebuffer_area(layer.id(), frame->id(), area, GL_DEPTH_BUFFER_BIT);
+    glBindFramebuffer(GL_FRAMEBUFFER, frame->id());
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(area.x0, area.y0, area.x1 - area.x0, area.y1 - area.y0);
+    layer_program.use();
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, layer.color_texture());
+    glUniform1i(layer_program.uniform("layer"), 0);
+    frame_quad.draw(GL_TRIANGLE_STRIP);
+    glDisable(GL_SCISSOR_TEST);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   }
 
   void draw_shadows(const GlMesh& layer, const CameraView& view) {
@@ -595,24 +758,15 @@ struct Renderer::Impl {
     context->make_current();
     const CameraView& view = camera(view_kind, overlay);
     const GlFramebuffer& scene = static_scene(view_kind, view, overlay);
+    keep_resting_layer(view_kind, view, overlay, state);
     upload_layers(state, overlay, view);
 
     if (!frame) frame = std::make_unique<GlFramebuffer>(width, height);
     copy_framebuffer(scene.id(), width, height, frame->id(), width, height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT,
                      GL_NEAREST);
-    glBindFramebuffer(GL_FRAMEBUFFER, frame->id());
     glViewport(0, 0, width, height);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-
-    // Flat things on the floor: depth tested against the walls in the copied depth, never written.
-    glEnable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    draw_flat(mregion_layer, view.view_projection);
-    draw_shadows(shadow_layer, view);
-    glDepthMask(GL_TRUE);
-    draw_lit(moving_layer, view);
-    glDisable(GL_DEPTH_TEST);
+    lay_resting_layer();
+    draw_movable_things(mregion_layer, shadow_layer, moving_layer, view);
 
     const Matrix4f pixels = pixel_transform(width, height);
     draw_flat(panel_layer, pixels);

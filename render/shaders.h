@@ -1,5 +1,5 @@
 #pragma once
-// GLSL 3.30 core sources of the renderer's four programs.
+// GLSL 3.30 core sources of the renderer's five programs.
 
 namespace physltl::render::shaders {
 
@@ -91,5 +91,20 @@ uniform sampler2D atlas;
 uniform vec4 color;
 out vec4 fragment;
 void main() { fragment = vec4(color.rgb, color.a * texture(atlas, uv).r); })";
+
+// A layer drawn with its colours premultiplied by alpha, laid over the frame pixel for pixel.
+inline constexpr const char* kLayerVertex = R"(#version 330 core
+layout(location = 0) in vec2 corner;  // of the whole frame, -1..1
+out vec2 uv;
+void main() {
+  uv = 0.5 * corner + 0.5;
+  gl_Position = vec4(corner, 0.0, 1.0);
+})";
+
+inline constexpr const char* kLayerFragment = R"(#version 330 core
+in vec2 uv;
+uniform sampler2D layer;
+out vec4 fragment;
+void main() { fragment = texture(layer, uv); })";
 
 }  // namespace physltl::render::shaders

@@ -191,6 +191,30 @@ TEST(Renderer, MovesTheRobotWithTheState) {
   EXPECT_GT(difference.fraction_beyond, 0.005);
 }
 
+// A frame lays the resting bodies drawn once over the background and draws what moved since: the same
+// picture as drawing every body, for a body that moved after the first frame and for one nudged by a
+// rounding error (drawn where it rested).
+TEST(Renderer, ABodyThatMovedSinceTheFirstFrameIsDrawnAsAFreshRendererDrawsIt) {
+  const scenario::World world = paper_world("ordered");
+  Renderer renderer(world, kGoldenWidth, kGoldenHeight);
+  EnvironmentState state = EnvironmentState::initial(world);
+  const Image first = renderer.draw(state, test::mregions_around_boxes(world, 0.5, 2), View::kTop);
+
+  EnvironmentState nudged = state;
+  nudged.movable_poses[1].position.x() += 1e-12;
+  EXPECT_EQ(encode_png(renderer.draw(nudged, test::mregions_around_boxes(world, 0.5, 2), View::kTop)), encode_png(first));
+
+  scenario::World moved_world = world;
+  moved_world.movable_bodies[0].footprint.pose.position.y() -= 1.0;
+  state.movable_poses[0] = moved_world.movable_bodies[0].footprint.pose;
+  const Overlay overlay = test::mregions_around_boxes(moved_world, 0.5, 2);
+  const Image moved = renderer.draw(state, overlay, View::kTop);
+  EXPECT_GT(compare_images(first, moved, {}).fraction_beyond, 0.005);
+  Renderer fresh(world, kGoldenWidth, kGoldenHeight);
+  const Comparison difference = compare_images(fresh.draw(state, overlay, View::kTop), moved, {});
+  EXPECT_TRUE(difference.within({})) << difference.fraction_beyond << " beyond, largest " << difference.largest_difference;
+}
+
 TEST(Renderer, RejectsAStateOfAnotherWorld) {
   const scenario::World world = paper_world("ordered");
   Renderer renderer(world, 64, 48);

@@ -24,13 +24,16 @@ class Sequence {
 
 Overlay mregions_around_boxes(const scenario::World& world, double depth, int active_per_box) {
   Overlay overlay;
-  for (const scenario::MovableBody& body : world.movable_bodies) {
+  for (std::size_t b = 0; b < world.movable_bodies.size(); ++b) {
+    const scenario::MovableBody& body = world.movable_bodies[b];
     const Vec2 c = body.footprint.pose.position, h = body.footprint.shape.half_extents();
     const Rect sides[4] = {{{c.x() - h.x() - depth, c.y() - h.y()}, {c.x() - h.x(), c.y() + h.y()}},
                            {{c.x() + h.x(), c.y() - h.y()}, {c.x() + h.x() + depth, c.y() + h.y()}},
                            {{c.x() - h.x(), c.y() - h.y() - depth}, {c.x() + h.x(), c.y() - h.y()}},
                            {{c.x() - h.x(), c.y() + h.y()}, {c.x() + h.x(), c.y() + h.y() + depth}}};
-    for (int i = 0; i < 4; ++i) overlay.mregions.push_back({geometry::Polygon::from_rect(sides[i]), i < active_per_box});
+    for (int i = 0; i < 4; ++i) {
+      overlay.mregions.push_back({geometry::Polygon::from_rect(sides[i]), i < active_per_box, static_cast<int>(b)});
+    }
   }
   return overlay;
 }

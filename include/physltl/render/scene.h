@@ -21,6 +21,7 @@ struct Color {
 struct MRegionOverlay {
   geometry::Polygon polygon;
   bool active = false;
+  int body = -1;  // the movable body whose mRegion it is (World order); -1: drawn as if that body moved
 };
 
 struct SegmentOverlay {

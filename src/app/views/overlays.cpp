@@ -14,7 +14,7 @@ std::vector<render::MRegionOverlay> mregion_overlays(const knowledge::AbstractKn
     const geometry::Pose2& pose = state.movable_poses.at(i);
     for (const knowledge::MRegionTemplate& m : knowledge.movable_bodies[i].mregions) {
       overlays.push_back({geometry::Polygon::from_box(knowledge::mregion_at(m, pose)),
-                          kappa.bodies.at(i).active_faces.contains(m.face)});
+                          kappa.bodies.at(i).active_faces.contains(m.face), static_cast<int>(i)});
     }
   }
   return overlays;
