@@ -172,6 +172,28 @@ TEST(Bench, SweepMeasuresEveryValueOnTheSameSeedsAndFitsALine) {
   }
 }
 
+// Peak memory only a process of its own can measure: each value's first seed again as the main job.
+TEST(Bench, SweepGivesEachValuesPeakMemoryAndPartsFromARunInAProcessOfItsOwn) {
+  const fs::path out = fresh_out_dir();
+  const Result r = run("bench " + kSource + "/scenarios/warehouse.lua --sweep boxes=50,1000 --runs 1 --seed 1 --out " +
+                       out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("peak_MB"), std::string::npos) << r.out;
+  const auto j = nlohmann::json::parse(slurp(out / "warehouse-sweep-boxes" / "sweep.json"));
+  const auto& points = j["planners"][0]["points"];
+  ASSERT_EQ(points.size(), 2u);
+  for (const auto& point : points) {
+    const auto& own = point["own_process"];
+    ASSERT_EQ(own["solved"], true) << point;
+    for (const char* part : {"prepare", "search", "replay", "write_plan"}) EXPECT_GT(own["parts_s"][part].get<double>(), 0.0) << part;
+  }
+  // A thousand boxes' world and its preparation take more than fifty boxes'; the figures are the
+  // processes' own, not the bench's (which holds both worlds).
+  EXPECT_GT(points[1]["own_process"]["peak_memory_mb"].get<double>(), points[0]["own_process"]["peak_memory_mb"].get<double>() + 5);
+  const auto bench = nlohmann::json::parse(slurp(out / "warehouse-boxes-1000" / "bench.json"));
+  EXPECT_EQ(bench["planners"][0]["own_process"], points[1]["own_process"]);
+}
+
 TEST(Bench, ABadSweepIsRefusedBeforeAnyRun) {
   const fs::path out = fresh_out_dir();
   const std::string bench = "bench " + kSource + "/scenarios/rooms_n.lua --runs 1 --out " + out.string();

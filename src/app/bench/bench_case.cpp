@@ -103,6 +103,24 @@ std::vector<CaseUnits> case_units(const std::vector<std::unique_ptr<BenchCase>>&
   return units;
 }
 
+void run_sweeps_in_own_processes(const std::vector<ScenarioEntry>& entries, const CampaignSettings& settings,
+                                 const std::vector<std::unique_ptr<BenchCase>>& cases) {
+  for (const auto& c : cases) {
+    if (!entries[c->entry].sweep) continue;
+    for (PlannerRuns& runs : c->results.planners) {
+      runs.own_process = run_in_own_process({.scenario_file = entries[c->entry].path,
+                                             .settings = c->results.settings,
+                                             .planner = runs.planner->name,
+                                             .seed = c->results.first_seed,
+                                             .time_limit_s = c->world.planner.time_limit,
+                                             .threads = runs.threads,
+                                             .improve = settings.improve,
+                                             .parameters = settings.parameters,
+                                             .uncertainty = settings.uncertainty});
+    }
+  }
+}
+
 CampaignResults collect_results(const std::vector<ScenarioEntry>& entries,
                                 const std::vector<std::unique_ptr<BenchCase>>& cases, const std::vector<Unit>& units,
                                 const std::map<size_t, UnitRecord>& records) {

@@ -47,6 +47,11 @@ struct BenchCase {
 std::vector<std::unique_ptr<BenchCase>> load_cases(const std::vector<ScenarioEntry>& entries,
                                                    const CampaignSettings& settings);
 
+// A sweep's peak memory: for every swept case and planner, the first seed's run again as the main job in
+// a process of its own (PlannerRuns::own_process). Throws Interrupted on Ctrl-C.
+void run_sweeps_in_own_processes(const std::vector<ScenarioEntry>& entries, const CampaignSettings& settings,
+                                 const std::vector<std::unique_ptr<BenchCase>>& cases);
+
 // The cases as the campaign's units see them.
 std::vector<CaseUnits> case_units(const std::vector<std::unique_ptr<BenchCase>>& cases);
 

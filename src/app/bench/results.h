@@ -2,6 +2,7 @@
 // What `bench` measured: one record per planner and seed, and their summary, per case and per campaign
 // (views/bench_results.h shows them).
 
+#include "own_process_run.h"
 #include "physltl/planning/registry.h"
 
 #include <cstdint>
@@ -46,6 +47,8 @@ struct PlannerRuns {
   const planning::PlannerEntry* planner = nullptr;
   int threads = 1;
   std::vector<BenchRun> runs;  // one per seed, in seed order
+  // A sweep's: the first seed's run again, as the main job in a process of its own (its peak memory).
+  std::optional<OwnProcessRun> own_process;
 };
 
 struct BenchResults {

@@ -139,6 +139,7 @@ int run_whole(const BenchArgs& args, const std::vector<ScenarioEntry>& entries, 
     std::cerr << "physltl-studio: interrupted; nothing written\n";
     return kExitInterrupted;
   }
+  run_sweeps_in_own_processes(entries, settings, cases);
   const CampaignResults results = collect_results(entries, cases, units, records);
   // --quiet prints only errors; the files are written all the same.
   std::ostringstream silenced;

@@ -1,5 +1,5 @@
 #pragma once
-// The process's peak resident memory so far. A process's peak never goes down, so it measures one run
+// This program's peak resident memory so far. A process's peak never goes down, so it measures one run
 // only in a process of its own (the main job, or a run that bench starts as one).
 
 namespace physltl::app {

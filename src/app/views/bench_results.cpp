@@ -113,6 +113,16 @@ std::map<std::string, std::string> planner_settings(const PlannerRuns& p) {
 
 }  // namespace
 
+json own_process_json(const std::optional<OwnProcessRun>& run) {
+  if (!run) return nullptr;
+  if (!run->solved) return {{"solved", false}, {"peak_memory_mb", nullptr}, {"parts_s", nullptr}};
+  const PartTimes& t = run->parts;
+  return {{"solved", true},
+          {"peak_memory_mb", run->peak_memory_mb},
+          {"parts_s", {{"prepare", t.prepare_s}, {"search", t.search_s}, {"replay", t.replay_s}, {"improve", t.improve_s},
+                       {"write_plan", t.write_plan_s}}}};
+}
+
 json bench_json(const BenchResults& r) {
   json planners = json::array();
   for (const auto& p : r.planners) {
@@ -165,6 +175,7 @@ json bench_json(const BenchResults& r) {
                         {"path_length_median_m", s.path_length_median_m},
                         {"robustness_mean", s.robustness_mean ? json(*s.robustness_mean) : json(nullptr)},
                         {"settings", planner_settings(p)},
+                        {"own_process", own_process_json(p.own_process)},
                         {"per_run", std::move(runs)}});
   }
   const auto ratio = ratio_of_medians(r);

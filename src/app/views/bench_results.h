@@ -14,6 +14,8 @@ namespace physltl::app {
 
 std::string bench_table(const BenchResults& results);
 nlohmann::ordered_json bench_json(const BenchResults& results);
+// A sweep's run in a process of its own (PlannerRuns::own_process): null without one.
+nlohmann::ordered_json own_process_json(const std::optional<OwnProcessRun>& run);
 // bench.png: each planner's run times (log scale) and success.
 render::Image bench_chart(const BenchResults& results);
 // host and cpu_info describe the machine; they are the caller's to find out.

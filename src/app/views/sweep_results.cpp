@@ -1,5 +1,6 @@
 #include "sweep_results.h"
 
+#include "bench_results.h"
 #include "physltl/render/chart.h"
 
 #include "common/statistics.h"
@@ -88,16 +89,18 @@ std::string sweep_table(const Sweep& sweep) {
                                  first.first_seed + static_cast<std::uint64_t>(first.runs) - 1);
   for (size_t p = 0; p < first.planners.size(); ++p) {
     const PlannerSweep planner = planner_sweep(sweep, p);
-    text += fmt::format("{:<12} {:>8} {:>7} {:>9} {:>7} {:>13} {:>8}\n", planner_label(first, first.planners[p]),
-                        sweep.key, "solved", "median_s", "growth", "propagations", "us/prop");
+    text += fmt::format("{:<12} {:>8} {:>7} {:>9} {:>7} {:>13} {:>8} {:>8}\n", planner_label(first, first.planners[p]),
+                        sweep.key, "solved", "median_s", "growth", "propagations", "us/prop", "peak_MB");
     double previous = 0.0;
     for (size_t i = 0; i < sweep.points.size(); ++i) {
       const SweepPoint& point = sweep.points[i];
       const Row& r = planner.rows[i];
       const std::string growth = previous > 0.0 ? fmt::format("{:.2f}", r.summary.median_s / previous) : "-";
-      text += fmt::format("{:<12} {:>8} {:>7} {:>9.3f} {:>7} {:>13.0f} {:>8.1f}\n", "", point.value,
+      const std::optional<OwnProcessRun>& own = point.results.planners[p].own_process;
+      const std::string peak = own && own->solved ? fmt::format("{:.0f}", own->peak_memory_mb) : "-";
+      text += fmt::format("{:<12} {:>8} {:>7} {:>9.3f} {:>7} {:>13.0f} {:>8.1f} {:>8}\n", "", point.value,
                           fmt::format("{}/{}", r.summary.solved, point.results.planners[p].runs.size()),
-                          r.summary.median_s, growth, r.propagations_median, r.microseconds_per_propagation);
+                          r.summary.median_s, growth, r.propagations_median, r.microseconds_per_propagation, peak);
       previous = r.summary.median_s;
     }
     if (const auto& fit = planner.line) {
@@ -106,7 +109,8 @@ std::string sweep_table(const Sweep& sweep) {
                           fit->largest_deviation);
     }
   }
-  text += "growth: the median over the previous value's; us/prop: wall time over all propagations\n";
+  text += "growth: the median over the previous value's; us/prop: wall time over all propagations; peak_MB: the\n"
+          "first seed's run again as the main job in a process of its own, its peak memory\n";
   return text;
 }
 
@@ -124,7 +128,8 @@ json sweep_json(const Sweep& sweep) {
                       {"median_s", r.summary.median_s},
                       {"times_s", r.summary.times_s},
                       {"propagations_median", r.propagations_median},
-                      {"microseconds_per_propagation", r.microseconds_per_propagation}});
+                      {"microseconds_per_propagation", r.microseconds_per_propagation},
+                      {"own_process", own_process_json(sweep.points[i].results.planners[p].own_process)}});
     }
     json fit = nullptr;
     if (const auto& line = planner.line) {

@@ -1,0 +1,41 @@
+#pragma once
+// One run of the main job in a process of its own, for what only a whole process can say: its peak
+// memory (a process's peak never goes down, so runs sharing one process would each report the largest
+// before them) and what each part of the run took (report.json's times_s).
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace physltl::app {
+
+struct OwnProcessRequest {
+  std::string scenario_file;
+  std::vector<std::string> settings;  // key=value, each given as --set
+  std::string planner;
+  std::uint64_t seed = 0;
+  double time_limit_s = 0.0;
+  int threads = 1;
+  int improve = 0;
+  std::map<std::string, std::string> parameters;  // the planners' parameters, each given as --NAME VALUE
+  std::optional<std::string> uncertainty;
+};
+
+struct PartTimes {
+  double prepare_s = 0.0, search_s = 0.0, replay_s = 0.0, improve_s = 0.0, write_plan_s = 0.0;
+};
+
+struct OwnProcessRun {
+  bool solved = false;
+  double peak_memory_mb = 0.0;  // of the whole process, loading the scenario included
+  PartTimes parts;              // solved runs only
+};
+
+// Runs this program's main job as a child process (writing into a temporary folder, removed after) and
+// reads its report.json. Throws Interrupted when the child was interrupted (Ctrl-C reaches both), and
+// std::runtime_error when it could not run or wrote no report.
+OwnProcessRun run_in_own_process(const OwnProcessRequest& request);
+
+}  // namespace physltl::app
