@@ -148,8 +148,10 @@ FreeSpace::FreeSpace(std::vector<Polygon> obstacles, const Rect& bounds, const D
     for (size_t k = 0; k < vs.size(); ++k) {
       const Vec2& v = vs[k];
       if (!bounds_.contains(v)) continue;
-      const bool buried = std::any_of(obstacles_.begin(), obstacles_.end(), [&](const Polygon& other) {
-        return &other != &o && enters(v, v, other);
+      // An obstacle that holds v has bounds that hold it, so it is among those of v's cell.
+      const std::vector<int>& near = cells_[grid_.index(grid_.column(v.x()), grid_.row(v.y()))];
+      const bool buried = std::any_of(near.begin(), near.end(), [&](int other) {
+        return &obstacles_[static_cast<size_t>(other)] != &o && enters(v, v, obstacles_[static_cast<size_t>(other)]);
       });
       if (buried) continue;
       corners_.push_back(v);
