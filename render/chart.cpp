@@ -95,20 +95,37 @@ LogAxis log_axis(double low, double high, double top, double bottom) {
   return {std::floor(std::log10(low)), std::ceil(std::log10(high)), top, bottom};
 }
 
-std::string seconds_label(double decade) {
+std::string decade_label(double decade, const char* unit) {
   char text[32];
-  const double s = std::pow(10.0, decade);
-  std::snprintf(text, sizeof text, s >= 1.0 ? "%.0f s" : "%g s", s);
+  const double v = std::pow(10.0, decade);
+  std::snprintf(text, sizeof text, v >= 1.0 ? "%.0f %s" : "%g %s", v, unit);
   return text;
 }
 
-void draw_time_axis(Canvas& canvas, const LogAxis& axis, int left, int right) {
+void draw_log_axis(Canvas& canvas, const LogAxis& axis, int left, int right, const char* unit) {
   for (double d = axis.low_decade; d <= axis.high_decade + 1e-9; ++d) {
     const double y = axis.y(std::pow(10.0, d));
     canvas.rect(left, static_cast<int>(y), right, static_cast<int>(y), kGrid);
-    canvas.text(seconds_label(d), left - 6, y - canvas.line_height() / 2, kInk, 1.0);
+    canvas.text(decade_label(d, unit), left - 6, y - canvas.line_height() / 2, kInk, 1.0);
   }
   canvas.rect(left, static_cast<int>(axis.top), left, static_cast<int>(axis.bottom), kInk);
+}
+
+void draw_time_axis(Canvas& canvas, const LogAxis& axis, int left, int right) { draw_log_axis(canvas, axis, left, right, "s"); }
+
+// One line per planner through its values (those above 0) at x_of(k), on `axis`.
+template <typename XOf>
+void draw_sweep_lines(Canvas& canvas, const LogAxis& axis, const std::vector<SweepLine>& planners,
+                      std::vector<double> SweepLine::*values, const XOf& x_of) {
+  for (std::size_t i = 0; i < planners.size(); ++i) {
+    const Colour& c = kSeries[i % kSeries.size()];
+    const std::vector<double>& m = planners[i].*values;
+    for (std::size_t k = 0; k < m.size(); ++k) {
+      if (m[k] <= 0.0) continue;
+      if (k > 0 && m[k - 1] > 0.0) canvas.line(x_of(k - 1), axis.y(m[k - 1]), x_of(k), axis.y(m[k]), c);
+      canvas.dot(x_of(k), axis.y(m[k]), 4, c);
+    }
+  }
 }
 
 double quantile(std::vector<double> sorted, double q) {
@@ -159,8 +176,16 @@ Image time_box_plot(const std::string& title, const std::vector<TimeSeries>& pla
 
 Image sweep_chart(const std::string& title, const std::string& key, const std::vector<std::string>& values,
                   const std::vector<SweepLine>& planners) {
-  constexpr int kWidth = 640, kLeft = 70, kRight = 160, kTop = 40, kPlotHeight = 340;
-  Canvas canvas(kWidth, kTop + kPlotHeight + 60);
+  constexpr int kWidth = 640, kLeft = 70, kRight = 160, kTop = 40, kPlotHeight = 340, kMemoryHeight = 200;
+  double memory_low = 1e300, memory_high = 0;
+  for (const auto& p : planners) {
+    for (double m : p.peak_memory_mb) {
+      if (m > 0.0) memory_low = std::min(memory_low, m), memory_high = std::max(memory_high, m);
+    }
+  }
+  const bool memory = memory_high > 0.0;
+  const int memory_top = kTop + kPlotHeight + 60 + 30;
+  Canvas canvas(kWidth, memory ? memory_top + kMemoryHeight + 40 : kTop + kPlotHeight + 60);
   canvas.text(title, kWidth / 2.0, 10, kInk, 0.5);
   double low = 1e300, high = 0;
   for (const auto& p : planners) {
@@ -174,13 +199,16 @@ Image sweep_chart(const std::string& title, const std::string& key, const std::v
   };
   for (std::size_t k = 0; k < values.size(); ++k) canvas.text(values[k], x_of(k), kTop + kPlotHeight + 8, kInk, 0.5);
   canvas.text(key + " (median time of each value)", (kLeft + kWidth - kRight) / 2.0, kTop + kPlotHeight + 8 + canvas.line_height(), kInk, 0.5);
+  draw_sweep_lines(canvas, axis, planners, &SweepLine::medians_s, x_of);
+  if (memory) {
+    canvas.text("peak memory of a run in a process of its own", kWidth / 2.0, memory_top - 24, kInk, 0.5);
+    const LogAxis memory_axis = log_axis(memory_low, memory_high, memory_top, memory_top + kMemoryHeight);
+    draw_log_axis(canvas, memory_axis, kLeft, kWidth - kRight, "MB");
+    for (std::size_t k = 0; k < values.size(); ++k) canvas.text(values[k], x_of(k), memory_top + kMemoryHeight + 8, kInk, 0.5);
+    draw_sweep_lines(canvas, memory_axis, planners, &SweepLine::peak_memory_mb, x_of);
+  }
   for (std::size_t i = 0; i < planners.size(); ++i) {
     const Colour& c = kSeries[i % kSeries.size()];
-    const auto& m = planners[i].medians_s;
-    for (std::size_t k = 0; k < m.size(); ++k) {
-      if (k > 0) canvas.line(x_of(k - 1), axis.y(m[k - 1]), x_of(k), axis.y(m[k]), c);
-      canvas.dot(x_of(k), axis.y(m[k]), 4, c);
-    }
     const double legend_y = kTop + 10 + i * (canvas.line_height() + 4);
     canvas.rect(kWidth - kRight + 14, static_cast<int>(legend_y + 4), kWidth - kRight + 28, static_cast<int>(legend_y + 10), c);
     canvas.text(planners[i].name, kWidth - kRight + 34, legend_y, kInk);

@@ -24,6 +24,13 @@ TEST(ChartGolden, SweepChart) {
   EXPECT_TRUE(matches_golden(image, "chart_sweep"));
 }
 
+// With peak memories, a second panel below; a value whose run found no plan (0) is left out of its line.
+TEST(ChartGolden, SweepChartWithPeakMemory) {
+  const Image image = sweep_chart("warehouse: median time against boxes", "boxes", {"200", "800", "3200"},
+                                  {{"knowledge", {0.02, 0.08, 0.5}, {69.0, 77.6, 143.5}}, {"baseline", {0.05, 0.4, 4.0}, {70.0, 0.0, 160.0}}});
+  EXPECT_TRUE(matches_golden(image, "chart_sweep_memory"));
+}
+
 TEST(Chart, ABoxPlotWidensWithEachPlannerAndDrawsTheSameForTheSameNumbers) {
   const Image one = time_box_plot("t", {kPlanners[0]}, 10.0);
   const Image three = time_box_plot("t", kPlanners, 10.0);

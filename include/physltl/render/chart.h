@@ -23,9 +23,12 @@ Image time_box_plot(const std::string& title, const std::vector<TimeSeries>& pla
 struct SweepLine {
   std::string name;
   std::vector<double> medians_s;  // one per swept value
+  // One per swept value, or none: the peak memory of a run in a process of its own (0 where unknown).
+  std::vector<double> peak_memory_mb;
 };
 
-// Median time (log scale) against the swept values (evenly spaced, labelled as given), one line per planner.
+// Median time (log scale) against the swept values (evenly spaced, labelled as given), one line per planner;
+// below it, when some line has them, the peak memories (log scale).
 Image sweep_chart(const std::string& title, const std::string& key, const std::vector<std::string>& values,
                   const std::vector<SweepLine>& planners);
 

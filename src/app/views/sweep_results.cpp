@@ -154,8 +154,12 @@ render::Image sweep_chart(const Sweep& sweep) {
   const BenchResults& first = sweep.points.front().results;
   std::vector<render::SweepLine> lines;
   for (size_t p = 0; p < first.planners.size(); ++p) {
-    render::SweepLine line{planner_label(first, first.planners[p]), {}};
-    for (const auto& point : sweep.points) line.medians_s.push_back(summarize(point.results.planners[p], point.results.time_limit_s).median_s);
+    render::SweepLine line{planner_label(first, first.planners[p]), {}, {}};
+    for (const auto& point : sweep.points) {
+      const PlannerRuns& runs = point.results.planners[p];
+      line.medians_s.push_back(summarize(runs, point.results.time_limit_s).median_s);
+      line.peak_memory_mb.push_back(runs.own_process && runs.own_process->solved ? runs.own_process->peak_memory_mb : 0.0);
+    }
     lines.push_back(std::move(line));
   }
   std::vector<std::string> values;
