@@ -1,6 +1,7 @@
 #include "own_process_run.h"
 
 #include "common/bad_input.h"
+#include "common/stop_signal.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -10,6 +11,9 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <thread>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -43,9 +47,16 @@ int run_child(const std::vector<std::string>& args) {
   const int spawned = posix_spawn(&child, "/proc/self/exe", &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   if (spawned != 0) throw std::runtime_error(fmt::format("could not start a run in a process of its own (error {})", spawned));
+  // Ctrl-C reaches the child with this process; a stop that reached only this process (SIGTERM to it
+  // alone) is passed on, so the child ends within the time rule's second too.
   int status = 0;
-  while (waitpid(child, &status, 0) < 0) {
-    if (errno != EINTR) throw std::runtime_error("lost the run in a process of its own");
+  bool passed_on = false;
+  while (true) {
+    const pid_t ended = waitpid(child, &status, WNOHANG);
+    if (ended == child) break;
+    if (ended < 0 && errno != EINTR) throw std::runtime_error("lost the run in a process of its own");
+    if (stop_received() && !passed_on) passed_on = kill(child, SIGINT) == 0;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
   return WEXITSTATUS(status);
