@@ -168,24 +168,38 @@ class Validator {
     }
   }
 
-  // Pairs of bodies whose bounds meet, each pair once with the later body first: a sweep along x, so that
-  // thousands of bodies cost what their neighbours cost, not every pair.
   template <class Bodies>
-  static std::vector<std::pair<size_t, size_t>> close_pairs(const Bodies& bodies) {
+  static std::vector<geometry::Rect> bounds_of(const Bodies& bodies) {
     std::vector<geometry::Rect> bounds;
-    std::vector<size_t> order(bodies.size());
-    for (size_t i = 0; i < bodies.size(); ++i) {
-      bounds.push_back(geometry::bounds(bodies[i].footprint.shape, bodies[i].footprint.pose));
-      order[i] = i;
-    }
-    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return bounds[a].min.x() < bounds[b].min.x(); });
+    for (const auto& b : bodies) bounds.push_back(geometry::bounds(b.footprint.shape, b.footprint.pose));
+    return bounds;
+  }
+
+  // Pairs (i, j) of a body of `a` and one of `b` whose bounds meet, sorted: a sweep along x, so that
+  // thousands of bodies cost what their neighbours cost, not every pair. With `b` null, pairs within `a`,
+  // each once with the later body first.
+  static std::vector<std::pair<size_t, size_t>> close_pairs(const std::vector<geometry::Rect>& a,
+                                                            const std::vector<geometry::Rect>* b = nullptr) {
+    struct Item {
+      const geometry::Rect* bounds;
+      bool of_b;
+      size_t index;
+    };
+    std::vector<Item> items;
+    for (size_t i = 0; i < a.size(); ++i) items.push_back({&a[i], false, i});
+    for (size_t j = 0; b != nullptr && j < b->size(); ++j) items.push_back({&(*b)[j], true, j});
+    std::sort(items.begin(), items.end(), [](const Item& x, const Item& y) { return x.bounds->min.x() < y.bounds->min.x(); });
     std::vector<std::pair<size_t, size_t>> pairs;
-    for (size_t k = 0; k < order.size(); ++k) {
-      const geometry::Rect& a = bounds[order[k]];
-      for (size_t l = k + 1; l < order.size() && bounds[order[l]].min.x() <= a.max.x(); ++l) {
-        const geometry::Rect& b = bounds[order[l]];
-        if (b.min.y() > a.max.y() || b.max.y() < a.min.y()) continue;
-        pairs.push_back({std::max(order[k], order[l]), std::min(order[k], order[l])});
+    for (size_t k = 0; k < items.size(); ++k) {
+      const Item& x = items[k];
+      for (size_t l = k + 1; l < items.size() && items[l].bounds->min.x() <= x.bounds->max.x(); ++l) {
+        const Item& y = items[l];
+        if (y.bounds->min.y() > x.bounds->max.y() || y.bounds->max.y() < x.bounds->min.y()) continue;
+        if (b == nullptr) {
+          pairs.push_back({std::max(x.index, y.index), std::min(x.index, y.index)});
+        } else if (x.of_b != y.of_b) {
+          pairs.push_back(x.of_b ? std::pair{y.index, x.index} : std::pair{x.index, y.index});
+        }
       }
     }
     std::sort(pairs.begin(), pairs.end());  // reported in the order of the file
@@ -204,21 +218,22 @@ class Validator {
     const auto& fixed = world_.fixed_bodies;
     const auto& movable = world_.movable_bodies;
     for (const auto& f : fixed) check_name(f.name, f.where);
-    for (const auto& [i, j] : close_pairs(fixed)) {
+    for (const auto& m : movable) check_name(m.name, m.where);
+    const std::vector<geometry::Rect> fixed_bounds = bounds_of(fixed), movable_bounds = bounds_of(movable);
+    for (const auto& [i, j] : close_pairs(fixed_bounds)) {
       if (geometry::overlap(fixed[i].footprint, fixed[j].footprint, 1e-6)) {
         error(fixed[i].where, "fixed '" + fixed[i].name + "' overlaps fixed '" + fixed[j].name + "' (" +
                                   fixed[j].where.str() + ")");
       }
     }
-    for (const auto& m : movable) {
-      check_name(m.name, m.where);
-      for (const auto& f : fixed) {
-        if (geometry::overlap(m.footprint, f.footprint, 1e-6)) {
-          error(m.where, "movable '" + m.name + "' overlaps fixed '" + f.name + "' (" + f.where.str() + ")");
-        }
+    for (const auto& [i, j] : close_pairs(movable_bounds, &fixed_bounds)) {
+      const auto& m = movable[i];
+      const auto& f = fixed[j];
+      if (geometry::overlap(m.footprint, f.footprint, 1e-6)) {
+        error(m.where, "movable '" + m.name + "' overlaps fixed '" + f.name + "' (" + f.where.str() + ")");
       }
     }
-    for (const auto& [i, j] : close_pairs(movable)) {
+    for (const auto& [i, j] : close_pairs(movable_bounds)) {
       if (geometry::overlap(movable[i].footprint, movable[j].footprint, 1e-6)) {
         error(movable[i].where, "movable '" + movable[i].name + "' overlaps movable '" + movable[j].name + "' (" +
                                     movable[j].where.str() + ")");
