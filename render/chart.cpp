@@ -79,12 +79,13 @@ class Canvas {
   FontAtlas font_;
 };
 
-// A logarithmic time axis from the decade below the fastest to the decade above the slowest.
+// A logarithmic axis (of times, or of memory) from the decade below the least value to the decade above
+// the greatest.
 struct LogAxis {
   double low_decade, high_decade;  // log10 of the ends
   double top, bottom;              // pixels
-  double y(double seconds) const {
-    const double l = std::log10(std::max(seconds, 1e-9));
+  double y(double value) const {
+    const double l = std::log10(std::max(value, 1e-9));
     return bottom - (l - low_decade) / (high_decade - low_decade) * (bottom - top);
   }
 };

@@ -551,9 +551,14 @@ struct Renderer::Impl {
       }
     }
     if (!redraw) return;
+    try {
+      draw_resting_layer(view, overlay, state);
+    } catch (...) {
+      resting.reset();  // drawn for nothing it could record: drawn from scratch next time
+      throw;
+    }
     resting->poses = state.movable_poses;
     resting->mregions = overlay.mregions;
-    draw_resting_layer(view, overlay, state);
   }
 
   static bool same_to_the_eye(const MRegionOverlay& a, const MRegionOverlay& b, double still) {
@@ -764,7 +769,10 @@ struct Renderer::Impl {
     if (!frame) frame = std::make_unique<GlFramebuffer>(width, height);
     copy_framebuffer(scene.id(), width, height, frame->id(), width, height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT,
                      GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, frame->id());
     glViewport(0, 0, width, height);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     lay_resting_layer();
     draw_movable_things(mregion_layer, shadow_layer, moving_layer, view);
 

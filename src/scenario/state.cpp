@@ -23,10 +23,9 @@ bool EnvironmentState::at_rest() const {
 }
 
 bool EnvironmentState::operator==(const EnvironmentState& other) const {
-  const auto same_pose = [](const geometry::Pose2& a, const geometry::Pose2& b) { return a.position == b.position && a.yaw == b.yaw; };
   return robot_position == other.robot_position && robot_velocity == other.robot_velocity && robot_yaw == other.robot_yaw &&
          robot_turn_rate == other.robot_turn_rate && movable_velocities == other.movable_velocities &&
-         std::equal(movable_poses.begin(), movable_poses.end(), other.movable_poses.begin(), other.movable_poses.end(), same_pose);
+         movable_poses == other.movable_poses;
 }
 
 }  // namespace physltl::scenario

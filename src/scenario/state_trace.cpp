@@ -29,8 +29,7 @@ void StateTrace::record_body(const EnvironmentState& state, int body) {
   const auto b = static_cast<std::size_t>(body);
   const geometry::Pose2& pose = state.movable_poses[b];
   const Vec2& velocity = state.movable_velocities[b];
-  const geometry::Pose2& before = back_.movable_poses[b];
-  if (pose.position == before.position && pose.yaw == before.yaw && velocity == back_.movable_velocities[b]) return;
+  if (pose == back_.movable_poses[b] && velocity == back_.movable_velocities[b]) return;
   if (body_changes_[b].empty()) changed_bodies_.push_back(body);
   body_changes_[b].push_back(changes_.size());
   changes_.push_back({body, pose, velocity});
@@ -63,6 +62,7 @@ void StateTrace::push_back(const EnvironmentState& state) {
 }
 
 std::span<const StateTrace::BodyChange> StateTrace::changes(std::size_t i) const {
+  if (i >= size()) throw std::out_of_range("StateTrace: no such step");
   const std::size_t end = i + 1 < changes_begin_.size() ? changes_begin_[i + 1] : changes_.size();
   return std::span(changes_).subspan(changes_begin_[i], end - changes_begin_[i]);
 }

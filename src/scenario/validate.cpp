@@ -218,7 +218,6 @@ class Validator {
     const auto& fixed = world_.fixed_bodies;
     const auto& movable = world_.movable_bodies;
     for (const auto& f : fixed) check_name(f.name, f.where);
-    for (const auto& m : movable) check_name(m.name, m.where);
     const std::vector<geometry::Rect> fixed_bounds = bounds_of(fixed), movable_bounds = bounds_of(movable);
     for (const auto& [i, j] : close_pairs(fixed_bounds)) {
       if (geometry::overlap(fixed[i].footprint, fixed[j].footprint, 1e-6)) {
@@ -226,11 +225,17 @@ class Validator {
                                   fixed[j].where.str() + ")");
       }
     }
-    for (const auto& [i, j] : close_pairs(movable_bounds, &fixed_bounds)) {
+    // Each movable body's name, then the fixed bodies it overlaps, in the order of the file.
+    const std::vector<std::pair<size_t, size_t>> near_fixed = close_pairs(movable_bounds, &fixed_bounds);
+    auto pair = near_fixed.begin();
+    for (size_t i = 0; i < movable.size(); ++i) {
       const auto& m = movable[i];
-      const auto& f = fixed[j];
-      if (geometry::overlap(m.footprint, f.footprint, 1e-6)) {
-        error(m.where, "movable '" + m.name + "' overlaps fixed '" + f.name + "' (" + f.where.str() + ")");
+      check_name(m.name, m.where);
+      for (; pair != near_fixed.end() && pair->first == i; ++pair) {
+        const auto& f = fixed[pair->second];
+        if (geometry::overlap(m.footprint, f.footprint, 1e-6)) {
+          error(m.where, "movable '" + m.name + "' overlaps fixed '" + f.name + "' (" + f.where.str() + ")");
+        }
       }
     }
     for (const auto& [i, j] : close_pairs(movable_bounds)) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 namespace physltl::scenario {
 namespace {
 
@@ -61,10 +63,15 @@ TEST(StateTrace, TakesTheMoversOfAStepAndSortsTheirChangesByBody) {
   both.movable_poses[3].yaw = 0.5;
   both.movable_poses[0].yaw = 0.25;
   trace.push_back(both, std::vector<int>{3, 0});
+  trace.push_back(run[2], std::vector<int>{0, 2, 3});  // bodies 0 and 3 back, body 2 pushed
   ASSERT_EQ(trace.changes(1).size(), 2u);
   EXPECT_EQ(trace.changes(1)[0].body, 0);
   EXPECT_EQ(trace.changes(1)[1].body, 3);
-  EXPECT_EQ(trace[1], both);
+  EXPECT_EQ(trace[1], both);  // rebuilt, not the last state
+  EXPECT_EQ(trace.body_pose(3, 1).yaw, 0.5);
+  EXPECT_EQ(trace.body_pose(0, 1).yaw, 0.25);
+  EXPECT_EQ(trace[2], run[2]);
+  EXPECT_THROW(trace.changes(3), std::out_of_range);
 }
 
 TEST(StateTrace, APrefixIsTheFirstStatesAndGrowsOnItsOwn) {

@@ -16,6 +16,7 @@ inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y()
 struct Pose2 {
   Vec2 position = Vec2::Zero();
   double yaw = 0.0;  // radians, counter-clockwise from +x
+  friend bool operator==(const Pose2& a, const Pose2& b) { return a.position == b.position && a.yaw == b.yaw; }  // bit for bit
 };
 
 // An axis-aligned rectangle, e.g. the workspace bounds.

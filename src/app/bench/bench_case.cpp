@@ -108,11 +108,13 @@ void run_sweeps_in_own_processes(const std::vector<ScenarioEntry>& entries, cons
   for (const auto& c : cases) {
     if (!entries[c->entry].sweep) continue;
     for (PlannerRuns& runs : c->results.planners) {
+      // The main job's time limit covers its preparation, which bench made outside the units' limits.
       runs.own_process = run_in_own_process({.scenario_file = entries[c->entry].path,
+                                             .world_name = c->world.name,
                                              .settings = c->results.settings,
                                              .planner = runs.planner->name,
                                              .seed = c->results.first_seed,
-                                             .time_limit_s = c->world.planner.time_limit,
+                                             .time_limit_s = c->world.planner.time_limit + c->results.preparation_s,
                                              .threads = runs.threads,
                                              .improve = settings.improve,
                                              .parameters = settings.parameters,

@@ -13,6 +13,7 @@ namespace physltl::app {
 
 struct OwnProcessRequest {
   std::string scenario_file;
+  std::string world_name;             // the folder the main job writes into under its --out
   std::vector<std::string> settings;  // key=value, each given as --set
   std::string planner;
   std::uint64_t seed = 0;
@@ -34,8 +35,8 @@ struct OwnProcessRun {
 };
 
 // Runs this program's main job as a child process (writing into a temporary folder, removed after) and
-// reads its report.json. Throws Interrupted when the child was interrupted (Ctrl-C reaches both), and
-// std::runtime_error when it could not run or wrote no report.
-OwnProcessRun run_in_own_process(const OwnProcessRequest& request);
+// reads its report.json. Throws Interrupted when a stop came; nothing, with a warning on stderr naming
+// why, when the run failed (a fault of the child's: the benchmark's own figures stand).
+std::optional<OwnProcessRun> run_in_own_process(const OwnProcessRequest& request);
 
 }  // namespace physltl::app

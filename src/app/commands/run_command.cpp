@@ -153,11 +153,11 @@ void write_plan_files(const PlanningRun& run, const planning::ValidatedPlan& sol
   summary.uncertainty = &world.uncertainty;
   const auto started = std::chrono::steady_clock::now();
   write_json_file(out.path() / "plan.json", plan_json(summary));
-  RunCosts costs{.prepare_s = run.problem().preparation_s(run.planner()),
-                 .search_s = solution.result.stats.planning_time_s,
-                 .replay_s = solution.replay_s,
-                 .improve_s = solution.improvement ? solution.improvement->time_s : 0.0,
-                 .write_plan_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(),
+  RunCosts costs{.parts = {.prepare_s = run.problem().preparation_s(run.planner()),
+                           .search_s = solution.result.stats.planning_time_s,
+                           .replay_s = solution.replay_s,
+                           .improve_s = solution.improvement ? solution.improvement->time_s : 0.0,
+                           .write_plan_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()},
                  .peak_memory_mb = peak_memory_mb()};
   summary.costs = &costs;
   write_json_file(out.path() / "report.json", report_json(summary));

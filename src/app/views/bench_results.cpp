@@ -3,6 +3,7 @@
 #include "physltl/render/chart.h"
 #include "common/statistics.h"
 #include "planner_views.h"
+#include "report_files.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -116,11 +117,7 @@ std::map<std::string, std::string> planner_settings(const PlannerRuns& p) {
 json own_process_json(const std::optional<OwnProcessRun>& run) {
   if (!run) return nullptr;
   if (!run->solved) return {{"solved", false}, {"peak_memory_mb", nullptr}, {"parts_s", nullptr}};
-  const PartTimes& t = run->parts;
-  return {{"solved", true},
-          {"peak_memory_mb", run->peak_memory_mb},
-          {"parts_s", {{"prepare", t.prepare_s}, {"search", t.search_s}, {"replay", t.replay_s}, {"improve", t.improve_s},
-                       {"write_plan", t.write_plan_s}}}};
+  return {{"solved", true}, {"peak_memory_mb", run->peak_memory_mb}, {"parts_s", part_times_json(run->parts)}};
 }
 
 json bench_json(const BenchResults& r) {

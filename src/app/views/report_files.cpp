@@ -18,6 +18,11 @@ json point(const scenario::Vec2& p) { return {p.x(), p.y()}; }
 
 }  // namespace
 
+json part_times_json(const PartTimes& parts) {
+  return {{"prepare", parts.prepare_s}, {"search", parts.search_s}, {"replay", parts.replay_s}, {"improve", parts.improve_s},
+          {"write_plan", parts.write_plan_s}};
+}
+
 json report_json(const RunSummary& run) {
   const auto& r = run.result;
   const auto& reasoning = run.reasoning;
@@ -50,8 +55,7 @@ json report_json(const RunSummary& run) {
   };
   add_planner_keys(report, registry().report_keys(), account_of(run.planner, r.own.get(), run.world).report);
   if (run.costs != nullptr) {
-    report["times_s"] = {{"prepare", run.costs->prepare_s}, {"search", run.costs->search_s}, {"replay", run.costs->replay_s},
-                         {"improve", run.costs->improve_s}, {"write_plan", run.costs->write_plan_s}};
+    report["times_s"] = part_times_json(run.costs->parts);
     report["peak_memory_mb"] = run.costs->peak_memory_mb;
   }
   if (run.replay != nullptr) {
@@ -114,7 +118,7 @@ json plan_json(const RunSummary& run) {
     json bodies = json::array();
     for (const scenario::StateTrace::BodyChange& change : replay.states.changes(i)) {
       geometry::Pose2& before = poses[static_cast<std::size_t>(change.body)];
-      if (change.pose.position == before.position && change.pose.yaw == before.yaw) continue;  // only its speed changed
+      if (change.pose == before) continue;  // only its speed changed
       before = change.pose;
       json moved = pose_json(change.pose);
       moved.insert(moved.begin(), change.body);

@@ -271,8 +271,9 @@ class Search {
     if (cumulative_.end() - first_in_frontier > kMaxFrontierStates) {
       frontier_weight_ = *(cumulative_.end() - kMaxFrontierStates - 1);
     }
-    // Within a stage, a node further along the lead is progress too: such a stage takes more than a
-    // stall's expansions to cross, and widening there only spread the effort.
+    // Within a stage, fewer lead states left after the furthest node than ever in the stage is progress
+    // too: such a stage takes more than a stall's expansions to cross, and widening there only spread the
+    // effort. (The lead is recomputed, so a shorter new one counts as well; the least count only goes down.)
     const int left = static_cast<int>(lead.size()) - 1 - available_.back();
     if (left < fewest_lead_states_left_) {
       fewest_lead_states_left_ = left;
@@ -705,7 +706,8 @@ class Search {
   std::vector<bool> dropped_;             // per motion: no longer chosen but by a widened expansion
   std::vector<bool> primitive_tried_;     // per motion: the push primitive has grown from it
   long long expansions_since_progress_ = 0;
-  int fewest_lead_states_left_ = std::numeric_limits<int>::max();  // in the frontier's stage, after its furthest node
+  // The fewest lead states after the furthest node of the frontier's stage, over the leads of that stage.
+  int fewest_lead_states_left_ = std::numeric_limits<int>::max();
   bool widened_ = false;                  // the search has stalled at least once
   const std::vector<int>* current_lead_ = nullptr;
   const lookahead::Lookahead* lookahead_ = nullptr;   // the look-ahead the search follows, if any

@@ -108,6 +108,13 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
     result.improved = measures;
     ++result.accepted;
   }
+  // The candidates' replays made the improved plan's states as they checked it; the plan written is
+  // checked once more as any plan is, from the start against its recorded states, unless the deadline
+  // cuts that short (the candidate's own replay validated it then).
+  if (result.accepted > 0) {
+    Replay whole = planning::replay(problem.world, plan, problem.formula, problem.knowledge, {.mode = mode, .deadline = deadline});
+    if (whole.cut_short.empty()) replay = std::move(whole);
+  }
   result.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
 }

@@ -1,8 +1,10 @@
 #pragma once
 // The physics as the planners see it: each step checked by the knowledge layer's VALIDITYCHECKER under
-// the kappa of the state it started from, and kappa kept up to date by INFERENCE after each valid step,
-// redone only for the bodies a move can affect. Our tree growers and the OMPL propagator both step
-// through it, so every planner is held to the same rules.
+// the kappa of the state it started from, and kappa kept up to date by INFERENCE after each step, redone
+// only for the bodies a move can affect. Our tree growers, the OMPL propagator and the replay step through
+// it, so every planner is held to the same rules and the replay to the same checks. After an invalid step
+// too: the replay goes on past one to report the rest (a planner restores another state instead, and
+// pays for one body's inference).
 
 #include "physltl/knowledge/abstract_knowledge.h"
 #include "physltl/knowledge/kappa.h"
