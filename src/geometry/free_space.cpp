@@ -30,16 +30,25 @@ bool segments_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) 
   return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
 }
 
+// Per edge of a convex polygon, what counts as a rounding error of the side a point is on: 1e-9 of its
+// length (worked out once: the visibility tests ask it millions of times).
+std::vector<double> edge_margins(const Polygon& polygon) {
+  const auto& v = polygon.vertices;
+  std::vector<double> margins;
+  for (size_t i = 0; i < v.size(); ++i) margins.push_back(1e-9 * (v[i + 1 == v.size() ? 0 : i + 1] - v[i]).norm());
+  return margins;
+}
+
 // Whether some point of segment ab lies in the interior of the convex, counter-clockwise polygon, by more
-// than a rounding error: the part of the segment left of every edge (Cyrus-Beck) is not empty.
-bool enters(const Vec2& a, const Vec2& b, const Polygon& polygon) {
+// than a rounding error (`margins`, edge_margins of it): the part of the segment left of every edge
+// (Cyrus-Beck) is not empty.
+bool enters(const Vec2& a, const Vec2& b, const Polygon& polygon, const std::vector<double>& margins) {
   double lo = 0.0, hi = 1.0;
   const Vec2 d = b - a;
   const auto& v = polygon.vertices;
   for (size_t i = 0; i < v.size(); ++i) {
-    const Vec2 edge = v[(i + 1) % v.size()] - v[i];
-    const double margin = 1e-9 * edge.norm();
-    const double at_a = cross(edge, a - v[i]) - margin;  // > 0: a is inside this edge's half-plane
+    const Vec2 edge = v[i + 1 == v.size() ? 0 : i + 1] - v[i];
+    const double at_a = cross(edge, a - v[i]) - margins[i];  // > 0: a is inside this edge's half-plane
     const double slope = cross(edge, d);
     if (slope == 0.0) {
       if (at_a <= 0.0) return false;
@@ -124,6 +133,7 @@ FreeSpace::FreeSpace(std::vector<Polygon> obstacles, const Rect& bounds, const D
   for (Polygon& o : obstacles_) {
     if (o.signed_area() < 0) std::reverse(o.vertices.begin(), o.vertices.end());
     obstacle_bounds_.push_back(o.bounds());
+    obstacle_margins_.push_back(edge_margins(o));
   }
   // About one obstacle per cell.
   const Vec2 size = bounds_.size().cwiseMax(Vec2::Constant(1e-9));
@@ -151,7 +161,8 @@ FreeSpace::FreeSpace(std::vector<Polygon> obstacles, const Rect& bounds, const D
       // An obstacle that holds v has bounds that hold it, so it is among those of v's cell.
       const std::vector<int>& near = cells_[grid_.index(grid_.column(v.x()), grid_.row(v.y()))];
       const bool buried = std::any_of(near.begin(), near.end(), [&](int other) {
-        return &obstacles_[static_cast<size_t>(other)] != &o && enters(v, v, obstacles_[static_cast<size_t>(other)]);
+        const auto k = static_cast<size_t>(other);
+        return &obstacles_[k] != &o && enters(v, v, obstacles_[k], obstacle_margins_[k]);
       });
       if (buried) continue;
       corners_.push_back(v);
@@ -186,7 +197,7 @@ bool FreeSpace::free(const Vec2& a, const Vec2& b) const {
     if (r.max.x() < span.min.x() || r.min.x() > span.max.x() || r.max.y() < span.min.y() || r.min.y() > span.max.y()) {
       return false;
     }
-    return enters(a, b, obstacles_[static_cast<size_t>(i)]);
+    return enters(a, b, obstacles_[static_cast<size_t>(i)], obstacle_margins_[static_cast<size_t>(i)]);
   };
   // The cells the segment crosses, in order (Amanatides and Woo's traversal); an obstacle in several of
   // them is tested in each, which costs less than remembering which were.

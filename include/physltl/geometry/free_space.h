@@ -51,6 +51,7 @@ class FreeSpace {
 
   std::vector<Polygon> obstacles_;
   std::vector<Rect> obstacle_bounds_;
+  std::vector<std::vector<double>> obstacle_margins_;  // per obstacle, per edge: the rounding error of a side test
   // The obstacles overlapping each cell of a uniform grid over the bounds: a segment is tested against the
   // obstacles of the cells it crosses, not all of them.
   static constexpr int kMaxCellsPerSide = 4096;
