@@ -192,11 +192,18 @@ FreeSpace::FreeSpace(std::vector<Polygon> obstacles, const Rect& bounds, const D
 bool FreeSpace::free(const Vec2& a, const Vec2& b) const {
   if (!bounds_.contains(a) || !bounds_.contains(b)) return false;
   const Rect span{a.cwiseMin(b), a.cwiseMax(b)};
+  const Vec2 way = b - a;
   const auto blocks = [&](int i) {
     const Rect& r = obstacle_bounds_[static_cast<size_t>(i)];
     if (r.max.x() < span.min.x() || r.min.x() > span.max.x() || r.max.y() < span.min.y() || r.min.y() > span.max.y()) {
       return false;
     }
+    // Bounds wholly on one side of the segment's line, touching it at most: the obstacle within them has
+    // no interior point on the line (a way along a row of obstacles grazes each, and this is four cross
+    // products where the test below is one per edge and a division).
+    const double s1 = cross(way, r.min - a), s2 = cross(way, Vec2(r.max.x(), r.min.y()) - a);
+    const double s3 = cross(way, r.max - a), s4 = cross(way, Vec2(r.min.x(), r.max.y()) - a);
+    if (std::min({s1, s2, s3, s4}) >= 0.0 || std::max({s1, s2, s3, s4}) <= 0.0) return false;
     return enters(a, b, obstacles_[static_cast<size_t>(i)], obstacle_margins_[static_cast<size_t>(i)]);
   };
   // The cells the segment crosses, in order (Amanatides and Woo's traversal); an obstacle in several of
