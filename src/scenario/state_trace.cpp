@@ -36,7 +36,9 @@ void StateTrace::record_body(const EnvironmentState& state, int body) {
   apply(changes_.back(), back_);
 }
 
-void StateTrace::push_back(const EnvironmentState& state, std::span<const int> changed) {
+// Appends `state`, recording the bodies `record_changes` compares (the first state of a trace is whole).
+template <class RecordChanges>
+void StateTrace::append(const EnvironmentState& state, const RecordChanges& record_changes) {
   if (empty()) {
     *this = StateTrace(state);
     return;
@@ -45,7 +47,7 @@ void StateTrace::push_back(const EnvironmentState& state, std::span<const int> c
     throw std::invalid_argument("StateTrace: a state with a different number of movable bodies");
   }
   const std::size_t first = changes_.size();
-  for (int body : changed) record_body(state, body);
+  record_changes();
   // The physics names its movers in the order it integrated them; a step's changes are kept in body order.
   std::sort(changes_.begin() + static_cast<std::ptrdiff_t>(first), changes_.end(),
             [](const BodyChange& a, const BodyChange& b) { return a.body < b.body; });
@@ -55,10 +57,16 @@ void StateTrace::push_back(const EnvironmentState& state, std::span<const int> c
   put_robot(robot_.back(), back_);
 }
 
+void StateTrace::push_back(const EnvironmentState& state, std::span<const int> changed) {
+  append(state, [&] {
+    for (int body : changed) record_body(state, body);
+  });
+}
+
 void StateTrace::push_back(const EnvironmentState& state) {
-  std::vector<int> every(state.movable_poses.size());
-  for (std::size_t b = 0; b < every.size(); ++b) every[b] = static_cast<int>(b);
-  push_back(state, every);
+  append(state, [&] {
+    for (std::size_t b = 0; b < state.movable_poses.size(); ++b) record_body(state, static_cast<int>(b));
+  });
 }
 
 std::span<const StateTrace::BodyChange> StateTrace::changes(std::size_t i) const {

@@ -77,6 +77,8 @@ class StateTrace {
   static RobotSample robot_of(const EnvironmentState& state);
   static void put_robot(const RobotSample& robot, EnvironmentState& state);
   void record_body(const EnvironmentState& state, int body);
+  template <class RecordChanges>
+  void append(const EnvironmentState& state, const RecordChanges& record_changes);
   static void apply(const BodyChange& change, EnvironmentState& state);
   const BodyChange* last_change(std::size_t body, std::size_t i) const;  // up to step i; none: as at the start
 

@@ -91,7 +91,12 @@ render::Image PlanAnimation::draw(double time_s) {
   const size_t i = static_cast<size_t>(index);
   const size_t j = std::min(i + 1, replay_.states.size() - 1);
   const auto state = interpolate(replay_.states[i], replay_.states[j], index - static_cast<double>(i));
-  knowledge::infer(reasoning_.knowledge, state, kappa_);
+  if (kappa_poses_) {
+    knowledge::reinfer(reasoning_.knowledge, state, *kappa_poses_, kappa_);
+  } else {
+    knowledge::infer(reasoning_.knowledge, state, kappa_);
+    kappa_poses_.emplace(reasoning_.knowledge, state.movable_poses);
+  }
 
   overlay_.mregions = mregion_overlays(reasoning_.knowledge, kappa_, state);
   const int region = replay_.region_trace[i];

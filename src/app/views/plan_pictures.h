@@ -12,8 +12,10 @@
 #include "planner_views.h"
 
 #include <filesystem>
+#include <optional>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace physltl::app {
@@ -54,7 +56,9 @@ class PlanAnimation {
   std::string task_line_;
   double duration_s_;
   std::unique_ptr<render::Renderer> renderer_;
+  // kappa of the last frame and the poses it was inferred for: a frame infers again for what moved since.
   knowledge::Kappa kappa_;
+  std::optional<knowledge::BodyLocator> kappa_poses_;
   render::Overlay overlay_;  // kept from frame to frame: the travelled path only grows while time goes on
 };
 

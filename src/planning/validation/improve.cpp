@@ -12,8 +12,7 @@ namespace {
 
 // The controls that drive the robot from `from` to `to` at full speed, each at most max_steps long. A
 // differential robot turns in place to face `to`, drives, and turns to `to`'s heading.
-std::vector<Control> direct_controls(const scenario::World& world, const scenario::EnvironmentState& from,
-                                     const scenario::EnvironmentState& to) {
+std::vector<Control> direct_controls(const scenario::World& world, const geometry::Pose2& from, const geometry::Pose2& to) {
   const auto& robot = world.robot;
   const double dt = world.planner.step_size;
   const int max_steps = world.planner.max_steps;
@@ -21,7 +20,7 @@ std::vector<Control> direct_controls(const scenario::World& world, const scenari
   const auto add = [&](const Vec2& setpoint, int steps) {
     for (; steps > 0; steps -= max_steps) controls.push_back({setpoint, std::min(steps, max_steps)});
   };
-  const Vec2 way = to.robot_position - from.robot_position;
+  const Vec2 way = to.position - from.position;
   const double length = way.norm();
   const int drive_steps = static_cast<int>(std::ceil(length / (robot.max_speed * dt)));
   if (robot.drive == scenario::Drive::kHolonomic) {
@@ -33,10 +32,10 @@ std::vector<Control> direct_controls(const scenario::World& world, const scenari
     const int steps = static_cast<int>(std::ceil(std::abs(error) / (robot.max_turn_rate * dt)));
     if (steps > 0) add({0.0, error / (steps * dt)}, steps);
   };
-  const double heading = length > 0.0 ? std::atan2(way.y(), way.x()) : from.robot_yaw;
-  turn(heading - from.robot_yaw);
+  const double heading = length > 0.0 ? std::atan2(way.y(), way.x()) : from.yaw;
+  turn(heading - from.yaw);
   if (length > 0.0) add({robot.max_speed, 0.0}, drive_steps);
-  turn(to.robot_yaw - heading);
+  turn(to.yaw - heading);
   return controls;
 }
 
@@ -81,12 +80,15 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
     // Replace controls [first, last) by a direct way from the state before `first` to the one after `last - 1`.
     const int first = random.uniform_int(0, n - 2);
     const int last = random.uniform_int(first + 2, n);
-    const auto& from = replay.states[state_after(plan, static_cast<std::size_t>(first))];
-    const auto& to = replay.states[state_after(plan, static_cast<std::size_t>(last))];
     // The plan's first `first` controls, a direct way, and its controls from `last` on.
+    const auto robot_after = [&](int controls) {
+      const std::size_t step = state_after(plan, static_cast<std::size_t>(controls));
+      return geometry::Pose2{replay.states.robot_position(step), replay.states.robot_yaw(step)};
+    };
+    const std::vector<Control> way = direct_controls(problem.world, robot_after(first), robot_after(last));
     Plan candidate;
     candidate.controls.assign(plan.controls.begin(), plan.controls.begin() + first);
-    for (const Control& c : direct_controls(problem.world, from, to)) candidate.controls.push_back(c);
+    candidate.controls.insert(candidate.controls.end(), way.begin(), way.end());
     candidate.controls.insert(candidate.controls.end(), plan.controls.begin() + last, plan.controls.end());
     if (candidate.total_steps() > plan.total_steps()) continue;  // longer: not worth a replay
     // Most candidates fail a check early (a shortcut through a wall or past a needed push): stop there.
