@@ -1,6 +1,7 @@
 #include "physltl/geometry/free_space.h"
 
-#include "physltl/geometry/shortest_paths.h"
+#include "free_space_mesh.h"
+#include "free_space_search.h"
 #include "shape_kinds.h"
 
 #include <Eigen/Geometry>
@@ -128,7 +129,7 @@ double distance(const Polygon& a, const Polygon& b, Vec2& closest_a, Vec2& close
   return best;
 }
 
-FreeSpace::FreeSpace(std::vector<Polygon> obstacles, const Rect& bounds, const Deadline& deadline)
+FreeSpace::FreeSpace(std::vector<Polygon> obstacles, const Rect& bounds)
     : obstacles_(std::move(obstacles)), bounds_(bounds) {
   for (Polygon& o : obstacles_) {
     if (o.signed_area() < 0) std::reverse(o.vertices.begin(), o.vertices.end());
@@ -150,43 +151,6 @@ FreeSpace::FreeSpace(std::vector<Polygon> obstacles, const Rect& bounds, const D
       for (int x = grid_.column(r.min.x()); x <= grid_.column(r.max.x()); ++x) cells_[grid_.index(x, y)].push_back(static_cast<int>(i));
     }
   }
-  // Each corner with its polygon's neighbouring corners, for the tangency test below.
-  std::vector<std::pair<Vec2, Vec2>> sides;
-  for (const Polygon& o : obstacles_) {
-    deadline.check();
-    const auto& vs = o.vertices;
-    for (size_t k = 0; k < vs.size(); ++k) {
-      const Vec2& v = vs[k];
-      if (!bounds_.contains(v)) continue;
-      // An obstacle that holds v has bounds that hold it, so it is among those of v's cell.
-      const std::vector<int>& near = cells_[grid_.index(grid_.column(v.x()), grid_.row(v.y()))];
-      const bool buried = std::any_of(near.begin(), near.end(), [&](int other) {
-        const auto k = static_cast<size_t>(other);
-        return &obstacles_[k] != &o && enters(v, v, obstacles_[k], obstacle_margins_[k]);
-      });
-      if (buried) continue;
-      corners_.push_back(v);
-      sides.push_back({vs[(k + vs.size() - 1) % vs.size()], vs[(k + 1) % vs.size()]});
-    }
-  }
-  // A shortest path turns only round corners it touches on the outside: a segment leaving a corner into
-  // its own polygon's cone (its two sides on either side of the segment's line) is on no shortest path,
-  // so only segments tangent at both ends are tested for being free (the reduced visibility graph).
-  const auto tangent = [&](size_t at, const Vec2& to) {
-    const Vec2 d = to - corners_[at];
-    const double before = cross(d, sides[at].first - corners_[at]), after = cross(d, sides[at].second - corners_[at]);
-    return !((before > 0 && after < 0) || (before < 0 && after > 0));
-  };
-  edges_.resize(corners_.size());
-  for (size_t i = 0; i < corners_.size(); ++i) {
-    deadline.check();
-    for (size_t j = i + 1; j < corners_.size(); ++j) {
-      if (!tangent(i, corners_[j]) || !tangent(j, corners_[i]) || !free(corners_[i], corners_[j])) continue;
-      const double d = (corners_[i] - corners_[j]).norm();
-      edges_[i].push_back({static_cast<int>(j), d});
-      edges_[j].push_back({static_cast<int>(i), d});
-    }
-  }
 }
 
 bool FreeSpace::free(const Vec2& a, const Vec2& b) const {
@@ -200,10 +164,10 @@ bool FreeSpace::free(const Vec2& a, const Vec2& b) const {
     }
     // Bounds wholly on one side of the segment's line, touching it at most: the obstacle within them has
     // no interior point on the line (a way along a row of obstacles grazes each, and this is four cross
-    // products where the test below is one per edge and a division).
+    // products where the test below is one per edge and a division). A point has no line.
     const double s1 = cross(way, r.min - a), s2 = cross(way, Vec2(r.max.x(), r.min.y()) - a);
     const double s3 = cross(way, r.max - a), s4 = cross(way, Vec2(r.min.x(), r.max.y()) - a);
-    if (std::min({s1, s2, s3, s4}) >= 0.0 || std::max({s1, s2, s3, s4}) <= 0.0) return false;
+    if (a != b && (std::min({s1, s2, s3, s4}) >= 0.0 || std::max({s1, s2, s3, s4}) <= 0.0)) return false;
     return enters(a, b, obstacles_[static_cast<size_t>(i)], obstacle_margins_[static_cast<size_t>(i)]);
   };
   // The cells the segment crosses, in order (Amanatides and Woo's traversal); an obstacle in several of
@@ -238,81 +202,14 @@ bool FreeSpace::free(const Vec2& a, const Vec2& b) const {
   }
 }
 
-FreeSpace::Place FreeSpace::place(const Polygon& polygon) const {
-  Place p;
-  p.polygon = polygon;
-  const auto& v = polygon.vertices;
-  p.points = v;
-  const Rect r = polygon.bounds();
-  for (const Polygon& o : obstacles_) {
-    const Rect b = o.bounds();
-    if (b.max.x() < r.min.x() || b.min.x() > r.max.x() || b.max.y() < r.min.y() || b.min.y() > r.max.y()) continue;
-    const auto& w = o.vertices;
-    for (size_t j = 0; j < w.size() && v.size() >= 3; ++j) {
-      const Vec2 c = w[j], d = w[(j + 1) % w.size()];
-      p.obstacle_edges.push_back({c, d});
-      // Where the place's edges meet the obstacle's: corners of the place's free part.
-      for (size_t i = 0; i < v.size(); ++i) {
-        const Vec2 a = v[i], b2 = v[(i + 1) % v.size()];
-        const double denominator = cross(b2 - a, d - c);
-        if (denominator == 0.0) continue;
-        const double t = cross(c - a, d - c) / denominator, u = cross(c - a, b2 - a) / denominator;
-        if (t >= 0 && t <= 1 && u >= 0 && u <= 1) p.points.push_back(a + t * (b2 - a));
-      }
-    }
-  }
-  p.from_corner.reserve(corners_.size());
-  for (const Vec2& corner : corners_) p.from_corner.push_back(reach(corner, p));
-  return p;
+std::vector<std::vector<double>> FreeSpace::distances(const std::vector<Polygon>& places, const Deadline& deadline) const {
+  const auto obstacles_at = [&](const Vec2& p) -> const std::vector<int>& { return cells_[grid_.index_of(p)]; };
+  const FreeMesh mesh = triangulate_free_space(obstacles_, obstacles_at, bounds_, places, deadline);
+  std::vector<std::vector<double>> lengths;
+  for (size_t from = 0; from < places.size(); ++from) lengths.push_back(distances_from_place(mesh, static_cast<int>(from), deadline));
+  return lengths;
 }
 
-double FreeSpace::reach(const Vec2& from, const Place& to) const {
-  const auto& v = to.polygon.vertices;
-  if (v.size() >= 3 && to.polygon.contains(from)) return 0.0;
-  // The nearest point of the place's free part that `from` sees is one of its corners, or the foot of a
-  // perpendicular on one of its edges (the place's own, or an obstacle's inside it).
-  double best = kInfinity;
-  const auto consider = [&](const Vec2& point) {
-    const double d = (point - from).norm();
-    if (d < best && free(from, point)) best = d;
-  };
-  for (const Vec2& point : to.points) consider(point);
-  Vec2 foot;
-  for (size_t i = 0; v.size() > 1 && i < v.size(); ++i) {
-    distance_to_segment(from, v[i], v[(i + 1) % v.size()], foot);
-    consider(foot);
-  }
-  for (const auto& [a, b] : to.obstacle_edges) {
-    distance_to_segment(from, a, b, foot);
-    if (to.polygon.contains(foot)) consider(foot);
-  }
-  return best;
-}
-
-std::vector<double> FreeSpace::distances_from(const Place& from) const {
-  ShortestPaths ways(corners_.size());
-  for (size_t i = 0; i < corners_.size(); ++i) ways.seed(static_cast<int>(i), from.from_corner[i]);
-  ways.run([&](int u, double c) {
-    for (const auto& [v, length] : edges_[static_cast<size_t>(u)]) ways.relax(u, v, c + length);
-    return true;
-  });
-  return ways.distances();
-}
-
-double FreeSpace::distance_to(const std::vector<double>& from_corners, const Place& from, const Place& to) const {
-  // Straight from one place to the other: a segment that cannot be shortened ends at a corner of one of
-  // them, or at the point where their polygons meet.
-  Vec2 a, b;
-  double best = geometry::distance(from.polygon, to.polygon, a, b) == 0.0 && free(a, a) ? 0.0 : kInfinity;
-  for (const Vec2& point : from.points) best = std::min(best, reach(point, to));
-  for (const Vec2& point : to.points) best = std::min(best, reach(point, from));
-  for (size_t i = 0; i < corners_.size(); ++i) best = std::min(best, from_corners[i] + to.from_corner[i]);
-  return best;
-}
-
-double FreeSpace::distance(const Polygon& from, const Polygon& to) const {
-  const Place a = place(from), b = place(to);
-  return distance_to(distances_from(a), a, b);
-}
+double FreeSpace::distance(const Polygon& from, const Polygon& to) const { return distances({from, to})[0][1]; }
 
 }  // namespace physltl::geometry

@@ -56,7 +56,7 @@ geometry::Polygon start_place(const geometry::FreeSpace& space, const geometry::
 }  // namespace
 
 geometry::FreeSpace robot_free_space(const scenario::World& world, RobotObstacles obstacles, double clearance,
-                                     const std::vector<geometry::Polygon>& avoided, const Deadline& deadline) {
+                                     const std::vector<geometry::Polygon>& avoided) {
   const double r = world.robot.radius + clearance / 2.0;
   std::vector<geometry::Polygon> grown = avoided;
   const auto add = [&](const geometry::Footprint& f) {
@@ -68,30 +68,24 @@ geometry::FreeSpace robot_free_space(const scenario::World& world, RobotObstacle
   }
   const geometry::Rect bounds{world.workspace.bounds.min + geometry::Vec2::Constant(r),
                               world.workspace.bounds.max - geometry::Vec2::Constant(r)};
-  return geometry::FreeSpace(std::move(grown), bounds, deadline);
+  return geometry::FreeSpace(std::move(grown), bounds);
 }
 
-std::vector<std::vector<double>> place_distances(const scenario::World& world, const geometry::FreeSpace& space) {
-  std::vector<geometry::FreeSpace::Place> places{space.place(start_place(space, world.robot.start))};
-  for (const auto& region : world.regions) places.push_back(space.place(region.polygon));
-  std::vector<std::vector<double>> leg(places.size(), std::vector<double>(places.size(), 0.0));
-  for (size_t from = 0; from < places.size(); ++from) {
-    const std::vector<double> corners = space.distances_from(places[from]);
-    for (size_t to = 1; to < places.size(); ++to) {
-      if (to != from) leg[from][to] = space.distance_to(corners, places[from], places[to]);
-    }
-  }
-  return leg;
+std::vector<std::vector<double>> place_distances(const scenario::World& world, const geometry::FreeSpace& space,
+                                                 const Deadline& deadline) {
+  std::vector<geometry::Polygon> places{start_place(space, world.robot.start)};
+  for (const auto& region : world.regions) places.push_back(region.polygon);
+  return space.distances(places, deadline);
 }
 
 double shortest_free_path_length(const scenario::World& world, const TaskAutomaton& task, const Deadline& deadline) {
-  const geometry::FreeSpace space = robot_free_space(world, RobotObstacles::kFixedBodies, 0.0, {}, deadline);
-  return shortest_accepted_route(world, task, place_distances(world, space), false);
+  const geometry::FreeSpace space = robot_free_space(world, RobotObstacles::kFixedBodies);
+  return shortest_accepted_route(world, task, place_distances(world, space, deadline), false);
 }
 
 double shortest_push_free_path_length(const scenario::World& world, const TaskAutomaton& task, const Deadline& deadline) {
-  const geometry::FreeSpace space = robot_free_space(world, RobotObstacles::kAllBodies, 0.0, {}, deadline);
-  return shortest_accepted_route(world, task, place_distances(world, space), true);
+  const geometry::FreeSpace space = robot_free_space(world, RobotObstacles::kAllBodies);
+  return shortest_accepted_route(world, task, place_distances(world, space, deadline), true);
 }
 
 }  // namespace physltl::planning

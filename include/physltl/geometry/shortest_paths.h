@@ -1,8 +1,8 @@
 #pragma once
 // Dijkstra's shortest paths over a graph whose nodes are numbered 0..n-1 and whose edges the caller
-// offers as each node is settled: the one routine behind the free space's corner graph, the
-// reachability fields, the route choice, the object lead, the path bounds and the knowledge planner's
-// lead. Nodes are settled nearest first and, at equal distances, lowest number first, so a search is
+// offers as each node is settled: the one routine behind the reachability fields, the route choice, the
+// object lead, the path bounds and the knowledge planner's lead (the free space's distances among
+// obstacles are a search over areas, not a graph: free_space_search.h). Nodes are settled nearest first and, at equal distances, lowest number first, so a search is
 // the same on every machine. The search's state stays between searches, and a new search forgets the
 // last in O(1) (a node counts as reached only if this search reached it): a search that touches a few
 // nodes of a large graph costs what it touches.

@@ -24,11 +24,12 @@ enum class RobotObstacles {
 // workspace's edge grow by half of it more, so that no way narrower than `clearance` for the robot's centre
 // is left; `avoided` are more obstacles as they are (convex; regions the robot's centre may not enter).
 geometry::FreeSpace robot_free_space(const scenario::World& world, RobotObstacles obstacles, double clearance = 0.0,
-                                     const std::vector<geometry::Polygon>& avoided = {}, const Deadline& deadline = {});
+                                     const std::vector<geometry::Polygon>& avoided = {});
 
 // Shortest ways between the places a task's legs run between: place 0 is the robot's start, place k + 1
-// World region k. leg[from][to] is infinite where there is none; leg[from][0] is not computed.
-std::vector<std::vector<double>> place_distances(const scenario::World& world, const geometry::FreeSpace& space);
+// World region k. leg[from][to] is infinite where there is none. Throws DeadlineReached.
+std::vector<std::vector<double>> place_distances(const scenario::World& world, const geometry::FreeSpace& space,
+                                                 const Deadline& deadline = {});
 
 // Metres; infinity when no order of regions the task accepts can be reached. Both throw DeadlineReached.
 double shortest_free_path_length(const scenario::World& world, const TaskAutomaton& task, const Deadline& deadline = {});

@@ -125,8 +125,8 @@ PlaceWays place_ways(const scenario::World& world, const std::vector<int>& avoid
       avoided.push_back(std::move(part));
     }
   }
-  return {place_distances(world, robot_free_space(world, RobotObstacles::kFixedBodies, 0.0, avoided, deadline)),
-          place_distances(world, robot_free_space(world, RobotObstacles::kAllBodies, kMinFreeWidth, avoided, deadline))};
+  return {place_distances(world, robot_free_space(world, RobotObstacles::kFixedBodies, 0.0, avoided), deadline),
+          place_distances(world, robot_free_space(world, RobotObstacles::kAllBodies, kMinFreeWidth, avoided), deadline)};
 }
 
 // Whether stage `s` goes round: from every place it is entered at, a push-free way to a region that brings
