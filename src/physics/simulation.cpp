@@ -22,6 +22,7 @@ constexpr double kGravity = 9.81;           // m/s^2, for floor friction only: m
 constexpr int kMaxContactsPerPair = 4;
 constexpr std::size_t kValuesPerBody = PhysicsState::kValuesPerBody;
 constexpr std::size_t kBodiesPerBlock = PhysicsState::kBodiesPerBlock;
+constexpr std::size_t kBlocksPerChunk = PhysicsState::kBlocksPerChunk;
 // ODE pushes overlapping bodies apart at up to this speed. The robot's speed limit holds at every step
 // only if this correction stays well below it (docs/physics.md measures what remains).
 constexpr double kMaxCorrectingSpeed = 0.1;  // m/s
@@ -75,10 +76,13 @@ struct Simulation::Impl {
   // quaternion it is given, and normalising is not idempotent in the last bit, so a saved quaternion
   // would not restore exactly; the yaw it was made from does.
   std::vector<double> state;
-  // The blocks of the state last saved or restored, which `state` equals except in the blocks marked
-  // changed: saving copies only those, and restoring skips the blocks it would not change.
+  // The blocks and chunks of the state last saved or restored, which `state` equals except in the blocks
+  // marked changed (listed in changed_blocks, their chunks marked too): saving copies only those, and
+  // restoring skips the chunks and blocks it would not change.
   mutable std::vector<std::shared_ptr<const PhysicsState::Block>> blocks;
-  mutable std::vector<char> block_changed;
+  mutable std::vector<std::shared_ptr<const PhysicsState::Chunk>> chunks;
+  mutable std::vector<char> block_changed, chunk_changed;
+  mutable std::vector<int> changed_blocks;
   // Where the dynamic bodies are, kept up to date by set_body(): which of them a body may touch is a lookup
   // among the bodies near it, not a scan of the World.
   geometry::PointGrid dynamic_near;
@@ -90,7 +94,7 @@ struct Simulation::Impl {
   std::vector<char> in_motion;  // per dynamic body: a box with some velocity (the robot is always awake)
   std::vector<int> moving_boxes;   // the boxes in_motion marks, in no particular order
   std::vector<int> candidates;  // scratch for grid lookups
-  std::vector<int> movers;      // last step's awake boxes as World indices
+  std::vector<int> movers;      // last step's awake boxes, or the boxes the last restore changed, as World indices
   DriveBody drive;
   DriveEffort last_drive;
   bool last_step_solved = true;
@@ -190,7 +194,10 @@ struct Simulation::Impl {
     dynamic.push_back(g);
     state.resize(state.size() + kValuesPerBody, 0.0);
     blocks.resize((dynamic.size() + kBodiesPerBlock - 1) / kBodiesPerBlock);
-    block_changed.resize(blocks.size(), 1);
+    block_changed.resize(blocks.size(), 0);
+    chunks.resize((blocks.size() + kBlocksPerChunk - 1) / kBlocksPerChunk);
+    chunk_changed.resize(chunks.size(), 0);
+    mark_changed(dynamic.size() - 1);
     awake.push_back(0);
     in_motion.push_back(0);
     if (index < 0) make_body(dynamic.size() - 1);
@@ -250,10 +257,18 @@ struct Simulation::Impl {
     dBodySetAngularVel(body, v[7], v[8], v[9]);
   }
 
+  void mark_changed(size_t body) {
+    const size_t b = body / kBodiesPerBlock;
+    if (block_changed[b]) return;
+    block_changed[b] = 1;
+    chunk_changed[b / kBlocksPerChunk] = 1;
+    changed_blocks.push_back(static_cast<int>(b));
+  }
+
   // Sets body i in `state`, and in ODE if it holds it, to `v`, in PhysicsState's layout.
   void set_body(size_t i, const double* v) {
     std::copy(v, v + kValuesPerBody, values(i));
-    block_changed[i / kBodiesPerBlock] = 1;
+    mark_changed(i);
     if (dynamic[i].body != nullptr) write_body(i);
     if (dynamic_near.size() == dynamic.size()) dynamic_near.move(static_cast<int>(i), {v[0], v[1]});
     const char moving = i > 0 && !at_rest(i);
@@ -277,28 +292,47 @@ struct Simulation::Impl {
   }
 
   void save(PhysicsState& out) const {
-    for (size_t b = 0; b < blocks.size(); ++b) {
-      if (!block_changed[b]) continue;
+    for (int changed : changed_blocks) {
+      const auto b = static_cast<size_t>(changed);
       blocks[b] = PhysicsState::block_of(state, b);
       block_changed[b] = 0;
     }
+    for (int changed : changed_blocks) {
+      const size_t c = static_cast<size_t>(changed) / kBlocksPerChunk;
+      if (!chunk_changed[c]) continue;
+      chunks[c] = PhysicsState::chunk_of(blocks, c);
+      chunk_changed[c] = 0;
+    }
+    changed_blocks.clear();
     out.bodies_ = dynamic.size();
-    out.blocks_ = blocks;
+    out.chunks_ = chunks;
   }
 
   // Bodies whose values already match bit for bit (-0.0 is not 0.0 here) are left alone: a restore usually
   // differs from the current state in the robot and a box or two.
   void restore(const PhysicsState& s) {
-    for (size_t b = 0; b < blocks.size(); ++b) {
-      if (s.blocks_[b] == blocks[b] && !block_changed[b]) continue;
-      const double* v = s.blocks_[b]->values.data();
-      const size_t end = std::min(dynamic.size(), (b + 1) * kBodiesPerBlock);
-      for (size_t i = b * kBodiesPerBlock; i < end; ++i, v += kValuesPerBody) {
-        if (std::memcmp(v, values(i), kValuesPerBody * sizeof(double)) != 0) set_body(i, v);
-      }
-      blocks[b] = s.blocks_[b];
-      block_changed[b] = 0;
+    movers.clear();
+    for (size_t c = 0; c < chunks.size(); ++c) {
+      if (s.chunks_[c] == chunks[c] && !chunk_changed[c]) continue;
+      const size_t last_block = std::min(blocks.size(), (c + 1) * kBlocksPerChunk);
+      for (size_t b = c * kBlocksPerChunk; b < last_block; ++b) restore_block(s.block(b), b);
+      chunks[c] = s.chunks_[c];
+      chunk_changed[c] = 0;
     }
+    changed_blocks.clear();  // every changed block's chunk was restored
+  }
+
+  void restore_block(const std::shared_ptr<const PhysicsState::Block>& block, size_t b) {
+    if (block == blocks[b] && !block_changed[b]) return;
+    const double* v = block->values.data();
+    const size_t end = std::min(dynamic.size(), (b + 1) * kBodiesPerBlock);
+    for (size_t i = b * kBodiesPerBlock; i < end; ++i, v += kValuesPerBody) {
+      if (std::memcmp(v, values(i), kValuesPerBody * sizeof(double)) == 0) continue;
+      set_body(i, v);
+      if (i > 0) movers.push_back(static_cast<int>(i) - 1);
+    }
+    blocks[b] = block;
+    block_changed[b] = 0;
   }
 
   bool may_touch(size_t i, size_t j) const {
@@ -536,21 +570,23 @@ void Simulation::restore(const PhysicsState& s) {
 }
 
 double PhysicsState::value(std::size_t body, std::size_t k) const {
-  return blocks_[body / kBodiesPerBlock]->values[(body % kBodiesPerBlock) * kValuesPerBody + k];
+  return block(body / kBodiesPerBlock)->values[(body % kBodiesPerBlock) * kValuesPerBody + k];
 }
 
 void PhysicsState::set_value(std::size_t body, std::size_t k, double v) {
-  auto& shared = blocks_[body / kBodiesPerBlock];
-  auto copy = std::make_shared<Block>(*shared);
+  const std::size_t b = body / kBodiesPerBlock;
+  auto chunk = std::make_shared<Chunk>(*chunks_[b / kBlocksPerChunk]);
+  auto copy = std::make_shared<Block>(*chunk->blocks[b % kBlocksPerChunk]);
   copy->values[(body % kBodiesPerBlock) * kValuesPerBody + k] = v;
-  shared = std::move(copy);
+  chunk->blocks[b % kBlocksPerChunk] = std::move(copy);
+  chunks_[b / kBlocksPerChunk] = std::move(chunk);
 }
 
 void PhysicsState::copy_values(std::span<double> out) const {
-  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+  for (std::size_t b = 0; b < blocks(); ++b) {
     const std::size_t first = b * kBodiesPerBlock * kValuesPerBody;
-    const std::size_t count = std::min(blocks_[b]->values.size(), out.size() - first);
-    std::copy_n(blocks_[b]->values.begin(), count, out.begin() + static_cast<std::ptrdiff_t>(first));
+    const std::size_t count = std::min(block(b)->values.size(), out.size() - first);
+    std::copy_n(block(b)->values.begin(), count, out.begin() + static_cast<std::ptrdiff_t>(first));
   }
 }
 
@@ -562,26 +598,37 @@ std::shared_ptr<const PhysicsState::Block> PhysicsState::block_of(std::span<cons
   return block;
 }
 
+std::shared_ptr<const PhysicsState::Chunk> PhysicsState::chunk_of(std::span<const std::shared_ptr<const Block>> blocks, std::size_t c) {
+  auto chunk = std::make_shared<Chunk>();
+  const std::size_t first = c * kBlocksPerChunk;
+  std::copy_n(blocks.begin() + static_cast<std::ptrdiff_t>(first), std::min(kBlocksPerChunk, blocks.size() - first), chunk->blocks.begin());
+  return chunk;
+}
+
 PhysicsState PhysicsState::from_values(std::span<const double> values) {
   PhysicsState s;
   s.bodies_ = values.size() / kValuesPerBody;
-  const std::size_t per_block = kBodiesPerBlock * kValuesPerBody;
-  for (std::size_t b = 0; b * per_block < values.size(); ++b) s.blocks_.push_back(block_of(values, b));
+  std::vector<std::shared_ptr<const Block>> blocks;
+  for (std::size_t b = 0; b < s.blocks(); ++b) blocks.push_back(block_of(values, b));
+  for (std::size_t c = 0; c * kBlocksPerChunk < blocks.size(); ++c) s.chunks_.push_back(chunk_of(blocks, c));
   return s;
 }
 
 std::size_t PhysicsState::blocks_shared_with(const PhysicsState& other) const {
   std::size_t shared = 0;
-  for (std::size_t b = 0; b < std::min(blocks_.size(), other.blocks_.size()); ++b) shared += blocks_[b] == other.blocks_[b];
+  for (std::size_t b = 0; b < std::min(blocks(), other.blocks()); ++b) shared += block(b) == other.block(b);
   return shared;
 }
 
 bool PhysicsState::operator==(const PhysicsState& other) const {
   if (bodies_ != other.bodies_) return false;
-  for (std::size_t b = 0; b < blocks_.size(); ++b) {
-    const Block& x = *blocks_[b];
-    const Block& y = *other.blocks_[b];
-    if (&x != &y && std::memcmp(x.values.data(), y.values.data(), sizeof(x.values)) != 0) return false;
+  for (std::size_t c = 0; c < chunks_.size(); ++c) {
+    if (chunks_[c] == other.chunks_[c]) continue;
+    for (std::size_t b = c * kBlocksPerChunk; b < std::min(blocks(), (c + 1) * kBlocksPerChunk); ++b) {
+      const Block& x = *block(b);
+      const Block& y = *other.block(b);
+      if (&x != &y && std::memcmp(x.values.data(), y.values.data(), sizeof(x.values)) != 0) return false;
+    }
   }
   return true;
 }
@@ -594,7 +641,7 @@ const DriveEffort& Simulation::last_drive() const { return impl_->last_drive; }
 
 bool Simulation::last_step_solved() const { return impl_->last_step_solved; }
 
-std::span<const int> Simulation::last_step_movers() const { return impl_->movers; }
+std::span<const int> Simulation::last_movers() const { return impl_->movers; }
 
 void Simulation::update_environment(scenario::EnvironmentState& out) const {
   impl_->write_robot(out);

@@ -384,8 +384,8 @@ TEST(Simulation, UpdatingTheEnvironmentFromTheMoversEqualsReadingItWhole) {
       ASSERT_EQ(incremental.movable_poses[b].yaw, whole.movable_poses[b].yaw);
       ASSERT_EQ(incremental.movable_velocities[b], whole.movable_velocities[b]);
     }
-    some_moved |= sim.last_step_movers().size() > 1;
-    EXPECT_LT(sim.last_step_movers().size(), whole.movable_poses.size());  // sleeping bodies are left out
+    some_moved |= sim.last_movers().size() > 1;
+    EXPECT_LT(sim.last_movers().size(), whole.movable_poses.size());  // sleeping bodies are left out
   }
   EXPECT_TRUE(some_moved);
 }

@@ -30,17 +30,22 @@ void set_engine_failure_handler(EngineFailureHandler handler);
 
 // Everything ODE integrates, for every dynamic body (robot first, then movables in World order).
 // Restoring it is exact: a restored run continues bit for bit as the original one.
-// The values are kept in blocks of a few bodies, and states share the blocks whose bodies are the same:
-// a state saved after a step copies only the blocks of the bodies the step moved, so a search tree's
-// nodes cost what their motions changed, not the whole World, and restoring a state skips the blocks
-// the simulation already holds.
+// The values are kept in blocks of a few bodies, the blocks in chunks, and states share the blocks and
+// chunks whose bodies are the same: a state saved after a step copies only the blocks of the bodies the
+// step moved and the chunks that hold them, so a search tree's nodes cost what their motions changed, not
+// the whole World, a copy of a state costs a pointer per chunk, and restoring a state skips the chunks the
+// simulation already holds.
 class PhysicsState {
  public:
   // Per body: position x, y, z, yaw, linear velocity x, y, z, angular velocity x, y, z.
   static constexpr std::size_t kValuesPerBody = 10;
   static constexpr std::size_t kBodiesPerBlock = 8;
+  static constexpr std::size_t kBlocksPerChunk = 16;
   struct Block {
     std::array<double, kValuesPerBody * kBodiesPerBlock> values{};
+  };
+  struct Chunk {
+    std::array<std::shared_ptr<const Block>, kBlocksPerChunk> blocks;  // null past the last body
   };
 
   std::size_t bodies() const { return bodies_; }
@@ -55,14 +60,17 @@ class PhysicsState {
   static PhysicsState from_values(std::span<const double> values);
   // How many blocks this state holds in memory as one with `other`, and how many it has.
   std::size_t blocks_shared_with(const PhysicsState& other) const;
-  std::size_t blocks() const { return blocks_.size(); }
+  std::size_t blocks() const { return (bodies_ + kBodiesPerBlock - 1) / kBodiesPerBlock; }
 
  private:
   friend class Simulation;
   // Block `b` of `values` (every value, body after body), the bodies past the end zero.
   static std::shared_ptr<const Block> block_of(std::span<const double> values, std::size_t b);
+  // Chunk `c` of `blocks` (every block in order).
+  static std::shared_ptr<const Chunk> chunk_of(std::span<const std::shared_ptr<const Block>> blocks, std::size_t c);
+  const std::shared_ptr<const Block>& block(std::size_t b) const { return chunks_[b / kBlocksPerChunk]->blocks[b % kBlocksPerChunk]; }
   std::size_t bodies_ = 0;
-  std::vector<std::shared_ptr<const Block>> blocks_;
+  std::vector<std::shared_ptr<const Chunk>> chunks_;
 };
 
 // What the robot's drive applied during a step: the planar force on the robot (N) and, for a
@@ -96,10 +104,11 @@ class Simulation {
   bool last_step_solved() const;
 
   void read_environment(scenario::EnvironmentState& out) const;  // reuses out's storage
-  // The movable bodies (World indices, ascending) the last step integrated: every other one kept its
-  // state bit for bit.
-  std::span<const int> last_step_movers() const;
-  // `out` held the environment before the last step: brings the robot and last_step_movers() up to date.
+  // The movable bodies (World indices, ascending) the last step integrated or the last restore changed:
+  // every other one kept its state bit for bit.
+  std::span<const int> last_movers() const;
+  // `out` held the environment before the last step or restore: brings the robot and last_movers() up to
+  // date.
   void update_environment(scenario::EnvironmentState& out) const;
   scenario::EnvironmentState environment() const;
   double step_size() const;

@@ -65,7 +65,7 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
     c->problem->preparation(*planner, {interruptible});
     // A planner that grows its search on one thread runs once, with the first thread count.
     for (const int threads : settings.threads) {
-      if (planner->can.threads || threads == settings.threads.front()) results.planners.push_back({planner, threads, {}});
+      if (planner->can.threads || threads == settings.threads.front()) results.planners.push_back({planner, threads, {}, {}});
     }
   }
   results.preparation_s = c->problem->preparation_s();

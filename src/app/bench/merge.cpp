@@ -87,7 +87,7 @@ CampaignResults skeleton(const JsonFields& campaign, const JsonFields& first_sha
     r.shortest_push_free_path_m = number_or_infinity(fact, "shortest_push_free_path_m");
     for (const auto& p : description.array("planners")) {
       const JsonFields planner(p, description.source() + " planners");
-      r.planners.push_back({&parse_planner(planner.text("name")), static_cast<int>(planner.whole("threads", 1, 64)), {}});
+      r.planners.push_back({&parse_planner(planner.text("name")), static_cast<int>(planner.whole("threads", 1, 64)), {}, {}});
     }
     results.cases.push_back(std::move(result));
   }

@@ -8,10 +8,12 @@ CheckedSimulation::CheckedSimulation(const scenario::World& world, const knowled
 
 void CheckedSimulation::restore(const physics::PhysicsState& state) {
   simulation_.restore(state);
-  simulation_.read_environment(environment_);
   if (kappa_valid_) {
-    knowledge::reinfer(knowledge_, environment_, kappa_poses_, kappa_);
+    // Only the robot and the bodies whose state differs from the last one changed: read and infer for those.
+    simulation_.update_environment(environment_);
+    knowledge::reinfer(knowledge_, environment_, kappa_poses_, kappa_, simulation_.last_movers());
   } else {
+    simulation_.read_environment(environment_);
     knowledge::infer(knowledge_, environment_, kappa_);
     kappa_poses_ = knowledge::BodyLocator(knowledge_, environment_.movable_poses);
     kappa_valid_ = true;
@@ -22,7 +24,7 @@ knowledge::Validity CheckedSimulation::step(const scenario::Vec2& setpoint) {
   simulation_.step(setpoint, contacts_);
   // Only the robot and the bodies the step integrated changed: read, test and infer for those.
   simulation_.update_environment(environment_);
-  const std::span<const int> movers = simulation_.last_step_movers();
+  const std::span<const int> movers = simulation_.last_movers();
   // VALIDITYCHECKER(E_new, kappa_j), then kappa_{j+1} = INFERENCE(E_new, kappa_j).
   const knowledge::Validity validity =
       knowledge::check_validity_after_step(knowledge_, kappa_, environment_, contacts_, mode_, movers);

@@ -69,7 +69,7 @@ class Replayer {
 
  private:
   void record(int automaton_state, bool pushing) {
-    r_.states.push_back(simulation_.environment(), simulation_.physics().last_step_movers());
+    r_.states.push_back(simulation_.environment(), simulation_.physics().last_movers());
     record_letter(automaton_state, pushing);
   }
 

@@ -303,7 +303,9 @@ TEST(LookAhead, EveryMixedSizePuzzlesReferenceSolutionReplaysOnItsGrid) {
     EXPECT_EQ(pushes, claimed) << file;
     long_ones += claimed >= 20;
     for (std::size_t k = 0; k < cells.size(); ++k) {
-      if (lattice->named(static_cast<int>(k)) >= 0) EXPECT_GT(lattice->place(static_cast<int>(k), cells[k]), 0) << file << ": body " << k;
+      if (lattice->named(static_cast<int>(k)) >= 0) {
+        EXPECT_GT(lattice->place(static_cast<int>(k), cells[k]), 0) << file << ": body " << k;
+      }
     }
   }
   EXPECT_GE(long_ones, 8) << "puzzles whose reference needs 20 pushes or more";
