@@ -533,7 +533,7 @@ struct Renderer::Impl {
     if (redraw) {
       std::unique_ptr<GlFramebuffer> framebuffer = resting ? std::move(resting->framebuffer) : nullptr;
       resting = RestingLayer{view_kind, view.view_projection, goals, {}, {}, std::vector<bool>(world.movable_bodies.size()),
-                             std::move(framebuffer)};
+                             std::move(framebuffer), PixelArea{}};
     } else {
       // A resting body the physics woke moves by rounding errors: what moves less than a hundredth of a
       // pixel is drawn where the layer has it.

@@ -2,6 +2,7 @@
 
 #include "physltl/geometry/shortest_paths.h"
 
+#include <cmath>
 #include <functional>
 #include <limits>
 
@@ -86,6 +87,20 @@ double shortest_free_path_length(const scenario::World& world, const TaskAutomat
 double shortest_push_free_path_length(const scenario::World& world, const TaskAutomaton& task, const Deadline& deadline) {
   const geometry::FreeSpace space = robot_free_space(world, RobotObstacles::kAllBodies);
   return shortest_accepted_route(world, task, place_distances(world, space, deadline), true);
+}
+
+double plan_cost_bound(const scenario::World& world, const TaskAutomaton& task, const scenario::PlanCost& cost,
+                       const Deadline& deadline) {
+  double bound = 0.0;
+  if (cost.time > 0.0 || cost.length > 0.0) {
+    const double path = shortest_free_path_length(world, task, deadline);
+    if (cost.time > 0.0) bound += cost.time * path / world.robot.max_speed;  // (0 x infinity is no bound)
+    if (cost.length > 0.0) bound += cost.length * path;
+  }
+  if ((cost.pushes > 0.0 || cost.moved > 0.0) && std::isinf(shortest_push_free_path_length(world, task, deadline))) {
+    bound += cost.pushes + cost.moved;
+  }
+  return bound;
 }
 
 }  // namespace physltl::planning

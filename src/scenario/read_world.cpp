@@ -258,6 +258,13 @@ void read_planner(TableReader& r, PlannerSettings& p) {
   p.step_size = r.number("step_size", p.step_size);
   p.min_steps = r.integer("min_steps", p.min_steps);
   p.max_steps = r.integer("max_steps", p.max_steps);
+  if (r.has("cost")) {
+    try {
+      p.cost = parse_plan_cost(r.string("cost"));
+    } catch (const PlanCostError& e) {
+      r.error(std::string("'cost': ") + e.what());
+    }
+  }
   const double seed = r.number("seed", static_cast<double>(p.seed));
   if (seed < 0 || seed != std::floor(seed) || seed > 9.0e15) {
     r.error("'seed' must be a whole number from 0 to 9e15");

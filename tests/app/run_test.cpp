@@ -4,6 +4,7 @@
 #include "command_runner.h"
 
 #include <gtest/gtest.h>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <signal.h>
@@ -57,6 +58,33 @@ TEST(Run, SolvesOrderedAndWritesAValidatedReportAndPlan) {
   EXPECT_LT(first("p3"), first("p4"));
   EXPECT_LT(first("p4"), trace.size());
   EXPECT_FALSE(fs::exists(out / "ordered" / "frames"));  // no --render
+}
+
+// The plan's cost to its user, as --cost names it, beside the bound no plan of the task goes below.
+TEST(Run, GivesThePlansCostOfTheUsersChoiceBesideItsBound) {
+  const fs::path out = fresh_out_dir();
+  const Result time_cost = run(kSource + "/scenarios/ordered.lua --seed 3 --threads 1 --out " + out.string());
+  ASSERT_EQ(time_cost.exit_code, 0) << time_cost.err;
+  auto report = nlohmann::json::parse(slurp(out / "ordered" / "report.json"));
+  EXPECT_EQ(report["cost"]["of"], "time");
+  EXPECT_DOUBLE_EQ(report["cost"]["value"].get<double>(), report["solution_duration_s"].get<double>());
+  EXPECT_NEAR(report["cost"]["bound"].get<double>(), 8.153, 1e-3);  // the shortest free path at 1 m/s
+  EXPECT_NEAR(report["cost"]["ratio"].get<double>(), report["cost"]["value"].get<double>() / report["cost"]["bound"].get<double>(), 1e-12);
+  EXPECT_NE(time_cost.out.find("cost       " + fmt::format("{:.1f}", report["cost"]["value"].get<double>()) + " s (bound 8.2 s, "),
+            std::string::npos)
+      << time_cost.out;
+
+  const Result sum = run(kSource + "/scenarios/ordered.lua --seed 3 --threads 1 --cost \"time + 2 pushes\" --out " + out.string());
+  ASSERT_EQ(sum.exit_code, 0) << sum.err;
+  report = nlohmann::json::parse(slurp(out / "ordered" / "report.json"));
+  EXPECT_EQ(report["cost"]["of"], "time + 2 pushes");
+  EXPECT_DOUBLE_EQ(report["cost"]["value"].get<double>(),
+                   report["solution_duration_s"].get<double>() + 2 * report["pushes"].get<double>());
+  EXPECT_NE(sum.out.find(" for time + 2 pushes (bound "), std::string::npos) << sum.out;
+
+  const Result misspelt = run(kSource + "/scenarios/ordered.lua --cost \"time + psuhes\" --out " + out.string());
+  EXPECT_EQ(misspelt.exit_code, 2);
+  EXPECT_NE(misspelt.err.find("--cost: expected time, length, pushes or moved at 'psuhes'"), std::string::npos) << misspelt.err;
 }
 
 // plan.json carries the letter of every state: the robot's region and the object facts; report.json the

@@ -38,4 +38,11 @@ double shortest_free_path_length(const scenario::World& world, const TaskAutomat
 double shortest_push_free_path_length(const scenario::World& world, const TaskAutomaton& task,
                                       const Deadline& deadline = {});
 
+// No plan of the task costs less than this (docs/planner.md, "What a plan costs"): each term of `cost`
+// bounded on its own and weighted. Time: the shortest free path at the robot's top speed; length: the
+// shortest free path; pushes and bodies moved: 1 when every accepted order needs a push (the shortest
+// push-free path is none), else 0. Infinity when no accepted order can be reached. Throws DeadlineReached.
+double plan_cost_bound(const scenario::World& world, const TaskAutomaton& task, const scenario::PlanCost& cost,
+                       const Deadline& deadline = {});
+
 }  // namespace physltl::planning

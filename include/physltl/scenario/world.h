@@ -6,6 +6,7 @@
 #include "physltl/geometry/shapes.h"
 #include "physltl/scenario/diagnostic.h"
 #include "physltl/scenario/expectations.h"
+#include "physltl/scenario/plan_cost.h"
 #include "physltl/ltl/formula.h"
 
 #include <cstdint>
@@ -124,6 +125,7 @@ struct PlannerSettings {
   int min_steps = 2;         // physics steps per control
   int max_steps = 30;
   std::uint64_t seed = 1;
+  PlanCost cost;  // what improvement lowers: the motion's time unless the scenario or --cost says
   Location where{};
 };
 

@@ -77,7 +77,7 @@ void render_execution(const scenario::World& model, const knowledge::Reasoning& 
 
 int execute(const ExecuteArgs& args) {
   const planning::PlannerEntry& planner = args.planner ? parse_planner(*args.planner) : registry().default_planner();
-  const scenario::World world = load_world(args.scenario.path, args.scenario.settings, {args.seed, {}, args.uncertainty});
+  const scenario::World world = load_world(args.scenario.path, args.scenario.settings, {args.seed, {}, args.uncertainty, {}});
   const auto say = [&](const std::string& line) {
     if (!args.quiet) std::cout << line << "\n";
   };

@@ -50,6 +50,7 @@ struct RunArgs {
   int threads = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
   int robustness = 0;                      // perturbed worlds to replay the plan in (docs/robustness.md)
   std::optional<std::string> uncertainty;  // overrides the scenario's uncertainty { ... }
+  std::optional<std::string> cost;         // overrides the scenario's planner { cost = ... }
 };
 
 // Progress goes to stderr only when a person watches it.
@@ -148,7 +149,10 @@ void write_plan_files(const PlanningRun& run, const planning::ValidatedPlan& sol
                                                solution.result.plan, *solution.replay, run.problem().as_written());
     say("robustness " + robustness_line(*robustness, world.uncertainty));
   }
+  const PlanCostFigures plan_cost = run.plan_cost(solution);
+  say("cost       " + plan_cost_text(world.planner.cost, plan_cost));
   RunSummary summary = run.summary(solution);
+  summary.plan_cost = &plan_cost;
   summary.robustness = robustness ? &*robustness : nullptr;
   summary.uncertainty = &world.uncertainty;
   const auto started = std::chrono::steady_clock::now();
@@ -166,7 +170,7 @@ void write_plan_files(const PlanningRun& run, const planning::ValidatedPlan& sol
 int run(const RunArgs& args) {
   const planning::PlannerEntry& planner = chosen_planner(args);
   const scenario::World world =
-      load_world(args.scenario.path, args.scenario.settings, {args.seed, args.time_limit, args.uncertainty});
+      load_world(args.scenario.path, args.scenario.settings, {args.seed, args.time_limit, args.uncertainty, args.cost});
   const Say say = [&](const std::string& line) {
     if (!args.quiet) std::cout << line << "\n";
   };
@@ -223,6 +227,9 @@ CommandRunner add_run_command(CLI::App& app) {
                  "Candidates spent shortening the first validated plan (0: keep it as found; same seed, same plan)")
       ->check(CLI::Range(0, 1000000))
       ->capture_default_str();
+  app.add_option("--cost", args->cost,
+                 "What improvement lowers: time (default), length, pushes, moved, or a weighted sum such as "
+                 "\"time + 2 pushes\" (docs/planner.md, \"What a plan costs\")");
   app.add_option("--threads", args->threads,
                  "Threads growing the search tree (default: one per core; the same plan with any number)")
       ->check(CLI::Range(1, 64))

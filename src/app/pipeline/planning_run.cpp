@@ -6,6 +6,10 @@
 #include "run/scenario_settings.h"
 #include "run/uncertainty_args.h"
 #include "views/failed_search.h"
+#include "physltl/planning/path_lower_bound.h"
+#include "physltl/planning/validation/improve.h"
+
+#include <cmath>
 
 namespace physltl::app {
 
@@ -14,6 +18,13 @@ scenario::World load_world(const std::string& path, const std::vector<std::strin
   if (overrides.seed) world.planner.seed = *overrides.seed;
   if (overrides.time_limit) world.planner.time_limit = *overrides.time_limit;
   if (overrides.uncertainty) world.uncertainty = override_uncertainty(world.uncertainty, *overrides.uncertainty);
+  if (overrides.cost) {
+    try {
+      world.planner.cost = scenario::parse_plan_cost(*overrides.cost);
+    } catch (const scenario::PlanCostError& e) {
+      throw BadInput(std::string("--cost: ") + e.what());
+    }
+  }
   return world;
 }
 
@@ -58,6 +69,19 @@ RunSummary PlanningRun::summary(const planning::ValidatedPlan& solution) const {
           solution.result,
           solution.replay ? &*solution.replay : nullptr,
           solution.improvement ? &*solution.improvement : nullptr};
+}
+
+PlanCostFigures PlanningRun::plan_cost(const planning::ValidatedPlan& solution) const {
+  const scenario::World& world = problem_.world();
+  PlanCostFigures figures;
+  figures.value = planning::cost_of(world.planner.cost, planning::measure(world, solution.result.plan, *solution.replay));
+  try {
+    const double bound = planning::plan_cost_bound(world, problem_.as_written(), world.planner.cost, deadline_);
+    if (std::isfinite(bound)) figures.bound = bound;
+  } catch (const DeadlineReached& reached) {
+    if (reached.interrupted()) throw;  // the time limit leaves the bound unset, Ctrl-C ends the run
+  }
+  return figures;
 }
 
 }  // namespace physltl::app

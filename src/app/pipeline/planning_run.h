@@ -20,6 +20,7 @@ struct WorldOverrides {
   std::optional<std::uint64_t> seed;
   std::optional<double> time_limit;
   std::optional<std::string> uncertainty;  // --uncertainty k=v,...: replaces those of the scenario's
+  std::optional<std::string> cost;         // --cost: replaces the scenario's planner { cost = ... }
 };
 
 // The scenario at `path` with `settings` for its script's params, and `overrides` applied. Throws
@@ -57,6 +58,8 @@ class PlanningRun {
                                  bool render) const;
   // What the report files of `solution` are made from (a validated plan's replay and improvement).
   RunSummary summary(const planning::ValidatedPlan& solution) const;
+  // The validated plan's cost to its user and the bound beside it, within the run's deadline.
+  PlanCostFigures plan_cost(const planning::ValidatedPlan& solution) const;
 
  private:
   Deadline deadline_;  // before problem_: the reasoning counts too

@@ -6,6 +6,8 @@
 
 #include "physltl/ltl/formula.h"
 
+#include <fmt/format.h>
+
 #include <fstream>
 #include <stdexcept>
 
@@ -90,8 +92,28 @@ json report_json(const RunSummary& run) {
                                {"improved", measures(run.improvement->improved)}};
     }
     report["solution_duration_s"] = r.plan.total_steps() * run.world.planner.step_size;
+    if (run.plan_cost != nullptr) {
+      const auto& bound = run.plan_cost->bound;
+      report["cost"] = {{"of", run.world.planner.cost.text()},
+                        {"value", run.plan_cost->value},
+                        {"bound", bound ? json(*bound) : json(nullptr)},
+                        {"ratio", bound && *bound > 0.0 ? json(run.plan_cost->value / *bound) : json(nullptr)}};
+    }
   }
   return report;
+}
+
+std::string plan_cost_text(const scenario::PlanCost& cost, const PlanCostFigures& figures) {
+  const std::string unit = cost.unit();
+  const auto amount = [&](double v) {
+    if (unit == "s" || unit == "m") return fmt::format("{:.1f} {}", v, unit);
+    if (!unit.empty()) return fmt::format("{:g} {}", v, v != 1.0 ? unit : unit == "pushes" ? "push" : "body");
+    return fmt::format("{:.1f}", v);
+  };
+  std::string text = amount(figures.value) + (unit.empty() ? " for " + cost.text() : "");
+  if (!figures.bound) return text + " (no bound)";
+  const std::string ratio = *figures.bound > 0.0 ? fmt::format(", {:.2f}x", figures.value / *figures.bound) : "";
+  return text + " (bound " + amount(*figures.bound) + ratio + ")";
 }
 
 json plan_json(const RunSummary& run) {

@@ -24,6 +24,15 @@ struct RunCosts {
   double peak_memory_mb = 0.0;
 };
 
+// The plan's cost to its user (the World's planner.cost) and the bound no plan of the task goes below
+// (planning::plan_cost_bound; unset when the run's time limit came first or no order of regions is reachable).
+struct PlanCostFigures {
+  double value = 0.0;
+  std::optional<double> bound;
+};
+// "34.7 s (bound 24.5 s, 1.41x)"; for a weighted sum "40.2 for time + 2 pushes (bound 26.5, 1.52x)".
+std::string plan_cost_text(const scenario::PlanCost& cost, const PlanCostFigures& figures);
+
 struct RunSummary {
   const scenario::World& world;
   const knowledge::Reasoning& reasoning;
@@ -35,6 +44,7 @@ struct RunSummary {
   const execution::Robustness* robustness = nullptr;    // with --robustness N
   const scenario::Uncertainty* uncertainty = nullptr;  // what the robustness was measured under
   const RunCosts* costs = nullptr;  // the main job's: what each part of the run took
+  const PlanCostFigures* plan_cost = nullptr;  // the main job's: the plan's cost and its bound
 };
 
 nlohmann::ordered_json report_json(const RunSummary& run);

@@ -46,11 +46,17 @@ std::size_t state_after(const Plan& plan, std::size_t controls) {
   return steps;
 }
 
-bool better(const PlanMeasures& a, const PlanMeasures& b) {
+bool better(const scenario::PlanCost& cost, const PlanMeasures& a, const PlanMeasures& b) {
+  const double cost_a = cost_of(cost, a), cost_b = cost_of(cost, b);
+  if (cost_a != cost_b) return cost_a < cost_b;
   return a.duration_s < b.duration_s || (a.duration_s == b.duration_s && a.pushes < b.pushes);
 }
 
 }  // namespace
+
+double cost_of(const scenario::PlanCost& cost, const PlanMeasures& m) {
+  return cost.time * m.duration_s + cost.length * m.path_length_m + cost.pushes * m.pushes + cost.moved * m.bodies_moved;
+}
 
 PlanMeasures measure(const scenario::World& world, const Plan& plan, const Replay& replay) {
   PlanMeasures m;
@@ -68,6 +74,9 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
   const auto started = std::chrono::steady_clock::now();
   Improvement result;
   result.first = result.improved = measure(problem.world, plan, replay);
+  const scenario::PlanCost& cost = problem.world.planner.cost;
+  // Only the motion's time counts: a candidate that takes longer cannot be better.
+  const bool time_only = cost.length == 0.0 && cost.pushes == 0.0 && cost.moved == 0.0;
   // A generator of its own, from the run's seed: improving never changes what the search drew.
   Random random(seed ^ 0x1A2B3C4D5E6F7081ull);
   for (; result.candidates < budget; ++result.candidates) {
@@ -90,7 +99,7 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
     candidate.controls.assign(plan.controls.begin(), plan.controls.begin() + first);
     candidate.controls.insert(candidate.controls.end(), way.begin(), way.end());
     candidate.controls.insert(candidate.controls.end(), plan.controls.begin() + last, plan.controls.end());
-    if (candidate.total_steps() > plan.total_steps()) continue;  // longer: not worth a replay
+    if (time_only && candidate.total_steps() > plan.total_steps()) continue;  // longer: not worth a replay
     // Most candidates fail a check early (a shortcut through a wall or past a needed push): stop there.
     // The kept controls were checked in the current plan's replay: start after them; the replay records
     // the states after the new ones.
@@ -104,7 +113,7 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
                             std::make_move_iterator(checked.control_states.end()));
     checked.control_states.clear();
     const PlanMeasures measures = measure(problem.world, candidate, checked);
-    if (!better(measures, result.improved)) continue;
+    if (!better(cost, measures, result.improved)) continue;
     plan = std::move(candidate);
     replay = std::move(checked);
     result.improved = measures;

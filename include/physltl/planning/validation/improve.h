@@ -1,10 +1,11 @@
 #pragma once
-// After the first validated plan: spend a budget of candidates, not seconds, shortening it. A candidate
+// After the first validated plan: spend a budget of candidates, not seconds, lowering its cost (the World's
+// planner.cost: the motion's time unless the user names another). A candidate
 // replaces the controls between two states of the plan by direct ones (drive straight from the robot's
 // place at the first towards its place at the second, turning first where the robot must face its way),
 // keeps the rest of the controls, and runs the whole in a fresh physics world; it is kept only if its
-// replay validates (every rule, the robot's limits, the formula as written) and it is shorter, or as long
-// with fewer pushes. The candidates follow from the seed: the same seed gives the same improved plan.
+// replay validates (every rule, the robot's limits, the formula as written) and it costs less, or as much
+// in less time, or as much in as much time with fewer pushes. The candidates follow from the seed: the same seed gives the same improved plan.
 
 #include "physltl/planning/validation/validated_plan.h"
 
@@ -14,6 +15,8 @@ namespace physltl::planning {
 
 // What a plan costs, as the report and bench give it.
 PlanMeasures measure(const scenario::World& world, const Plan& plan, const Replay& replay);
+// Its cost to the user: the weighted sum `cost` names (docs/planner.md, "What a plan costs").
+double cost_of(const scenario::PlanCost& cost, const PlanMeasures& measures);
 
 // Improves `plan` (validated, with `replay` its replay) in place, trying `budget` candidates drawn from
 // `seed`. Budget 0 leaves both untouched. `deadline` ends it early, keeping the best plan so far
