@@ -2,6 +2,7 @@
 
 #include "command_runner.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -40,6 +41,33 @@ TEST(Bench, CompareOnOrderedWritesBenchJsonWithBothPlannersOnTheSameSeeds) {
   EXPECT_EQ(text.rfind("OMPL version 1.5.2\nExperiment ordered\n", 0), 0u) << text.substr(0, 80);
   EXPECT_NE(text.find("\n2 planners\nphysltl_knowledge\n"), std::string::npos);
   EXPECT_NE(text.find("\n2 runs per planner\n"), std::string::npos);
+}
+
+// Each planner's median cost, as --cost counts it, beside the bound no plan goes below: in the table and
+// bench.json, where every run's cost is the weighted sum of its own measures.
+TEST(Bench, GivesEachPlannersCostOfTheUsersChoiceBesideTheBound) {
+  const fs::path out = fresh_out_dir();
+  const Result r = run("bench " + kSource + "/scenarios/ordered.lua --runs 2 --seed 5 --compare --improve 20 --cost \"time + 2 pushes\" --out " +
+                       out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(slurp(out / "ordered" / "bench.json"));
+  EXPECT_EQ(j["cost"]["of"], "time + 2 pushes");
+  const double bound = j["cost"]["bound"].get<double>();
+  // The shortest free path at 1 m/s, and a push at least (weighed 2): p1 and p3 lie under boxes.
+  EXPECT_NEAR(bound, 8.153 + 2, 1e-3);
+  for (const auto& planner : j["planners"]) {
+    for (const auto& run : planner["per_run"]) {
+      if (run["solved"] != true) continue;
+      EXPECT_DOUBLE_EQ(run["cost"].get<double>(), run["solution_duration_s"].get<double>() + 2 * run["pushes"].get<double>());
+      EXPECT_GE(run["cost"].get<double>(), bound);
+    }
+    const std::string line = fmt::format("{}: cost {:.1f} for time + 2 pushes (bound 10.2, ", planner["name"].get<std::string>(),
+                                         planner["cost_median"].get<double>());
+    EXPECT_NE(r.out.find(line), std::string::npos) << line << "\n" << r.out;
+  }
+  const Result misspelt = run("bench " + kSource + "/scenarios/ordered.lua --runs 1 --cost lenght --out " + out.string());
+  EXPECT_EQ(misspelt.exit_code, 2);
+  EXPECT_NE(misspelt.err.find("--cost: expected time, length, pushes or moved at 'lenght'"), std::string::npos) << misspelt.err;
 }
 
 TEST(Bench, AnInfeasibleTaskExitsOneWithItsReasonForEveryKindOfReason) {

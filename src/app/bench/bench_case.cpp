@@ -3,6 +3,7 @@
 #include "common/bad_input.h"
 #include "run/planner_names.h"
 #include "physltl/planning/validation/improve.h"
+#include "run/cost_args.h"
 #include "physltl/planning/path_lower_bound.h"
 #include "common/stop_signal.h"
 #include "physltl/execution/robustness.h"
@@ -37,6 +38,7 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   c->world = load_with_settings(entry.path, settings_of_case);
   if (settings.time_limit) c->world.planner.time_limit = *settings.time_limit;
   if (settings.uncertainty) c->world.uncertainty = override_uncertainty(c->world.uncertainty, *settings.uncertainty);
+  if (settings.cost) c->world.planner.cost = cost_from_flag(*settings.cost);
   c->problem = std::make_unique<planning::PlanningProblem>(c->world);
   if (!c->problem->feasible()) {
     throw InfeasibleTask(fmt::format("{}{}: {}", entry.path, entry.sweep ? " with " + entry.sweep->key + "=" + value : "",
@@ -59,6 +61,8 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->problem->as_written(), interruptible);
   results.shortest_push_free_path_m =
       planning::shortest_push_free_path_length(c->world, c->problem->as_written(), interruptible);
+  results.cost = c->world.planner.cost;
+  results.cost_bound = planning::plan_cost_bound(c->world, c->problem->as_written(), results.cost, interruptible);
   for (const auto planner : settings.planners) {
     if (const auto why = registry().refusal(*planner, c->problem->search_task(*planner))) throw BadInput(*why);
     // Each planner prepares the problem before its first run, outside every run's time.
@@ -165,7 +169,9 @@ BenchRun measure(const planning::PlanningProblem& problem, const planning::Plann
     run.bodies_moved = static_cast<int>(solution.replay->moved_bodies.size());
     run.unsolved_steps = static_cast<int>(solution.replay->unsolved_steps.size());
     run.solution_duration_s = result.plan.total_steps() * problem.world().planner.step_size;
-    run.path_length_m = planning::measure(problem.world(), result.plan, *solution.replay).path_length_m;
+    const planning::PlanMeasures measures = planning::measure(problem.world(), result.plan, *solution.replay);
+    run.path_length_m = measures.path_length_m;
+    run.cost = planning::cost_of(problem.world().planner.cost, measures);
     run.first_pushes = solution.improvement ? solution.improvement->first.pushes : run.pushes;
     run.first_duration_s = solution.improvement ? solution.improvement->first.duration_s : run.solution_duration_s;
     if (robustness_worlds > 0) {

@@ -76,6 +76,7 @@ json campaign_manifest(const std::string& name, int shard_count, const std::vect
                          {"settings", r.settings},
                          {"first_seed", r.first_seed},
                          {"time_limit_s", r.time_limit_s},
+                         {"cost", r.cost.text()},
                          {"planners", std::move(case_planners)}});
   }
   json unit_keys = json::array();
@@ -105,7 +106,8 @@ json shard_manifest(const json& campaign, const ShardSpec& shard, const std::vec
     facts.push_back({{"started_at", c->results.started_at},
                      {"preparation_s", c->results.preparation_s},
                      {"shortest_free_path_m", finite_or_null(c->results.shortest_free_path_m)},
-                     {"shortest_push_free_path_m", finite_or_null(c->results.shortest_push_free_path_m)}});
+                     {"shortest_push_free_path_m", finite_or_null(c->results.shortest_push_free_path_m)},
+                     {"cost_bound", finite_or_null(c->results.cost_bound)}});
   }
   return {{"campaign", campaign},
           {"shard",

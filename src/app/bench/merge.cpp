@@ -4,6 +4,7 @@
 #include "common/json_fields.h"
 #include "campaign.h"
 #include "manifest.h"
+#include "run/cost_args.h"
 #include "run/planner_names.h"
 #include "shard_folder.h"
 
@@ -85,6 +86,8 @@ CampaignResults skeleton(const JsonFields& campaign, const JsonFields& first_sha
     r.preparation_s = fact.number("preparation_s", 0.0, 1e9);
     r.shortest_free_path_m = number_or_infinity(fact, "shortest_free_path_m");
     r.shortest_push_free_path_m = number_or_infinity(fact, "shortest_push_free_path_m");
+    r.cost = cost_from_flag(description.text("cost"));
+    r.cost_bound = number_or_infinity(fact, "cost_bound");
     for (const auto& p : description.array("planners")) {
       const JsonFields planner(p, description.source() + " planners");
       r.planners.push_back({&parse_planner(planner.text("name")), static_cast<int>(planner.whole("threads", 1, 64)), {}, {}});

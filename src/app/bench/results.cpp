@@ -26,7 +26,7 @@ const PlannerRuns* find_planner(const BenchResults& results, const planning::Pla
 
 PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
   PlannerSummary s;
-  std::vector<double> nodes, pushes, moved, durations, improve, first_pushes, first_durations, paths, shares;
+  std::vector<double> nodes, pushes, moved, durations, improve, first_pushes, first_durations, paths, costs, shares;
   double wall = 0.0, propagations = 0.0;
   for (const auto& run : planner.runs) {
     s.solved += run.solved;
@@ -42,6 +42,7 @@ PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
       first_durations.push_back(run.first_duration_s);
       durations.push_back(run.solution_duration_s);
       paths.push_back(run.path_length_m);
+      costs.push_back(run.cost);
       if (run.robust_worlds > 0) shares.push_back(static_cast<double>(run.robust_succeeded) / run.robust_worlds);
     }
   }
@@ -58,6 +59,7 @@ PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
   s.first_duration_median_s = statistics::median(first_durations);
   s.solution_duration_median_s = statistics::median(durations);
   s.path_length_median_m = statistics::median(paths);
+  s.cost_median = statistics::median(costs);
   if (!shares.empty()) s.robustness_mean = statistics::mean(shares);
   return s;
 }

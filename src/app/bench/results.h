@@ -4,6 +4,7 @@
 
 #include "own_process_run.h"
 #include "physltl/planning/registry.h"
+#include "physltl/scenario/plan_cost.h"
 
 #include <cstdint>
 #include <map>
@@ -27,6 +28,7 @@ struct BenchRun {
   int bodies_moved = 0;
   double solution_duration_s = 0.0;  // of the plan bench ends with (improved, with --improve)
   double path_length_m = 0.0;        // of the same plan: the robot's centre, step by step
+  double cost = 0.0;                 // of the same plan, as the case's planner.cost counts it
   int first_pushes = 0;              // of the first validated plan
   // Of the plan bench ends with: steps ODE's solver did not solve (docs/physics.md, "Steps the solver
   // fails on").
@@ -69,6 +71,10 @@ struct BenchResults {
   double shortest_free_path_m = 0.0;
   // The shortest route that pushes nothing (every movable body in the way); infinity when none.
   double shortest_push_free_path_m = 0.0;
+  // What improvement lowers (the World's planner.cost or --cost), and no plan of the task costs less
+  // (planning::plan_cost_bound; infinity when no region order is reachable).
+  scenario::PlanCost cost;
+  double cost_bound = 0.0;
   // Done once for the world and task, not in any run's time: the decomposition and the route choice.
   double preparation_s = 0.0;
   // Knowledge with each thread count, then the baseline with each (--compare).
@@ -88,6 +94,7 @@ struct PlannerSummary {
   double first_duration_median_s = 0.0;
   double solution_duration_median_s = 0.0;  // over solved runs
   double path_length_median_m = 0.0;         // over solved runs
+  double cost_median = 0.0;                  // over solved runs
   std::optional<double> robustness_mean;     // over solved runs with --robustness: their shares' mean
 };
 

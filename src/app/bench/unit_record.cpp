@@ -26,6 +26,7 @@ nlohmann::ordered_json to_json(const UnitRecord& record) {
           {"bodies_moved", run.bodies_moved},
           {"solution_duration_s", run.solution_duration_s},
           {"path_length_m", run.path_length_m},
+          {"cost", run.cost},
           {"first_pushes", run.first_pushes},
           {"first_duration_s", run.first_duration_s},
           {"unsolved_steps", run.unsolved_steps},
@@ -63,6 +64,7 @@ BenchRun run_from_json(const JsonFields& json) {
   run.bodies_moved = static_cast<int>(json.whole("bodies_moved", 0, kMaxSmallCount));
   run.solution_duration_s = json.number("solution_duration_s", 0.0, kMaxSeconds);
   run.path_length_m = json.number("path_length_m", 0.0, 1e12);
+  run.cost = json.number("cost", 0.0, 1e15);
   run.first_pushes = static_cast<int>(json.whole("first_pushes", 0, kMaxSmallCount));
   run.first_duration_s = json.number("first_duration_s", 0.0, kMaxSeconds);
   // Results of builds before the solver's failures were counted have none.

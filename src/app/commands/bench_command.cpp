@@ -43,6 +43,7 @@ struct BenchArgs {
   int improve = 0;
   int robustness = 0;
   std::optional<std::string> uncertainty;
+  std::optional<std::string> cost;
   std::optional<std::string> campaign;
   std::optional<std::string> shard;  // K/N
   bool list = false;
@@ -69,6 +70,7 @@ CampaignSettings campaign_settings(const BenchArgs& args) {
   settings.improve = args.improve;
   settings.robustness = args.robustness;
   settings.uncertainty = args.uncertainty;
+  settings.cost = args.cost;
   settings.parameters = args.parameters.values();
   return settings;
 }
@@ -238,6 +240,9 @@ CommandRunner add_bench_command(CLI::App& app) {
                  "Replay each solved plan in N perturbed worlds drawn from the scenario's uncertainty (timed apart); "
                  "a robustness line per planner (docs/robustness.md)")
       ->check(CLI::Range(0, 100000));
+  app.add_option("--cost", args->cost,
+                 "What --improve lowers and the cost line gives: time (default), length, pushes, moved, or a weighted "
+                 "sum such as \"time + 2 pushes\" (docs/planner.md, \"What a plan costs\")");
   app.add_option("--uncertainty", args->uncertainty,
                  "Override each scenario's uncertainty, e.g. mass=0.3,friction=0.1");
   app.add_option("--threads", args->threads,

@@ -4,6 +4,7 @@
 #include "common/stop_signal.h"
 #include "run/planner_names.h"
 #include "run/scenario_settings.h"
+#include "run/cost_args.h"
 #include "run/uncertainty_args.h"
 #include "views/failed_search.h"
 #include "physltl/planning/path_lower_bound.h"
@@ -18,13 +19,7 @@ scenario::World load_world(const std::string& path, const std::vector<std::strin
   if (overrides.seed) world.planner.seed = *overrides.seed;
   if (overrides.time_limit) world.planner.time_limit = *overrides.time_limit;
   if (overrides.uncertainty) world.uncertainty = override_uncertainty(world.uncertainty, *overrides.uncertainty);
-  if (overrides.cost) {
-    try {
-      world.planner.cost = scenario::parse_plan_cost(*overrides.cost);
-    } catch (const scenario::PlanCostError& e) {
-      throw BadInput(std::string("--cost: ") + e.what());
-    }
-  }
+  if (overrides.cost) world.planner.cost = cost_from_flag(*overrides.cost);
   return world;
 }
 

@@ -95,6 +95,12 @@ std::string bench_table(const BenchResults& r) {
   text += std::isfinite(r.shortest_push_free_path_m)
               ? fmt::format("shortest push-free path (every box in the way): {:.2f} m\n", r.shortest_push_free_path_m)
               : std::string("shortest push-free path: none (the task needs a push)\n");
+  for (const auto& p : r.planners) {
+    const PlannerSummary s = summarize(p, r.time_limit_s);
+    if (s.solved == 0) continue;
+    const std::optional<double> bound = std::isfinite(r.cost_bound) ? std::optional(r.cost_bound) : std::nullopt;
+    text += fmt::format("{}: cost {} (median over solved runs)\n", planner_label(r, p), plan_cost_text(r.cost, {s.cost_median, bound}));
+  }
   text += fmt::format("prepared once for every run (decomposition, route choice): {:.3f} s\n", r.preparation_s);
   text += "times (of the first validated plan) count unsolved runs at the time limit; pushes, moved (bodies), duration and path are medians over solved runs\n";
   return text;
@@ -144,6 +150,7 @@ json bench_json(const BenchResults& r) {
         entry["first_duration_s"] = run.first_duration_s;
         entry["solution_duration_s"] = run.solution_duration_s;
         entry["path_length_m"] = run.path_length_m;
+        entry["cost"] = run.cost;
         entry["unsolved_steps"] = run.unsolved_steps;
         if (run.robust_worlds > 0) {
           entry["robustness"] = {{"worlds", run.robust_worlds},
@@ -170,6 +177,7 @@ json bench_json(const BenchResults& r) {
                         {"first_duration_median_s", s.first_duration_median_s},
                         {"solution_duration_median_s", s.solution_duration_median_s},
                         {"path_length_median_m", s.path_length_median_m},
+                        {"cost_median", s.cost_median},
                         {"robustness_mean", s.robustness_mean ? json(*s.robustness_mean) : json(nullptr)},
                         {"settings", planner_settings(p)},
                         {"own_process", own_process_json(p.own_process)},
@@ -193,6 +201,7 @@ json bench_json(const BenchResults& r) {
           {"preparation_s", r.preparation_s},
           {"shortest_push_free_path_m",
            std::isfinite(r.shortest_push_free_path_m) ? json(r.shortest_push_free_path_m) : json(nullptr)},
+          {"cost", {{"of", r.cost.text()}, {"bound", std::isfinite(r.cost_bound) ? json(r.cost_bound) : json(nullptr)}}},
           {"planners", std::move(planners)},
           {"ratio_of_medians", ratio ? json(*ratio) : json(nullptr)},
           {"threads_ratios", std::move(ratios)}};
