@@ -60,6 +60,30 @@ TEST(Run, SolvesOrderedAndWritesAValidatedReportAndPlan) {
   EXPECT_FALSE(fs::exists(out / "ordered" / "frames"));  // no --render
 }
 
+// --improve-for spends seconds instead of candidates, and says so in report.json: that plan depends on the
+// machine. It takes the place of --improve, never both.
+TEST(Run, ImprovingForSecondsSpendsThemAndMarksTheReport) {
+  const fs::path out = fresh_out_dir();
+  const Result r = run(kSource + "/scenarios/rooms.lua --seed 2 --threads 1 --improve-for 0.3 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto report = nlohmann::json::parse(slurp(out / "rooms" / "report.json"));
+  const auto& improvement = report["improvement"];
+  EXPECT_EQ(improvement["improve_for_s"], 0.3);
+  EXPECT_GE(improvement["time_s"].get<double>(), 0.3);
+  EXPECT_GT(improvement["candidates"].get<int>(), 100);  // more than the default budget fits in 0.3 s here
+  EXPECT_TRUE(improvement["stopped_by"].is_null());      // its own budget ended it, not the run's deadline
+  EXPECT_LE(improvement["improved"]["duration_s"].get<double>(), improvement["first"]["duration_s"].get<double>());
+  EXPECT_NE(r.out.find("(--improve-for 0.3 s)"), std::string::npos) << r.out;
+
+  const Result candidates = run(kSource + "/scenarios/rooms.lua --seed 2 --threads 1 --improve 10 --out " + out.string());
+  ASSERT_EQ(candidates.exit_code, 0) << candidates.err;
+  EXPECT_TRUE(nlohmann::json::parse(slurp(out / "rooms" / "report.json"))["improvement"]["improve_for_s"].is_null());
+
+  const Result both = run(kSource + "/scenarios/rooms.lua --improve 10 --improve-for 1 --out " + out.string());
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_NE(both.err.find("--improve excludes --improve-for"), std::string::npos) << both.err;
+}
+
 // The plan's cost to its user, as --cost names it, beside the bound no plan of the task goes below.
 TEST(Run, GivesThePlansCostOfTheUsersChoiceBesideItsBound) {
   const fs::path out = fresh_out_dir();

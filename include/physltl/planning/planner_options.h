@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -33,8 +34,11 @@ struct PlannerOptions {
   // Threads growing the one tree, each with its own ODE world. The plan does not depend on it: a seed
   // gives the same plan with any number of threads, only sooner.
   int threads = 1;
-  // Candidates plan_and_validate spends shortening the first validated plan (improve.h); 0: none.
+  // Candidates plan_and_validate spends lowering the first validated plan's cost (improve.h); 0: none.
   int improve = 0;
+  // Instead, seconds of improvement, as many candidates as fit (`--improve-for`): opt-in, since the plan
+  // then depends on the machine's speed and load, not only on the seed.
+  std::optional<double> improve_for_s;
   // Values of the planner's own parameters (PlannerEntry::parameters) by name; a parameter not given
   // takes its default.
   std::map<std::string, std::string> parameters;

@@ -45,6 +45,7 @@ struct RunArgs {
   bool quiet = false;
   // Shortening the first validated plan (docs/planner.md).
   int improve = kMainJobImprove;
+  std::optional<double> improve_for;  // seconds of improvement instead (opt-in: depends on the machine)
   // One per core: threads change how soon the plan is found, never which plan (bench defaults to one
   // thread, the fair figure).
   int threads = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
@@ -102,8 +103,9 @@ void say_task(const PlanningRun& run, const Say& say) {
 
 void say_solution(const planning::ValidatedPlan& solution, const scenario::World& world, const Say& say) {
   if (const auto& improved = solution.improvement) {
-    say(fmt::format("improve    {} of {} candidates kept in {:.2f} s: {:.1f} -> {:.1f} s of motion, {} -> {} pushes{}",
-                    improved->accepted, improved->candidates, improved->time_s, improved->first.duration_s,
+    say(fmt::format("improve    {} of {} candidates kept in {:.2f} s{}: {:.1f} -> {:.1f} s of motion, {} -> {} pushes{}",
+                    improved->accepted, improved->candidates, improved->time_s,
+                    improved->for_s ? fmt::format(" (--improve-for {:g} s)", *improved->for_s) : "", improved->first.duration_s,
                     improved->improved.duration_s, improved->first.pushes, improved->improved.pushes,
                     improved->stopped.empty() ? "" : " (cut short: " + improved->stopped + ")"));
   }
@@ -188,6 +190,7 @@ int run(const RunArgs& args) {
   progress.show(fmt::format("planning (up to {:g} s) ...", world.planner.time_limit));
   options.threads = args.threads;
   options.improve = args.improve;
+  options.improve_for_s = args.improve_for;
   const planning::ValidatedPlan solution = run.solve(options);
   progress.done();
   const planning::PlannerStats& stats = solution.result.stats;
@@ -223,10 +226,16 @@ CommandRunner add_run_command(CLI::App& app) {
   args->parameters.add_to(app);
   app.add_flag("--baseline", args->baseline, "Same as --planner baseline: the paper's simple physics-based LTL planner");
   app.add_flag("--quiet", args->quiet, "Print only errors");
-  app.add_option("--improve", args->improve,
-                 "Candidates spent shortening the first validated plan (0: keep it as found; same seed, same plan)")
-      ->check(CLI::Range(0, 1000000))
-      ->capture_default_str();
+  CLI::Option* improve = app.add_option("--improve", args->improve,
+                                        "Candidates spent lowering the first validated plan's cost (0: keep it as found; "
+                                        "same seed, same plan)")
+                             ->check(CLI::Range(0, 1000000))
+                             ->capture_default_str();
+  app.add_option("--improve-for", args->improve_for,
+                 "Seconds spent lowering the plan's cost instead of a number of candidates (the plan then depends on "
+                 "the machine's speed; report.json's improvement.improve_for_s says so)")
+      ->check(number_in(0.0, 1e6))
+      ->excludes(improve);
   app.add_option("--cost", args->cost,
                  "What improvement lowers: time (default), length, pushes, moved, or a weighted sum such as "
                  "\"time + 2 pushes\" (docs/planner.md, \"What a plan costs\")");

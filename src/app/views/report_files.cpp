@@ -85,6 +85,7 @@ json report_json(const RunSummary& run) {
       // "stopped_by": the run's deadline ended it before its budget; the plan then depends on the
       // machine's speed, not only on the seed.
       report["improvement"] = {{"candidates", run.improvement->candidates},
+                               {"improve_for_s", run.improvement->for_s ? json(*run.improvement->for_s) : json(nullptr)},
                                {"accepted", run.improvement->accepted},
                                {"stopped_by", run.improvement->stopped.empty() ? json(nullptr) : json(run.improvement->stopped)},
                                {"time_s", run.improvement->time_s},

@@ -70,9 +70,11 @@ PlanMeasures measure(const scenario::World& world, const Plan& plan, const Repla
 }
 
 Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::uint64_t seed, int budget, Plan& plan,
-                    Replay& replay, const Deadline& deadline) {
+                    Replay& replay, const Deadline& deadline, std::optional<double> for_seconds) {
   const auto started = std::chrono::steady_clock::now();
   Improvement result;
+  result.for_s = for_seconds;
+  const Deadline until = for_seconds ? deadline.sooner(*for_seconds) : deadline;
   result.first = result.improved = measure(problem.world, plan, replay);
   const scenario::PlanCost& cost = problem.world.planner.cost;
   // Only the motion's time counts: a candidate that takes longer cannot be better.
@@ -80,8 +82,8 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
   // A generator of its own, from the run's seed: improving never changes what the search drew.
   Random random(seed ^ 0x1A2B3C4D5E6F7081ull);
   for (; result.candidates < budget; ++result.candidates) {
-    if (deadline.reached()) {
-      result.stopped = deadline.reason();
+    if (until.reached()) {
+      if (deadline.reached()) result.stopped = deadline.reason();  // not its own budget: the run's
       break;
     }
     const int n = static_cast<int>(plan.controls.size());
@@ -106,7 +108,7 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
     candidate.states.assign(plan.states.begin(), plan.states.begin() + first);
     const ReplayedPrefix kept{replay, static_cast<std::size_t>(first)};
     Replay checked = planning::replay(problem.world, candidate, problem.formula, problem.knowledge,
-                                      {.mode = mode, .stop_at_first_failure = true, .prefix = &kept, .deadline = deadline,
+                                      {.mode = mode, .stop_at_first_failure = true, .prefix = &kept, .deadline = until,
                                        .record_control_states = true});
     if (!checked.validated()) continue;
     candidate.states.insert(candidate.states.end(), std::make_move_iterator(checked.control_states.begin()),

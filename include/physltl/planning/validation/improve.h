@@ -10,6 +10,7 @@
 #include "physltl/planning/validation/validated_plan.h"
 
 #include <cstdint>
+#include <optional>
 
 namespace physltl::planning {
 
@@ -21,7 +22,10 @@ double cost_of(const scenario::PlanCost& cost, const PlanMeasures& measures);
 // Improves `plan` (validated, with `replay` its replay) in place, trying `budget` candidates drawn from
 // `seed`. Budget 0 leaves both untouched. `deadline` ends it early, keeping the best plan so far
 // (Improvement::stopped says so: the plan then depends on the machine's speed, not only on the seed).
+// With `for_seconds`, it ends after that long instead (or at `deadline`, if sooner): the budget is time.
 Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::uint64_t seed, int budget, Plan& plan,
-                    Replay& replay, const Deadline& deadline = {});
+                    Replay& replay, const Deadline& deadline = {}, std::optional<double> for_seconds = std::nullopt);
+// The candidates of a budget of time.
+inline constexpr int kUnboundedCandidates = 1'000'000'000;
 
 }  // namespace physltl::planning

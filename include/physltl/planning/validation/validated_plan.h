@@ -26,6 +26,7 @@ struct Improvement {
   // "time limit" or "interrupted" when the run's deadline ended it before its budget of candidates;
   // empty when it spent the budget.
   std::string stopped;
+  std::optional<double> for_s;  // the budget in seconds (--improve-for), unset for a budget of candidates
   PlanMeasures first;
   PlanMeasures improved;
   double time_s = 0.0;
