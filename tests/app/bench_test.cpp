@@ -96,7 +96,7 @@ TEST(Bench, WithoutCompareRunsOnlyTheKnowledgePlanner) {
 TEST(Bench, PlannersListsOursAndOmplsSideBySideWithOmplsSettings) {
   const fs::path out = fresh_out_dir();
   const fs::path log = test_dir() / "ordered.log";
-  const Result r = run("bench " + kSource + "/scenarios/ordered.lua --runs 1 --planners knowledge,ompl-rrt,ompl-sst --out " +
+  const Result r = run("bench " + kSource + "/scenarios/ordered.lua --runs 1 --planners knowledge,ompl-rrt,ompl-sst --sst-until first --out " +
                        out.string() + " --log " + log.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(slurp(out / "ordered" / "bench.json"));

@@ -74,6 +74,9 @@ struct PlanResult {
   std::shared_ptr<const PlannerData> own;
   // How the planner was configured, for bench.json and the OMPL log (name, value as text).
   std::vector<std::pair<std::string, std::string>> settings;
+  // The planner lowered its plan's cost itself until its time limit (OMPL's SST, --sst-until limit): judged
+  // as it found it, with none of our improvement after.
+  bool improved_itself = false;
 };
 
 }  // namespace physltl::planning

@@ -33,6 +33,16 @@ planning::PlannerParameter sampler_parameter() {
           }};
 }
 
+// --sst-until: SST improves its solution until the time limit (a peer of our improvement: its plan is
+// judged by our cost after replay, with none of our improvement), or stops at its first.
+planning::PlannerParameter sst_until_parameter() {
+  return {planning::kSstUntilParameter,
+          "When OMPL's SST stops: limit (keeps lowering its path's length until the time limit) or first (at its first "
+          "solution)",
+          {"limit", "first"},
+          [](const std::string& value) { return value == "first" ? "SST stops at its first solution (--sst-until first)" : ""; }};
+}
+
 // RRT, KPIECE1, SST and PDST take every task: on OMPL's product where it applies, on ours otherwise
 // (ompl_planner.h).
 planning::PlannerEntry ompl_entry(const char* name, const char* summary, OmplAlgorithm algorithm) {
@@ -42,6 +52,7 @@ planning::PlannerEntry ompl_entry(const char* name, const char* summary, OmplAlg
   entry.can = algorithm == OmplAlgorithm::kLtl ? Capabilities{kLtlPlannerNoObjectTasks, kLtlPlannerNoRest, kOmplNoBudget, false}
                                                : Capabilities{{}, {}, kOmplNoBudget, false};
   entry.parameters = {sampler_parameter()};
+  if (algorithm == OmplAlgorithm::kSst) entry.parameters.push_back(sst_until_parameter());
   entry.plan = [algorithm](const planning::Problem& problem, const planning::PlannerData*, const planning::PlannerOptions& options) {
     return planning::plan_with_ompl(problem, options, algorithm);
   };

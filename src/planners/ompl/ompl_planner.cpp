@@ -33,6 +33,7 @@ using namespace ompl_adapter;
 namespace {
 
 bool with_our_sampler(const PlannerOptions& options) { return options.parameter(kOmplSamplerParameter, "ompl") == "ours"; }
+bool sst_improves(const PlannerOptions& options) { return options.parameter(kSstUntilParameter, "limit") == "limit"; }
 
 // The set-point space and its sampler: OMPL's uniform one, or ours (options.ompl_control_sampler).
 std::shared_ptr<oc::RealVectorControlSpace> make_controls(const std::shared_ptr<PhysicsSpace>& space,
@@ -210,7 +211,9 @@ std::vector<std::pair<std::string, std::string>> settings_of(const ob::Planner& 
     settings.push_back({"projection", "robot position (cells of 1/20 of the workspace) and automaton state"});
   }
   if (algorithm == OmplAlgorithm::kLtl) settings.push_back({"explore_time", fmt::format("{}", kLtlExploreTime)});
-  if (algorithm == OmplAlgorithm::kSst) settings.push_back({"cost_threshold", "infinite (stop at the first solution)"});
+  if (algorithm == OmplAlgorithm::kSst) {
+    settings.push_back({"cost_threshold", sst_improves(options) ? "0 (improve until the time limit)" : "infinite (stop at the first solution)"});
+  }
   std::map<std::string, std::string> params;
   planner.params().getParams(params);
   for (const auto& [name, value] : params) settings.push_back({name, value});
@@ -247,10 +250,12 @@ PlanResult plan_with_ompl(const Problem& problem, const PlannerOptions& options,
   const oc::SpaceInformationPtr low = physics_information(space, controls, problem, neighbours, counts);
   const Search search = ours ? on_our_product(problem, space, low, options, seeds, start)
                              : on_ompls_product(problem, space, low, neighbours, options, seeds, start);
+  const bool improving = algorithm == OmplAlgorithm::kSst && sst_improves(options);
   if (algorithm == OmplAlgorithm::kSst) {
-    // SST keeps improving its solution until the cost threshold: stop at the first.
+    // SST keeps improving its solution until the cost threshold: none it can reach (until the time
+    // limit), or any (stop at the first).
     auto objective = std::make_shared<ob::PathLengthOptimizationObjective>(search.si);
-    objective->setCostThreshold(objective->infiniteCost());
+    objective->setCostThreshold(improving ? ob::Cost(0.0) : objective->infiniteCost());
     search.definition->setOptimizationObjective(objective);
   }
   const ob::PlannerPtr planner = make_planner(algorithm, search.si, search.product, search.projection, seeds.next());
@@ -270,6 +275,7 @@ PlanResult plan_with_ompl(const Problem& problem, const PlannerOptions& options,
                            ? "time limit"
                            : "no solution";
   if (result.solved) result.plan = solution_plan(search, *space);
+  result.improved_itself = improving;
   // The tree, for tree.png: OMPL's control planners give their planner data; LTLPlanner only its states.
   oc::PlannerData data(search.si);
   planner->getPlannerData(data);

@@ -19,6 +19,9 @@ namespace physltl::planning {
 
 // The parameter that chooses the control sampler (PlannerEntry::parameters): "ompl" or "ours".
 inline const std::string kOmplSamplerParameter = "ompl-sampler";
+// --sst-until limit (the default): SST keeps lowering its path's cost until the time limit, as an
+// improving planner does; first: it stops at its first solution.
+inline const std::string kSstUntilParameter = "sst-until";
 
 enum class OmplAlgorithm {
   kLtl,     // LTLPlanner (Bhatia et al.)

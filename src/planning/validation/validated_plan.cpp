@@ -15,7 +15,7 @@ ValidatedPlan plan_and_validate(const Problem& p, const PlannerEntry& planner, c
     const auto started = std::chrono::steady_clock::now();
     validated.replay = replay(p.world, validated.result.plan, p.formula, p.knowledge, {.mode = mode, .deadline = options.deadline});
     validated.replay_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    if ((options.improve > 0 || options.improve_for_s) && validated.replay->validated()) {
+    if ((options.improve > 0 || options.improve_for_s) && !validated.result.improved_itself && validated.replay->validated()) {
       validated.improvement = improve(p, mode, options.seed, options.improve_for_s ? kUnboundedCandidates : options.improve,
                                       validated.result.plan, *validated.replay, options.deadline, options.improve_for_s);
     }

@@ -3,6 +3,8 @@
 // LTL traps hold.
 
 #include "decomposition.h"
+#include "ompl_planner.h"
+#include "physltl/planning/validation/validated_plan.h"
 #include "physltl/geometry/free_space.h"
 #include "test_problem.h"
 
@@ -14,10 +16,13 @@
 namespace physltl::planning {
 namespace {
 
+// SST stops at its first solution here, as the others do: a plan in the time a test can spend, the same for
+// a seed on any machine.
 PlannerOptions ompl_options(std::uint64_t seed, double time_limit = 20) {
   PlannerOptions options;
   options.seed = seed;
   options.time_limit = time_limit;
+  options.parameters[kSstUntilParameter] = "first";
   return options;
 }
 
@@ -160,6 +165,25 @@ TEST(OmplPlanners, EachControlPlannerSolvesATaskAboutAnObjectAndItsPlanReplays) 
     // The same seed, the same plan.
     EXPECT_EQ(p.plan_task(p.task, ompl_options(2), planner).plan.total_steps(), result.plan.total_steps()) << planner;
   }
+}
+
+// By default SST is an improving planner: it keeps lowering its path's length until its time limit, and
+// its plan is judged as it found it, with none of our improvement after.
+TEST(OmplPlanners, SstImprovesUntilItsTimeLimitAndIsNotImprovedAfter) {
+  const TestProblem p("ordered.lua");
+  PlannerOptions options = ompl_options(1, 2.0);
+  options.parameters.erase(kSstUntilParameter);
+  options.improve = 100;
+  const ValidatedPlan validated =
+      plan_and_validate(p.problem(), planner_named("ompl-sst"), nullptr, options);
+  ASSERT_TRUE(validated.solved()) << validated.result.stop_reason;
+  EXPECT_TRUE(validated.result.improved_itself);
+  EXPECT_GE(validated.result.stats.planning_time_s, 2.0);  // it did not stop at its first solution
+  EXPECT_FALSE(validated.improvement.has_value());
+  const auto threshold = std::find_if(validated.result.settings.begin(), validated.result.settings.end(),
+                                      [](const auto& s) { return s.first == "cost_threshold"; });
+  ASSERT_NE(threshold, validated.result.settings.end());
+  EXPECT_EQ(threshold->second, "0 (improve until the time limit)");
 }
 
 TEST(OmplPlanners, TheRegistryHasEachOfThemByNameAndNoOtherName) {
