@@ -262,9 +262,11 @@ PlanResult plan_with_ompl(const Problem& problem, const PlannerOptions& options,
   planner->setProblemDefinition(search.definition);
   planner->setup();
 
+  // An improving SST would use the whole time limit: it stops at kSstShareOfTimeLimit of it, so that the
+  // replay that validates its plan fits in the run's deadline too.
+  const Deadline until = improving ? options.deadline.sooner(kSstShareOfTimeLimit * options.time_limit) : options.deadline;
   const ob::PlannerTerminationCondition ptc = ob::plannerOrTerminationCondition(
-      ob::timedPlannerTerminationCondition(options.time_limit),
-      ob::PlannerTerminationCondition([&] { return options.deadline.reached(); }));
+      ob::timedPlannerTerminationCondition(options.time_limit), ob::PlannerTerminationCondition([&] { return until.reached(); }));
   const ob::PlannerStatus status = planner->solve(ptc);
 
   PlanResult result;

@@ -22,6 +22,7 @@ inline const std::string kOmplSamplerParameter = "ompl-sampler";
 // --sst-until limit (the default): SST keeps lowering its path's cost until the time limit, as an
 // improving planner does; first: it stops at its first solution.
 inline const std::string kSstUntilParameter = "sst-until";
+inline constexpr double kSstShareOfTimeLimit = 0.9;  // an improving SST's search; the rest for the replay
 
 enum class OmplAlgorithm {
   kLtl,     // LTLPlanner (Bhatia et al.)
