@@ -140,8 +140,8 @@ class Search {
     open_.push(Node{root.length_to_segment(left, right), order_++, root, left, right, beyond, t.neighbour_edge[static_cast<size_t>(edge)]});
   }
 
-  // Where the line from `origin` along `direction` leaves the triangle with entry vertices a (left), b
-  // (right) and opposite vertex o.
+  // Where the line from `origin` along `direction` meets segment [from, to] (snapped to an end within a
+  // rounding, so that an interval that ends at a vertex ends exactly there).
   static Vec2 exit_point(const Vec2& origin, const Vec2& direction, const Vec2& from, const Vec2& to) {
     const double denominator = cross(to - from, direction);
     if (denominator == 0.0) return from;
@@ -150,6 +150,8 @@ class Search {
     if (u >= 1.0 - 1e-12) return to;
     return from + u * (to - from);
   }
+  // Where the line from `origin` (on the entry edge a-b) along `direction` leaves the triangle a, b,
+  // `opposite`: the side, and the point in `where`.
   static Exit exit_side(const Vec2& origin, const Vec2& direction, const Vec2& opposite, const Vec2& a, const Vec2& b, Vec2& where) {
     const double side = cross(direction, opposite - origin);
     const double margin = 1e-12 * direction.norm() * (opposite - origin).norm();
