@@ -115,7 +115,7 @@ TEST(PathLowerBound, NoValidatedPlanIsShorter) {
 
 // Every cost's bound, weighted sums too, stays at or below the cost of the plans found on the shipped
 // scenarios and the regression family, before and after improvement towards that cost; improvement never
-// raises it.
+// raises it: its curve of the best cost over time never rises.
 TEST(PlanCostBound, NoValidatedPlanCostsLessAndImprovementNeverRaisesTheCost) {
   const std::vector<std::string> worlds = {"rooms.lua", "ordered.lua", "office.lua", "delivery.lua", "sorting.lua",
                                            "warehouse_rows.lua", "../tests/planning/data/regression/hazard_gap.lua",
@@ -140,6 +140,14 @@ TEST(PlanCostBound, NoValidatedPlanCostsLessAndImprovementNeverRaisesTheCost) {
         EXPECT_LE(bound, cost_of(cost, improvement.improved) + 1e-9);
         EXPECT_LE(cost_of(cost, improvement.improved), cost_of(cost, improvement.first));
         EXPECT_DOUBLE_EQ(cost_of(cost, measure(p.world, result.plan, replay)), cost_of(cost, improvement.improved));
+        // The best cost over time starts at the first plan's, never rises, and ends at the improved one's.
+        ASSERT_EQ(improvement.progress.size(), static_cast<std::size_t>(improvement.accepted) + 1);
+        EXPECT_EQ(improvement.progress.front(), std::make_pair(0.0, cost_of(cost, improvement.first)));
+        EXPECT_DOUBLE_EQ(improvement.progress.back().second, cost_of(cost, improvement.improved));
+        for (std::size_t i = 1; i < improvement.progress.size(); ++i) {
+          EXPECT_GE(improvement.progress[i].first, improvement.progress[i - 1].first);
+          EXPECT_LE(improvement.progress[i].second, improvement.progress[i - 1].second);
+        }
       }
     }
   }

@@ -172,6 +172,7 @@ BenchRun measure(const planning::PlanningProblem& problem, const planning::Plann
     const planning::PlanMeasures measures = planning::measure(problem.world(), result.plan, *solution.replay);
     run.path_length_m = measures.path_length_m;
     run.cost = planning::cost_of(problem.world().planner.cost, measures);
+    if (solution.improvement) run.cost_progress = solution.improvement->progress;
     run.first_pushes = solution.improvement ? solution.improvement->first.pushes : run.pushes;
     run.first_duration_s = solution.improvement ? solution.improvement->first.duration_s : run.solution_duration_s;
     if (robustness_worlds > 0) {

@@ -126,40 +126,48 @@ json own_process_json(const std::optional<OwnProcessRun>& run) {
   return {{"solved", true}, {"peak_memory_mb", run->peak_memory_mb}, {"parts_s", part_times_json(run->parts)}};
 }
 
+namespace {
+
+// One run of bench.json's "per_run": what every run has, and what a solved one found.
+json run_json(const BenchRun& run) {
+  json entry = {{"seed", run.seed},
+                {"cell_skips_refused", run.cell_skips_refused},
+                {"solved", run.solved},
+                {"stop_reason", run.stop_reason},
+                {"refused", refusals_json(run.refused)},
+                {"wall_s", run.wall_s},
+                {"tree_nodes", run.tree_nodes},
+                {"propagations", run.propagations},
+                {"physics_steps", run.physics_steps}};
+  if (run.solved) {
+    entry["controls"] = run.controls;
+    entry["pushes"] = run.pushes;
+    entry["bodies_moved"] = run.bodies_moved;
+    entry["improve_s"] = run.improve_s;
+    entry["first_pushes"] = run.first_pushes;
+    entry["first_duration_s"] = run.first_duration_s;
+    entry["solution_duration_s"] = run.solution_duration_s;
+    entry["path_length_m"] = run.path_length_m;
+    entry["cost"] = run.cost;
+    entry["cost_progress"] = run.cost_progress;
+    entry["unsolved_steps"] = run.unsolved_steps;
+    if (run.robust_worlds > 0) {
+      entry["robustness"] = {{"worlds", run.robust_worlds},
+                             {"succeeded", run.robust_succeeded},
+                             {"failures", run.robust_failures}};
+    }
+  }
+  return entry;
+}
+
+}  // namespace
+
 json bench_json(const BenchResults& r) {
   json planners = json::array();
   for (const auto& p : r.planners) {
     const PlannerSummary s = summarize(p, r.time_limit_s);
     json runs = json::array();
-    for (const auto& run : p.runs) {
-      json entry = {{"seed", run.seed},
-                    {"cell_skips_refused", run.cell_skips_refused},
-                    {"solved", run.solved},
-                    {"stop_reason", run.stop_reason},
-                    {"refused", refusals_json(run.refused)},
-                    {"wall_s", run.wall_s},
-                    {"tree_nodes", run.tree_nodes},
-                    {"propagations", run.propagations},
-                    {"physics_steps", run.physics_steps}};
-      if (run.solved) {
-        entry["controls"] = run.controls;
-        entry["pushes"] = run.pushes;
-        entry["bodies_moved"] = run.bodies_moved;
-        entry["improve_s"] = run.improve_s;
-        entry["first_pushes"] = run.first_pushes;
-        entry["first_duration_s"] = run.first_duration_s;
-        entry["solution_duration_s"] = run.solution_duration_s;
-        entry["path_length_m"] = run.path_length_m;
-        entry["cost"] = run.cost;
-        entry["unsolved_steps"] = run.unsolved_steps;
-        if (run.robust_worlds > 0) {
-          entry["robustness"] = {{"worlds", run.robust_worlds},
-                                 {"succeeded", run.robust_succeeded},
-                                 {"failures", run.robust_failures}};
-        }
-      }
-      runs.push_back(std::move(entry));
-    }
+    for (const auto& run : p.runs) runs.push_back(run_json(run));
     planners.push_back({{"name", p.planner->name},
                         {"threads", p.threads},
                         {"solved", s.solved},

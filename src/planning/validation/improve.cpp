@@ -77,6 +77,8 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
   const Deadline until = for_seconds ? deadline.sooner(*for_seconds) : deadline;
   result.first = result.improved = measure(problem.world, plan, replay);
   const scenario::PlanCost& cost = problem.world.planner.cost;
+  const auto since_start = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
+  result.progress.push_back({0.0, cost_of(cost, result.first)});
   // Only the motion's time counts: a candidate that takes longer cannot be better.
   const bool time_only = cost.length == 0.0 && cost.pushes == 0.0 && cost.moved == 0.0;
   // A generator of its own, from the run's seed: improving never changes what the search drew.
@@ -120,6 +122,7 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
     replay = std::move(checked);
     result.improved = measures;
     ++result.accepted;
+    result.progress.push_back({since_start(), cost_of(cost, measures)});
   }
   // The candidates' replays made the improved plan's states as they checked it; the plan written is
   // checked once more as any plan is, from the start against its recorded states, unless the deadline
@@ -128,7 +131,7 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
     Replay whole = planning::replay(problem.world, plan, problem.formula, problem.knowledge, {.mode = mode, .deadline = deadline});
     if (whole.cut_short.empty()) replay = std::move(whole);
   }
-  result.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  result.time_s = since_start();
   return result;
 }
 

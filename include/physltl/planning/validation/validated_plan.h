@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace physltl::planning {
 
@@ -30,6 +32,9 @@ struct Improvement {
   PlanMeasures first;
   PlanMeasures improved;
   double time_s = 0.0;
+  // The best cost over time: (seconds since improving began, cost of the plan kept then), the first plan at
+  // 0 and one entry per candidate kept. Its costs only fall.
+  std::vector<std::pair<double, double>> progress;
 };
 
 struct ValidatedPlan {
