@@ -2,6 +2,8 @@
 
 #include "text.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -129,6 +131,29 @@ void draw_sweep_lines(Canvas& canvas, const LogAxis& axis, const std::vector<Swe
   }
 }
 
+// A linear axis from `low` to `high` (pixels from `first` to `last`), with about five round ticks.
+struct LinearAxis {
+  double low, high, first, last;
+  double at(double value) const { return first + (value - low) / (high - low) * (last - first); }
+  std::vector<double> ticks() const {
+    const double raw = (high - low) / 5.0, decade = std::pow(10.0, std::floor(std::log10(raw)));
+    const double step = raw / decade < 2 ? 2 * decade : raw / decade < 5 ? 5 * decade : 10 * decade;
+    std::vector<double> ticks;
+    for (double t = std::ceil(low / step) * step; t <= high + 1e-9 * step; t += step) ticks.push_back(t);
+    return ticks;
+  }
+};
+
+// The value at time t of a run's steps: its last step at or before t.
+double step_value(const std::vector<std::pair<double, double>>& steps, double t) {
+  double value = steps.front().second;
+  for (const auto& [time, cost] : steps) {
+    if (time > t) break;
+    value = cost;
+  }
+  return value;
+}
+
 double quantile(std::vector<double> sorted, double q) {
   std::sort(sorted.begin(), sorted.end());
   const double rank = q * (static_cast<double>(sorted.size()) - 1);
@@ -173,6 +198,62 @@ Image time_box_plot(const std::string& title, const std::vector<TimeSeries>& pla
                 kTop + kPlotHeight + 8 + canvas.line_height(), c, 0.5);
   }
   return canvas.take();
+}
+
+Image cost_curves(const std::string& title, const std::vector<CostCurves>& planners, std::optional<double> bound) {
+  constexpr int kWidth = 640, kLeft = 70, kRight = 160, kTop = 40, kPlotHeight = 260, kSamples = 200;
+  double end = 0.0, low = bound.value_or(1e300), high = 0.0;
+  for (const auto& p : planners) {
+    for (const auto& run : p.runs) {
+      for (const auto& [time, cost] : run) end = std::max(end, time), low = std::min(low, cost), high = std::max(high, cost);
+    }
+  }
+  Canvas canvas(kWidth, kTop + kPlotHeight + 60);
+  canvas.text(title, kWidth / 2.0, 10, kInk, 0.5);
+  if (high <= 0.0) return canvas.take();
+  if (high - low < 1e-9) low -= 0.5, high += 0.5;
+  end = std::max(end, 1e-3);
+  const LinearAxis x{0.0, end, kLeft, kWidth - kRight}, y{low - 0.05 * (high - low), high + 0.05 * (high - low), kTop + kPlotHeight, kTop};
+  for (double t : y.ticks()) {
+    canvas.rect(kLeft, static_cast<int>(y.at(t)), kWidth - kRight, static_cast<int>(y.at(t)), kGrid);
+    canvas.text(fmt::format("{:g}", t), kLeft - 6, y.at(t) - canvas.line_height() / 2, kInk, 1.0);
+  }
+  for (double t : x.ticks()) canvas.text(fmt::format("{:g} s", t), x.at(t), kTop + kPlotHeight + 8, kInk, 0.5);
+  canvas.text("seconds of improving", (kLeft + kWidth - kRight) / 2.0, kTop + kPlotHeight + 8 + canvas.line_height(), kInk, 0.5);
+  canvas.rect(kLeft, kTop, kLeft, kTop + kPlotHeight, kInk);
+  if (bound) {
+    canvas.line(kLeft, y.at(*bound), kWidth - kRight, y.at(*bound), kLimit, 6);
+    canvas.text("bound", kWidth - kRight + 4, y.at(*bound) - canvas.line_height() / 2, kLimit);
+  }
+  for (std::size_t i = 0; i < planners.size(); ++i) {
+    const Colour& c = kSeries[i % kSeries.size()];
+    if (planners[i].runs.empty()) continue;
+    double last_y = 0.0;
+    for (int k = 0; k <= kSamples; ++k) {
+      const double t = end * k / kSamples;
+      std::vector<double> costs;
+      for (const auto& run : planners[i].runs) costs.push_back(step_value(run, t));
+      const double value = y.at(quantile(costs, 0.5));
+      if (k > 0) canvas.line(x.at(end * (k - 1) / kSamples), last_y, x.at(t), value, c);
+      last_y = value;
+    }
+    canvas.text(planners[i].name, kWidth - kRight + 4, last_y - canvas.line_height() / 2, c);
+  }
+  return canvas.take();
+}
+
+Image stacked(const Image& top, const Image& bottom) {
+  Image both(std::max(top.width, bottom.width), top.height + bottom.height);
+  std::fill(both.rgb.begin(), both.rgb.end(), std::uint8_t{255});
+  const auto copy = [&](const Image& part, int y0) {
+    for (int y = 0; y < part.height; ++y) {
+      std::copy_n(&part.rgb[static_cast<std::size_t>(y) * part.width * 3], static_cast<std::size_t>(part.width) * 3,
+                  &both.rgb[(static_cast<std::size_t>(y0 + y) * both.width) * 3]);
+    }
+  };
+  copy(top, 0);
+  copy(bottom, top.height);
+  return both;
 }
 
 Image sweep_chart(const std::string& title, const std::string& key, const std::vector<std::string>& values,

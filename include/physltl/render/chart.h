@@ -5,7 +5,9 @@
 
 #include "physltl/render/image.h"
 
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace physltl::render {
@@ -31,5 +33,18 @@ struct SweepLine {
 // below it, when some line has them, the peak memories (log scale).
 Image sweep_chart(const std::string& title, const std::string& key, const std::vector<std::string>& values,
                   const std::vector<SweepLine>& planners);
+
+struct CostCurves {
+  std::string name;
+  // Per run, its best cost over time: (seconds, cost) steps, the first at 0.
+  std::vector<std::vector<std::pair<double, double>>> runs;
+};
+
+// The median over each planner's runs of the best cost found by each moment (a run counts with its last cost
+// after it ended), one line per planner, on linear axes; `bound` dashed when given (no plan costs less).
+Image cost_curves(const std::string& title, const std::vector<CostCurves>& planners, std::optional<double> bound);
+
+// `top` above `bottom`, on white, as wide as the wider.
+Image stacked(const Image& top, const Image& bottom);
 
 }  // namespace physltl::render

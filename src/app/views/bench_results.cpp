@@ -251,7 +251,21 @@ render::Image bench_chart(const BenchResults& r) {
   }
   const std::string title = fmt::format("{}: time to the first validated plan, seeds {}..{}", r.scenario, r.first_seed,
                                         r.first_seed + static_cast<std::uint64_t>(r.runs) - 1);
-  return render::time_box_plot(title, series, r.time_limit_s);
+  const render::Image times = render::time_box_plot(title, series, r.time_limit_s);
+  // With --improve, below it each planner's best cost over time (runs whose plan it improved).
+  std::vector<render::CostCurves> curves;
+  for (const auto& p : r.planners) {
+    render::CostCurves planner{planner_label(r, p), {}};
+    for (const auto& run : p.runs) {
+      if (run.solved && !run.cost_progress.empty()) planner.runs.push_back(run.cost_progress);
+    }
+    curves.push_back(std::move(planner));
+  }
+  if (std::all_of(curves.begin(), curves.end(), [](const render::CostCurves& c) { return c.runs.empty(); })) return times;
+  const auto bound = std::isfinite(r.cost_bound) ? std::optional(r.cost_bound) : std::nullopt;
+  return render::stacked(times, render::cost_curves(fmt::format("{}: best cost ({}) while improving, median of solved runs",
+                                                                 r.scenario, r.cost.text()),
+                                                     curves, bound));
 }
 
 }  // namespace physltl::app
