@@ -219,7 +219,7 @@ Image cost_curves(const std::string& title, const std::vector<CostCurves>& plann
     canvas.text(fmt::format("{:g}", t), kLeft - 6, y.at(t) - canvas.line_height() / 2, kInk, 1.0);
   }
   for (double t : x.ticks()) canvas.text(fmt::format("{:g} s", t), x.at(t), kTop + kPlotHeight + 8, kInk, 0.5);
-  canvas.text("seconds of improving", (kLeft + kWidth - kRight) / 2.0, kTop + kPlotHeight + 8 + canvas.line_height(), kInk, 0.5);
+  canvas.text("seconds after the first plan", (kLeft + kWidth - kRight) / 2.0, kTop + kPlotHeight + 8 + canvas.line_height(), kInk, 0.5);
   canvas.rect(kLeft, kTop, kLeft, kTop + kPlotHeight, kInk);
   if (bound) {
     canvas.line(kLeft, y.at(*bound), kWidth - kRight, y.at(*bound), kLimit, 6);

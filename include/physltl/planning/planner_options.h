@@ -77,6 +77,9 @@ struct PlanResult {
   // The planner lowered its plan's cost itself until its time limit (OMPL's SST, --sst-until limit): judged
   // as it found it, with none of our improvement after.
   bool improved_itself = false;
+  // Then, the motion time of its best plan over time: (seconds after its first plan, motion seconds), one
+  // entry per better plan, as the planner saw them (only the last is replayed).
+  std::vector<std::pair<double, double>> motion_progress;
 };
 
 }  // namespace physltl::planning

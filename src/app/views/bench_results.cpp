@@ -263,7 +263,7 @@ render::Image bench_chart(const BenchResults& r) {
   }
   if (std::all_of(curves.begin(), curves.end(), [](const render::CostCurves& c) { return c.runs.empty(); })) return times;
   const auto bound = std::isfinite(r.cost_bound) ? std::optional(r.cost_bound) : std::nullopt;
-  return render::stacked(times, render::cost_curves(fmt::format("{}: best cost ({}) while improving, median of solved runs",
+  return render::stacked(times, render::cost_curves(fmt::format("{}: best cost ({}) after the first plan, median of solved runs",
                                                                  r.scenario, r.cost.text()),
                                                      curves, bound));
 }

@@ -21,6 +21,8 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <limits>
+#include <optional>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -186,6 +188,27 @@ Plan solution_plan(const Search& search, const PhysicsSpace& space) {
   return plan;
 }
 
+// An improving SST solved in slices of kSstProgressSlice, its best plan's motion time read between them
+// (OMPL 1.5's control SST reports no intermediate solutions): `progress` gets (seconds after its first plan,
+// motion seconds) for each better one.
+ob::PlannerStatus solve_in_slices(ob::Planner& planner, const ob::PlannerTerminationCondition& ptc, const Search& search,
+                                  const PhysicsSpace& space, std::vector<std::pair<double, double>>& progress) {
+  constexpr double kSstProgressSlice = 0.25;  // s
+  const auto started = std::chrono::steady_clock::now();
+  std::optional<double> first_found;
+  double best = std::numeric_limits<double>::infinity();
+  ob::PlannerStatus status;
+  do {
+    status = planner.solve(ob::plannerOrTerminationCondition(ptc, ob::timedPlannerTerminationCondition(kSstProgressSlice)));
+    if (!search.definition->hasExactSolution()) continue;
+    const double now = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    const double motion = static_cast<double>(solution_plan(search, space).total_steps()) * space.world().planner.step_size;
+    if (!first_found) first_found = now;
+    if (motion < best) best = motion, progress.push_back({now - *first_found, motion});
+  } while (!ptc());
+  return status;
+}
+
 std::vector<std::pair<std::string, std::string>> settings_of(const ob::Planner& planner, OmplAlgorithm algorithm,
                                                              const scenario::World& world, const PlannerOptions& options,
                                                              bool ompl_product) {
@@ -258,6 +281,7 @@ PlanResult plan_with_ompl(const Problem& problem, const PlannerOptions& options,
     objective->setCostThreshold(improving ? ob::Cost(0.0) : objective->infiniteCost());
     search.definition->setOptimizationObjective(objective);
   }
+  PlanResult result;
   const ob::PlannerPtr planner = make_planner(algorithm, search.si, search.product, search.projection, seeds.next());
   planner->setProblemDefinition(search.definition);
   planner->setup();
@@ -267,9 +291,8 @@ PlanResult plan_with_ompl(const Problem& problem, const PlannerOptions& options,
   const Deadline until = improving ? options.deadline.sooner(kSstShareOfTimeLimit * options.time_limit) : options.deadline;
   const ob::PlannerTerminationCondition ptc = ob::plannerOrTerminationCondition(
       ob::timedPlannerTerminationCondition(options.time_limit), ob::PlannerTerminationCondition([&] { return until.reached(); }));
-  const ob::PlannerStatus status = planner->solve(ptc);
+  const ob::PlannerStatus status = improving ? solve_in_slices(*planner, ptc, search, *space, result.motion_progress) : planner->solve(ptc);
 
-  PlanResult result;
   result.solved = search.definition->hasExactSolution();
   result.stop_reason = result.solved                                                   ? "solved"
                        : options.deadline.interrupted()                                ? "interrupted"

@@ -180,6 +180,15 @@ TEST(OmplPlanners, SstImprovesUntilItsTimeLimitAndIsNotImprovedAfter) {
   EXPECT_TRUE(validated.result.improved_itself);
   EXPECT_GE(validated.result.stats.planning_time_s, kSstShareOfTimeLimit * 2.0);  // not stopped at its first solution
   EXPECT_FALSE(validated.improvement.has_value());
+  // Its best plan's motion time as it improved: from its first plan on, falling, ending at the plan's.
+  const auto& progress = validated.result.motion_progress;
+  ASSERT_FALSE(progress.empty());
+  EXPECT_EQ(progress.front().first, 0.0);
+  for (std::size_t i = 1; i < progress.size(); ++i) {
+    EXPECT_GT(progress[i].first, progress[i - 1].first);
+    EXPECT_LT(progress[i].second, progress[i - 1].second);
+  }
+  EXPECT_DOUBLE_EQ(progress.back().second, validated.result.plan.total_steps() * p.world.planner.step_size);
   const auto threshold = std::find_if(validated.result.settings.begin(), validated.result.settings.end(),
                                       [](const auto& s) { return s.first == "cost_threshold"; });
   ASSERT_NE(threshold, validated.result.settings.end());
