@@ -106,6 +106,13 @@ TEST(Run, GivesThePlansCostOfTheUsersChoiceBesideItsBound) {
                    report["solution_duration_s"].get<double>() + 2 * report["pushes"].get<double>());
   EXPECT_NE(sum.out.find(" for time + 2 pushes (bound "), std::string::npos) << sum.out;
 
+  // The same seed and cost give the same plan, byte for byte, with one thread or two.
+  const fs::path two = out / "two";
+  const Result two_threads =
+      run(kSource + "/scenarios/ordered.lua --seed 3 --threads 2 --cost \"time + 2 pushes\" --out " + two.string());
+  ASSERT_EQ(two_threads.exit_code, 0) << two_threads.err;
+  EXPECT_EQ(slurp(two / "ordered" / "plan.json"), slurp(out / "ordered" / "plan.json"));
+
   const Result misspelt = run(kSource + "/scenarios/ordered.lua --cost \"time + psuhes\" --out " + out.string());
   EXPECT_EQ(misspelt.exit_code, 2);
   EXPECT_NE(misspelt.err.find("--cost: expected time, length, pushes or moved at 'psuhes'"), std::string::npos) << misspelt.err;
