@@ -173,6 +173,7 @@ BenchRun measure(const planning::PlanningProblem& problem, const planning::Plann
     run.path_length_m = measures.path_length_m;
     run.cost = planning::cost_of(problem.world().planner.cost, measures);
     if (solution.improvement) run.cost_progress = solution.improvement->progress;
+    run.improved_itself = result.improved_itself;
     // A planner that improved itself reports its best plan's motion time, which is the cost when the cost
     // is the motion's time alone.
     if (result.improved_itself && problem.world().planner.cost == scenario::PlanCost{}) run.cost_progress = result.motion_progress;

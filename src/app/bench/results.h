@@ -29,6 +29,8 @@ struct BenchRun {
   double solution_duration_s = 0.0;  // of the plan bench ends with (improved, with --improve)
   double path_length_m = 0.0;        // of the same plan: the robot's centre, step by step
   double cost = 0.0;                 // of the same plan, as the case's planner.cost counts it
+  // The planner lowered its plan's cost itself until its time limit (an improving SST): no --improve after.
+  bool improved_itself = false;
   // With --improve: the best cost over time (seconds into improving, cost), the first plan's at 0.
   std::vector<std::pair<double, double>> cost_progress;
   int first_pushes = 0;              // of the first validated plan

@@ -28,6 +28,7 @@ nlohmann::ordered_json to_json(const UnitRecord& record) {
           {"path_length_m", run.path_length_m},
           {"cost", run.cost},
           {"cost_progress", run.cost_progress},
+          {"improved_itself", run.improved_itself},
           {"first_pushes", run.first_pushes},
           {"first_duration_s", run.first_duration_s},
           {"unsolved_steps", run.unsolved_steps},
@@ -66,6 +67,7 @@ BenchRun run_from_json(const JsonFields& json) {
   run.solution_duration_s = json.number("solution_duration_s", 0.0, kMaxSeconds);
   run.path_length_m = json.number("path_length_m", 0.0, 1e12);
   run.cost = json.number("cost", 0.0, 1e15);
+  run.improved_itself = json.flag("improved_itself");
   for (const auto& point : json.array("cost_progress")) {
     if (!point.is_array() || point.size() != 2 || !point[0].is_number() || !point[1].is_number()) {
       json.refuse("cost_progress", "must be a list of [seconds, cost] pairs of numbers");

@@ -84,6 +84,10 @@ std::string bench_table(const BenchResults& r) {
   if (r.improve > 0) {
     for (const auto& p : r.planners) {
       const PlannerSummary s = summarize(p, r.time_limit_s);
+      if (std::any_of(p.runs.begin(), p.runs.end(), [](const BenchRun& run) { return run.improved_itself; })) {
+        text += fmt::format("{}: improves its own plan until its time limit (none of ours after)\n", planner_label(r, p));
+        continue;
+      }
       text += fmt::format("{}: improving ({} candidates) took a median {:.3f} s: duration {:.2f} -> {:.2f} s, pushes {:.1f} -> {:.1f}\n",
                           planner_label(r, p), r.improve, s.improve_median_s, s.first_duration_median_s,
                           s.solution_duration_median_s, s.first_pushes_median, s.pushes_median);
@@ -150,6 +154,7 @@ json run_json(const BenchRun& run) {
     entry["path_length_m"] = run.path_length_m;
     entry["cost"] = run.cost;
     entry["cost_progress"] = run.cost_progress;
+    entry["improved_itself"] = run.improved_itself;
     entry["unsolved_steps"] = run.unsolved_steps;
     if (run.robust_worlds > 0) {
       entry["robustness"] = {{"worlds", run.robust_worlds},
