@@ -75,6 +75,7 @@ PlanCostFigures PlanningRun::plan_cost(const planning::ValidatedPlan& solution) 
     if (std::isfinite(bound)) figures.bound = bound;
   } catch (const DeadlineReached& reached) {
     if (reached.interrupted()) throw;  // the time limit leaves the bound unset, Ctrl-C ends the run
+    figures.bound_cut_short = true;
   }
   return figures;
 }

@@ -113,7 +113,7 @@ std::string plan_cost_text(const scenario::PlanCost& cost, const PlanCostFigures
     return fmt::format("{:.1f}", v);
   };
   std::string text = amount(figures.value) + (unit.empty() ? " for " + cost.text() : "");
-  if (!figures.bound) return text + " (no bound)";
+  if (!figures.bound) return text + (figures.bound_cut_short ? " (the time limit came before its bound)" : " (no bound)");
   const std::string ratio = *figures.bound > 0.0 ? fmt::format(", {:.2f}x", figures.value / *figures.bound) : "";
   return text + " (bound " + amount(*figures.bound) + ratio + ")";
 }

@@ -29,6 +29,7 @@ struct RunCosts {
 struct PlanCostFigures {
   double value = 0.0;
   std::optional<double> bound;
+  bool bound_cut_short = false;  // the time limit came before the bound
 };
 // "34.7 s (bound 24.5 s, 1.41x)"; for a weighted sum "40.2 for time + 2 pushes (bound 26.5, 1.52x)".
 std::string plan_cost_text(const scenario::PlanCost& cost, const PlanCostFigures& figures);
