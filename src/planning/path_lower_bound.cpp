@@ -89,18 +89,20 @@ double shortest_push_free_path_length(const scenario::World& world, const TaskAu
   return shortest_accepted_route(world, task, place_distances(world, space, deadline), true);
 }
 
+double plan_cost_bound(const scenario::PlanCost& cost, double max_speed, double free_path_m, double push_free_path_m) {
+  double bound = 0.0;
+  if (cost.time > 0.0) bound += cost.time * free_path_m / max_speed;  // (0 x infinity is no bound)
+  if (cost.length > 0.0) bound += cost.length * free_path_m;
+  if ((cost.pushes > 0.0 || cost.moved > 0.0) && std::isinf(push_free_path_m)) bound += cost.pushes + cost.moved;
+  return bound;
+}
+
 double plan_cost_bound(const scenario::World& world, const TaskAutomaton& task, const scenario::PlanCost& cost,
                        const Deadline& deadline) {
-  double bound = 0.0;
-  if (cost.time > 0.0 || cost.length > 0.0) {
-    const double path = shortest_free_path_length(world, task, deadline);
-    if (cost.time > 0.0) bound += cost.time * path / world.robot.max_speed;  // (0 x infinity is no bound)
-    if (cost.length > 0.0) bound += cost.length * path;
-  }
-  if ((cost.pushes > 0.0 || cost.moved > 0.0) && std::isinf(shortest_push_free_path_length(world, task, deadline))) {
-    bound += cost.pushes + cost.moved;
-  }
-  return bound;
+  // Only the ways the cost's terms need (a push-free way costs a free space of every body).
+  const double free_path = cost.time > 0.0 || cost.length > 0.0 ? shortest_free_path_length(world, task, deadline) : 0.0;
+  const double push_free = cost.pushes > 0.0 || cost.moved > 0.0 ? shortest_push_free_path_length(world, task, deadline) : 0.0;
+  return plan_cost_bound(cost, world.robot.max_speed, free_path, push_free);
 }
 
 }  // namespace physltl::planning

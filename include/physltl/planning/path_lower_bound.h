@@ -44,5 +44,7 @@ double shortest_push_free_path_length(const scenario::World& world, const TaskAu
 // push-free path is none), else 0. Infinity when no accepted order can be reached. Throws DeadlineReached.
 double plan_cost_bound(const scenario::World& world, const TaskAutomaton& task, const scenario::PlanCost& cost,
                        const Deadline& deadline = {});
+// The same from the two ways already worked out (shortest_free_path_length, shortest_push_free_path_length).
+double plan_cost_bound(const scenario::PlanCost& cost, double max_speed, double free_path_m, double push_free_path_m);
 
 }  // namespace physltl::planning

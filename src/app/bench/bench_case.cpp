@@ -62,7 +62,8 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   results.shortest_push_free_path_m =
       planning::shortest_push_free_path_length(c->world, c->problem->as_written(), interruptible);
   results.cost = c->world.planner.cost;
-  results.cost_bound = planning::plan_cost_bound(c->world, c->problem->as_written(), results.cost, interruptible);
+  results.cost_bound = planning::plan_cost_bound(results.cost, c->world.robot.max_speed, results.shortest_free_path_m,
+                                                 results.shortest_push_free_path_m);
   for (const auto planner : settings.planners) {
     if (const auto why = registry().refusal(*planner, c->problem->search_task(*planner))) throw BadInput(*why);
     // Each planner prepares the problem before its first run, outside every run's time.

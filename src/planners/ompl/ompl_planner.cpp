@@ -198,9 +198,12 @@ ob::PlannerStatus solve_in_slices(ob::Planner& planner, const ob::PlannerTermina
   std::optional<double> first_found;
   double best = std::numeric_limits<double>::infinity();
   ob::PlannerStatus status;
+  std::size_t solutions = 0;
   do {
     status = planner.solve(ob::plannerOrTerminationCondition(ptc, ob::timedPlannerTerminationCondition(kSstProgressSlice)));
-    if (!search.definition->hasExactSolution()) continue;
+    // A plan is made (braking included) only when the slice added a solution.
+    if (!search.definition->hasExactSolution() || search.definition->getSolutionCount() == solutions) continue;
+    solutions = search.definition->getSolutionCount();
     const double now = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const double motion = static_cast<double>(solution_plan(search, space).total_steps()) * space.world().planner.step_size;
     if (!first_found) first_found = now;
