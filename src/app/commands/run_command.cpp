@@ -10,7 +10,7 @@
 #include "common/output_folder.h"
 #include "common/peak_memory.h"
 #include "physltl/ltl/formula.h"
-#include "run/main_job.h"
+#include "physltl/planning/validation/improve.h"
 #include "run/planner_names.h"
 #include "pipeline/planning_run.h"
 #include "views/plan_pictures.h"
@@ -43,8 +43,8 @@ struct RunArgs {
   PlannerParameterArgs parameters;
   bool baseline = false;  // --planner baseline
   bool quiet = false;
-  // Shortening the first validated plan (docs/planner.md).
-  int improve = kMainJobImprove;
+  // Candidates lowering the first validated plan's cost (docs/planner.md); none given: the world's default.
+  std::optional<int> improve;
   std::optional<double> improve_for;  // seconds of improvement instead (opt-in: depends on the machine)
   // One per core: threads change how soon the plan is found, never which plan (bench defaults to one
   // thread, the fair figure).
@@ -189,7 +189,7 @@ int run(const RunArgs& args) {
   ProgressLine progress(args.quiet);
   progress.show(fmt::format("planning (up to {:g} s) ...", world.planner.time_limit));
   options.threads = args.threads;
-  options.improve = args.improve;
+  options.improve = args.improve.value_or(planning::default_improvement_candidates(world));
   options.improve_for_s = args.improve_for;
   const planning::ValidatedPlan solution = run.solve(options);
   progress.done();
@@ -228,9 +228,8 @@ CommandRunner add_run_command(CLI::App& app) {
   app.add_flag("--quiet", args->quiet, "Print only errors");
   CLI::Option* improve = app.add_option("--improve", args->improve,
                                         "Candidates spent lowering the first validated plan's cost (0: keep it as found; "
-                                        "same seed, same plan)")
-                             ->check(CLI::Range(0, 1000000))
-                             ->capture_default_str();
+                                        "same seed, same plan; default: 1000, fewer in worlds of over 100 bodies)")
+                             ->check(CLI::Range(0, 1000000));
   app.add_option("--improve-for", args->improve_for,
                  "Seconds spent lowering the plan's cost instead of a number of candidates (the plan then depends on "
                  "the machine's speed; report.json's improvement.improve_for_s says so)")

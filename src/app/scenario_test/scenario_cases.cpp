@@ -2,13 +2,13 @@
 
 #include "views/failed_search.h"
 #include "goldens.h"
-#include "run/main_job.h"
 #include "views/overlays.h"
 #include "views/report_files.h"
 #include "views/plan_pictures.h"
 #include "run/planner_names.h"
 #include "views/planner_views.h"
 #include "pipeline/planning_run.h"
+#include "physltl/planning/validation/improve.h"
 #include "physltl/render/preview.h"
 
 #include <fmt/format.h>
@@ -137,7 +137,7 @@ CaseResult solve_case(const PlanningRun& run, const std::filesystem::path& actua
                       std::optional<planning::ValidatedPlan>& solution) {
   const scenario::World& world = run.problem().world();
   planning::PlannerOptions options = run.options();
-  options.improve = kMainJobImprove;
+  options.improve = planning::default_improvement_candidates(world);
   solution = run.solve(options);
   if (run.deadline().interrupted()) return CaseResult{"", Outcome::kSkipped, "interrupted"};
   const std::filesystem::path failed_folder = actual_folder / "failed";

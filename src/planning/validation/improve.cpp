@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace physltl::planning {
 namespace {
@@ -39,14 +40,52 @@ std::vector<Control> direct_controls(const scenario::World& world, const geometr
   return controls;
 }
 
-// The index of the replay state at the end of control `c` (0: the start, before any control).
-std::size_t state_after(const Plan& plan, std::size_t controls) {
-  std::size_t steps = 0;
-  for (std::size_t c = 0; c < controls; ++c) steps += static_cast<std::size_t>(plan.controls[c].steps);
-  return steps;
+// A plan's steps [from, to) replaced by `way`: the controls before `from` kept (the one `from` falls in cut
+// there), then `way`, then the rest from step `to` on (the one `to` falls in cut to start there). States are
+// those of the whole controls kept before the way (kept_controls of them); the caller replays the rest.
+struct Spliced {
+  Plan plan;
+  int kept_controls = 0;
+};
+Spliced splice(const Plan& plan, int from, int to, const std::vector<Control>& way) {
+  Spliced spliced;
+  auto& controls = spliced.plan.controls;
+  int start = 0;  // the step the current control starts at
+  std::size_t c = 0;
+  for (; c < plan.controls.size() && start + plan.controls[c].steps <= from; start += plan.controls[c++].steps) {
+    controls.push_back(plan.controls[c]);
+  }
+  spliced.kept_controls = static_cast<int>(c);
+  if (from > start) controls.push_back({plan.controls[c].setpoint, from - start});
+  controls.insert(controls.end(), way.begin(), way.end());
+  for (; c < plan.controls.size(); start += plan.controls[c++].steps) {
+    const int end = start + plan.controls[c].steps;
+    if (end <= to) continue;
+    controls.push_back({plan.controls[c].setpoint, end - std::max(start, to)});
+  }
+  spliced.plan.states.assign(plan.states.begin(), plan.states.begin() + spliced.kept_controls);
+  return spliced;
+}
+
+// The steps [from, to) a candidate replaces by a direct way from the state at step `from` to the one at
+// `to`: any two states, not only where a control ends, so that a way can start just where a detour begins.
+// One candidate in three spans any part of the plan (a shortcut past a whole detour); the others span at
+// most 20 or 100 steps, smoothing the plan piece by piece, which long spans rarely manage: most of them
+// cut through a wall or past a push the task needs.
+std::pair<int, int> replaced_steps(Random& random, int total_steps, int candidate) {
+  constexpr int kShortSpan = 20, kMediumSpan = 100;
+  const int from = random.uniform_int(0, total_steps - 2);
+  switch (candidate % 3) {
+    case 0: return {from, random.uniform_int(from + 2, total_steps)};
+    case 1: return {from, std::min(total_steps, from + random.uniform_int(2, kShortSpan))};
+    default: return {from, std::min(total_steps, from + random.uniform_int(2, kMediumSpan))};
+  }
 }
 
 bool better(const scenario::PlanCost& cost, const PlanMeasures& a, const PlanMeasures& b) {
+  // What the cost does not price, improvement does not spend: a faster plan that pushes more often or
+  // disturbs more bodies is not what a user who asked for time alone wants either.
+  if ((cost.pushes == 0.0 && a.pushes > b.pushes) || (cost.moved == 0.0 && a.bodies_moved > b.bodies_moved)) return false;
   const double cost_a = cost_of(cost, a), cost_b = cost_of(cost, b);
   if (cost_a != cost_b) return cost_a < cost_b;
   return a.duration_s < b.duration_s || (a.duration_s == b.duration_s && a.pushes < b.pushes);
@@ -56,6 +95,14 @@ bool better(const scenario::PlanCost& cost, const PlanMeasures& a, const PlanMea
 
 double cost_of(const scenario::PlanCost& cost, const PlanMeasures& m) {
   return cost.time * m.duration_s + cost.length * m.path_length_m + cost.pushes * m.pushes + cost.moved * m.bodies_moved;
+}
+
+int default_improvement_candidates(const scenario::World& world) {
+  constexpr int kFullBudget = 1000, kLeastBudget = 100;
+  constexpr long long kBodyCandidates = 100'000;  // the work of 1,000 candidates in a world of 100 bodies
+  const auto bodies = static_cast<long long>(world.fixed_bodies.size() + world.movable_bodies.size());
+  return static_cast<int>(std::clamp(kBodyCandidates / std::max(1LL, bodies), static_cast<long long>(kLeastBudget),
+                                     static_cast<long long>(kFullBudget)));
 }
 
 PlanMeasures measure(const scenario::World& world, const Plan& plan, const Replay& replay) {
@@ -88,26 +135,21 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
       if (deadline.reached()) result.stopped = deadline.reason();  // not its own budget: the run's
       break;
     }
-    const int n = static_cast<int>(plan.controls.size());
-    if (n < 2) break;
-    // Replace controls [first, last) by a direct way from the state before `first` to the one after `last - 1`.
-    const int first = random.uniform_int(0, n - 2);
-    const int last = random.uniform_int(first + 2, n);
-    // The plan's first `first` controls, a direct way, and its controls from `last` on.
-    const auto robot_after = [&](int controls) {
-      const std::size_t step = state_after(plan, static_cast<std::size_t>(controls));
-      return geometry::Pose2{replay.states.robot_position(step), replay.states.robot_yaw(step)};
+    const int total = plan.total_steps();
+    if (total < 2) break;
+    const auto [from, to] = replaced_steps(random, total, result.candidates);
+    const auto robot_at = [&](int step) {
+      return geometry::Pose2{replay.states.robot_position(static_cast<std::size_t>(step)),
+                             replay.states.robot_yaw(static_cast<std::size_t>(step))};
     };
-    const std::vector<Control> way = direct_controls(problem.world, robot_after(first), robot_after(last));
-    Plan candidate;
-    candidate.controls.assign(plan.controls.begin(), plan.controls.begin() + first);
-    candidate.controls.insert(candidate.controls.end(), way.begin(), way.end());
-    candidate.controls.insert(candidate.controls.end(), plan.controls.begin() + last, plan.controls.end());
+    const std::vector<Control> way = direct_controls(problem.world, robot_at(from), robot_at(to));
+    Spliced spliced = splice(plan, from, to, way);
+    Plan& candidate = spliced.plan;
+    const int first = spliced.kept_controls;
     if (time_only && candidate.total_steps() > plan.total_steps()) continue;  // longer: not worth a replay
     // Most candidates fail a check early (a shortcut through a wall or past a needed push): stop there.
     // The kept controls were checked in the current plan's replay: start after them; the replay records
     // the states after the new ones.
-    candidate.states.assign(plan.states.begin(), plan.states.begin() + first);
     const ReplayedPrefix kept{replay, static_cast<std::size_t>(first)};
     Replay checked = planning::replay(problem.world, candidate, problem.formula, problem.knowledge,
                                       {.mode = mode, .stop_at_first_failure = true, .prefix = &kept, .deadline = until,
