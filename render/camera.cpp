@@ -93,10 +93,10 @@ void frame_workspace(CameraView& view, const geometry::Rect& bounds, double top_
   view.metres_per_pixel /= scale;
 }
 
-CameraView perspective_view(const scenario::World& world, double top_height, int width, int height) {
+CameraView perspective_view(const scenario::World& world, double azimuth_deg, double top_height, int width, int height) {
   const scenario::Camera& camera = world.render.camera;
   const float aspect = static_cast<float>(width) / height;
-  const float elevation = radians(camera.elevation_deg), azimuth = radians(camera.azimuth_deg);
+  const float elevation = radians(camera.elevation_deg), azimuth = radians(azimuth_deg);
   const Vector3f towards_camera(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
                                 std::sin(elevation));
   const Vector3f forward = -towards_camera;
@@ -138,6 +138,19 @@ CameraView perspective_view(const scenario::World& world, double top_height, int
   return view;
 }
 
+// The author's azimuth; else from the south (-90 degrees), unless the workspace is clearly taller than wide
+// and the east (0) shows it larger: a tall world then runs across a wide frame instead of standing small
+// in its middle.
+double azimuth_deg(const scenario::World& world, double top_height, int width, int height) {
+  if (world.render.camera.azimuth_deg) return *world.render.camera.azimuth_deg;
+  constexpr double kSouth = -90.0, kEast = 0.0, kTall = 1.2;
+  const geometry::Vec2 size = world.workspace.bounds.size();
+  if (size.y() <= kTall * size.x()) return kSouth;
+  const CameraView south = perspective_view(world, kSouth, top_height, width, height);
+  const CameraView east = perspective_view(world, kEast, top_height, width, height);
+  return east.metres_per_pixel < south.metres_per_pixel ? kEast : kSouth;
+}
+
 }  // namespace
 
 Eigen::Vector2f CameraView::to_pixels(const Eigen::Vector3f& world_point) const {
@@ -148,7 +161,7 @@ Eigen::Vector2f CameraView::to_pixels(const Eigen::Vector3f& world_point) const 
 
 CameraView make_camera_view(const scenario::World& world, double top_height, View view, int width, int height) {
   CameraView result = view == View::kTop ? top_view(world.workspace.bounds, top_height, width, height)
-                                         : perspective_view(world, top_height, width, height);
+                                         : perspective_view(world, azimuth_deg(world, top_height, width, height), top_height, width, height);
   result.width = width;
   result.height = height;
   return result;

@@ -7,7 +7,7 @@ namespace physltl::render {
 
 Image draw_preview(const scenario::World& world, const scenario::EnvironmentState& state, const Overlay& overlay) {
   Renderer renderer(world, world.render.width, world.render.height);
-  return renderer.draw(state, overlay, View::kPerspective);
+  return renderer.draw(state, overlay, world.render.view);
 }
 
 void render_preview(const scenario::World& world, const scenario::EnvironmentState& state, const Overlay& overlay,

@@ -12,6 +12,8 @@
 #include "camera.h"
 #include "flat_geometry.h"
 #include "framing.h"
+#include "label_placement.h"
+#include "legend_layout.h"
 #include "gl_objects.h"
 #include "meshes.h"
 #include "palette.h"
@@ -205,8 +207,10 @@ struct Renderer::Impl {
     PixelRect legend;
     std::vector<std::pair<int, int>> goals;  // object goals' (body, region): their labels
     CameraView camera;
+    std::vector<std::optional<Eigen::Vector2f>> label_corners;  // per region, for every picture of the framing
   };
   std::optional<Framing> framing;
+  PictureWords words;  // of the last picture
 
   // The movable bodies at rest, drawn once into a layer of their own (their mRegions, shadows and bodies,
   // in the order a frame draws them) that every frame lays over the background: a frame then draws only
@@ -392,15 +396,18 @@ struct Renderer::Impl {
     return points;
   }
 
-  // Text in a panel next to a world point.
+  // Text in a panel, one line of a region's label.
   struct Label {
     std::string text;
-    AnchoredRect place;  // the panel's rectangle
+    AnchoredRect place;  // the panel's rectangle below the region, where the framing leaves room for it
     Color panel;
+    std::size_t region = 0;
   };
 
-  // Each region's name, centred below the region rather than on it (a box standing on a region stays
-  // visible), and below it the object goals on that region, "crate -> dock", green while they hold.
+  // Each region's label: its name, and below it the object goals on that region, "crate -> dock", green
+  // while they hold; more than kListedGoals of them are one line, "5 bodies wanted here, 1 in" (the legend
+  // lists them). Anchored centred below the region; where it is drawn is placed_labels' choice.
+  static constexpr int kListedGoals = 2;
   std::vector<Label> labels(const Overlay& overlay) const {
     std::vector<Label> result;
     const float h = font.line_height();
@@ -411,17 +418,81 @@ struct Renderer::Impl {
       float row = 0;
       const auto add = [&](std::string text, const Color& panel) {
         const float w = font.width(text), top = kPanelPadding / 2 + row * (h + kPanelPadding);
-        result.push_back({std::move(text), {anchor, {{-w / 2 - kPanelPadding, top}, {w / 2 + kPanelPadding, top + h + kPanelPadding}}}, panel});
+        result.push_back({std::move(text), {anchor, {{-w / 2 - kPanelPadding, top}, {w / 2 + kPanelPadding, top + h + kPanelPadding}}}, panel, r});
         ++row;
       };
       add(region.name, palette::kPanel);
+      std::vector<const ObjectGoalOverlay*> goals;
       for (const ObjectGoalOverlay& goal : overlay.object_goals) {
-        if (goal.region != static_cast<int>(r)) continue;
-        add(world.movable_bodies[static_cast<std::size_t>(goal.body)].name + " -> " + region.name,
-            goal.holds ? palette::kGoalHolds : palette::kPanel);
+        if (goal.region == static_cast<int>(r)) goals.push_back(&goal);
+      }
+      if (goals.size() > kListedGoals) {
+        const auto in = std::count_if(goals.begin(), goals.end(), [](const ObjectGoalOverlay* g) { return g->holds; });
+        add(std::to_string(goals.size()) + " bodies wanted here, " + std::to_string(in) + " in", in > 0 ? palette::kGoalHolds : palette::kPanel);
+        continue;
+      }
+      for (const ObjectGoalOverlay* goal : goals) {
+        add(world.movable_bodies[static_cast<std::size_t>(goal->body)].name + " -> " + region.name,
+            goal->holds ? palette::kGoalHolds : palette::kPanel);
       }
     }
     return result;
+  }
+
+  // A region's label as a whole: the box of its lines about their anchor.
+  static std::vector<PixelRect> label_extents(const std::vector<Label>& lines, std::size_t regions) {
+    std::vector<PixelRect> extents(regions, PixelRect{Eigen::Vector2f::Constant(std::numeric_limits<float>::max()),
+                                                      Eigen::Vector2f::Constant(-std::numeric_limits<float>::max())});
+    for (const Label& line : lines) {
+      extents[line.region].min = extents[line.region].min.cwiseMin(line.place.offset.min);
+      extents[line.region].max = extents[line.region].max.cwiseMax(line.place.offset.max);
+    }
+    return extents;
+  }
+
+  // The box of `points` in the picture.
+  static PixelRect pixel_box(const CameraView& view, const std::vector<Vector3f>& points) {
+    PixelRect box{Eigen::Vector2f::Constant(std::numeric_limits<float>::max()), Eigen::Vector2f::Constant(-std::numeric_limits<float>::max())};
+    for (const Vector3f& p : points) {
+      const Eigen::Vector2f q = view.to_pixels(p);
+      box.min = box.min.cwiseMin(q);
+      box.max = box.max.cwiseMax(q);
+    }
+    return box;
+  }
+
+  // Every body's outline in the picture, floor to top, the robot's too: what labels should not cover.
+  std::vector<PixelRect> body_boxes(const CameraView& view, const scenario::EnvironmentState& state) const {
+    std::vector<PixelRect> boxes;
+    const auto add = [&](const geometry::Shape& shape, const Pose2& pose, double height) {
+      std::vector<Vector3f> corners;
+      const geometry::Rect b = geometry::bounds(shape, pose);
+      for (double z : {0.0, height}) {
+        for (const Vec2& c : {b.min, b.max, Vec2(b.min.x(), b.max.y()), Vec2(b.max.x(), b.min.y())}) {
+          corners.emplace_back(static_cast<float>(c.x()), static_cast<float>(c.y()), static_cast<float>(z));
+        }
+      }
+      boxes.push_back(pixel_box(view, corners));
+    };
+    for (const scenario::FixedBody& body : world.fixed_bodies) add(body.footprint.shape, body.footprint.pose, body.height);
+    for (std::size_t i = 0; i < world.movable_bodies.size(); ++i) {
+      add(world.movable_bodies[i].footprint.shape, state.movable_poses[i], world.movable_bodies[i].height);
+    }
+    add(geometry::Shape::circle(world.robot.radius), {state.robot_position, 0.0}, 2 * world.robot.radius);
+    return boxes;
+  }
+
+  // Each region label's top-left corner in `view` (label_placement.h), or none where it is left out.
+  std::vector<std::optional<Eigen::Vector2f>> placed_labels(const CameraView& view, const Overlay& overlay, const PixelRect& legend,
+                                                            const scenario::EnvironmentState& state) const {
+    const std::vector<PixelRect> extents = label_extents(labels(overlay), world.regions.size());
+    std::vector<LabelRequest> requests;
+    for (std::size_t r = 0; r < world.regions.size(); ++r) {
+      std::vector<Vector3f> corners;
+      for (const Vec2& v : world.regions[r].polygon.vertices) corners.emplace_back(static_cast<float>(v.x()), static_cast<float>(v.y()), 0.0f);
+      requests.push_back({pixel_box(view, corners), extents[r].max - extents[r].min});
+    }
+    return place_labels(requests, body_boxes(view, state), legend, Eigen::Vector2f(static_cast<float>(width), static_cast<float>(height)));
   }
 
   // The colour of movable body `body`: its own when the task wants it somewhere, else the boxes' blue.
@@ -435,33 +506,35 @@ struct Renderer::Impl {
     return palette::kNamedBodies[static_cast<std::size_t>(it - named.begin()) % std::size(palette::kNamedBodies)];
   }
 
-  // The legend's lines as drawn: a line wider than the frame keeps its beginning and its end.
+  // The legend's lines as drawn (legend_layout.h): at most a share of the frame's height, each line cut to
+  // the frame's width where it keeps its meaning.
   std::string fitted(const std::string& line) const {
-    const float room = static_cast<float>(width) - 2 * kLegendMargin - 2 * kPanelPadding;
-    if (font.width(line) <= room) return line;
-    const auto shortened = [&line](std::size_t keep) {
-      return line.substr(0, (keep + 1) / 2) + "..." + line.substr(line.size() - keep / 2);
-    };
-    std::size_t fits = 0, too_long = line.size();  // characters kept; fewer kept is narrower
-    while (too_long - fits > 1) {
-      const std::size_t middle = (fits + too_long) / 2;
-      (font.width(shortened(middle)) <= room ? fits : too_long) = middle;
-    }
-    return shortened(fits);
+    return fitted_line(font, line, static_cast<float>(width) - 2 * kLegendMargin - 2 * kPanelPadding);
+  }
+  int legend_row_limit() const { return legend_rows(font, height, kLegendMargin + kPanelPadding); }
+  std::vector<std::string> legend_lines(const std::vector<std::string>& lines) const {
+    std::vector<std::string> shown = shown_lines(lines, legend_row_limit());
+    for (std::string& line : shown) line = fitted(line);
+    return shown;
   }
 
+  // The panel for `lines`, or for the widest of each row of `room` (the lines a sequence of pictures will
+  // show), within the legend's share of the frame.
   PixelRect legend_rect(const std::vector<std::string>& lines, const std::vector<std::vector<std::string>>& room) const {
     if (lines.empty() && room.empty()) return {};
+    const auto rows = static_cast<std::size_t>(legend_row_limit());
     float widest = 0;
-    for (const std::string& line : lines) widest = std::max(widest, font.width(fitted(line)));
-    for (const std::vector<std::string>& row : room) {
-      for (const std::string& line : row) widest = std::max(widest, font.width(fitted(line)));
+    for (const std::string& line : legend_lines(lines)) widest = std::max(widest, font.width(line));
+    for (std::size_t r = 0; r < std::min(room.size(), rows); ++r) {
+      for (const std::string& line : room[r]) widest = std::max(widest, font.width(fitted(line)));
     }
-    const float h = font.line_height() * static_cast<float>(std::max(lines.size(), room.size()));
+    if (room.size() > rows) widest = std::max(widest, font.width(shown_lines(std::vector<std::string>(room.size(), ""), static_cast<int>(rows)).back()));
+    const auto shown_rows = std::min(std::max(lines.size(), room.size()), rows);
+    const float h = font.line_height() * static_cast<float>(shown_rows);
     return {{kLegendMargin, kLegendMargin}, {kLegendMargin + widest + 2 * kPanelPadding, kLegendMargin + h + 2 * kPanelPadding}};
   }
 
-  const CameraView& camera(View view_kind, const Overlay& overlay) {
+  const CameraView& camera(View view_kind, const Overlay& overlay, const scenario::EnvironmentState& state) {
     const PixelRect legend = legend_rect(overlay.legend, overlay.legend_room);
     // An object goal's label is as wide whether it holds or not: the framing depends on which goals there are.
     std::vector<std::pair<int, int>> goals;
@@ -471,7 +544,8 @@ struct Renderer::Impl {
       const CameraView view = make_camera_view(world, top_height, view_kind, width, height);
       std::vector<AnchoredRect> places;
       for (const Label& label : labels(overlay)) places.push_back(label.place);
-      framing = Framing{view_kind, legend, goals, leave_room_for_legend(view, world_points(), places, legend)};
+      framing = Framing{view_kind, legend, goals, leave_room_for_legend(view, world_points(), places, legend), {}};
+      framing->label_corners = placed_labels(framing->camera, overlay, legend, state);
     }
     return framing->camera;
   }
@@ -491,17 +565,26 @@ struct Renderer::Impl {
   void upload_text(const CameraView& view, const Overlay& overlay) {
     FlatGeometry panels;
     std::vector<float> glyphs;
-    for (const Label& label : labels(overlay)) {
-      const Eigen::Vector2f at = view.to_pixels(label.place.anchor);
-      const Eigen::Vector2f min = at + label.place.offset.min, max = at + label.place.offset.max;
+    words.labels.clear();
+    const std::vector<Label> lines = labels(overlay);
+    const std::vector<PixelRect> extents = label_extents(lines, world.regions.size());
+    for (const Label& label : lines) {
+      const std::optional<Eigen::Vector2f>& corner = framing->label_corners[label.region];
+      if (!corner) continue;
+      const Eigen::Vector2f min = *corner + label.place.offset.min - extents[label.region].min;
+      const Eigen::Vector2f max = *corner + label.place.offset.max - extents[label.region].min;
       panels.rectangle(min.cast<double>(), max.cast<double>(), label.panel);
       add_text(label.text, min.x() + kPanelPadding, min.y() + kPanelPadding / 2, glyphs);
+      words.labels.push_back({label.text, {min.x(), min.y(), max.x(), max.y()}});
     }
+    words.legend.clear();
     if (!overlay.legend.empty()) {
       const PixelRect legend = legend_rect(overlay.legend, {});
       panels.rectangle(legend.min.cast<double>(), legend.max.cast<double>(), palette::kPanel);
-      for (std::size_t i = 0; i < overlay.legend.size(); ++i) {
-        add_text(fitted(overlay.legend[i]), kLegendMargin + kPanelPadding,
+      words.legend = legend_lines(overlay.legend);
+      words.legend_box = {legend.min.x(), legend.min.y(), legend.max.x(), legend.max.y()};
+      for (std::size_t i = 0; i < words.legend.size(); ++i) {
+        add_text(words.legend[i], kLegendMargin + kPanelPadding,
                  kLegendMargin + kPanelPadding + font.line_height() * static_cast<float>(i), glyphs);
       }
     }
@@ -761,7 +844,7 @@ struct Renderer::Impl {
                                   " movable bodies");
     }
     context->make_current();
-    const CameraView& view = camera(view_kind, overlay);
+    const CameraView& view = camera(view_kind, overlay, state);
     const GlFramebuffer& scene = static_scene(view_kind, view, overlay);
     keep_resting_layer(view_kind, view, overlay, state);
     upload_layers(state, overlay, view);
@@ -816,5 +899,7 @@ Renderer::~Renderer() = default;
 Image Renderer::draw(const scenario::EnvironmentState& state, const Overlay& overlay, View view) {
   return impl_->draw(state, overlay, view);
 }
+
+const PictureWords& Renderer::words() const { return impl_->words; }
 
 }  // namespace physltl::render

@@ -277,11 +277,17 @@ void read_render(TableReader& r, RenderSettings& s) {
   s.width = r.integer("width", s.width);
   s.height = r.integer("height", s.height);
   s.fps = r.integer("fps", s.fps);
+  const std::string view = r.string("view", std::string(render_view_name(s.view)));
+  if (const std::optional<RenderView> named = render_view_named(view)) {
+    s.view = *named;
+  } else {
+    r.error("'view' is \"perspective\" or \"top\", got \"" + view + "\"");
+  }
   if (auto c = r.nested("camera")) {
     if (c->has("target")) s.camera.target = c->point("target");
     s.camera.distance = c->number("distance", s.camera.distance);
     s.camera.elevation_deg = c->number("elevation_deg", s.camera.elevation_deg);
-    s.camera.azimuth_deg = c->number("azimuth_deg", s.camera.azimuth_deg);
+    if (const auto azimuth = c->optional_number("azimuth_deg")) s.camera.azimuth_deg = *azimuth;
     s.camera.fov_deg = c->number("fov_deg", s.camera.fov_deg);
     c->finish();
   }

@@ -424,7 +424,7 @@ class Validator {
     check_range(r.where, "render: 'fps'", r.fps, 1.0, 240.0, true);
     check_range(r.where, "render: camera 'distance'", r.camera.distance, 0.0, kMaxLength, true);
     check_range(r.where, "render: camera 'elevation_deg'", r.camera.elevation_deg, 0.0, 90.0, true);
-    check_range(r.where, "render: camera 'azimuth_deg'", r.camera.azimuth_deg, -360.0, 360.0, true);
+    if (r.camera.azimuth_deg) check_range(r.where, "render: camera 'azimuth_deg'", *r.camera.azimuth_deg, -360.0, 360.0, true);
     check_range(r.where, "render: camera 'fov_deg'", r.camera.fov_deg, 1.0, 170.0, true);
   }
 

@@ -36,6 +36,15 @@ const char* drive_name(Drive drive) {
   return "?";
 }
 
+std::string_view render_view_name(RenderView view) { return view == RenderView::kTop ? "top" : "perspective"; }
+
+std::optional<RenderView> render_view_named(std::string_view name) {
+  for (RenderView view : {RenderView::kPerspective, RenderView::kTop}) {
+    if (name == render_view_name(view)) return view;
+  }
+  return std::nullopt;
+}
+
 std::string number_text(double value) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", value);

@@ -92,11 +92,12 @@ nlohmann::ordered_json to_json(const World& world) {
        {{"width", rs.width},
         {"height", rs.height},
         {"fps", rs.fps},
+        {"view", render_view_name(rs.view)},
         {"camera",
          {{"target", rs.camera.target ? point(*rs.camera.target) : nlohmann::ordered_json(nullptr)},
           {"distance", rs.camera.distance},
           {"elevation_deg", rs.camera.elevation_deg},
-          {"azimuth_deg", rs.camera.azimuth_deg},
+          {"azimuth_deg", rs.camera.azimuth_deg ? nlohmann::ordered_json(*rs.camera.azimuth_deg) : nlohmann::ordered_json(nullptr)},
           {"fov_deg", rs.camera.fov_deg}}}}},
   };
 }

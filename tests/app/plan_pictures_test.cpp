@@ -11,6 +11,7 @@
 #include "physltl/scenario/load.h"
 #include "physltl/knowledge/reasoning.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -91,6 +92,21 @@ TEST_F(FixedPlan, FramesCoverThePlanAtTheScenariosFrameRate) {
   const int frame = static_cast<int>(std::round(push_time * world_->render.fps));
   EXPECT_TRUE(render::matches_golden(render::read_png(render::FrameWriter::frame_path(frames, frame)),
                                      "ordered_plan_mid_push"));
+}
+
+// The legend speaks the user's words: a region by its name while the robot is in one, nothing of the
+// planner's own (its "p0" for no region) otherwise.
+TEST_F(FixedPlan, TheLegendNamesTheRegionTheRobotIsInAndNoOther) {
+  PlanAnimation animation(*world_, *reasoning_, *replay_, static_cast<int>(as_written_->dfa.size()));
+  animation.draw(0.0);
+  ASSERT_GE(animation.words().legend.size(), 2u);
+  EXPECT_EQ(animation.words().legend[1], "t = 0.00 s");
+  const auto in_p1 = std::find(replay_->region_trace.begin(), replay_->region_trace.end(), 0) - replay_->region_trace.begin();
+  ASSERT_LT(static_cast<std::size_t>(in_p1), replay_->region_trace.size());
+  const double time = world_->planner.step_size * (static_cast<double>(in_p1) + 0.5);  // within its step
+  animation.draw(time);
+  EXPECT_EQ(animation.words().legend[1], fmt::format("t = {:.2f} s   in {}", time, world_->regions[0].name));
+  for (const std::string& line : animation.words().legend) EXPECT_EQ(line.find("p0"), std::string::npos) << line;
 }
 
 TEST_F(FixedPlan, TreePictureShowsTheSearchAndThePath) {

@@ -85,6 +85,20 @@ TEST(Run, ImprovingForSecondsSpendsThemAndMarksTheReport) {
 }
 
 // The plan's cost to its user, as --cost names it, beside the bound no plan of the task goes below.
+// --view chooses how the frames look at the world over the scenario's render { view }; another word is
+// refused before any work, naming the choices.
+TEST(Run, ViewDrawsTheFramesFromAboveOrRefusesAnotherWord) {
+  const fs::path out = fresh_out_dir();
+  const Result bad = run(kSource + "/scenarios/ordered.lua --view sideways --out " + out.string());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--view: sideways not in {perspective,top}"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(out / "ordered"));
+  ASSERT_EQ(run(kSource + "/scenarios/ordered.lua --seed 3 --threads 1 --improve 0 --render --view top --quiet --out " + (out / "top").string()).exit_code, 0);
+  ASSERT_EQ(run(kSource + "/scenarios/ordered.lua --seed 3 --threads 1 --improve 0 --render --quiet --out " + (out / "perspective").string()).exit_code, 0);
+  const std::string last = "ordered/frames/frame_00000.png";
+  EXPECT_NE(slurp(out / "top" / last), slurp(out / "perspective" / last));
+}
+
 TEST(Run, GivesThePlansCostOfTheUsersChoiceBesideItsBound) {
   const fs::path out = fresh_out_dir();
   const Result time_cost = run(kSource + "/scenarios/ordered.lua --seed 3 --threads 1 --out " + out.string());

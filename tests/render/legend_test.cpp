@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -66,7 +68,12 @@ TEST(Legend, NoLegendPixelLiesOverTheWorldOrARegionLabel) {
                                          "planned: F(loading_bay_north_west & F(charger_north_east & F p4))",
                                          "mRegions: coloured = the robot may push from there, grey = blocked",
                                          "red: regions the task never enters"};
-  const std::vector<std::string> wider_than_the_image = {long_formula(64), "t = 12.34 s   region: p0"};
+  const std::vector<std::string> wider_than_the_image = {long_formula(64), "t = 12.34 s   in p4"};
+  const auto facts = [](int n) {
+    std::vector<std::string> lines = {"task: F G(boxes@goals)", "object facts: 3 of " + std::to_string(n) + " hold"};
+    for (int i = 1; i <= n; ++i) lines.push_back("M" + std::to_string(i) + " -> goal" + std::to_string(i % 7 + 1) + ": not yet");
+    return lines;
+  };
   const std::vector<Case> cases = {
       {"wide", {{0, 0}, {40, 8}}, 1.0, five},
       {"tall", {{-2, -15}, {2, 15}}, 1.0, five},
@@ -75,6 +82,9 @@ TEST(Legend, NoLegendPixelLiesOverTheWorldOrARegionLabel) {
       {"off origin", {{-120, 40}, {-110, 48}}, 0.5, one},
       {"paper's rooms", {{-5, -5}, {5, 5}}, 0.6, five},
       {"formula wider than the image", {{0, 0}, {20, 20}}, 1.0, wider_than_the_image},
+      {"30 object facts", {{0, 0}, {4.8, 7.2}}, 0.6, facts(30)},
+      {"100 object facts", {{0, 0}, {12, 9}}, 0.6, facts(100)},
+      {"100 object facts, tall", {{0, 0}, {2, 12}}, 0.6, facts(100)},
   };
   for (const Case& c : cases) {
     const scenario::World world = walled(c.bounds, c.wall_height);
@@ -104,6 +114,9 @@ TEST(Legend, NoLegendPixelLiesOverTheWorldOrARegionLabel) {
       }
       EXPECT_GT(legend_pixels, 200);
       EXPECT_EQ(covered, 0);
+      // However many lines it is given, the legend takes at most its share of the frame's height.
+      const PixelBox& panel = renderer.words().legend_box;
+      EXPECT_LE(panel.y1, 0.3 * b.height + 1) << renderer.words().legend.size() << " lines";
       // Room is made by moving and shrinking the world, never by losing it: it still fills a good part of
       // the frame along one side.
       ASSERT_GE(right, left);
@@ -114,17 +127,28 @@ TEST(Legend, NoLegendPixelLiesOverTheWorldOrARegionLabel) {
   }
 }
 
-// The legend's lines are never cut off at the frame's edge: a line too wide keeps its beginning and end.
-TEST(Legend, ALineWiderThanTheFrameIsShortenedInItsMiddle) {
+// The legend's lines are never cut off at the frame's edge: a line too wide keeps its beginning up to a
+// whole sub-formula, and closes the brackets it opened; lines beyond the legend's share are counted.
+TEST(Legend, ALineWiderThanTheFrameIsCutAfterAWholeSubFormula) {
   const scenario::World world = walled({{0, 0}, {10, 8}}, 0.5);
   Renderer renderer(world, 320, 240);
   const scenario::EnvironmentState state = scenario::EnvironmentState::initial(world);
   Overlay overlay;
   overlay.legend = {long_formula(64)};
+  for (int i = 0; i < 40; ++i) overlay.legend.push_back("line " + std::to_string(i));
   const Image image = renderer.draw(state, overlay, View::kTop);
   // Row 7 runs through the panel's top padding: panel from the left, background at the right edge.
   EXPECT_FALSE(is_background(image, 8, 7));
   EXPECT_TRUE(is_background(image, image.width - 1, 7));
+  const std::vector<std::string>& shown = renderer.words().legend;
+  ASSERT_GE(shown.size(), 2u);
+  const std::string& task = shown.front();
+  EXPECT_EQ(task.rfind("task: F(p1 & F(p2 & F(p3", 0), 0u) << task;
+  const std::size_t dots = task.find(" ...");
+  ASSERT_NE(dots, std::string::npos) << task;
+  EXPECT_TRUE(std::isdigit(static_cast<unsigned char>(task[dots - 1]))) << task;  // after a whole name, p<k>
+  EXPECT_EQ(std::count(task.begin(), task.end(), '('), std::count(task.begin(), task.end(), ')')) << task;
+  EXPECT_EQ(shown.back(), "... " + std::to_string(41 - (shown.size() - 1)) + " more lines");
 }
 
 }  // namespace

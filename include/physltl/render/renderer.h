@@ -26,6 +26,8 @@ class Renderer {
   Renderer& operator=(const Renderer&) = delete;
 
   Image draw(const scenario::EnvironmentState& state, const Overlay& overlay, View view);
+  // The words of the last picture and where they stand (docs/rendering.md, "The legend" and "Labels").
+  const PictureWords& words() const;
 
  private:
   struct Impl;

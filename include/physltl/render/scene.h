@@ -3,6 +3,7 @@
 // layer computes mRegions, the planner its tree and path, the app the legend. The renderer draws, nothing more.
 
 #include "physltl/geometry/shapes.h"
+#include "physltl/scenario/world.h"
 
 #include <array>
 #include <string>
@@ -61,9 +62,23 @@ struct Overlay {
   std::vector<std::vector<std::string>> legend_room;
 };
 
-enum class View {
-  kPerspective,  // the 3/4 view of World::render.camera
-  kTop,          // orthographic from above, fitted to the workspace
+// A rectangle of a picture in pixels, origin top left, y down.
+struct PixelBox {
+  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 };
+struct PlacedLabel {
+  std::string text;
+  PixelBox box;  // its panel
+};
+// What a picture says in words: the legend's lines as drawn (cut to fit) and its panel, and each label
+// line drawn with its panel; a region label left out for want of room is not among them.
+struct PictureWords {
+  std::vector<std::string> legend;
+  PixelBox legend_box;
+  std::vector<PlacedLabel> labels;
+};
+
+// kPerspective: the 3/4 view of World::render.camera; kTop: orthographic from above, fitted to the workspace.
+using View = scenario::RenderView;
 
 }  // namespace physltl::render

@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <string_view>
 #include <vector>
 
 namespace physltl::scenario {
@@ -133,14 +134,23 @@ struct Camera {
   std::optional<Vec2> target;  // unset: the workspace's centre, and the picture centred on the workspace
   double distance = 0.0;       // 0: fit the workspace
   double elevation_deg = 55.0;
-  double azimuth_deg = -90.0;
+  // Unset: from the south (-90) or the east (0), whichever shows the workspace larger, so that a tall world
+  // runs across a wide frame (docs/rendering.md, "Framing").
+  std::optional<double> azimuth_deg;
   double fov_deg = 45.0;
 };
+
+// How the frames of a plan (and preview.png) look at the world: the camera's 3/4 view, or straight down.
+enum class RenderView { kPerspective, kTop };
+std::string_view render_view_name(RenderView view);
+// The view named `name` ("perspective" or "top"), or none for another name.
+std::optional<RenderView> render_view_named(std::string_view name);
 
 struct RenderSettings {
   int width = 640;
   int height = 480;
   int fps = 30;
+  RenderView view = RenderView::kPerspective;
   Camera camera;
   Location where{};
 };

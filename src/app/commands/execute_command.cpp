@@ -5,6 +5,7 @@
 #include "cli/number_args.h"
 #include "cli/planner_args.h"
 #include "cli/scenario_args.h"
+#include "cli/view_args.h"
 #include "common/files.h"
 #include "common/output_folder.h"
 #include "physltl/execution/executor.h"
@@ -41,6 +42,7 @@ struct ExecuteArgs {
   std::string out_dir = "out";
   bool quiet = false;
   bool render = false;
+  std::optional<scenario::RenderView> view;  // overrides the scenario's render { view = ... }
 };
 
 // --render: one executed world (the first that replanned, else the first) as frames and a video, with the
@@ -77,7 +79,7 @@ void render_execution(const scenario::World& model, const knowledge::Reasoning& 
 
 int execute(const ExecuteArgs& args) {
   const planning::PlannerEntry& planner = args.planner ? parse_planner(*args.planner) : registry().default_planner();
-  const scenario::World world = load_world(args.scenario.path, args.scenario.settings, {args.seed, {}, args.uncertainty, {}});
+  const scenario::World world = load_world(args.scenario.path, args.scenario.settings, {args.seed, {}, args.uncertainty, {}, args.view});
   const auto say = [&](const std::string& line) {
     if (!args.quiet) std::cout << line << "\n";
   };
@@ -151,6 +153,7 @@ CommandRunner add_execute_command(CLI::App& app) {
   app.add_flag("--quiet", args->quiet, "Print only errors");
   app.add_flag("--render", args->render,
                "Also draw one executed world (the first that replanned) as execution/frame_*.png and execution.mp4");
+  add_view_option(app, args->view);
   return [args] { return execute(*args); };
 }
 

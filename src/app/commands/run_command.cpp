@@ -5,6 +5,7 @@
 #include "cli/number_args.h"
 #include "cli/planner_args.h"
 #include "cli/scenario_args.h"
+#include "cli/view_args.h"
 #include "common/stop_signal.h"
 #include "common/files.h"
 #include "common/output_folder.h"
@@ -52,6 +53,7 @@ struct RunArgs {
   int robustness = 0;                      // perturbed worlds to replay the plan in (docs/robustness.md)
   std::optional<std::string> uncertainty;  // overrides the scenario's uncertainty { ... }
   std::optional<std::string> cost;         // overrides the scenario's planner { cost = ... }
+  std::optional<scenario::RenderView> view;  // overrides the scenario's render { view = ... }
 };
 
 // Progress goes to stderr only when a person watches it.
@@ -172,7 +174,7 @@ void write_plan_files(const PlanningRun& run, const planning::ValidatedPlan& sol
 int run(const RunArgs& args) {
   const planning::PlannerEntry& planner = chosen_planner(args);
   const scenario::World world =
-      load_world(args.scenario.path, args.scenario.settings, {args.seed, args.time_limit, args.uncertainty, args.cost});
+      load_world(args.scenario.path, args.scenario.settings, {args.seed, args.time_limit, args.uncertainty, args.cost, args.view});
   const Say say = [&](const std::string& line) {
     if (!args.quiet) std::cout << line << "\n";
   };
@@ -218,6 +220,7 @@ CommandRunner add_run_command(CLI::App& app) {
   auto args = std::make_shared<RunArgs>();
   args->scenario.add_to(app);
   app.add_flag("--render", args->render, "Also write frames/, tree.png and plan.mp4");
+  add_view_option(app, args->view);
   app.add_option("--seed", args->seed, "Seed of the planner's random generator (default: the scenario's)")->check(seed_number());
   app.add_option("--time-limit", args->time_limit, "Planning time limit in seconds (default: the scenario's)")
       ->check(number_in(0.0, 1e6));

@@ -20,6 +20,7 @@ scenario::World load_world(const std::string& path, const std::vector<std::strin
   if (overrides.time_limit) world.planner.time_limit = *overrides.time_limit;
   if (overrides.uncertainty) world.uncertainty = override_uncertainty(world.uncertainty, *overrides.uncertainty);
   if (overrides.cost) world.planner.cost = cost_from_flag(*overrides.cost);
+  if (overrides.view) world.render.view = *overrides.view;
   return world;
 }
 

@@ -21,6 +21,7 @@ struct WorldOverrides {
   std::optional<double> time_limit;
   std::optional<std::string> uncertainty;  // --uncertainty k=v,...: replaces those of the scenario's
   std::optional<std::string> cost;         // --cost: replaces the scenario's planner { cost = ... }
+  std::optional<scenario::RenderView> view;  // --view: replaces the scenario's render { view = ... }
 };
 
 // The scenario at `path` with `settings` for its script's params, and `overrides` applied. Throws

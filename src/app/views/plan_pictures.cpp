@@ -57,10 +57,12 @@ PlanAnimation::PlanAnimation(const scenario::World& world, const knowledge::Reas
       renderer_(std::make_unique<render::Renderer>(world, world.render.width, world.render.height)) {
   overlay_.segments = marks;
   overlay_.avoided_regions = ltl::avoided_propositions(reasoning.task.normal_form);
-  overlay_.legend_room = {{task_line_}, {time_line(duration_s_, "p0")}, {automaton_line(automaton_states, true)}};
+  overlay_.legend_room = {{task_line_}, {time_line(duration_s_, "")}, {automaton_line(automaton_states, true)}};
   if (!mark_legend.empty()) overlay_.legend_room.push_back({mark_legend});
   for (const scenario::Region& r : world.regions) overlay_.legend_room[1].push_back(time_line(duration_s_, r.name));
-  for (render::ObjectGoalOverlay goal : object_goal_overlays(world, reasoning, replay.states.front())) {
+  const auto goals = object_goal_overlays(world, reasoning, replay.states.front());
+  if (goals.size() > kListedFacts) overlay_.legend_room.push_back({fact_summary(goals.size(), goals.size())});
+  for (render::ObjectGoalOverlay goal : goals) {
     goal.holds = false;
     const std::string not_yet = object_goal_line(world, goal);
     goal.holds = true;
@@ -72,12 +74,37 @@ PlanAnimation::PlanAnimation(const scenario::World& world, const knowledge::Reas
 
 PlanAnimation::~PlanAnimation() = default;
 
+// Up to kListedFacts object facts, one line each; more are summed up in one line, "object facts: 3 of 25
+// hold", followed by the facts that changed last (the legend's share of the frame keeps what fits).
+std::vector<std::string> PlanAnimation::object_goal_lines(double time) {
+  const std::vector<render::ObjectGoalOverlay>& goals = overlay_.object_goals;
+  if (goal_changed_at_.size() != goals.size()) goal_changed_at_.assign(goals.size(), {-1.0, false});
+  std::vector<std::size_t> order(goals.size());
+  for (std::size_t g = 0; g < goals.size(); ++g) {
+    order[g] = g;
+    if (goal_changed_at_[g].first < 0 || goal_changed_at_[g].second != goals[g].holds) goal_changed_at_[g] = {time, goals[g].holds};
+  }
+  std::vector<std::string> lines;
+  if (goals.size() > kListedFacts) {
+    const auto holding = std::count_if(goals.begin(), goals.end(), [](const render::ObjectGoalOverlay& g) { return g.holds; });
+    lines.push_back(fact_summary(static_cast<std::size_t>(holding), goals.size()));
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return goal_changed_at_[a].first > goal_changed_at_[b].first; });
+  }
+  for (std::size_t g : order) lines.push_back(object_goal_line(world_, goals[g]));
+  return lines;
+}
+
+std::string PlanAnimation::fact_summary(std::size_t holding, std::size_t facts) {
+  return fmt::format("object facts: {} of {} hold, last changed first:", holding, facts);
+}
+
 int PlanAnimation::frame_count() const {
   return static_cast<int>(std::ceil(duration_s_ * world_.render.fps - 1e-9)) + 1;
 }
 
+// The region's name while the robot is in one; no name of the planner's own (its "p0", no region) is shown.
 std::string PlanAnimation::time_line(double time, const std::string& region) {
-  return fmt::format("t = {:.2f} s   region: {}", time, region);
+  return region.empty() ? fmt::format("t = {:.2f} s", time) : fmt::format("t = {:.2f} s   in {}", time, region);
 }
 
 std::string PlanAnimation::automaton_line(int state, bool accepting) const {
@@ -101,16 +128,16 @@ render::Image PlanAnimation::draw(double time_s) {
   overlay_.mregions = mregion_overlays(reasoning_.knowledge, kappa_, state);
   const int region = replay_.region_trace[i];
   const int q = replay_.automaton_trace[i];
-  overlay_.legend = {task_line_, time_line(time, region < 0 ? "p0" : world_.regions[region].name),
+  overlay_.legend = {task_line_, time_line(time, region < 0 ? "" : world_.regions[static_cast<std::size_t>(region)].name),
                      automaton_line(q, q == replay_.automaton_trace.back() && replay_.accepted)};
   if (!mark_legend_.empty()) overlay_.legend.push_back(mark_legend_);
   overlay_.object_goals = object_goal_overlays(world_, reasoning_, state);
-  for (const render::ObjectGoalOverlay& goal : overlay_.object_goals) overlay_.legend.push_back(object_goal_line(world_, goal));
+  for (std::string& line : object_goal_lines(time)) overlay_.legend.push_back(std::move(line));
   for (std::string& line : object_group_lines(world_, reasoning_, state)) overlay_.legend.push_back(std::move(line));
   // The travelled path up to now: extended while frames go forward, as the video draws them.
   if (overlay_.path.size() > i + 1) overlay_.path.resize(i + 1);
   while (overlay_.path.size() <= i) overlay_.path.push_back(replay_.states.robot_position(overlay_.path.size()));
-  return renderer_->draw(state, overlay_, render::View::kPerspective);
+  return renderer_->draw(state, overlay_, world_.render.view);
 }
 
 PlanFrames write_plan_frames(const scenario::World& world, const knowledge::Reasoning& reasoning, const planning::Replay& replay,

@@ -43,9 +43,13 @@ class PlanAnimation {
   int frame_count() const;  // at the World's fps, the last one at the final state
   // Linearly interpolated between physics steps, so boxes glide as they were pushed; clamped to the plan.
   render::Image draw(double time_s);
+  const render::PictureWords& words() const { return renderer_->words(); }  // of the last frame drawn
 
  private:
   static std::string time_line(double time, const std::string& region);
+  static constexpr std::size_t kListedFacts = 3;
+  std::vector<std::string> object_goal_lines(double time);
+  static std::string fact_summary(std::size_t holding, std::size_t facts);
   std::string automaton_line(int state, bool accepting) const;
 
   const scenario::World& world_;
@@ -60,6 +64,8 @@ class PlanAnimation {
   knowledge::Kappa kappa_;
   std::optional<knowledge::BodyLocator> kappa_poses_;
   render::Overlay overlay_;  // kept from frame to frame: the travelled path only grows while time goes on
+  // Per object goal, when it last changed and whether it held then: the legend shows the latest first.
+  std::vector<std::pair<double, bool>> goal_changed_at_;
 };
 
 // frames/frame_00000.png ... at the World's fps, linearly interpolated between physics steps so boxes
