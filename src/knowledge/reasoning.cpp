@@ -2,6 +2,8 @@
 
 #include "physltl/knowledge/labelling.h"
 #include "physltl/ltl/object_atom.h"
+#include "physltl/ltl/translate.h"
+#include "physltl/scenario/diagnostic.h"
 
 #include <string>
 #include <utility>
@@ -51,7 +53,13 @@ Reasoning reason_about(const scenario::World& world) {
   scenario::EnvironmentState state = scenario::EnvironmentState::initial(world);
   Kappa kappa = infer(k, state);
   Feasibility feasibility = evaluate_feasibility(k, object_propositions(world));
-  ltl::Analysis task = ltl::analyse(world.task.parsed, feasibility.invalid_names(), feasibility.always_true_names());
+  ltl::Analysis task = [&] {
+    try {
+      return ltl::analyse(world.task.parsed, feasibility.invalid_names(), feasibility.always_true_names());
+    } catch (const ltl::AutomatonTooLarge& e) {
+      throw scenario::ScenarioError({{world.task.where, e.what()}});  // the author's to change: exit 2
+    }
+  }();
   if (task.dfa) {
     // The first letter is known before any planning: a task that it already loses ("G !hazard" with the
     // robot starting in the hazard) is infeasible, for a reason the author can act on.

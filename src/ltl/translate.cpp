@@ -95,6 +95,9 @@ class Translator {
   int intern_dnf(Dnf d) {
     auto [it, inserted] = dnf_ids_.try_emplace(std::move(d), static_cast<int>(dnfs_.size()));
     if (inserted) dnfs_.push_back(&it->first);
+    // Every state is one of these formulas, and a successor diagram makes them for all letters at once:
+    // counted here, a task too large is refused before the first state's successors are all made.
+    if (dnfs_.size() > kMaxFormulas) throw AutomatonTooLarge();
     return it->second;
   }
 
@@ -321,6 +324,7 @@ class Translator {
       for (int key : dd_.leaf_values(root)) {
         auto [it, inserted] = state_of_key_.try_emplace(key, static_cast<int>(state_keys_.size()));
         if (inserted) state_keys_.push_back(key);
+        if (state_keys_.size() > kMaxAutomatonStates) throw AutomatonTooLarge();
         successors.push_back(it->second);
       }
       successors_.push_back(std::move(successors));
@@ -515,6 +519,11 @@ class Translator {
 };
 
 }  // namespace
+
+AutomatonTooLarge::AutomatonTooLarge()
+    : std::runtime_error("the task's automaton would have over " + std::to_string(kMaxAutomatonStates) +
+                         " states (each fact the task wants in any order doubles them): ask for fewer at once, "
+                         "in an order (F(a & F b) rather than F a & F b), or through groups (docs/scenarios.md#groups)") {}
 
 Dfa translate(const Formula& f) {
   const Formula pnf = positive_normal_form(f);

@@ -5,12 +5,14 @@
 #include "../scenario/bad_scenario_files.h"
 #include "command_runner.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <sys/resource.h>
 
 #include <chrono>
 #include <cstdlib>
+#include <fstream>
 
 namespace {
 
@@ -85,6 +87,29 @@ TEST(BadFormula, EveryMalformedFormulaExitsTwoWithAColumnAndNeverCrashes) {
     EXPECT_EQ(r.exit_code, 2) << r.err.substr(0, 500);
     EXPECT_NE(r.err.find("column "), std::string::npos) << r.err.substr(0, 500);
   }
+}
+
+// A task whose automaton would be too large (20 regions in any order: 2^20 states, which once took 22 GB
+// before the kernel ended the run) is refused as the author's to change: exit 2 with file:line from the
+// main job, exit 2 from `ltl`, and nothing written.
+TEST(BadFormula, ATaskOfTooManyFactsInAnyOrderIsRefusedWithWhereItStands) {
+  const fs::path dir = test_dir("too_large");
+  std::string regions, formula;
+  for (int i = 1; i <= 20; ++i) {
+    regions += fmt::format("region {{ name = \"p{}\", rect = {{ {{ {}, 1 }}, {{ {}, 1.5 }} }} }}\n", i, i, i + 0.5);
+    formula += fmt::format("{}F p{}", i > 1 ? " & " : "", i);
+  }
+  std::ofstream(dir / "every_region.lua") << "workspace { bounds = { { 0, 0 }, { 22, 3 } } }\n"
+                                          << "robot { radius = 0.25, start = { 0.5, 0.5 } }\n"
+                                          << regions << "task { formula = \"" << formula << "\" }\n";
+  const fs::path out = fresh_out_dir();
+  const Result r = run((dir / "every_region.lua").string() + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("every_region.lua:23: the task's automaton would have over 10000 states"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out / "every_region"));
+  const Result ltl = run("ltl " + shell_quoted(formula));
+  EXPECT_EQ(ltl.exit_code, 2) << ltl.err;
+  EXPECT_NE(ltl.err.find("ask for fewer at once, in an order"), std::string::npos) << ltl.err;
 }
 
 TEST(MissingTools, WithoutFfmpegRenderingWritesFramesAndSaysHowToGetAVideo) {

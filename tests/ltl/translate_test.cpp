@@ -31,6 +31,14 @@ TEST(Translate, CoverageOfNRegionsHasTwoToTheNStates) {
   for (int n = 1; n <= 10; ++n) EXPECT_EQ(dfa_of(joined(n, " & ")).size(), std::size_t{1} << n) << n;
 }
 
+// Past its bound the automaton is refused, not built: covering 20 or 64 regions in any order would be
+// 2^20 or 2^64 states (the first took 22 GB before the kernel ended the run). 13 regions are 8,192 states.
+TEST(Translate, ATaskOfTooManyStatesIsRefusedAndOneBelowTheBoundIsNot) {
+  EXPECT_EQ(dfa_of(joined(13, " & ")).size(), std::size_t{1} << 13);
+  for (int n : {14, 20, 64}) EXPECT_THROW(dfa_of(joined(n, " & ")), AutomatonTooLarge) << n;
+  EXPECT_EQ(dfa_of(sequencing(200)).size(), 201u);  // long but in an order: linear
+}
+
 TEST(Translate, DisjunctionOfNRegionsHasTwoStates) {
   for (int n = 1; n <= 10; ++n) {
     const Dfa dfa = dfa_of(joined(n, " | "));

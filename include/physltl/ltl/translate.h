@@ -14,9 +14,26 @@
 #include "physltl/ltl/dfa.h"
 #include "physltl/ltl/formula.h"
 
+#include <cstddef>
+#include <stdexcept>
+
 namespace physltl::ltl {
 
-// The alphabet is propositions(f), in that order. Any LTL formula.
+// The most states the construction explores before minimising, and the most formulas it makes on the way
+// (states are formulas; the successors of one state for every letter are made at once). Tasks that would
+// need more ask for a number of things in every order (`F a1 & ... & F a20`: 2^20 states, which took
+// 22 GB before the kernel ended the run); 13 such facts (8,192 states) took 0.5 s and 0.3 GB, and no
+// planner could search the product of more.
+inline constexpr std::size_t kMaxAutomatonStates = 10'000;
+inline constexpr std::size_t kMaxFormulas = 100'000;
+
+// A formula whose automaton would have more than kMaxAutomatonStates states: the author's to change.
+class AutomatonTooLarge : public std::runtime_error {
+ public:
+  AutomatonTooLarge();
+};
+
+// The alphabet is propositions(f), in that order. Any LTL formula. Throws AutomatonTooLarge.
 Dfa translate(const Formula& f);
 
 }  // namespace physltl::ltl

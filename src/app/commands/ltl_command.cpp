@@ -3,6 +3,7 @@
 #include "physltl/ltl/analysis.h"
 #include "physltl/ltl/co_safety.h"
 #include "physltl/ltl/hoa.h"
+#include "physltl/ltl/translate.h"
 #include "physltl/ltl/parser.h"
 
 #include <iostream>
@@ -38,6 +39,8 @@ CommandRunner add_ltl_command(CLI::App& app) {
         return ltl::analyse(o->formula, o->invalid);
       } catch (const ltl::ParseError& e) {
         throw BadInput(std::string("bad formula: ") + e.what() + pointing_at(o->formula, e.column()));
+      } catch (const ltl::AutomatonTooLarge& e) {
+        throw BadInput(e.what());
       }
     }();
     if (o->hoa) {
