@@ -109,6 +109,32 @@ TEST_F(FixedPlan, TheLegendNamesTheRegionTheRobotIsInAndNoOther) {
   for (const std::string& line : animation.words().legend) EXPECT_EQ(line.find("p0"), std::string::npos) << line;
 }
 
+// The look-ahead's push order in the video as the plan carries it out: the push under way and the ones
+// done, in order; a move the plan never makes stays under way, and the ones after it wait.
+TEST_F(FixedPlan, PlannedMovesAreShownAsThePlanCarriesThemOut) {
+  const scenario::EnvironmentState& first = replay_->states.front();
+  const scenario::EnvironmentState last = replay_->states[replay_->states.size() - 1];
+  const geometry::Vec2 start = first.movable_poses[0].position, end = last.movable_poses[0].position;
+  ASSERT_GT((end - start).norm(), 0.3);  // ordered.lua's plan pushes B1 off p1
+  PlannedMoves moves;
+  moves.moves = {{start, end, (end - start).normalized(), 0}, {end, end + geometry::Vec2(5, 0), geometry::Vec2::UnitX(), 0}};
+  PlanAnimation animation(*world_, *reasoning_, *replay_, static_cast<int>(as_written_->dfa.size()), {}, "", &moves);
+  const auto legend_line = [&](double time) {
+    animation.draw(time);
+    const auto& legend = animation.words().legend;
+    const auto it = std::find_if(legend.begin(), legend.end(), [](const std::string& l) { return l.rfind("look-ahead", 0) == 0; });
+    return it == legend.end() ? std::string() : *it;
+  };
+  EXPECT_EQ(legend_line(0.0), "look-ahead: push 1 of 2 under way (red), done grey");
+  EXPECT_EQ(legend_line(animation.duration_s()), "look-ahead: push 2 of 2 under way (red), done grey");
+  EXPECT_EQ(legend_line(0.0), "look-ahead: push 1 of 2 under way (red), done grey");  // drawn back in time
+  moves.moves.pop_back();
+  PlanAnimation carried(*world_, *reasoning_, *replay_, static_cast<int>(as_written_->dfa.size()), {}, "", &moves);
+  carried.draw(carried.duration_s());
+  EXPECT_NE(std::find(carried.words().legend.begin(), carried.words().legend.end(), "look-ahead: 1 of 1 push carried out (grey)"),
+            carried.words().legend.end());
+}
+
 TEST_F(FixedPlan, TreePictureShowsTheSearchAndThePath) {
   const fs::path file = output("tree") / "tree.png";
   write_tree_picture(*world_, *reasoning_, *decomposition_, *result_, replay_, {}, file);

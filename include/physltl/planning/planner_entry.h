@@ -72,6 +72,7 @@ struct PlannerAccount {
     Vec2 from = Vec2::Zero();
     Vec2 to = Vec2::Zero();
     Vec2 direction = Vec2::UnitX();  // unit
+    int body = -1;                   // the World::movable_bodies index of the body moved; -1: not said
   };
   std::vector<Move> moves;
   std::string moves_legend;  // the legend's line for them

@@ -134,7 +134,7 @@ void render_plan(const PlanningRun& run, const planning::ValidatedPlan& solution
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - frames_started).count();
         progress.show(fmt::format("frames {}/{}, {:.0f} s left", done, total, elapsed / done * (total - done)));
       },
-      moves.arrows, moves.legend);
+      {}, "", &moves);
   progress.done();
   say(fmt::format("render     {} frames, tree.png{}", pictures.frames, pictures.video.written ? ", plan.mp4" : ""));
   if (!pictures.video.written) {

@@ -46,12 +46,15 @@ render::Color automaton_state_color(int state, int states) {
 
 PlanAnimation::PlanAnimation(const scenario::World& world, const knowledge::Reasoning& reasoning,
                              const planning::Replay& replay, int automaton_states,
-                             const std::vector<render::SegmentOverlay>& marks, const std::string& mark_legend)
+                             const std::vector<render::SegmentOverlay>& marks, const std::string& mark_legend,
+                             const PlannedMoves* planned)
     : world_(world),
       reasoning_(reasoning),
       replay_(replay),
       automaton_states_(automaton_states),
       mark_legend_(mark_legend),
+      marks_(marks),
+      planned_(planned != nullptr && !planned->moves.empty() ? planned : nullptr),
       task_line_("task: " + world.task.formula),
       duration_s_(world.planner.step_size * static_cast<double>(replay.states.size() - 1)),
       renderer_(std::make_unique<render::Renderer>(world, world.render.width, world.render.height)) {
@@ -59,6 +62,11 @@ PlanAnimation::PlanAnimation(const scenario::World& world, const knowledge::Reas
   overlay_.avoided_regions = ltl::avoided_propositions(reasoning.task.normal_form);
   overlay_.legend_room = {{task_line_}, {time_line(duration_s_, "")}, {automaton_line(automaton_states, true)}};
   if (!mark_legend.empty()) overlay_.legend_room.push_back({mark_legend});
+  if (planned_ != nullptr) {
+    std::vector<std::string> stages;
+    for (int done = 0; done <= static_cast<int>(planned_->moves.size()); ++done) stages.push_back(planned_->legend_after(done));
+    overlay_.legend_room.push_back(std::move(stages));
+  }
   for (const scenario::Region& r : world.regions) overlay_.legend_room[1].push_back(time_line(duration_s_, r.name));
   const auto goals = object_goal_overlays(world, reasoning, replay.states.front());
   if (goals.size() > kListedFacts) overlay_.legend_room.push_back({fact_summary(goals.size(), goals.size())});
@@ -73,6 +81,23 @@ PlanAnimation::PlanAnimation(const scenario::World& world, const knowledge::Reas
 }
 
 PlanAnimation::~PlanAnimation() = default;
+
+// The look-ahead's push order as the plan has carried it out up to replay state `step`, every state on the
+// way looked at (a move may end where a body only passes); the arrows change only when a push is done.
+void PlanAnimation::show_planned_moves(std::size_t step) {
+  if (planned_ == nullptr) return;
+  if (step < moves_scanned_to_) moves_scanned_to_ = 0, moves_done_so_far_ = 0;  // drawn back in time: from the start
+  for (; moves_scanned_to_ <= step; ++moves_scanned_to_) {
+    moves_done_so_far_ = planned_->carried_out(moves_done_so_far_, replay_.states[moves_scanned_to_]);
+  }
+  const int done = moves_done_so_far_;
+  if (done != moves_done_) {
+    overlay_.segments = marks_;
+    for (const render::SegmentOverlay& arrow : planned_->arrows_after(done)) overlay_.segments.push_back(arrow);
+    moves_done_ = done;
+  }
+  overlay_.legend.push_back(planned_->legend_after(done));
+}
 
 // Up to kListedFacts object facts, one line each; more are summed up in one line, "object facts: 3 of 25
 // hold", followed by the facts that changed last (the legend's share of the frame keeps what fits).
@@ -131,6 +156,7 @@ render::Image PlanAnimation::draw(double time_s) {
   overlay_.legend = {task_line_, time_line(time, region < 0 ? "" : world_.regions[static_cast<std::size_t>(region)].name),
                      automaton_line(q, q == replay_.automaton_trace.back() && replay_.accepted)};
   if (!mark_legend_.empty()) overlay_.legend.push_back(mark_legend_);
+  show_planned_moves(i);
   overlay_.object_goals = object_goal_overlays(world_, reasoning_, state);
   for (std::string& line : object_goal_lines(time)) overlay_.legend.push_back(std::move(line));
   for (std::string& line : object_group_lines(world_, reasoning_, state)) overlay_.legend.push_back(std::move(line));
@@ -143,9 +169,10 @@ render::Image PlanAnimation::draw(double time_s) {
 PlanFrames write_plan_frames(const scenario::World& world, const knowledge::Reasoning& reasoning, const planning::Replay& replay,
                              int automaton_states, const std::filesystem::path& folder,
                              const std::filesystem::path& video, const Progress& progress,
-                             const std::vector<render::SegmentOverlay>& marks, const std::string& mark_legend) {
+                             const std::vector<render::SegmentOverlay>& marks, const std::string& mark_legend,
+                             const PlannedMoves* planned) {
   std::filesystem::create_directories(folder);
-  PlanAnimation animation(world, reasoning, replay, automaton_states, marks, mark_legend);
+  PlanAnimation animation(world, reasoning, replay, automaton_states, marks, mark_legend, planned);
   // One frame per 1/fps from the start, and the last one at the final state: the plan's end (a region
   // entered on its very last step) is always seen.
   const int frames = animation.frame_count();

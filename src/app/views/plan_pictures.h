@@ -32,9 +32,10 @@ struct PlanFrames {
 // object goals) and the path travelled so far.
 class PlanAnimation {
  public:
+  // `planned`: the planner's planned moves (the look-ahead's push order), drawn as they are carried out.
   PlanAnimation(const scenario::World& world, const knowledge::Reasoning& reasoning, const planning::Replay& replay,
                 int automaton_states, const std::vector<render::SegmentOverlay>& marks = {},
-                const std::string& mark_legend = "");
+                const std::string& mark_legend = "", const PlannedMoves* planned = nullptr);
   ~PlanAnimation();
   PlanAnimation(const PlanAnimation&) = delete;
   PlanAnimation& operator=(const PlanAnimation&) = delete;
@@ -49,6 +50,7 @@ class PlanAnimation {
   static std::string time_line(double time, const std::string& region);
   static constexpr std::size_t kListedFacts = 3;
   std::vector<std::string> object_goal_lines(double time);
+  void show_planned_moves(std::size_t step);
   static std::string fact_summary(std::size_t holding, std::size_t facts);
   std::string automaton_line(int state, bool accepting) const;
 
@@ -57,6 +59,11 @@ class PlanAnimation {
   const planning::Replay& replay_;
   int automaton_states_;
   std::string mark_legend_;
+  std::vector<render::SegmentOverlay> marks_;
+  const PlannedMoves* planned_;
+  int moves_done_ = -1;  // of the planned moves, in the last frame drawn
+  int moves_done_so_far_ = 0;          // carried out by the replay's states before moves_scanned_to_
+  std::size_t moves_scanned_to_ = 0;
   std::string task_line_;
   double duration_s_;
   std::unique_ptr<render::Renderer> renderer_;
@@ -76,7 +83,8 @@ class PlanAnimation {
 PlanFrames write_plan_frames(const scenario::World& world, const knowledge::Reasoning& reasoning, const planning::Replay& replay,
                              int automaton_states, const std::filesystem::path& folder,
                              const std::filesystem::path& video, const Progress& progress,
-                             const std::vector<render::SegmentOverlay>& marks = {}, const std::string& mark_legend = "");
+                             const std::vector<render::SegmentOverlay>& marks = {}, const std::string& mark_legend = "",
+                             const PlannedMoves* planned = nullptr);
 
 // tree.png: the decomposition faintly, the tree's edges coloured by automaton state, the path on top, the
 // planner's planned moves as arrows; `reasoning` names the regions the task avoids.

@@ -11,8 +11,24 @@ constexpr render::Color kLastMove{0.35f, 0.0f, 0.45f, 1.0f};
 constexpr double kHeadLength = 0.12;  // m
 constexpr double kShaftWidth = 0.012;  // m between the parallel lines that thicken a shaft
 
+constexpr render::Color kMoveDone{0.6f, 0.6f, 0.6f, 1.0f};
+constexpr render::Color kMoveUnderWay{0.9f, 0.1f, 0.1f, 1.0f};
+constexpr double kNearEnd = 0.3;  // m: at most this far from a move's end, a body has carried it out
+constexpr double kNearShare = 0.45;  // of the move's length: a body pushed halfway has not carried it out
+
 render::Color blend(const render::Color& a, const render::Color& b, float t) {
   return {a.r + t * (b.r - a.r), a.g + t * (b.g - a.g), a.b + t * (b.b - a.b), 1.0f};
+}
+
+render::Color planned_color(std::size_t move, std::size_t moves) {
+  return blend(kFirstMove, kLastMove, moves > 1 ? static_cast<float>(move) / static_cast<float>(moves - 1) : 1.0f);
+}
+
+// A shaft of three parallel lines and a head.
+void add_arrow(const planning::PlannerAccount::Move& move, const render::Color& color, std::vector<render::SegmentOverlay>& out) {
+  const geometry::Vec2 d = move.direction, side(-d.y(), d.x());
+  for (int k = -1; k <= 1; ++k) out.push_back({move.from + k * kShaftWidth * side, move.to + k * kShaftWidth * side, color});
+  for (int s : {-1, 1}) out.push_back({move.to, move.to - kHeadLength * d + s * 0.6 * kHeadLength * side, color});
 }
 
 }  // namespace
@@ -35,16 +51,37 @@ nlohmann::ordered_json refusals_json(const std::vector<std::pair<std::string, lo
 
 PlannedMoves planned_moves(const planning::PlannerAccount& account) {
   PlannedMoves moves;
-  const std::size_t n = account.moves.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const planning::PlannerAccount::Move& move = account.moves[i];
-    const render::Color color = blend(kFirstMove, kLastMove, n > 1 ? static_cast<float>(i) / static_cast<float>(n - 1) : 1.0f);
-    const geometry::Vec2 d = move.direction, side(-d.y(), d.x());
-    for (int k = -1; k <= 1; ++k) moves.arrows.push_back({move.from + k * kShaftWidth * side, move.to + k * kShaftWidth * side, color});
-    for (int s : {-1, 1}) moves.arrows.push_back({move.to, move.to - kHeadLength * d + s * 0.6 * kHeadLength * side, color});
-  }
-  if (n > 0) moves.legend = account.moves_legend;
+  moves.moves = account.moves;
+  for (std::size_t i = 0; i < account.moves.size(); ++i) add_arrow(account.moves[i], planned_color(i, account.moves.size()), moves.arrows);
+  if (!account.moves.empty()) moves.legend = account.moves_legend;
   return moves;
+}
+
+int PlannedMoves::carried_out(int done, const scenario::EnvironmentState& state) const {
+  for (; done < static_cast<int>(moves.size()); ++done) {
+    const planning::PlannerAccount::Move& move = moves[static_cast<std::size_t>(done)];
+    const double near = std::min(kNearEnd, kNearShare * (move.to - move.from).norm());
+    const auto near_end = [&](const geometry::Pose2& pose) { return (pose.position - move.to).norm() <= near; };
+    const bool there = move.body >= 0 ? near_end(state.movable_poses[static_cast<std::size_t>(move.body)])
+                                      : std::any_of(state.movable_poses.begin(), state.movable_poses.end(), near_end);
+    if (!there) break;
+  }
+  return done;
+}
+
+std::vector<render::SegmentOverlay> PlannedMoves::arrows_after(int done) const {
+  std::vector<render::SegmentOverlay> shown;
+  for (std::size_t i = 0; i < moves.size(); ++i) {
+    const auto k = static_cast<std::size_t>(done);
+    add_arrow(moves[i], i < k ? kMoveDone : i == k ? kMoveUnderWay : planned_color(i, moves.size()), shown);
+  }
+  return shown;
+}
+
+std::string PlannedMoves::legend_after(int done) const {
+  const auto n = static_cast<int>(moves.size());
+  if (done >= n) return "look-ahead: " + std::to_string(n) + " of " + std::to_string(n) + (n == 1 ? " push" : " pushes") + " carried out (grey)";
+  return "look-ahead: push " + std::to_string(done + 1) + " of " + std::to_string(n) + " under way (red), done grey";
 }
 
 }  // namespace physltl::app

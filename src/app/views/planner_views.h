@@ -5,6 +5,7 @@
 #include "physltl/planning/planner_entry.h"
 #include "physltl/planning/registry.h"
 #include "physltl/render/scene.h"
+#include "physltl/scenario/state.h"
 #include "physltl/scenario/world.h"
 
 #include <nlohmann/json.hpp>
@@ -27,10 +28,21 @@ void add_planner_keys(nlohmann::ordered_json& report, const std::vector<std::str
 nlohmann::ordered_json refusals_json(const std::vector<std::pair<std::string, long long>>& counts);
 
 // A planner's planned moves as arrows on the floor, from where each body's centre starts to where the move
-// leaves it, the first lightest and the last darkest (tree.png and the frames), with the legend's line.
+// leaves it, the first lightest and the last darkest (tree.png), with the legend's line; the frames of a
+// plan draw them as they are carried out.
 struct PlannedMoves {
+  std::vector<planning::PlannerAccount::Move> moves;
   std::vector<render::SegmentOverlay> arrows;
   std::string legend;  // empty without arrows
+
+  // With `done` moves carried out before `state`, how many are after it: move k is carried out once move
+  // k - 1 is and its body's centre (any movable body's, where the move does not say) comes near its end (within 45 % of its length, at most 30 cm: pushes
+  // leave a body where friction stops it, not on the planned point).
+  int carried_out(int done, const scenario::EnvironmentState& state) const;
+  // The arrows as a frame shows them after `done` moves: those grey, the one under way red, the rest as
+  // in `arrows`; and the legend's line, "look-ahead: push 3 of 6 under way".
+  std::vector<render::SegmentOverlay> arrows_after(int done) const;
+  std::string legend_after(int done) const;
 };
 PlannedMoves planned_moves(const planning::PlannerAccount& account);
 

@@ -99,7 +99,7 @@ PlannerAccount search_account(const SearchReport& report, const scenario::World&
     account.report["lookahead"] = lookahead_json(*report.lookahead, world);
     account.report["lookahead"]["replans"] = report.lookahead_replans;
     account.report["lookahead"]["primitive_controls"] = report.primitive_controls;
-    for (const PlannedPush& push : report.lookahead->pushes) account.moves.push_back({push.from, push.to, Vec2(push.dx, push.dy)});
+    for (const PlannedPush& push : report.lookahead->pushes) account.moves.push_back({push.from, push.to, Vec2(push.dx, push.dy), push.body});
     if (!report.lookahead->pushes.empty()) {
       account.moves_legend = fmt::format("look-ahead: {} push{}, arrows light (first) to dark (last)",
                                          report.lookahead->pushes.size(), report.lookahead->pushes.size() == 1 ? "" : "es");
