@@ -562,7 +562,7 @@ struct Renderer::Impl {
   }
 
   // Region labels and the legend: light panels into panel_layer, glyph quads into glyph_layer.
-  void upload_text(const CameraView& view, const Overlay& overlay) {
+  void upload_text(const Overlay& overlay) {
     FlatGeometry panels;
     std::vector<float> glyphs;
     words.labels.clear();
@@ -602,7 +602,7 @@ struct Renderer::Impl {
     moving_layer.upload(bodies.data(), bodies.size());
     const ShadowGeometry shadow_geometry = movable_shadows(state, true);
     shadow_layer.upload(shadow_geometry.floats().data(), shadow_geometry.floats().size());
-    upload_text(view, overlay);
+    upload_text(overlay);
   }
 
   // Keeps the resting layer true to `state` and `overlay`: drawn again, without them, when bodies it
