@@ -416,8 +416,10 @@ struct Renderer::Impl {
       const Vec2 below(region.polygon.centroid().x(), region.polygon.bounds().min.y());
       const Vector3f anchor(static_cast<float>(below.x()), static_cast<float>(below.y()), 0);
       float row = 0;
-      const auto add = [&](std::string text, const Color& panel) {
-        const float w = font.width(text), top = kPanelPadding / 2 + row * (h + kPanelPadding);
+      // `widest`: the longest text the line shows in any picture of a framing, so that its panel keeps the
+      // place chosen for it.
+      const auto add = [&](std::string text, const Color& panel, const std::string& widest = "") {
+        const float w = std::max(font.width(text), font.width(widest)), top = kPanelPadding / 2 + row * (h + kPanelPadding);
         result.push_back({std::move(text), {anchor, {{-w / 2 - kPanelPadding, top}, {w / 2 + kPanelPadding, top + h + kPanelPadding}}}, panel, r});
         ++row;
       };
@@ -428,7 +430,8 @@ struct Renderer::Impl {
       }
       if (goals.size() > kListedGoals) {
         const auto in = std::count_if(goals.begin(), goals.end(), [](const ObjectGoalOverlay* g) { return g->holds; });
-        add(std::to_string(goals.size()) + " bodies wanted here, " + std::to_string(in) + " in", in > 0 ? palette::kGoalHolds : palette::kPanel);
+        const std::string wanted = std::to_string(goals.size()) + " bodies wanted here, ";
+        add(wanted + std::to_string(in) + " in", in > 0 ? palette::kGoalHolds : palette::kPanel, wanted + std::to_string(goals.size()) + " in");
         continue;
       }
       for (const ObjectGoalOverlay* goal : goals) {
@@ -574,7 +577,7 @@ struct Renderer::Impl {
       const Eigen::Vector2f min = *corner + label.place.offset.min - extents[label.region].min;
       const Eigen::Vector2f max = *corner + label.place.offset.max - extents[label.region].min;
       panels.rectangle(min.cast<double>(), max.cast<double>(), label.panel);
-      add_text(label.text, min.x() + kPanelPadding, min.y() + kPanelPadding / 2, glyphs);
+      add_text(label.text, 0.5f * (min.x() + max.x() - font.width(label.text)), min.y() + kPanelPadding / 2, glyphs);
       words.labels.push_back({label.text, {min.x(), min.y(), max.x(), max.y()}});
     }
     words.legend.clear();

@@ -89,15 +89,28 @@ TEST(Labels, NoTwoLabelsOverlapOnPuzzlesAndAWarehouseInBothViews) {
 
 // Many goals on one region are one line, not a column of them.
 TEST(Labels, ARegionWithManyObjectGoalsSaysHowManyInOneLine) {
-  const scenario::World world = puzzle(5, 5);
+  const scenario::World world = puzzle(12, 6);
   Overlay overlay;
-  for (int b = 0; b < 5; ++b) overlay.object_goals.push_back({b, 2, b == 1});
+  for (int b = 0; b < 12; ++b) overlay.object_goals.push_back({b, 2, b == 1});
   Renderer renderer(world, 640, 480);
   renderer.draw(scenario::EnvironmentState::initial(world), overlay, View::kTop);
   std::vector<std::string> texts;
   for (const PlacedLabel& label : renderer.words().labels) texts.push_back(label.text);
-  EXPECT_NE(std::find(texts.begin(), texts.end(), "5 bodies wanted here, 1 in"), texts.end());
+  EXPECT_NE(std::find(texts.begin(), texts.end(), "12 bodies wanted here, 1 in"), texts.end());
   EXPECT_EQ(std::count_if(texts.begin(), texts.end(), [](const std::string& t) { return t.find("->") != std::string::npos; }), 0);
+  // As the count changes from frame to frame, the label keeps the panel its place was chosen for.
+  const auto panel = [&](const std::string& text) {
+    const auto& labels = renderer.words().labels;
+    const auto it = std::find_if(labels.begin(), labels.end(), [&](const PlacedLabel& l) { return l.text == text; });
+    return it == labels.end() ? PixelBox{} : it->box;
+  };
+  const PixelBox one = panel("12 bodies wanted here, 1 in");
+  for (ObjectGoalOverlay& goal : overlay.object_goals) goal.holds = true;
+  renderer.draw(scenario::EnvironmentState::initial(world), overlay, View::kTop);
+  const PixelBox all = panel("12 bodies wanted here, 12 in");
+  EXPECT_GT(one.x1, one.x0);
+  EXPECT_EQ(one.x0, all.x0);
+  EXPECT_EQ(one.x1, all.x1);
 }
 
 }  // namespace

@@ -103,7 +103,9 @@ void PlanAnimation::show_planned_moves(std::size_t step) {
 // hold", followed by the facts that changed last (the legend's share of the frame keeps what fits).
 std::vector<std::string> PlanAnimation::object_goal_lines(double time) {
   const std::vector<render::ObjectGoalOverlay>& goals = overlay_.object_goals;
-  if (goal_changed_at_.size() != goals.size()) goal_changed_at_.assign(goals.size(), {-1.0, false});
+  // From the start again when a frame goes back in time: what changed later has not changed yet.
+  if (goal_changed_at_.size() != goals.size() || time < last_drawn_s_) goal_changed_at_.assign(goals.size(), {-1.0, false});
+  last_drawn_s_ = time;
   std::vector<std::size_t> order(goals.size());
   for (std::size_t g = 0; g < goals.size(); ++g) {
     order[g] = g;

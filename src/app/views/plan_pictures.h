@@ -73,6 +73,7 @@ class PlanAnimation {
   render::Overlay overlay_;  // kept from frame to frame: the travelled path only grows while time goes on
   // Per object goal, when it last changed and whether it held then: the legend shows the latest first.
   std::vector<std::pair<double, bool>> goal_changed_at_;
+  double last_drawn_s_ = 0.0;
 };
 
 // frames/frame_00000.png ... at the World's fps, linearly interpolated between physics steps so boxes
