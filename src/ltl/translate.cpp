@@ -479,8 +479,11 @@ class Translator {
     return out;
   }
 
-  static void collect_paths(const DecisionDiagram& dd, Node n, Cube& path, std::vector<std::pair<int, Cube>>& out) {
+  void collect_paths(const DecisionDiagram& dd, Node n, Cube& path, std::vector<std::pair<int, Cube>>& out) const {
     if (dd.is_leaf(n)) {
+      // The edges' labels grow with the states times the letters that tell their targets apart: counted
+      // here, where a task of many independent obligations makes them.
+      if (++paths_made_ > kMaxLabelCubes) throw AutomatonTooLarge();
       out.emplace_back(dd.value(n), path);
       return;
     }
@@ -515,15 +518,18 @@ class Translator {
   std::unordered_map<int, int> state_of_key_;
   std::vector<int> state_keys_;
   std::vector<Node> roots_;                   // per state: its successor by letter, as a diagram
+  mutable std::size_t paths_made_ = 0;        // by collect_paths, for every state
   std::vector<std::vector<int>> successors_;  // per state: its distinct successors
 };
 
 }  // namespace
 
 AutomatonTooLarge::AutomatonTooLarge()
-    : std::runtime_error("the task's automaton would have over " + std::to_string(kMaxAutomatonStates) +
-                         " states (each fact the task wants in any order doubles them): ask for fewer at once, "
-                         "in an order (F(a & F b) rather than F a & F b), or through groups (docs/scenarios.md#groups)") {}
+    : std::runtime_error("the task's automaton would be too large (over " + std::to_string(kMaxAutomatonStates) +
+                         " states, or edges labelled by over " + std::to_string(kMaxLabelCubes) +
+                         " cubes): each thing the task asks for in any order, or again and again, doubles it; ask "
+                         "for fewer at once, in an order (F(a & F b) rather than F a & F b), or through groups "
+                         "(docs/scenarios.md#groups)") {}
 
 Dfa translate(const Formula& f) {
   const Formula pnf = positive_normal_form(f);

@@ -19,13 +19,16 @@
 
 namespace physltl::ltl {
 
-// The most states the construction explores before minimising, and the most formulas it makes on the way
-// (states are formulas; the successors of one state for every letter are made at once). Tasks that would
-// need more ask for a number of things in every order (`F a1 & ... & F a20`: 2^20 states, which took
-// 22 GB before the kernel ended the run); 13 such facts (8,192 states) took 0.5 s and 0.3 GB, and no
-// planner could search the product of more.
+// The most states the construction explores before minimising, the most formulas it makes on the way
+// (states are formulas; the successors of one state for every letter are made at once), and the most cubes
+// its edges' labels are made of. Tasks that would need more ask for many things in any order or again and
+// again: `F a1 & ... & F a20` (2^20 states) took 22 GB before the kernel ended the run, `G(a1 -> F b1) &
+// ... & G(a11 -> F b11)` ran past 60 s and 5.5 GB making labels. Within the bounds: coverage of 11 regions
+// (2,048 states, 177,147 edges, 0.07 s), 7 such obligations (129 states, 16,512 edges); one more of
+// either is refused, in at most 0.6 s. No planner could search the product of more.
 inline constexpr std::size_t kMaxAutomatonStates = 10'000;
 inline constexpr std::size_t kMaxFormulas = 100'000;
+inline constexpr std::size_t kMaxLabelCubes = 200'000;
 
 // A formula whose automaton would have more than kMaxAutomatonStates states: the author's to change.
 class AutomatonTooLarge : public std::runtime_error {
