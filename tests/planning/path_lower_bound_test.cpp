@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 namespace physltl::planning {
 namespace {
@@ -149,6 +151,32 @@ TEST(PlanCostBound, NoValidatedPlanCostsLessAndImprovementNeverRaisesTheCost) {
           EXPECT_LE(improvement.progress[i].second, improvement.progress[i - 1].second);
         }
       }
+    }
+  }
+}
+
+// The bound of the motion's time stays at or below every improved plan of every shipped scenario and
+// regression-family world, seeds 1..20: no plan beats it.
+TEST(PlanCostBound, NoImprovedPlanOfAnyShippedOrFamilyWorldIsFasterOverTwentySeeds) {
+  std::vector<std::string> worlds;
+  for (const char* folder : {"/scenarios", "/tests/planning/data/regression"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(PHYSLTL_SOURCE_DIR) + folder)) {
+      if (entry.path().extension() == ".lua") worlds.push_back("../" + std::filesystem::relative(entry.path(), PHYSLTL_SOURCE_DIR).string());
+    }
+  }
+  std::sort(worlds.begin(), worlds.end());
+  ASSERT_GE(worlds.size(), 20u);
+  for (const std::string& name : worlds) {
+    const TestProblem p(name);
+    const double bound = plan_cost_bound(p.world, p.original, p.world.planner.cost);
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+      SCOPED_TRACE(name + ", seed " + std::to_string(seed));
+      PlanResult result = p.solve(seed);
+      if (!result.solved) continue;  // the bound speaks of plans; a search the test's time limit cut has none
+      Replay replay = p.check(result.plan);
+      ASSERT_TRUE(replay.validated()) << replay.failure;
+      const Improvement improvement = improve(p.problem(), knowledge::ValidityMode::kKnowledge, seed, 100, result.plan, replay);
+      EXPECT_LE(bound, cost_of(p.world.planner.cost, improvement.improved) + 1e-9);
     }
   }
 }
