@@ -42,9 +42,11 @@ std::vector<std::string> shown_lines(const std::vector<std::string>& lines, int 
   const auto limit = static_cast<std::size_t>(std::max(rows, 1));
   if (lines.size() <= limit) return lines;
   std::vector<std::string> shown(lines.begin(), lines.begin() + static_cast<std::ptrdiff_t>(limit - 1));
-  shown.push_back("... " + std::to_string(lines.size() - shown.size()) + " more lines");
+  shown.push_back(more_lines(lines.size() - shown.size()));
   return shown;
 }
+
+std::string more_lines(std::size_t hidden) { return "... " + std::to_string(hidden) + " more lines"; }
 
 int legend_rows(const FontAtlas& font, int height, float padding) {
   return std::max(kLeastLegendRows, static_cast<int>(std::floor((kLegendHeightShare * static_cast<float>(height) - 2 * padding) / font.line_height())));

@@ -19,8 +19,10 @@ inline constexpr int kLeastLegendRows = 3;
 // "task: F(a & F(b & F(c & F d)))" becomes "task: F(a & F(b & ...))" rather than losing its middle.
 std::string fitted_line(const FontAtlas& font, const std::string& line, float room);
 
-// At most `rows` of `lines`: all of them when they fit, else the first rows - 1 and "... N more lines".
+// At most `rows` of `lines`: all of them when they fit, else the first rows - 1 and more_lines(the rest).
 std::vector<std::string> shown_lines(const std::vector<std::string>& lines, int rows);
+// The last line of a legend that leaves `hidden` lines out: "... 9 more lines".
+std::string more_lines(std::size_t hidden);
 
 // The rows a legend may have in a frame `height` pixels tall with `padding` above and below its lines.
 int legend_rows(const FontAtlas& font, int height, float padding);

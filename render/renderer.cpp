@@ -531,7 +531,7 @@ struct Renderer::Impl {
     for (std::size_t r = 0; r < std::min(room.size(), rows); ++r) {
       for (const std::string& line : room[r]) widest = std::max(widest, font.width(fitted(line)));
     }
-    if (room.size() > rows) widest = std::max(widest, font.width(shown_lines(std::vector<std::string>(room.size(), ""), static_cast<int>(rows)).back()));
+    if (room.size() > rows) widest = std::max(widest, font.width(more_lines(room.size() - (rows - 1))));
     const auto shown_rows = std::min(std::max(lines.size(), room.size()), rows);
     const float h = font.line_height() * static_cast<float>(shown_rows);
     return {{kLegendMargin, kLegendMargin}, {kLegendMargin + widest + 2 * kPanelPadding, kLegendMargin + h + 2 * kPanelPadding}};

@@ -39,7 +39,7 @@ const char* drive_name(Drive drive) {
 std::string_view render_view_name(RenderView view) { return view == RenderView::kTop ? "top" : "perspective"; }
 
 std::optional<RenderView> render_view_named(std::string_view name) {
-  for (RenderView view : {RenderView::kPerspective, RenderView::kTop}) {
+  for (RenderView view : kRenderViews) {
     if (name == render_view_name(view)) return view;
   }
   return std::nullopt;

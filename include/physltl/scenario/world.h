@@ -142,6 +142,7 @@ struct Camera {
 
 // How the frames of a plan (and preview.png) look at the world: the camera's 3/4 view, or straight down.
 enum class RenderView { kPerspective, kTop };
+inline constexpr RenderView kRenderViews[] = {RenderView::kPerspective, RenderView::kTop};
 std::string_view render_view_name(RenderView view);
 // The view named `name` ("perspective" or "top"), or none for another name.
 std::optional<RenderView> render_view_named(std::string_view name);

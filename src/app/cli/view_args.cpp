@@ -7,9 +7,7 @@ namespace physltl::app {
 
 CLI::Option* add_view_option(CLI::App& app, std::optional<scenario::RenderView>& view) {
   std::vector<std::string> names;
-  for (scenario::RenderView v : {scenario::RenderView::kPerspective, scenario::RenderView::kTop}) {
-    names.emplace_back(scenario::render_view_name(v));
-  }
+  for (scenario::RenderView v : scenario::kRenderViews) names.emplace_back(scenario::render_view_name(v));
   return app
       .add_option_function<std::string>(
           "--view", [&view](const std::string& name) { view = scenario::render_view_named(name); },

@@ -88,7 +88,7 @@ void PlanAnimation::show_planned_moves(std::size_t step) {
   if (planned_ == nullptr) return;
   if (step < moves_scanned_to_) moves_scanned_to_ = 0, moves_done_so_far_ = 0;  // drawn back in time: from the start
   for (; moves_scanned_to_ <= step; ++moves_scanned_to_) {
-    moves_done_so_far_ = planned_->carried_out(moves_done_so_far_, replay_.states[moves_scanned_to_]);
+    moves_done_so_far_ = planned_->carried_out(moves_done_so_far_, replay_.states, moves_scanned_to_);
   }
   const int done = moves_done_so_far_;
   if (done != moves_done_) {

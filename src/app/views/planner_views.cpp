@@ -57,13 +57,14 @@ PlannedMoves planned_moves(const planning::PlannerAccount& account) {
   return moves;
 }
 
-int PlannedMoves::carried_out(int done, const scenario::EnvironmentState& state) const {
+int PlannedMoves::carried_out(int done, const scenario::StateTrace& trace, std::size_t step) const {
+  const std::size_t bodies = trace.front().movable_poses.size();
   for (; done < static_cast<int>(moves.size()); ++done) {
     const planning::PlannerAccount::Move& move = moves[static_cast<std::size_t>(done)];
     const double near = std::min(kNearEnd, kNearShare * (move.to - move.from).norm());
-    const auto near_end = [&](const geometry::Pose2& pose) { return (pose.position - move.to).norm() <= near; };
-    const bool there = move.body >= 0 ? near_end(state.movable_poses[static_cast<std::size_t>(move.body)])
-                                      : std::any_of(state.movable_poses.begin(), state.movable_poses.end(), near_end);
+    const auto near_end = [&](std::size_t body) { return (trace.body_pose(body, step).position - move.to).norm() <= near; };
+    bool there = move.body >= 0 && near_end(static_cast<std::size_t>(move.body));
+    for (std::size_t body = 0; move.body < 0 && body < bodies && !there; ++body) there = near_end(body);
     if (!there) break;
   }
   return done;

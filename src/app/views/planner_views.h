@@ -5,7 +5,7 @@
 #include "physltl/planning/planner_entry.h"
 #include "physltl/planning/registry.h"
 #include "physltl/render/scene.h"
-#include "physltl/scenario/state.h"
+#include "physltl/scenario/state_trace.h"
 #include "physltl/scenario/world.h"
 
 #include <nlohmann/json.hpp>
@@ -35,10 +35,11 @@ struct PlannedMoves {
   std::vector<render::SegmentOverlay> arrows;
   std::string legend;  // empty without arrows
 
-  // With `done` moves carried out before `state`, how many are after it: move k is carried out once move
-  // k - 1 is and its body's centre (any movable body's, where the move does not say) comes near its end (within 45 % of its length, at most 30 cm: pushes
-  // leave a body where friction stops it, not on the planned point).
-  int carried_out(int done, const scenario::EnvironmentState& state) const;
+  // With `done` moves carried out before state `step` of `trace`, how many are after it: move k is carried
+  // out once move k - 1 is and its body's centre (any movable body's, where the move does not say) comes
+  // near its end (within 45 % of its length, at most 30 cm: pushes leave a body where friction stops it,
+  // not on the planned point).
+  int carried_out(int done, const scenario::StateTrace& trace, std::size_t step) const;
   // The arrows as a frame shows them after `done` moves: those grey, the one under way red, the rest as
   // in `arrows`; and the legend's line, "look-ahead: push 3 of 6 under way".
   std::vector<render::SegmentOverlay> arrows_after(int done) const;

@@ -41,8 +41,8 @@ std::vector<Control> direct_controls(const scenario::World& world, const geometr
 }
 
 // A plan's steps [from, to) replaced by `way`: the controls before `from` kept (the one `from` falls in cut
-// there), then `way`, then the rest from step `to` on (the one `to` falls in cut to start there). States are
-// those of the whole controls kept before the way (kept_controls of them); the caller replays the rest.
+// there), then `way`, then the rest from step `to` on (the one `to` falls in cut to start there). Controls
+// only: kept_controls of them are the plan's own, whole, whose states the caller may take over.
 struct Spliced {
   Plan plan;
   int kept_controls = 0;
@@ -63,7 +63,6 @@ Spliced splice(const Plan& plan, int from, int to, const std::vector<Control>& w
     if (end <= to) continue;
     controls.push_back({plan.controls[c].setpoint, end - std::max(start, to)});
   }
-  spliced.plan.states.assign(plan.states.begin(), plan.states.begin() + spliced.kept_controls);
   return spliced;
 }
 
@@ -147,6 +146,7 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
     Plan& candidate = spliced.plan;
     const int first = spliced.kept_controls;
     if (time_only && candidate.total_steps() > plan.total_steps()) continue;  // longer: not worth a replay
+    candidate.states.assign(plan.states.begin(), plan.states.begin() + first);
     // Most candidates fail a check early (a shortcut through a wall or past a needed push): stop there.
     // The kept controls were checked in the current plan's replay: start after them; the replay records
     // the states after the new ones.

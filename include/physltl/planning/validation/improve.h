@@ -1,11 +1,13 @@
 #pragma once
 // After the first validated plan: spend a budget of candidates, not seconds, lowering its cost (the World's
 // planner.cost: the motion's time unless the user names another). A candidate
-// replaces the controls between two states of the plan by direct ones (drive straight from the robot's
+// replaces the steps between two states of the plan by direct controls (drive straight from the robot's
 // place at the first towards its place at the second, turning first where the robot must face its way),
-// keeps the rest of the controls, and runs the whole in a fresh physics world; it is kept only if its
-// replay validates (every rule, the robot's limits, the formula as written) and it costs less, or as much
-// in less time, or as much in as much time with fewer pushes. The candidates follow from the seed: the same seed gives the same improved plan.
+// keeps the rest, and runs the whole in physics; it is kept only if its replay validates (every rule, the
+// robot's limits, the formula as written), it pushes no more often and moves no more bodies than the plan
+// it replaces where the cost does not price those, and it costs less, or as much in less time, or as much
+// in as much time with fewer pushes. The candidates follow from the seed: the same seed gives the same
+// improved plan.
 
 #include "physltl/planning/validation/validated_plan.h"
 
