@@ -43,4 +43,4 @@ task { formula = "F(reception & F(desk & F meeting))" }
 planner { time_limit = 60, step_size = 0.05, min_steps = 2, max_steps = 30, seed = 1 }
 render { width = 640, height = 400, fps = 30 }
 -- What `physltl-studio test scenarios/` holds this scenario to (docs/testing.md); the goldens are in goldens/office/.
-expect { max_pushes = 11, max_motion_s = 27, max_bodies_moved = 1, tree = true, frames = { "last" } }
+expect { max_pushes = 3, max_motion_s = 27, max_bodies_moved = 1, tree = true, frames = { "last" } }

@@ -48,4 +48,4 @@ task { formula = params.task or "F(p1 & F(p2 & F(p3 | p4)))" }
 planner { time_limit = 60, step_size = 0.05, min_steps = 2, max_steps = 30, seed = 1 }
 render { width = 640, height = 480, fps = 30 }
 -- What `physltl-studio test scenarios/` holds this scenario to (docs/testing.md); the goldens are in goldens/rooms/.
-expect { max_pushes = 15, max_motion_s = 45, max_bodies_moved = 3, tree = true, frames = { 0, 12.5, "last" } }
+expect { max_pushes = 6, max_motion_s = 45, max_bodies_moved = 3, tree = true, frames = { 0, 12.5, "last" } }

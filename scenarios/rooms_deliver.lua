@@ -5,4 +5,4 @@
 params.task = params.task or "F(B4@p4 & F p1)"
 require "rooms"
 -- What `physltl-studio test scenarios/` holds this scenario to (docs/testing.md); the goldens are in goldens/rooms_deliver/.
-expect { max_pushes = 13, max_motion_s = 28, max_bodies_moved = 2, tree = true, frames = { "last" } }
+expect { max_pushes = 4, max_motion_s = 28, max_bodies_moved = 2, tree = true, frames = { "last" } }

@@ -5,4 +5,4 @@
 params.drive = "differential"
 require "rooms"
 -- What `physltl-studio test scenarios/` holds this scenario to (docs/testing.md); the goldens are in goldens/rooms_differential/.
-expect { max_pushes = 30, max_motion_s = 72, max_bodies_moved = 3, tree = true, frames = { "last" } }
+expect { max_pushes = 8, max_motion_s = 72, max_bodies_moved = 3, tree = true, frames = { "last" } }

@@ -32,4 +32,4 @@ task { formula = params.task or "F(B1@bay1 & F B2@bay2) & G B3@shelf" }
 planner { time_limit = 60, step_size = 0.05, min_steps = 2, max_steps = 30, seed = 1 }
 render { width = 640, height = 480, fps = 30 }
 -- What `physltl-studio test scenarios/` holds this scenario to (docs/testing.md); the goldens are in goldens/sorting/.
-expect { max_pushes = 15, max_motion_s = 21, max_bodies_moved = 2, tree = true, frames = { "last" } }
+expect { max_pushes = 6, max_motion_s = 21, max_bodies_moved = 2, tree = true, frames = { "last" } }

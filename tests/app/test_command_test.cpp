@@ -114,7 +114,7 @@ TEST(TestCommand, AWallOfRoomsMovedTenCentimetresFailsItsPreviewWithADiffPicture
   copy_scenario(dir, "rooms.lua", [](std::string& text) {
     move_rooms_34_wall(text);
     // Another world plans another way: its bounds are the author's to set again, as a user would.
-    replace(text, "max_pushes = 15, max_motion_s = 45", "max_pushes = 40, max_motion_s = 90");
+    replace(text, "max_pushes = 6, max_motion_s = 45", "max_pushes = 40, max_motion_s = 90");
   });
   const Result moved = test_command(scenario.string() + " --out " + out.string());
   EXPECT_EQ(moved.exit_code, 1);
@@ -191,13 +191,13 @@ TEST(TestCommand, APlanWithOnePushMoreThanItsBoundFailsThatBound) {
   const fs::path dir = test_dir("scenarios");
   fs::remove_all(dir);
   const fs::path out = fresh_out_dir();
-  // ordered.lua's plan pushes 9 times (seed 1).
+  // ordered.lua's plan pushes once (seed 1): B1 into B2, both moving in one stretch of contact.
   const fs::path scenario = copy_scenario(dir, "ordered.lua", [](std::string& text) {
-    replace(text, "max_pushes = 11", "max_pushes = 8");
+    replace(text, "max_pushes = 3", "max_pushes = 0");
   });
   const Result r = test_command(scenario.string() + " --update --out " + out.string());
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.out.find("FAILED  max_pushes: the plan pushes 9 times, more than the bound of 8"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("FAILED  max_pushes: the plan pushes 1 time, more than the bound of 0"), std::string::npos) << r.out;
   EXPECT_EQ(summary_counts(r.out)[2], 1) << r.out;
 }
 
@@ -267,7 +267,7 @@ TEST(TestCommand, TwoJobsGiveTheResultsOfOne) {
   fs::remove_all(dir);
   copy_scenario(dir, "ordered.lua");
   copy_scenario(dir, "avoid.lua");
-  copy_scenario(dir, "sorting.lua", [](std::string& text) { replace(text, "max_pushes = 15", "max_pushes = 1"); });
+  copy_scenario(dir, "sorting.lua", [](std::string& text) { replace(text, "max_pushes = 6", "max_pushes = 1"); });
   ASSERT_EQ(test_command(dir.string() + " --update --out " + fresh_out_dir().string()).exit_code, 1);
   const fs::path one = test_dir() / "one.xml", two = test_dir() / "two.xml";
   const Result r1 = test_command(dir.string() + " --jobs 1 --junit " + one.string() + " --out " + fresh_out_dir().string());

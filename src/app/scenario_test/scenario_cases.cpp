@@ -81,8 +81,8 @@ void bound_cases(const SolvedPlan& plan, const scenario::Expectations& e, std::v
   if (e.max_pushes) {
     cases.push_back(timed("max_pushes", [&] {
       return replay.pushes <= *e.max_pushes ? CaseResult{}
-                                            : failed(fmt::format("the plan pushes {} times, more than the bound of {}",
-                                                                 replay.pushes, *e.max_pushes));
+                                            : failed(fmt::format("the plan pushes {} time{}, more than the bound of {}",
+                                                                 replay.pushes, replay.pushes == 1 ? "" : "s", *e.max_pushes));
     }));
   }
   if (e.max_motion_s) {

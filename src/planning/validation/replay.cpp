@@ -10,13 +10,46 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace physltl::planning {
 namespace {
 
 constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;  // for messages
 
+// Whether a stretch of touching, the steps into states [first, last], moved a body it set moving: the body
+// at state `settled` (before the next stretch, or the end) against before the stretch, so that a body sent
+// sliding by a short knock counts too.
+bool moves_a_body(const scenario::StateTrace& states, std::size_t first, std::size_t last, std::size_t settled) {
+  for (std::size_t i = first; i <= last; ++i) {
+    for (const auto& change : states.changes(i)) {
+      const auto body = static_cast<std::size_t>(change.body);
+      if (moved(states.body_pose(body, first - 1), states.body_pose(body, settled))) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
+
+int count_pushes(const scenario::StateTrace& states, const std::vector<bool>& pushing, double step_size) {
+  const auto gap = static_cast<std::size_t>(std::lround(kPushContactGap_s / step_size));
+  std::vector<std::pair<std::size_t, std::size_t>> stretches;  // first and last step of each
+  for (std::size_t i = 1; i < pushing.size(); ++i) {
+    if (!pushing[i]) continue;
+    if (!stretches.empty() && i <= stretches.back().second + gap + 1) {
+      stretches.back().second = i;
+    } else {
+      stretches.emplace_back(i, i);
+    }
+  }
+  int pushes = 0;
+  for (std::size_t k = 0; k < stretches.size(); ++k) {
+    const std::size_t settled = k + 1 < stretches.size() ? stretches[k + 1].first - 1 : states.size() - 1;
+    pushes += moves_a_body(states, stretches[k].first, stretches[k].second, settled);
+  }
+  return pushes;
+}
 
 std::string control_out_of_bounds(const scenario::World& world, const Control& control) {
   const auto& robot = world.robot;
@@ -61,9 +94,10 @@ class Replayer {
     r_.within_limits = true;
     const size_t first_control = options_.prefix != nullptr ? take_prefix(*options_.prefix) : 0;
     for (size_t c = first_control; c < plan_.controls.size(); ++c) {
-      if (!run_control(c)) return std::move(r_);
+      if (!run_control(c)) break;
     }
-    judge_trace();
+    if (!stopping()) judge_trace();
+    r_.pushes = count_pushes(r_.states, r_.pushing, world_.planner.step_size);
     return std::move(r_);
   }
 
@@ -102,11 +136,7 @@ class Replayer {
     if (prefix.controls == 0) return 0;
     const Replay& done = prefix.replay;
     size_t steps = 0;
-    for (size_t c = 0; c < prefix.controls; ++c) {
-      const auto begin = done.pushing.begin() + static_cast<std::ptrdiff_t>(steps) + 1;
-      steps += static_cast<size_t>(plan_.controls[c].steps);
-      r_.pushes += std::any_of(begin, done.pushing.begin() + static_cast<std::ptrdiff_t>(steps) + 1, [](bool p) { return p; });
-    }
+    for (size_t c = 0; c < prefix.controls; ++c) steps += static_cast<size_t>(plan_.controls[c].steps);
     const auto end = static_cast<std::ptrdiff_t>(steps) + 1;
     r_.states = done.states.prefix(static_cast<std::size_t>(end));
     r_.region_trace.assign(done.region_trace.begin(), done.region_trace.begin() + end);
@@ -127,20 +157,17 @@ class Replayer {
     if (const std::string why = control_out_of_bounds(world_, control); !why.empty()) {
       fail(r_.within_limits, fmt::format("control {}: {}", c, why));
     }
-    bool pushed = false;
     for (int s = 0; s < control.steps; ++s) {
       if (options_.audit_inference) kappa_before_ = simulation_.kappa();
       const knowledge::Validity validity = simulation_.step(control.setpoint);
       bool touching_movable = false;
       for (const auto& contact : simulation_.contacts()) touching_movable |= contact.body == scenario::RobotContact::Body::kMovable;
-      pushed |= touching_movable;
       record(r_.automaton_trace.back(), touching_movable);
       check_step(c, validity);
       if (options_.audit_inference) audit(c, validity);
       if ((r_.states.size() & 15) == 0) check_deadline();
       if (stopping()) return false;
     }
-    r_.pushes += pushed;
     if (options_.record_control_states) {
       r_.control_states.push_back(simulation_.physics().save());
     } else if (r_.reproduces_plan && !(simulation_.physics().save() == plan_.states[c])) {

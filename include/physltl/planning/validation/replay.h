@@ -24,7 +24,7 @@ struct Replay {
   std::vector<int> facts_trace;
   std::vector<int> automaton_trace;  // state of the formula's automaton after reading each letter
   std::vector<bool> pushing;         // the robot touched a movable body during the step into this state
-  int pushes = 0;                    // controls during which the robot touched a movable body
+  int pushes = 0;                    // count_pushes of the states replayed
   // Movable bodies the plan left more than a centimetre or a degree from where they started, World order.
   std::vector<int> moved_bodies;
 
@@ -93,6 +93,14 @@ std::string control_out_of_bounds(const scenario::World& world, const Control& c
 
 // Whether a body at `to` counts as moved from `from`: more than a centimetre or a degree away.
 bool moved(const geometry::Pose2& from, const geometry::Pose2& to);
+
+// The pushes of a replayed trace (`pushing` as Replay holds it), as a person counts them: a stretch of
+// steps in which the robot touches movable bodies, contact lost for at most kPushContactGap_s (a pushed
+// box runs ahead for a moment), that moves a body (moved()) from where it was before the stretch to where
+// it is when the next stretch begins (or at the end: a body knocked slides on). Where
+// one control ends and the next begins does not end a push; brushing past a body without moving it is none.
+inline constexpr double kPushContactGap_s = 0.25;
+int count_pushes(const scenario::StateTrace& states, const std::vector<bool>& pushing, double step_size);
 
 // Region names along the trace ("p0" outside every region), as plan.json stores them.
 std::vector<std::string> region_names(const scenario::World& world, const std::vector<int>& region_trace);
