@@ -126,7 +126,9 @@ TEST_F(FixedPlan, PlannedMovesAreShownAsThePlanCarriesThemOut) {
     return it == legend.end() ? std::string() : *it;
   };
   EXPECT_EQ(legend_line(0.0), "look-ahead: push 1 of 2 under way (red), done grey");
-  EXPECT_EQ(legend_line(animation.duration_s()), "look-ahead: push 2 of 2 under way (red), done grey");
+  EXPECT_EQ(legend_line(animation.duration_s() - 0.5), "look-ahead: push 2 of 2 under way (red), done grey");
+  // The plan ends without the second move: nothing is under way any more.
+  EXPECT_EQ(legend_line(animation.duration_s()), "look-ahead: 1 of 2 pushes carried out as planned (grey)");
   EXPECT_EQ(legend_line(0.0), "look-ahead: push 1 of 2 under way (red), done grey");  // drawn back in time
   moves.moves.pop_back();
   PlanAnimation carried(*world_, *reasoning_, *replay_, static_cast<int>(as_written_->dfa.size()), {}, "", &moves);

@@ -64,7 +64,9 @@ PlanAnimation::PlanAnimation(const scenario::World& world, const knowledge::Reas
   if (!mark_legend.empty()) overlay_.legend_room.push_back({mark_legend});
   if (planned_ != nullptr) {
     std::vector<std::string> stages;
-    for (int done = 0; done <= static_cast<int>(planned_->moves.size()); ++done) stages.push_back(planned_->legend_after(done));
+    for (int done = 0; done <= static_cast<int>(planned_->moves.size()); ++done) {
+      for (bool ended : {false, true}) stages.push_back(planned_->legend_after(done, ended));
+    }
     overlay_.legend_room.push_back(std::move(stages));
   }
   for (const scenario::Region& r : world.regions) overlay_.legend_room[1].push_back(time_line(duration_s_, r.name));
@@ -91,12 +93,14 @@ void PlanAnimation::show_planned_moves(std::size_t step) {
     moves_done_so_far_ = planned_->carried_out(moves_done_so_far_, replay_.states, moves_scanned_to_);
   }
   const int done = moves_done_so_far_;
-  if (done != moves_done_) {
+  const bool ended = step + 1 >= replay_.states.size();
+  if (done != moves_done_ || ended != moves_shown_ended_) {
     overlay_.segments = marks_;
-    for (const render::SegmentOverlay& arrow : planned_->arrows_after(done)) overlay_.segments.push_back(arrow);
+    for (const render::SegmentOverlay& arrow : planned_->arrows_after(done, ended)) overlay_.segments.push_back(arrow);
     moves_done_ = done;
+    moves_shown_ended_ = ended;
   }
-  overlay_.legend.push_back(planned_->legend_after(done));
+  overlay_.legend.push_back(planned_->legend_after(done, ended));
 }
 
 // Up to kListedFacts object facts, one line each; more are summed up in one line, "object facts: 3 of 25

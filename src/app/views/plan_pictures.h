@@ -62,6 +62,7 @@ class PlanAnimation {
   std::vector<render::SegmentOverlay> marks_;
   const PlannedMoves* planned_;
   int moves_done_ = -1;  // of the planned moves, in the last frame drawn
+  bool moves_shown_ended_ = false;  // that frame was the plan's last
   int moves_done_so_far_ = 0;          // carried out by the replay's states before moves_scanned_to_
   std::size_t moves_scanned_to_ = 0;
   std::string task_line_;

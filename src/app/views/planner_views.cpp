@@ -70,18 +70,20 @@ int PlannedMoves::carried_out(int done, const scenario::StateTrace& trace, std::
   return done;
 }
 
-std::vector<render::SegmentOverlay> PlannedMoves::arrows_after(int done) const {
+std::vector<render::SegmentOverlay> PlannedMoves::arrows_after(int done, bool plan_ended) const {
   std::vector<render::SegmentOverlay> shown;
   for (std::size_t i = 0; i < moves.size(); ++i) {
     const auto k = static_cast<std::size_t>(done);
-    add_arrow(moves[i], i < k ? kMoveDone : i == k ? kMoveUnderWay : planned_color(i, moves.size()), shown);
+    add_arrow(moves[i], i < k ? kMoveDone : i == k && !plan_ended ? kMoveUnderWay : planned_color(i, moves.size()), shown);
   }
   return shown;
 }
 
-std::string PlannedMoves::legend_after(int done) const {
+std::string PlannedMoves::legend_after(int done, bool plan_ended) const {
   const auto n = static_cast<int>(moves.size());
-  if (done >= n) return "look-ahead: " + std::to_string(n) + " of " + std::to_string(n) + (n == 1 ? " push" : " pushes") + " carried out (grey)";
+  const std::string pushes = std::to_string(n) + (n == 1 ? " push" : " pushes");
+  if (done >= n) return "look-ahead: " + std::to_string(n) + " of " + pushes + " carried out (grey)";
+  if (plan_ended) return "look-ahead: " + std::to_string(done) + " of " + pushes + " carried out as planned (grey)";
   return "look-ahead: push " + std::to_string(done + 1) + " of " + std::to_string(n) + " under way (red), done grey";
 }
 

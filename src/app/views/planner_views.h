@@ -41,9 +41,11 @@ struct PlannedMoves {
   // not on the planned point).
   int carried_out(int done, const scenario::StateTrace& trace, std::size_t step) const;
   // The arrows as a frame shows them after `done` moves: those grey, the one under way red, the rest as
-  // in `arrows`; and the legend's line, "look-ahead: push 3 of 6 under way".
-  std::vector<render::SegmentOverlay> arrows_after(int done) const;
-  std::string legend_after(int done) const;
+  // in `arrows`; and the legend's line, "look-ahead: push 3 of 6 under way". Where the plan has ended
+  // with moves not carried out (an improved plan may reach the goal another way: other bodies, another
+  // order), none is under way: "look-ahead: 5 of 6 pushes carried out as planned (grey)".
+  std::vector<render::SegmentOverlay> arrows_after(int done, bool plan_ended = false) const;
+  std::string legend_after(int done, bool plan_ended = false) const;
 };
 PlannedMoves planned_moves(const planning::PlannerAccount& account);
 
