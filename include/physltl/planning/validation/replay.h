@@ -97,8 +97,8 @@ bool moved(const geometry::Pose2& from, const geometry::Pose2& to);
 // The pushes of a replayed trace (`pushing` as Replay holds it), as a person counts them: a stretch of
 // steps in which the robot touches movable bodies, contact lost for at most kPushContactGap_s (a pushed
 // box runs ahead for a moment), that moves a body (moved()) from where it was before the stretch to where
-// it is when the next stretch begins (or at the end: a body knocked slides on). Where
-// one control ends and the next begins does not end a push; brushing past a body without moving it is none.
+// it is when the next stretch begins, or at the end (a knocked body slides on). Where one control ends and
+// the next begins does not end a push; brushing past a body without moving it is none.
 inline constexpr double kPushContactGap_s = 0.25;
 int count_pushes(const scenario::StateTrace& states, const std::vector<bool>& pushing, double step_size);
 
