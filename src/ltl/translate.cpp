@@ -1,6 +1,7 @@
 #include "physltl/ltl/translate.h"
 
 #include "decision_diagram.h"
+#include "implication.h"
 #include "normal_form.h"
 #include "physltl/ltl/task_class.h"
 
@@ -19,9 +20,10 @@ using detail::DecisionDiagram;
 using Node = DecisionDiagram::Node;
 
 // A state of the progression automaton is a positive Boolean combination of "atoms" (literals and the
-// temporal subformulas X, F, U, M), kept as its minimal DNF: a set of terms, each a sorted set of atom
-// ids, no term containing another. For a monotone function that form is unique, so equal states are
-// found by comparing DNFs, and finitely many exist.
+// temporal subformulas X, F, U, M), kept as a DNF: a set of terms, each a sorted set of atom ids, no term
+// implying another and no atom of a term implied by another of it (implication.h). Finitely many exist;
+// equal states are found by comparing DNFs, and the few equivalent ones that differ are merged when
+// minimising.
 using Term = std::vector<int>;
 using Dnf = std::vector<Term>;
 
@@ -40,19 +42,6 @@ struct VectorHash {
 
 constexpr int kFalse = 0;  // DNF ids of the constants
 constexpr int kTrue = 1;
-
-void normalise(Dnf& d) {
-  std::ranges::sort(d, [](const Term& a, const Term& b) {
-    return a.size() != b.size() ? a.size() < b.size() : a < b;
-  });
-  d.erase(std::unique(d.begin(), d.end()), d.end());
-  Dnf kept;
-  for (Term& t : d) {
-    const bool absorbed = std::ranges::any_of(kept, [&](const Term& k) { return std::ranges::includes(t, k); });
-    if (!absorbed) kept.push_back(std::move(t));
-  }
-  d = std::move(kept);
-}
 
 // A state of the automaton before minimisation is a key: for good-prefix acceptance the DNF id of the
 // formula still to satisfy; for stop-and-stay acceptance twice that id plus one bit, whether the run
@@ -83,11 +72,59 @@ class Translator {
  private:
   // ---- atoms and DNFs ----
 
+  bool atom_implies(int x, int y) {
+    if (x == y) return true;
+    auto& row = atom_implies_[static_cast<std::size_t>(x)];
+    if (row.size() <= static_cast<std::size_t>(y)) row.resize(atoms_.size(), kUnknown);
+    signed char& known = row[static_cast<std::size_t>(y)];
+    if (known == kUnknown) known = implies_(atoms_[x], atoms_[y]) ? 1 : 0;
+    return known == 1;
+  }
+
+  // Every atom of `b` implied by one of `a`: the conjunction `a` implies `b`.
+  bool term_implies(const Term& a, const Term& b) {
+    if (std::ranges::includes(a, b)) return true;
+    return std::ranges::all_of(b, [&](int y) { return std::ranges::any_of(a, [&](int x) { return atom_implies(x, y); }); });
+  }
+
+  // A conjunction without the atoms another of it implies, dropped one at a time in order, each only for
+  // an atom still there: what is left implies every atom dropped.
+  Term without_implied_atoms(Term t) {
+    for (std::size_t i = 0; i < t.size();) {
+      bool implied = false;
+      for (std::size_t j = 0; j < t.size() && !implied; ++j) implied = j != i && atom_implies(t[j], t[i]);
+      if (implied) {
+        t.erase(t.begin() + static_cast<std::ptrdiff_t>(i));
+      } else {
+        ++i;
+      }
+    }
+    return t;
+  }
+
+  // The DNF in its form: shortest terms first; a term that implies one kept is dropped (it adds no word),
+  // and kept ones that imply a new one give way to it. Every term dropped implies what is left.
+  void normalise(Dnf& d) {
+    for (Term& t : d) t = without_implied_atoms(std::move(t));
+    std::ranges::sort(d, [](const Term& a, const Term& b) {
+      return a.size() != b.size() ? a.size() < b.size() : a < b;
+    });
+    d.erase(std::unique(d.begin(), d.end()), d.end());
+    Dnf kept;
+    for (Term& t : d) {
+      if (std::ranges::any_of(kept, [&](const Term& k) { return term_implies(t, k); })) continue;
+      std::erase_if(kept, [&](const Term& k) { return term_implies(k, t); });
+      kept.push_back(std::move(t));
+    }
+    d = std::move(kept);
+  }
+
   int intern_atom(const Formula& f) {
     auto [it, inserted] = atom_ids_.try_emplace(f, static_cast<int>(atoms_.size()));
     if (inserted) {
       atoms_.push_back(f);
       atom_progress_.push_back(std::nullopt);
+      atom_implies_.emplace_back();
     }
     return it->second;
   }
@@ -505,6 +542,9 @@ class Translator {
   bool stop_and_stay_;
   std::vector<Formula> atoms_;
   std::unordered_map<Formula, int> atom_ids_;
+  detail::Implication implies_;
+  static constexpr signed char kUnknown = -1;
+  std::vector<std::vector<signed char>> atom_implies_;  // [x][y]: atom x implies atom y (1), not shown (0)
   std::vector<std::optional<Node>> atom_progress_;
   std::unordered_map<Dnf, int, VectorHash> dnf_ids_;
   std::vector<const Dnf*> dnfs_;  // by id; node-based map keys do not move

@@ -5,8 +5,10 @@
 //  * "is the residual valid" decided on the graph of residuals by a naive fixpoint;
 //  * the verdicts confirmed by direct LTL semantics on ultimately periodic words (lassos): a rejected
 //    trace gets a concrete counterexample continuation, an accepted one is tried on random ones.
-// It also minimises the residual graph over explicit letters to check the automaton's size is minimal.
+// It also minimises the residual graph over explicit letters to check the automaton's size is minimal,
+// and holds the syntactic implication the translation simplifies its states with to the same semantics.
 
+#include "implication.h"
 #include "physltl/ltl/lasso.h"
 #include "physltl/ltl/progression.h"
 #include "physltl/ltl/translate.h"
@@ -437,6 +439,47 @@ TEST(TranslateProperty, AcceptsExactlyTheRunsThatSatisfyRandomFormulasWhenTheRob
   EXPECT_GT(stop_and_stay, kFormulas / 3);
   EXPECT_GT(accepted, stop_and_stay * kTraces / 10);
   EXPECT_GT(rejected, stop_and_stay * kTraces / 10);
+}
+
+// The translation drops the parts of a state another part implies (implication.h): every implication it
+// takes must hold at every position of every word. Pairs are built so that many hold (g from f by an
+// operator that weakens it) and many nearly do (the other way round, or a random partner).
+TEST(ImplicationProperty, WhatTheTranslationTakesAsImpliedHoldsAtEveryPositionOfRandomWords) {
+  std::mt19937_64 rng(20261206);
+  std::uniform_int_distribution<int> letter(0, kLetters - 1), length(1, 5), kind(0, 6);
+  detail::Implication implies;
+  int claims = 0, beyond_equality = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const Formula f = random_formula(rng, 3, true);
+    const Formula h = random_formula(rng, 2, true);
+    const auto weakened = [&](int how) {
+      switch (how) {
+        case 0: return random_formula(rng, 3, true);
+        case 1: return Formula::unary(Op::Finally, f);
+        case 2: return Formula::binary(Op::Until, h, f);
+        case 3: return Formula::nary(Op::Or, {f, h});
+        case 4: return Formula::binary(Op::WeakUntil, h, f);
+        case 5: return Formula::binary(Op::Release, h, f);
+        default: return Formula::unary(Op::Finally, Formula::nary(Op::And, {h, f}));
+      }
+    };
+    const Formula g = weakened(kind(rng));
+    for (const auto& [x, y] : {std::pair{f, g}, std::pair{g, f}}) {
+      if (!implies(x, y)) continue;
+      ++claims;
+      beyond_equality += x != y && y.op() != Op::True && x.op() != Op::False;
+      for (int w = 0; w < 40; ++w) {
+        Lasso word{{}, static_cast<std::size_t>(length(rng) - 1)};
+        word.letters.resize(word.loop + static_cast<std::size_t>(length(rng)));
+        for (int& l : word.letters) l = letter(rng);
+        const std::vector<bool> sx = satisfied(x, word), sy = satisfied(y, word);
+        for (std::size_t p = 0; p < sx.size(); ++p) {
+          ASSERT_TRUE(!sx[p] || sy[p]) << to_string(x) << " was taken to imply " << to_string(y) << " (position " << p << ")";
+        }
+      }
+    }
+  }
+  EXPECT_GT(beyond_equality, 2000) << "of " << claims;
 }
 
 // For co-safe tasks the two readings agree when the formula has no X: a good prefix, with its last

@@ -47,6 +47,18 @@ TEST(Translate, ATaskOfTooManyStatesIsRefusedAndOneBelowTheBoundIsNot) {
   EXPECT_EQ(dfa_of(sequencing(200)).size(), 201u);  // long but in an order: linear
 }
 
+// Each stage of a chain of untils implies the stages before it ((a2|b2) U ... implies (a1|b1) U (a2|b2) U
+// ...): a letter that meets several stages at once leads to the furthest, and the automaton is a line.
+// Until the translation knew that, each set of stages met at once was a state of its own until minimising:
+// 2^14 of them for 15 stages, refused as too large.
+TEST(Translate, AChainOfUntilsHasAStatePerStage) {
+  for (int n : {3, 15, 40}) {
+    std::string f;
+    for (int i = 1; i <= n; ++i) f += (i > 1 ? " U " : "") + std::string("(a") + std::to_string(i) + " | b" + std::to_string(i) + ")";
+    EXPECT_EQ(dfa_of(f).size(), static_cast<std::size_t>(n + 1)) << f;
+  }
+}
+
 TEST(Translate, DisjunctionOfNRegionsHasTwoStates) {
   for (int n = 1; n <= 10; ++n) {
     const Dfa dfa = dfa_of(joined(n, " | "));
