@@ -94,6 +94,15 @@ double distance(const Vec2& p, const Polygon& polygon) {
   return best;
 }
 
+double depth_inside(const Vec2& p, const Polygon& polygon) {
+  if (polygon.vertices.size() < 3 || !polygon.contains(p)) return 0.0;
+  double best = kInfinity;
+  Vec2 closest;
+  const auto& v = polygon.vertices;
+  for (size_t i = 0; i < v.size(); ++i) best = std::min(best, distance_to_segment(p, v[i], v[(i + 1) % v.size()], closest));
+  return best;
+}
+
 double distance(const Polygon& a, const Polygon& b, Vec2& closest_a, Vec2& closest_b) {
   const auto& va = a.vertices;
   const auto& vb = b.vertices;

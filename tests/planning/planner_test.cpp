@@ -1,6 +1,7 @@
 #include "physltl/planning/path_lower_bound.h"
 #include "physltl/planning/planning_problem.h"
 #include "physltl/planning/validation/improve.h"
+#include "plan_margins.h"
 #include "physltl/planning/registry.h"
 #include "physltl/planning/validation/replay.h"
 #include "physltl/scenario/plan_cost.h"
@@ -385,6 +386,37 @@ TEST(Improve, AShortcutThatFailsReplayIsNotKept) {
   EXPECT_GE(m.improved.duration_s, round_the_wall);
   const Replay again = p.check(plan);
   EXPECT_TRUE(again.validated()) << again.failure;
+}
+
+// A shortcut that clips a region's corner is valid in the model and misses the region in a world a
+// centimetre off it. With a margin, each region the task has the robot visit stays as deep as the first
+// plan went into it, up to the margin; without, improvement clips them.
+TEST(Improve, AMarginKeepsEveryVisitAsDeepAsTheFirstPlanWentUpToTheMargin) {
+  TestProblem p("ordered.lua");
+  constexpr double kMargin = 0.05;
+  bool clipped_without = false;
+  for (std::uint64_t seed : {1, 2, 3}) {
+    p.world.planner.improve_margin = 0.0;
+    const ValidatedPlan first = solve_and_improve(p, seed, 0);
+    ASSERT_TRUE(first.solved());
+    const std::vector<double> first_depths = visit_depths(p.world, p.check(first.result.plan));
+    ASSERT_EQ(first_depths.size(), 4u) << "ordered.lua visits four regions in turn";
+    const auto shallower = [&](const Plan& plan) {
+      const std::vector<double> depths = visit_depths(p.world, p.check(plan));
+      bool any = depths.size() != first_depths.size();
+      for (std::size_t k = 0; k < std::min(depths.size(), first_depths.size()); ++k) {
+        any |= depths[k] < std::min(kMargin, first_depths[k]);
+      }
+      return any;
+    };
+    clipped_without |= shallower(solve_and_improve(p, seed, 300).result.plan);
+    p.world.planner.improve_margin = kMargin;
+    const ValidatedPlan kept = solve_and_improve(p, seed, 300);
+    ASSERT_TRUE(kept.improvement);
+    EXPECT_LT(kept.improvement->improved.duration_s, kept.improvement->first.duration_s) << seed;
+    EXPECT_FALSE(shallower(kept.result.plan)) << seed;
+  }
+  EXPECT_TRUE(clipped_without);
 }
 
 // The run's deadline (base/deadline.h) in the phases around the search: a replay it cuts short validates

@@ -54,6 +54,8 @@ class FreeSpace {
 // Distance from a point to a polygon (0 inside), and between two polygons (0 when they overlap) with the
 // closest points.
 double distance(const Vec2& p, const Polygon& polygon);
+// How far inside `polygon` the point lies: its distance to the nearest edge, 0 on or outside it.
+double depth_inside(const Vec2& p, const Polygon& polygon);
 double distance(const Polygon& a, const Polygon& b, Vec2& closest_a, Vec2& closest_b);
 
 }  // namespace physltl::geometry

@@ -127,6 +127,9 @@ struct PlannerSettings {
   int max_steps = 30;
   std::uint64_t seed = 1;
   PlanCost cost;  // what improvement lowers: the motion's time unless the scenario or --cost says
+  // Metres improvement keeps from the fixed bodies and inside the regions the robot visits for its task,
+  // where the plan it improves did (docs/planner.md, "A margin for the real world"); 0: none.
+  double improve_margin = 0.0;
   Location where{};
 };
 

@@ -39,6 +39,7 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   if (settings.time_limit) c->world.planner.time_limit = *settings.time_limit;
   if (settings.uncertainty) c->world.uncertainty = override_uncertainty(c->world.uncertainty, *settings.uncertainty);
   if (settings.cost) c->world.planner.cost = cost_from_flag(*settings.cost);
+  if (settings.improve_margin) c->world.planner.improve_margin = *settings.improve_margin;
   c->problem = std::make_unique<planning::PlanningProblem>(c->world);
   if (!c->problem->feasible()) {
     throw InfeasibleTask(fmt::format("{}{}: {}", entry.path, entry.sweep ? " with " + entry.sweep->key + "=" + value : "",
@@ -62,6 +63,7 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   results.shortest_push_free_path_m =
       planning::shortest_push_free_path_length(c->world, c->problem->as_written(), interruptible);
   results.cost = c->world.planner.cost;
+  results.improve_margin = c->world.planner.improve_margin;
   results.cost_bound = planning::plan_cost_bound(results.cost, c->world.robot.max_speed, results.shortest_free_path_m,
                                                  results.shortest_push_free_path_m);
   for (const auto planner : settings.planners) {

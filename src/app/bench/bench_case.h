@@ -30,6 +30,7 @@ struct CampaignSettings {
   int robustness = 0;                      // perturbed worlds per solved run
   std::optional<std::string> uncertainty;  // --uncertainty: overrides each scenario's
   std::optional<std::string> cost;         // --cost: overrides each scenario's planner { cost = ... }
+  std::optional<double> improve_margin;    // --improve-margin: overrides each scenario's planner { improve_margin }
   // Every parameter of the program's planners, by name (planner_names.h parameter_values).
   std::map<std::string, std::string> parameters;
 };

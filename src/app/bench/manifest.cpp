@@ -77,6 +77,7 @@ json campaign_manifest(const std::string& name, int shard_count, const std::vect
                          {"first_seed", r.first_seed},
                          {"time_limit_s", r.time_limit_s},
                          {"cost", r.cost.text()},
+                         {"improve_margin", r.improve_margin},
                          {"planners", std::move(case_planners)}});
   }
   json unit_keys = json::array();

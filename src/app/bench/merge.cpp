@@ -87,6 +87,7 @@ CampaignResults skeleton(const JsonFields& campaign, const JsonFields& first_sha
     r.shortest_free_path_m = number_or_infinity(fact, "shortest_free_path_m");
     r.shortest_push_free_path_m = number_or_infinity(fact, "shortest_push_free_path_m");
     r.cost = cost_from_flag(description.text("cost"));
+    r.improve_margin = description.number("improve_margin", 0.0, 1.0);
     r.cost_bound = number_or_infinity(fact, "cost_bound");
     for (const auto& p : description.array("planners")) {
       const JsonFields planner(p, description.source() + " planners");

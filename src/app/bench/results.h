@@ -79,6 +79,7 @@ struct BenchResults {
   // (planning::plan_cost_bound; infinity when no region order is reachable).
   scenario::PlanCost cost;
   double cost_bound = 0.0;
+  double improve_margin = 0.0;  // m (the World's planner.improve_margin or --improve-margin)
   // Done once for the world and task, not in any run's time: the decomposition and the route choice.
   double preparation_s = 0.0;
   // Knowledge with each thread count, then the baseline with each (--compare).

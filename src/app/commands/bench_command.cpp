@@ -44,6 +44,7 @@ struct BenchArgs {
   int robustness = 0;
   std::optional<std::string> uncertainty;
   std::optional<std::string> cost;
+  std::optional<double> improve_margin;
   std::optional<std::string> campaign;
   std::optional<std::string> shard;  // K/N
   bool list = false;
@@ -71,6 +72,7 @@ CampaignSettings campaign_settings(const BenchArgs& args) {
   settings.robustness = args.robustness;
   settings.uncertainty = args.uncertainty;
   settings.cost = args.cost;
+  settings.improve_margin = args.improve_margin;
   settings.parameters = args.parameters.values();
   return settings;
 }
@@ -243,6 +245,10 @@ CommandRunner add_bench_command(CLI::App& app) {
   app.add_option("--cost", args->cost,
                  "What --improve lowers and the cost line gives: time (default), length, pushes, moved, or a weighted "
                  "sum such as \"time + 2 pushes\" (docs/planner.md, \"What a plan costs\")");
+  app.add_option("--improve-margin", args->improve_margin,
+                 "Metres --improve keeps from walls and inside the regions the task visits, where the first plan did "
+                 "(docs/planner.md, \"A margin for the real world\")")
+      ->check(number_in(0.0, 1.0, true));
   app.add_option("--uncertainty", args->uncertainty,
                  "Override each scenario's uncertainty, e.g. mass=0.3,friction=0.1");
   app.add_option("--threads", args->threads,

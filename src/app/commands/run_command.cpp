@@ -53,6 +53,7 @@ struct RunArgs {
   int robustness = 0;                      // perturbed worlds to replay the plan in (docs/robustness.md)
   std::optional<std::string> uncertainty;  // overrides the scenario's uncertainty { ... }
   std::optional<std::string> cost;         // overrides the scenario's planner { cost = ... }
+  std::optional<double> improve_margin;    // overrides the scenario's planner { improve_margin = ... }
   std::optional<scenario::RenderView> view;  // overrides the scenario's render { view = ... }
 };
 
@@ -174,7 +175,7 @@ void write_plan_files(const PlanningRun& run, const planning::ValidatedPlan& sol
 int run(const RunArgs& args) {
   const planning::PlannerEntry& planner = chosen_planner(args);
   const scenario::World world =
-      load_world(args.scenario.path, args.scenario.settings, {args.seed, args.time_limit, args.uncertainty, args.cost, args.view});
+      load_world(args.scenario.path, args.scenario.settings, {args.seed, args.time_limit, args.uncertainty, args.cost, args.view, args.improve_margin});
   const Say say = [&](const std::string& line) {
     if (!args.quiet) std::cout << line << "\n";
   };
@@ -241,6 +242,10 @@ CommandRunner add_run_command(CLI::App& app) {
   app.add_option("--cost", args->cost,
                  "What improvement lowers: time (default), length, pushes, moved, or a weighted sum such as "
                  "\"time + 2 pushes\" (docs/planner.md, \"What a plan costs\")");
+  app.add_option("--improve-margin", args->improve_margin,
+                 "Metres improvement keeps from walls and inside the regions the task visits, where the first plan did "
+                 "(default: the scenario's planner { improve_margin }, or 0; docs/planner.md, \"A margin for the real world\")")
+      ->check(number_in(0.0, 1.0, true));
   app.add_option("--threads", args->threads,
                  "Threads growing the search tree (default: one per core; the same plan with any number)")
       ->check(CLI::Range(1, 64))

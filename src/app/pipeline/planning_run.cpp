@@ -21,6 +21,7 @@ scenario::World load_world(const std::string& path, const std::vector<std::strin
   if (overrides.uncertainty) world.uncertainty = override_uncertainty(world.uncertainty, *overrides.uncertainty);
   if (overrides.cost) world.planner.cost = cost_from_flag(*overrides.cost);
   if (overrides.view) world.render.view = *overrides.view;
+  if (overrides.improve_margin) world.planner.improve_margin = *overrides.improve_margin;
   return world;
 }
 

@@ -22,6 +22,7 @@ struct WorldOverrides {
   std::optional<std::string> uncertainty;  // --uncertainty k=v,...: replaces those of the scenario's
   std::optional<std::string> cost;         // --cost: replaces the scenario's planner { cost = ... }
   std::optional<scenario::RenderView> view;  // --view: replaces the scenario's render { view = ... }
+  std::optional<double> improve_margin;      // --improve-margin: replaces planner { improve_margin = ... }
 };
 
 // The scenario at `path` with `settings` for its script's params, and `overrides` applied. Throws

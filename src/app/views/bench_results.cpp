@@ -215,6 +215,7 @@ json bench_json(const BenchResults& r) {
           {"shortest_push_free_path_m",
            std::isfinite(r.shortest_push_free_path_m) ? json(r.shortest_push_free_path_m) : json(nullptr)},
           {"cost", {{"of", r.cost.text()}, {"bound", std::isfinite(r.cost_bound) ? json(r.cost_bound) : json(nullptr)}}},
+          {"improve_margin", r.improve_margin},
           {"planners", std::move(planners)},
           {"ratio_of_medians", ratio ? json(*ratio) : json(nullptr)},
           {"threads_ratios", std::move(ratios)}};

@@ -89,6 +89,7 @@ json report_json(const RunSummary& run) {
                                {"accepted", run.improvement->accepted},
                                {"stopped_by", run.improvement->stopped.empty() ? json(nullptr) : json(run.improvement->stopped)},
                                {"time_s", run.improvement->time_s},
+                               {"margin_m", run.world.planner.improve_margin},
                                {"progress", run.improvement->progress},
                                {"first", measures(run.improvement->first)},
                                {"improved", measures(run.improvement->improved)}};

@@ -1,6 +1,7 @@
 #include "physltl/planning/validation/improve.h"
 
 #include "physltl/planning/random.h"
+#include "plan_margins.h"
 
 #include <algorithm>
 #include <chrono>
@@ -38,6 +39,12 @@ std::vector<Control> direct_controls(const scenario::World& world, const geometr
   if (length > 0.0) add({robot.max_speed, 0.0}, drive_steps);
   turn(to.yaw - heading);
   return controls;
+}
+
+int steps_of(const std::vector<Control>& controls) {
+  int steps = 0;
+  for (const Control& c : controls) steps += c.steps;
+  return steps;
 }
 
 // A plan's steps [from, to) replaced by `way`: the controls before `from` kept (the one `from` falls in cut
@@ -88,6 +95,22 @@ bool better(const scenario::PlanCost& cost, const PlanMeasures& a, const PlanMea
   const double cost_a = cost_of(cost, a), cost_b = cost_of(cost, b);
   if (cost_a != cost_b) return cost_a < cost_b;
   return a.duration_s < b.duration_s || (a.duration_s == b.duration_s && a.pushes < b.pushes);
+}
+
+// With a margin, a candidate must keep what the plan it would replace kept, up to the margin: its new
+// way as far from the fixed bodies as the steps it replaces were, and each region the task has the robot
+// visit as deeply. Checked only for candidates that are better, which are few.
+bool keeps_margin(const scenario::World& world, double margin, const Replay& current, const Replay& candidate,
+                  int from, int to, int way_steps) {
+  if (margin <= 0.0) return true;
+  const auto step = [](int i) { return static_cast<std::size_t>(i); };
+  const double kept = std::min(margin, clearance(world, current.states, step(from), step(to)));
+  if (clearance(world, candidate.states, step(from), step(from + way_steps)) < kept) return false;
+  const std::vector<double> depths = visit_depths(world, candidate), current_depths = visit_depths(world, current);
+  for (std::size_t k = 0; k < std::min(depths.size(), current_depths.size()); ++k) {
+    if (depths[k] < std::min(margin, current_depths[k])) return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -160,6 +183,7 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
     checked.control_states.clear();
     const PlanMeasures measures = measure(problem.world, candidate, checked);
     if (!better(cost, measures, result.improved)) continue;
+    if (!keeps_margin(problem.world, problem.world.planner.improve_margin, replay, checked, from, to, steps_of(way))) continue;
     plan = std::move(candidate);
     replay = std::move(checked);
     result.improved = measures;
