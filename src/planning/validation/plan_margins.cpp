@@ -3,16 +3,32 @@
 #include "physltl/geometry/free_space.h"
 
 #include <algorithm>
-#include <limits>
 
 namespace physltl::planning {
 
-double clearance(const scenario::World& world, const scenario::StateTrace& states, std::size_t from, std::size_t to) {
-  double least = std::numeric_limits<double>::infinity();
-  for (std::size_t i = from; i <= to && i < states.size(); ++i) {
+std::optional<double> clearance(const scenario::World& world, const scenario::StateTrace& states, std::size_t from,
+                                std::size_t to, double cap, const Deadline& deadline) {
+  to = std::min(to, states.size() - 1);
+  if (from > to) return cap;
+  geometry::Rect swept{states.robot_position(from), states.robot_position(from)};
+  for (std::size_t i = from; i <= to; ++i) {
+    swept.min = swept.min.cwiseMin(states.robot_position(i));
+    swept.max = swept.max.cwiseMax(states.robot_position(i));
+  }
+  const Vec2 reach = Vec2::Constant(cap + world.robot.radius);
+  std::vector<const scenario::FixedBody*> near;
+  for (const scenario::FixedBody& body : world.fixed_bodies) {
+    const geometry::Rect b = geometry::bounds(body.footprint.shape, body.footprint.pose);
+    if ((b.min.array() <= (swept.max + reach).array()).all() && (b.max.array() >= (swept.min - reach).array()).all()) {
+      near.push_back(&body);
+    }
+  }
+  double least = cap;
+  for (std::size_t i = from; i <= to; ++i) {
+    if (deadline.reached()) return std::nullopt;
     const Vec2 robot = states.robot_position(i);
-    for (const scenario::FixedBody& body : world.fixed_bodies) {
-      least = std::min(least, geometry::distance(body.footprint.shape, body.footprint.pose, robot) - world.robot.radius);
+    for (const scenario::FixedBody* body : near) {
+      least = std::min(least, geometry::distance(body->footprint.shape, body->footprint.pose, robot) - world.robot.radius);
     }
   }
   return least;

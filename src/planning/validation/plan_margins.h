@@ -4,18 +4,22 @@
 // keeps. A shortcut that grazes a wall or clips a region's corner is valid in the model and fails in a
 // world a few centimetres off it.
 
+#include "physltl/base/deadline.h"
 #include "physltl/planning/validation/replay.h"
 #include "physltl/scenario/state_trace.h"
 #include "physltl/scenario/world.h"
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace physltl::planning {
 
 // The least distance from the robot's edge to a fixed body's outline over the states [from, to] of
-// `states` (clipped to its end); infinity when there is no fixed body.
-double clearance(const scenario::World& world, const scenario::StateTrace& states, std::size_t from, std::size_t to);
+// `states` (clipped to its end), or `cap` when none comes nearer than that: only the bodies within `cap`
+// of where the robot goes are measured. Nothing when `deadline` is reached on the way.
+std::optional<double> clearance(const scenario::World& world, const scenario::StateTrace& states, std::size_t from,
+                                std::size_t to, double cap, const Deadline& deadline = {});
 
 // For each step at which the robot entering a region advanced the task's automaton (the bodies' facts
 // unchanged), in order: the deepest its centre went into that region before leaving it
