@@ -34,20 +34,49 @@ std::optional<double> clearance(const scenario::World& world, const scenario::St
   return least;
 }
 
+namespace {
+
+int region_holding(const scenario::World& world, const Vec2& p) {
+  for (std::size_t r = 0; r < world.regions.size(); ++r) {
+    if (world.regions[r].polygon.contains(p)) return static_cast<int>(r);
+  }
+  return -1;
+}
+
+// The deepest `where(i)` goes into `region` from step `s` on, while it stays in it.
+template <class Where>
+double deepest_stay(const scenario::World& world, int region, std::size_t s, std::size_t steps, Where where) {
+  const geometry::Polygon& polygon = world.regions[static_cast<std::size_t>(region)].polygon;
+  double deepest = 0.0;
+  for (std::size_t i = s; i < steps; ++i) {
+    const double depth = geometry::depth_inside(where(i), polygon);
+    if (depth <= 0.0) break;
+    deepest = std::max(deepest, depth);
+  }
+  return deepest;
+}
+
+}  // namespace
+
 std::vector<double> visit_depths(const scenario::World& world, const Replay& replay) {
   const std::vector<int>& regions = replay.region_trace;
+  const scenario::StateTrace& states = replay.states;
+  const std::size_t steps = std::min(regions.size(), states.size());
   std::vector<double> depths;
-  for (std::size_t s = 1; s < replay.automaton_trace.size() && s < regions.size(); ++s) {
-    const bool advanced = replay.automaton_trace[s] != replay.automaton_trace[s - 1];
-    const bool entered = regions[s] >= 0 && regions[s] != regions[s - 1];
-    const bool facts_same = s >= replay.facts_trace.size() || replay.facts_trace[s] == replay.facts_trace[s - 1];
-    if (!advanced || !entered || !facts_same) continue;
-    const geometry::Polygon& region = world.regions[static_cast<std::size_t>(regions[s])].polygon;
-    double deepest = 0.0;
-    for (std::size_t i = s; i < regions.size() && regions[i] == regions[s]; ++i) {
-      deepest = std::max(deepest, geometry::depth_inside(replay.states.robot_position(i), region));
+  for (std::size_t s = 1; s < replay.automaton_trace.size() && s < steps; ++s) {
+    if (replay.automaton_trace[s] == replay.automaton_trace[s - 1]) continue;
+    const bool facts_changed = s < replay.facts_trace.size() && replay.facts_trace[s] != replay.facts_trace[s - 1];
+    if (!facts_changed) {
+      if (regions[s] < 0 || regions[s] == regions[s - 1]) continue;
+      depths.push_back(deepest_stay(world, regions[s], s, steps, [&](std::size_t i) { return states.robot_position(i); }));
+      continue;
     }
-    depths.push_back(deepest);
+    for (const auto& change : states.changes(s)) {
+      const auto body = static_cast<std::size_t>(change.body);
+      const int region = region_holding(world, change.pose.position);
+      if (region < 0 || region == region_holding(world, states.body_pose(body, s - 1).position)) continue;
+      depths.push_back(deepest_stay(world, region, s, steps, [&](std::size_t i) { return states.body_pose(body, i).position; }));
+    }
   }
   return depths;
 }

@@ -21,9 +21,9 @@ namespace physltl::planning {
 std::optional<double> clearance(const scenario::World& world, const scenario::StateTrace& states, std::size_t from,
                                 std::size_t to, double cap, const Deadline& deadline = {});
 
-// For each step at which the robot entering a region advanced the task's automaton (the bodies' facts
-// unchanged), in order: the deepest its centre went into that region before leaving it
-// (geometry::depth_inside).
+// For each step at which the robot entering a region advanced the task's automaton, or a body entering
+// one did (its centre, with the task's facts about bodies changing), in order: the deepest the robot's or
+// that body's centre went into the region before leaving it (geometry::depth_inside).
 std::vector<double> visit_depths(const scenario::World& world, const Replay& replay);
 
 }  // namespace physltl::planning
