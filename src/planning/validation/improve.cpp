@@ -99,8 +99,8 @@ bool better(const scenario::PlanCost& cost, const PlanMeasures& a, const PlanMea
 
 // With a margin, a candidate must keep what the plan it would replace kept, up to the margin: its new
 // way as far from the fixed bodies as the steps it replaces were, and each region the task has the robot
-// visit as deeply. Checked only for candidates that are better, which are few; a deadline reached on the
-// way refuses the candidate, and the loop stops.
+// visit or a body enter as deeply (visit_depths). Checked only for candidates that are better, which are
+// few; a deadline reached on the way refuses the candidate, and the loop stops.
 bool keeps_margin(const scenario::World& world, double margin, const Replay& current, const Replay& candidate,
                   int from, int to, int way_steps, const Deadline& deadline) {
   if (margin <= 0.0) return true;

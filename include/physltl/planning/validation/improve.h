@@ -6,8 +6,9 @@
 // keeps the rest, and runs the whole in physics; it is kept only if its replay validates (every rule, the
 // robot's limits, the formula as written), it pushes no more often and moves no more bodies than the plan
 // it replaces where the cost does not price those, and it costs less, or as much in less time, or as much
-// in as much time with fewer pushes. The candidates follow from the seed: the same seed gives the same
-// improved plan.
+// in as much time with fewer pushes; with a margin (PlannerSettings::improve_margin), it must also keep
+// as far from the fixed bodies and go as deep into the regions the task needs as the plan it replaces did,
+// up to the margin. The candidates follow from the seed: the same seed gives the same improved plan.
 
 #include "physltl/planning/validation/validated_plan.h"
 
