@@ -101,15 +101,19 @@ bool better(const scenario::PlanCost& cost, const PlanMeasures& a, const PlanMea
 // way as far from the fixed bodies as the steps it replaces were, and each region the task has the robot
 // visit or a body enter as deeply (visit_depths). Checked only for candidates that are better, which are
 // few; a deadline reached on the way refuses the candidate, and the loop stops.
-bool keeps_margin(const scenario::World& world, double margin, const Replay& current, const Replay& candidate,
-                  int from, int to, int way_steps, const Deadline& deadline) {
+bool keeps_margin(const Problem& problem, const Replay& current, const Replay& candidate, int from, int to,
+                  int way_steps, const Deadline& deadline) {
+  const scenario::World& world = problem.world;
+  const double margin = world.planner.improve_margin;
   if (margin <= 0.0) return true;
   const auto step = [](int i) { return static_cast<std::size_t>(i); };
   const std::optional<double> kept = clearance(world, current.states, step(from), step(to), margin, deadline);
   if (!kept) return false;
   const std::optional<double> kept_now = clearance(world, candidate.states, step(from), step(from + way_steps), margin, deadline);
   if (!kept_now || *kept_now < *kept) return false;
-  const std::vector<double> depths = visit_depths(world, candidate), current_depths = visit_depths(world, current);
+  const knowledge::Labelling& labelling = problem.formula.labelling;
+  const std::vector<double> depths = visit_depths(world, candidate, labelling);
+  const std::vector<double> current_depths = visit_depths(world, current, labelling);
   for (std::size_t k = 0; k < std::min(depths.size(), current_depths.size()); ++k) {
     if (depths[k] < std::min(margin, current_depths[k])) return false;
   }
@@ -186,7 +190,7 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
     checked.control_states.clear();
     const PlanMeasures measures = measure(problem.world, candidate, checked);
     if (!better(cost, measures, result.improved)) continue;
-    if (!keeps_margin(problem.world, problem.world.planner.improve_margin, replay, checked, from, to, steps_of(way), until)) continue;
+    if (!keeps_margin(problem, replay, checked, from, to, steps_of(way), until)) continue;
     plan = std::move(candidate);
     replay = std::move(checked);
     result.improved = measures;

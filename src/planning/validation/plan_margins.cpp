@@ -58,7 +58,7 @@ double deepest_stay(const scenario::World& world, int region, std::size_t s, std
 
 }  // namespace
 
-std::vector<double> visit_depths(const scenario::World& world, const Replay& replay) {
+std::vector<double> visit_depths(const scenario::World& world, const Replay& replay, const knowledge::Labelling& labelling) {
   const std::vector<int>& regions = replay.region_trace;
   const scenario::StateTrace& states = replay.states;
   const std::size_t steps = std::min(regions.size(), states.size());
@@ -71,10 +71,10 @@ std::vector<double> visit_depths(const scenario::World& world, const Replay& rep
       depths.push_back(deepest_stay(world, regions[s], s, steps, [&](std::size_t i) { return states.robot_position(i); }));
       continue;
     }
-    for (const auto& change : states.changes(s)) {
-      const auto body = static_cast<std::size_t>(change.body);
-      const int region = region_holding(world, change.pose.position);
-      if (region < 0 || region == region_holding(world, states.body_pose(body, s - 1).position)) continue;
+    for (std::size_t body = 0; body < world.movable_bodies.size(); ++body) {
+      if (labelling.part_of(static_cast<int>(body)) < 0) continue;
+      const int region = region_holding(world, states.body_pose(body, s).position);
+      if (region < 0) continue;
       depths.push_back(deepest_stay(world, region, s, steps, [&](std::size_t i) { return states.body_pose(body, i).position; }));
     }
   }

@@ -5,6 +5,7 @@
 // world a few centimetres off it.
 
 #include "physltl/base/deadline.h"
+#include "physltl/knowledge/labelling.h"
 #include "physltl/planning/validation/replay.h"
 #include "physltl/scenario/state_trace.h"
 #include "physltl/scenario/world.h"
@@ -21,9 +22,11 @@ namespace physltl::planning {
 std::optional<double> clearance(const scenario::World& world, const scenario::StateTrace& states, std::size_t from,
                                 std::size_t to, double cap, const Deadline& deadline = {});
 
-// For each step at which the robot entering a region advanced the task's automaton, or a body entering
-// one did (its centre, with the task's facts about bodies changing), in order: the deepest the robot's or
-// that body's centre went into the region before leaving it (geometry::depth_inside).
-std::vector<double> visit_depths(const scenario::World& world, const Replay& replay);
+// For each step at which the robot entering a region advanced the task's automaton: the deepest its
+// centre went into that region before leaving it (geometry::depth_inside); and for each step at which the
+// task's facts about bodies changed and advanced it: the same for every body the task names that is in a
+// region then (a group's every box on its goal, not only the last one pushed). In order of the steps, and
+// of the bodies at a step.
+std::vector<double> visit_depths(const scenario::World& world, const Replay& replay, const knowledge::Labelling& labelling);
 
 }  // namespace physltl::planning
