@@ -48,12 +48,16 @@ std::string describe(const std::string& kind, const planning::Replay& run) {
 }  // namespace
 
 WorldRun judge_in_world(const scenario::World& world, const planning::Plan& plan, const planning::Replay* nominal,
-                        const planning::TaskAutomaton& formula) {
+                        const planning::TaskAutomaton& formula, const Deadline& deadline) {
   // The truth's own K: its masses decide what kappa calls immovable.
   const knowledge::AbstractKnowledge truth = knowledge::formulate(world);
   // Every planner's plan is judged by every rule, so kappa's count for the baseline's plans too.
-  const planning::Replay run = planning::replay(world, plan, formula, truth);
+  const planning::Replay run = planning::replay(world, plan, formula, truth, {.deadline = deadline});
   WorldRun result;
+  if (!run.cut_short.empty()) {
+    result.cut_short = true;
+    return result;
+  }
   auto add = [&](const char* kind) { result.failures.emplace_back(kind); };
   if (!run.accepted) add(nominal != nullptr ? formula_failure(run, *nominal) : "region_not_reached");
   if (saw(run, knowledge::Violation::kLeftWorkspace)) add("left_workspace");
@@ -74,10 +78,17 @@ WorldRun judge_in_world(const scenario::World& world, const planning::Plan& plan
 }
 
 Robustness measure_robustness(const scenario::World& model, const scenario::Uncertainty& uncertainty, int worlds,
-                              std::uint64_t seed, const planning::Plan& plan, const planning::Replay& nominal, const planning::TaskAutomaton& formula) {
+                              std::uint64_t seed, const planning::Plan& plan, const planning::Replay& nominal,
+                              const planning::TaskAutomaton& formula, const Deadline& deadline) {
   Robustness robustness;
+  robustness.asked = worlds;
   for (int i = 0; i < worlds; ++i) {
-    const WorldRun run = judge_in_world(perturbed_world(model, uncertainty, seed, i), plan, &nominal, formula);
+    const WorldRun run = deadline.reached() ? WorldRun{.cut_short = true}
+                                            : judge_in_world(perturbed_world(model, uncertainty, seed, i), plan, &nominal, formula, deadline);
+    if (run.cut_short) {
+      robustness.stopped = deadline.reason();
+      break;
+    }
     ++robustness.worlds;
     robustness.succeeded += run.succeeded;
     for (const auto& kind : run.failures) ++robustness.failures[kind];

@@ -372,6 +372,29 @@ TEST(Hang, PushPuzzlesWhoseLookAheadOrProductOutgrowTheLimitEndWithinASecondOfIt
   }
 }
 
+// Robustness is measured after the plan is validated, a replay per perturbed world; asked for 100,000 worlds
+// it would take minutes. The time limit ends the measure with the worlds judged by then, and says so; Ctrl-C
+// ends it as any phase.
+TEST(Hang, ARobustnessMeasureThatOutlastsTheTimeLimitEndsWithinASecondOfItAndSaysSo) {
+  const fs::path out = fresh_out_dir();
+  const std::string rooms = kSource + "/scenarios/rooms.lua --threads 1 --improve 0 --robustness 100000 --uncertainty mass=0.2";
+  const auto started = std::chrono::steady_clock::now();
+  const Result r = run(rooms + " --time-limit 2 --out " + out.string());
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_LT(elapsed, 2.0 + 1.0 * kSlowdown);
+  EXPECT_NE(r.out.find("(cut short by the time limit after"), std::string::npos) << r.out;
+  const auto robustness = nlohmann::json::parse(slurp(out / "rooms" / "report.json"))["robustness"];
+  EXPECT_EQ(robustness["stopped_by"], "time limit");
+  EXPECT_EQ(robustness["asked"], 100000);
+  EXPECT_LT(robustness["worlds"].get<int>(), 100000);
+  const Interruption measuring = interrupt({kSource + "/scenarios/rooms.lua", "--threads", "1", "--improve", "0", "--robustness",
+                                           "100000", "--quiet", "--out", out.string()},
+                                          std::chrono::milliseconds(1500));
+  EXPECT_EQ(measuring.exit_code, 130);
+  EXPECT_LT(measuring.seconds_to_end, 1.0);
+}
+
 TEST(Hang, CtrlCEndsEveryPhaseWithinASecondPreparationAndRenderingIncluded) {
   const fs::path crowded = crowded_world(test_dir());
   const fs::path out = fresh_out_dir();

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+
 namespace robustness_test {
 
 using namespace physltl;
@@ -102,6 +104,22 @@ TEST_F(ARobustPlan, FailsOpenLoopWhenItsFirstPushedBoxIsThreeTimesHeavierThanMod
   EXPECT_FALSE(run.succeeded);
   ASSERT_FALSE(run.failures.empty());
   EXPECT_FALSE(run.first_failure.empty());
+}
+
+TEST_F(ARobustPlan, AMeasureTheDeadlineEndsCountsOnlyTheWorldsJudgedAndSaysWhy) {
+  const Robustness late = measure_robustness(problem_.world, wide(), 20, 11, result_.plan, nominal_, problem_.original,
+                                             Deadline::in(0.0));
+  EXPECT_EQ(late.asked, 20);
+  EXPECT_EQ(late.worlds, 0);
+  EXPECT_EQ(late.stopped, "time limit");
+  std::atomic<bool> stop{true};
+  const Robustness stopped = measure_robustness(problem_.world, wide(), 20, 11, result_.plan, nominal_, problem_.original,
+                                                Deadline(Deadline::Clock::time_point::max(), &stop));
+  EXPECT_EQ(stopped.worlds, 0);
+  EXPECT_EQ(stopped.stopped, "interrupted");
+  const Robustness whole = measure_robustness(problem_.world, wide(), 20, 11, result_.plan, nominal_, problem_.original);
+  EXPECT_EQ(whole.worlds, 20);
+  EXPECT_TRUE(whole.stopped.empty());
 }
 
 TEST_F(ARobustPlan, IsDeterministicForASeedAndCountsEveryFailedWorld) {

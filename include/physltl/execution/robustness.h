@@ -3,6 +3,7 @@
 // perturbed worlds (perturbation.h), each judged as the plan's own replay is, but for reproducing the
 // planned states (docs/robustness.md).
 
+#include "physltl/base/deadline.h"
 #include "physltl/knowledge/validity.h"
 #include "physltl/planning/plan.h"
 #include "physltl/planning/validation/replay.h"
@@ -29,6 +30,7 @@ inline constexpr const char* kFailureKinds[] = {
 };
 
 struct WorldRun {
+  bool cut_short = false;             // the deadline stopped its replay: nothing known of this world
   bool succeeded = false;
   std::vector<std::string> failures;  // kinds, in kFailureKinds' order
   std::string first_failure;          // for people: the rule broken (with its step) or else how the task failed
@@ -38,18 +40,22 @@ struct WorldRun {
 // push that missed and a box that ended elsewhere from a region not reached; without it (controls that
 // no single plan made, such as an execution's) a failed formula counts as region_not_reached.
 WorldRun judge_in_world(const scenario::World& world, const planning::Plan& plan, const planning::Replay* nominal,
-                        const planning::TaskAutomaton& formula);
+                        const planning::TaskAutomaton& formula, const Deadline& deadline = {});
 
 struct Robustness {
-  int worlds = 0;
+  int asked = 0;         // worlds asked for
+  int worlds = 0;        // worlds judged: fewer than asked when the deadline stopped the measure
+  std::string stopped;   // "time limit" or "interrupted" then, else empty
   int succeeded = 0;
   std::map<std::string, int> failures;  // kind -> worlds with it
   double share() const { return worlds > 0 ? static_cast<double>(succeeded) / worlds : 0.0; }
 };
 
-// `worlds` perturbed worlds of `model` (indices 0..worlds-1 of `seed`), each judged by judge_in_world.
-// Throws PerturbationError when the uncertainty admits no valid world.
+// `worlds` perturbed worlds of `model` (indices 0..worlds-1 of `seed`), each judged by judge_in_world,
+// until `deadline`: the worlds judged by then (Robustness::stopped says why it stopped). Throws
+// PerturbationError when the uncertainty admits no valid world.
 Robustness measure_robustness(const scenario::World& model, const scenario::Uncertainty& uncertainty, int worlds,
-                              std::uint64_t seed, const planning::Plan& plan, const planning::Replay& nominal, const planning::TaskAutomaton& formula);
+                              std::uint64_t seed, const planning::Plan& plan, const planning::Replay& nominal,
+                              const planning::TaskAutomaton& formula, const Deadline& deadline = {});
 
 }  // namespace physltl::execution

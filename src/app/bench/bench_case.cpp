@@ -185,7 +185,8 @@ BenchRun measure(const planning::PlanningProblem& problem, const planning::Plann
     if (robustness_worlds > 0) {
       const scenario::World& world = problem.world();
       const execution::Robustness robustness = execution::measure_robustness(
-          world, world.uncertainty, robustness_worlds, options.seed, result.plan, *solution.replay, problem.as_written());
+          world, world.uncertainty, robustness_worlds, options.seed, result.plan, *solution.replay, problem.as_written(),
+          Deadline(Deadline::Clock::time_point::max(), options.deadline.stop()));  // timed apart from the run: Ctrl-C only
       run.robust_worlds = robustness.worlds;
       run.robust_succeeded = robustness.succeeded;
       run.robust_failures = robustness.failures;

@@ -150,8 +150,10 @@ void write_plan_files(const PlanningRun& run, const planning::ValidatedPlan& sol
   const scenario::World& world = run.problem().world();
   std::optional<execution::Robustness> robustness;
   if (args.robustness > 0) {
+    // Under the run's deadline: the time limit ends the measure with the worlds judged by then.
     robustness = execution::measure_robustness(world, world.uncertainty, args.robustness, world.planner.seed,
-                                               solution.result.plan, *solution.replay, run.problem().as_written());
+                                               solution.result.plan, *solution.replay, run.problem().as_written(),
+                                               run.deadline());
     say("robustness " + robustness_line(*robustness, world.uncertainty));
   }
   const PlanCostFigures plan_cost = run.plan_cost(solution);

@@ -17,6 +17,8 @@ nlohmann::ordered_json robustness_json(const execution::Robustness& robustness, 
     failures[kind] = it == robustness.failures.end() ? 0 : it->second;
   }
   return {{"worlds", robustness.worlds},
+          {"asked", robustness.asked},
+          {"stopped_by", robustness.stopped.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(robustness.stopped)},
           {"succeeded", robustness.succeeded},
           {"share", robustness.share()},
           {"uncertainty", uncertainty_json(uncertainty)},
@@ -35,8 +37,12 @@ std::string robustness_line(const execution::Robustness& robustness, const scena
     const auto it = robustness.failures.find(kind);
     if (it != robustness.failures.end()) failures.push_back(fmt::format("{} {}", kind, it->second));
   }
-  return fmt::format("{}/{} perturbed worlds succeed open loop ({}){}", robustness.succeeded, robustness.worlds,
-                     declared.empty() ? "no uncertainty declared" : fmt::format("{}", fmt::join(declared, ", ")),
+  const std::string cut = robustness.stopped.empty()
+                              ? ""
+                              : fmt::format(" (cut short by the {} after {} of {} worlds)", robustness.stopped, robustness.worlds,
+                                            robustness.asked);
+  return fmt::format("{}/{} perturbed worlds succeed open loop ({}){}{}", robustness.succeeded, robustness.worlds,
+                     declared.empty() ? "no uncertainty declared" : fmt::format("{}", fmt::join(declared, ", ")), cut,
                      failures.empty() ? "" : fmt::format("; failures: {}", fmt::join(failures, ", ")));
 }
 
