@@ -2,6 +2,7 @@
 
 #include "physltl/scenario/world.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -73,6 +74,23 @@ std::optional<int> read_bound(TableReader& r, const std::string& key) {
   return static_cast<int>(*v);
 }
 
+Expectations::Robustness read_robustness(TableReader& r) {
+  Expectations::Robustness robustness;
+  const double worlds = r.number("worlds", robustness.worlds);
+  if (!(worlds >= 1 && worlds <= 10000 && worlds == std::floor(worlds))) {
+    r.error("'worlds' must be a whole number from 1 to 10000, got " + number_text(worlds));
+  } else {
+    robustness.worlds = static_cast<int>(worlds);
+  }
+  robustness.at_least = r.number("at_least");
+  // 0 passes any plan: the expectation would compare nothing.
+  if (!(robustness.at_least > 0 && robustness.at_least <= 1)) {
+    r.error("'at_least' is the share of worlds the plan must succeed in, more than 0 and at most 1, got " +
+            number_text(robustness.at_least));
+  }
+  return robustness;
+}
+
 }  // namespace
 
 std::string FrameMoment::file_name() const {
@@ -98,6 +116,10 @@ Expectations read_expectations(TableReader& r) {
     if (*motion < 0) r.error("'max_motion_s' must be 0 or more");
     e.max_motion_s = *motion;
   }
+  if (auto robust = r.nested("robustness")) {
+    e.robustness = read_robustness(*robust);
+    robust->finish();
+  }
   e.tree = r.boolean("tree", false);
   e.frames = read_frames(r);
   if (auto t = r.nested("tolerance")) {
@@ -116,8 +138,8 @@ Expectations read_expectations(TableReader& r) {
     }
     t->finish();
   }
-  if (e.infeasible && (e.max_pushes || e.max_bodies_moved || e.max_motion_s || e.tree || !e.frames.empty())) {
-    r.error("an infeasible scenario plans nothing: bounds, 'tree' and 'frames' need a plan");
+  if (e.infeasible && (e.max_pushes || e.max_bodies_moved || e.max_motion_s || e.robustness || e.tree || !e.frames.empty())) {
+    r.error("an infeasible scenario plans nothing: bounds, 'robustness', 'tree' and 'frames' need a plan");
   }
   return e;
 }
@@ -129,6 +151,14 @@ void check_expectations(const World& world, std::vector<Diagnostic>& diagnostics
     bool known = false;
     for (const Region& region : world.regions) known = known || region.name == name;
     if (!known) diagnostics.push_back({e.where, "expect: 'unreachable' names '" + name + "', which is no region"});
+  }
+  const bool uncertain = !world.uncertainty.none() || std::ranges::any_of(world.movable_bodies, [](const MovableBody& b) {
+    const BodyUncertainty& u = b.uncertainty;
+    return u.mass.value_or(0) > 0 || u.friction.value_or(0) > 0 || u.pose.value_or(0) > 0 || u.yaw_deg.value_or(0) > 0;
+  });
+  if (e.robustness && !uncertain) {
+    diagnostics.push_back({e.where, "expect: 'robustness' needs an uncertainty { ... } block (or a body's own): in the model "
+                                    "itself every world is the same and the plan succeeds in all"});
   }
 }
 

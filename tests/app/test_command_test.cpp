@@ -201,6 +201,28 @@ TEST(TestCommand, APlanWithOnePushMoreThanItsBoundFailsThatBound) {
   EXPECT_EQ(summary_counts(r.out)[2], 1) << r.out;
 }
 
+// A bound on robustness holds the written plan to a share of perturbed worlds (the scenario's uncertainty):
+// ordered.lua's improved plan of seed 1 succeeds in 4 of 20, and with an improvement margin in 17.
+TEST(TestCommand, ARobustnessBoundFailsAFragilePlanAndPassesTheOneImprovedWithAMargin) {
+  const fs::path dir = test_dir("scenarios");
+  fs::remove_all(dir);
+  const auto with_uncertainty = [](const std::string& planner) {
+    return [planner](std::string& text) {
+      replace(text, "expect {", "uncertainty { mass = 0.2, friction = 0.1, start = 0.02 }\nexpect { robustness = { worlds = 20, at_least = 0.8 },");
+      replace(text, "planner {", "planner { " + planner);
+    };
+  };
+  const fs::path fragile = copy_scenario(dir / "fragile", "ordered.lua", with_uncertainty(""));
+  const Result failing = test_command(fragile.string() + " --update --out " + fresh_out_dir().string());
+  EXPECT_EQ(failing.exit_code, 1);
+  EXPECT_NE(failing.out.find("FAILED  robustness: the plan succeeds in 0.20 of the perturbed worlds, less than 0.8: 4/20"),
+            std::string::npos) << failing.out;
+  const fs::path margined = copy_scenario(dir / "margined", "ordered.lua", with_uncertainty("improve_margin = 0.05, "));
+  const Result passing = test_command(margined.string() + " --update --out " + fresh_out_dir().string());
+  EXPECT_EQ(passing.exit_code, 0) << passing.out;
+  EXPECT_EQ(summary_counts(passing.out)[2], 0) << passing.out;
+}
+
 TEST(TestCommand, AnInfeasibleScenarioPassesWhenItsReasonAndUnreachableRegionsAreAsExpected) {
   const fs::path dir = test_dir("scenarios");
   fs::remove_all(dir);

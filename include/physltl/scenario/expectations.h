@@ -35,6 +35,13 @@ struct Expectations {
   std::optional<int> max_pushes;
   std::optional<double> max_motion_s;
   std::optional<int> max_bodies_moved;
+  // The written plan, replayed in `worlds` perturbed worlds of the scenario's uncertainty (docs/robustness.md,
+  // seeded by the scenario's seed), succeeds in at least the share `at_least` of them.
+  struct Robustness {
+    int worlds = 20;
+    double at_least = 0.0;
+  };
+  std::optional<Robustness> robustness;
   bool tree = false;                 // also compare tree.png
   std::vector<FrameMoment> frames;   // and these frames of the plan
   PictureTolerance tolerance;        // for every picture, unless one of the three below says otherwise

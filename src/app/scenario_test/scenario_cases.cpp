@@ -7,6 +7,8 @@
 #include "views/plan_pictures.h"
 #include "run/planner_names.h"
 #include "views/planner_views.h"
+#include "views/robustness_report.h"
+#include "physltl/execution/robustness.h"
 #include "pipeline/planning_run.h"
 #include "physltl/planning/validation/improve.h"
 #include "physltl/render/preview.h"
@@ -75,6 +77,20 @@ struct SolvedPlan {
   const planning::ValidatedPlan& solution;
 };
 
+// The whole measure, so that a case gives the same verdict on every machine: Ctrl-C ends it, the time limit
+// does not (as bench's measure, docs/reliability.md).
+CaseResult robustness_case(const SolvedPlan& plan, const scenario::Expectations::Robustness& expected) {
+  const planning::PlanningProblem& problem = plan.run.problem();
+  const scenario::World& world = problem.world();
+  const execution::Robustness measured = execution::measure_robustness(
+      world, world.uncertainty, expected.worlds, world.planner.seed, plan.solution.result.plan, *plan.solution.replay,
+      problem.as_written(), Deadline(Deadline::Clock::time_point::max(), plan.run.deadline().stop()));
+  if (!measured.stopped.empty()) return CaseResult{"", Outcome::kSkipped, "interrupted"};
+  if (measured.share() >= expected.at_least) return {};
+  return failed(fmt::format("the plan succeeds in {:.2f} of the perturbed worlds, less than {:g}: {}", measured.share(),
+                            expected.at_least, robustness_line(measured, world.uncertainty)));
+}
+
 void bound_cases(const SolvedPlan& plan, const scenario::Expectations& e, std::vector<CaseResult>& cases) {
   const planning::Replay& replay = *plan.solution.replay;
   const double motion_s = plan.solution.result.plan.total_steps() * plan.run.problem().world().planner.step_size;
@@ -100,6 +116,7 @@ void bound_cases(const SolvedPlan& plan, const scenario::Expectations& e, std::v
                                                                moved, *e.max_bodies_moved));
     }));
   }
+  if (e.robustness) cases.push_back(timed("robustness", [&] { return robustness_case(plan, *e.robustness); }));
 }
 
 void picture_cases(const SolvedPlan& plan, const scenario::Expectations& e, Goldens& goldens,
@@ -156,6 +173,7 @@ void skip(const scenario::Expectations& e, bool after_preview, const std::string
     if (e.max_pushes) names.push_back("max_pushes");
     if (e.max_motion_s) names.push_back("max_motion_s");
     if (e.max_bodies_moved) names.push_back("max_bodies_moved");
+    if (e.robustness) names.push_back("robustness");
     names.push_back("plan.json");
   } else {
     if (e.tree) names.push_back("tree.png");
