@@ -36,13 +36,6 @@ std::optional<double> clearance(const scenario::World& world, const scenario::St
 
 namespace {
 
-int region_holding(const scenario::World& world, const Vec2& p) {
-  for (std::size_t r = 0; r < world.regions.size(); ++r) {
-    if (world.regions[r].polygon.contains(p)) return static_cast<int>(r);
-  }
-  return -1;
-}
-
 // The deepest `where(i)` goes into `region` from step `s` on, while it stays in it.
 template <class Where>
 double deepest_stay(const scenario::World& world, int region, std::size_t s, std::size_t steps, Where where) {
@@ -62,6 +55,7 @@ std::vector<double> visit_depths(const scenario::World& world, const Replay& rep
   const std::vector<int>& regions = replay.region_trace;
   const scenario::StateTrace& states = replay.states;
   const std::size_t steps = std::min(regions.size(), states.size());
+  const knowledge::RegionMap region_map(world);
   std::vector<double> depths;
   for (std::size_t s = 1; s < replay.automaton_trace.size() && s < steps; ++s) {
     if (replay.automaton_trace[s] == replay.automaton_trace[s - 1]) continue;
@@ -73,7 +67,7 @@ std::vector<double> visit_depths(const scenario::World& world, const Replay& rep
     }
     for (std::size_t body = 0; body < world.movable_bodies.size(); ++body) {
       if (labelling.part_of(static_cast<int>(body)) < 0) continue;
-      const int region = region_holding(world, states.body_pose(body, s).position);
+      const int region = region_map.at(states.body_pose(body, s).position);
       if (region < 0) continue;
       depths.push_back(deepest_stay(world, region, s, steps, [&](std::size_t i) { return states.body_pose(body, i).position; }));
     }
