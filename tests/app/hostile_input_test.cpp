@@ -388,6 +388,14 @@ TEST(Hang, ARobustnessMeasureThatOutlastsTheTimeLimitEndsWithinASecondOfItAndSay
   EXPECT_EQ(robustness["stopped_by"], "time limit");
   EXPECT_EQ(robustness["asked"], 100000);
   EXPECT_LT(robustness["worlds"].get<int>(), 100000);
+  // With no world judged there is no share to give.
+  const fs::path late = fresh_out_dir();
+  // Improvement takes the whole second: the measure starts past the deadline.
+  ASSERT_EQ(run(kSource + "/scenarios/rooms.lua --threads 1 --improve 1000000 --robustness 20 --uncertainty mass=0.2"
+                " --time-limit 1 --quiet --out " + late.string()).exit_code, 0);
+  const auto none = nlohmann::json::parse(slurp(late / "rooms" / "report.json"))["robustness"];
+  EXPECT_EQ(none["worlds"], 0);
+  EXPECT_TRUE(none["share"].is_null());
   const Interruption measuring = interrupt({kSource + "/scenarios/rooms.lua", "--threads", "1", "--improve", "0", "--robustness",
                                            "100000", "--quiet", "--out", out.string()},
                                           std::chrono::milliseconds(1500));

@@ -20,7 +20,7 @@ nlohmann::ordered_json robustness_json(const execution::Robustness& robustness, 
           {"asked", robustness.asked},
           {"stopped_by", robustness.stopped.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(robustness.stopped)},
           {"succeeded", robustness.succeeded},
-          {"share", robustness.share()},
+          {"share", robustness.worlds > 0 ? nlohmann::ordered_json(robustness.share()) : nlohmann::ordered_json(nullptr)},
           {"uncertainty", uncertainty_json(uncertainty)},
           {"failures", std::move(failures)}};
 }
