@@ -12,6 +12,11 @@ Deadline Deadline::in(double seconds, const std::atomic<bool>* stop) {
   return Deadline(Clock::now() + span, stop);
 }
 
+double Deadline::seconds_left() const {
+  if (at_ == Clock::time_point::max()) return INFINITY;
+  return std::max(0.0, std::chrono::duration<double>(at_ - Clock::now()).count());
+}
+
 Deadline Deadline::sooner(double seconds) const {
   const Deadline other = in(seconds, stop_);
   return Deadline(std::min(at_, other.at_), stop_);

@@ -21,15 +21,14 @@ Replanned replan(const scenario::World& from_here, const planning::PlannerEntry&
   // The budget, not the clock, ends the search: the time limit only guards against a budget too large,
   // and of the run's deadline only its stop flag (Ctrl-C) holds.
   planning::PlannerOptions budgeted = options;
-  budgeted.time_limit = 3600.0;
-  budgeted.deadline = Deadline(Deadline::Clock::time_point::max(), options.deadline.stop());
+  budgeted.deadline = Deadline::in(3600.0, options.deadline.stop());
   budgeted.max_propagations = budget;
   budgeted.threads = 1;
   budgeted.improve = 0;
   const planning::ValidatedPlan solution = planning::solve(problem, planner, budgeted);
   out.propagations = solution.result.stats.propagations;
   out.planning_s = solution.result.stats.planning_time_s;
-  out.stop_reason = solution.result.stop_reason;
+  out.stop_reason = planning::to_string(solution.result.stop_reason);
   if (solution.solved()) {
     out.plan = solution.result.plan;
     out.nominal = *solution.replay;

@@ -69,7 +69,7 @@ ValidatedPlan solve(const PlanningProblem& problem, const PlannerEntry& planner,
   } catch (const DeadlineReached& reached) {
     // Cut short before any search: no plan, for the reason the deadline gives.
     ValidatedPlan cut;
-    cut.result.stop_reason = reached.what();
+    cut.result.stop_reason = reached.interrupted() ? StopReason::kInterrupted : StopReason::kTimeLimit;
     return cut;
   }
   return plan_and_validate(problem.for_planner(planner), planner, prepared, options);

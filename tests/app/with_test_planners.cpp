@@ -36,10 +36,11 @@ PlannerEntry annotated(const PlannerEntry& baseline) {
     prepared->prepared = true;
     return prepared;
   };
-  entry.plan = [&baseline](const Problem& problem, const PlannerData* prepared, const PlannerOptions& options) {
+  entry.plan = [&baseline, flavour = entry.parameters.front()](const Problem& problem, const PlannerData* prepared,
+                                                                const PlannerOptions& options) {
     PlanResult result = baseline.plan(problem, nullptr, options);
     auto note = std::make_shared<Annotation>();
-    note->flavour = options.parameter("test-flavour", "plain");
+    note->flavour = options.parameter(flavour);
     note->prepared = prepared != nullptr && dynamic_cast<const Annotation&>(*prepared).prepared;
     note->propagations = result.stats.propagations;
     result.own = std::move(note);

@@ -368,3 +368,61 @@ TEST(FunctionSize, NoFunctionInTheProgramRunsOverEightyLines) {
 }
 
 }  // namespace
+
+namespace {
+
+// The data members of `struct NAME { ... }` in `header`, by name, in order (member functions and nested
+// types left out).
+std::vector<std::string> members_of(const std::string& header, const std::string& name) {
+  const std::string code = code_only(read(kSource / header));
+  const std::size_t at = code.find("struct " + name + " {");
+  if (at == std::string::npos) return {};
+  std::vector<std::string> members;
+  int depth = 0;
+  std::string statement;
+  for (std::size_t i = code.find('{', at); i < code.size(); ++i) {
+    const char c = code[i];
+    if (c == '{') ++depth;
+    if (c == '}' && --depth == 0) break;
+    if (depth == 1 && c == ';') {
+      // A declaration at the struct's own level: a data member unless it declares a function.
+      static const std::regex member(R"re(([A-Za-z_][A-Za-z_0-9]*)\s*(=[^;]*|\{[^;]*\})?\s*$)re");
+      const std::string head = statement.substr(0, statement.find('='));
+      std::smatch found;
+      if (head.find('(') == std::string::npos && std::regex_search(statement, found, member)) members.push_back(found[1]);
+      statement.clear();
+    } else if (depth == 1 && c != '{') {
+      statement += c;
+    } else if (depth == 1) {
+      statement += ' ';
+    }
+  }
+  return members;
+}
+
+}  // namespace
+
+// The planner contract is narrow on purpose (docs/architecture.md, "The planner contract"): one
+// termination condition, the deadline, and fields every planner fills. A planner's own settings are
+// parameters (PlannerEntry::parameters), its own data a PlannerData, its own counters
+// PlannerStats::own_counts. A field added here is a change of the contract: add it to this list on purpose.
+TEST(PlannerContract, TheSharedOptionsAndResultHoldOnlyTheContractsMembers) {
+  const std::string header = "include/physltl/planning/planner_options.h";
+  EXPECT_EQ(members_of(header, "PlannerOptions"),
+            (std::vector<std::string>{"seed", "deadline", "max_propagations", "threads", "improve", "improve_for_s", "parameters"}));
+  EXPECT_EQ(members_of(header, "PlannerStats"),
+            (std::vector<std::string>{"planning_time_s", "propagations", "physics_steps", "tree_nodes", "invalid_steps",
+                                      "refused", "own_counts"}));
+  EXPECT_EQ(members_of(header, "PlanResult"),
+            (std::vector<std::string>{"solved", "stop_reason", "plan", "tree", "stats", "own", "settings",
+                                      "improved_itself", "motion_progress"}));
+}
+
+TEST(PlannerContract, TheMemberScannerReadsDefaultsAndSkipsFunctions) {
+  // Guards the test above against a scanner that finds nothing: the Deadline class has no `struct`, so
+  // PlannerOptions' own default-initialised members and its one member function must be told apart.
+  const std::vector<std::string> options = members_of("include/physltl/planning/planner_options.h", "PlannerOptions");
+  EXPECT_NE(std::find(options.begin(), options.end(), "seed"), options.end());
+  EXPECT_EQ(std::find(options.begin(), options.end(), "parameter"), options.end());
+  EXPECT_TRUE(members_of("include/physltl/planning/planner_options.h", "NoSuchStruct").empty());
+}

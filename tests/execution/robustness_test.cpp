@@ -152,7 +152,7 @@ TEST(ImprovementMargin, MakesImprovedPlansSucceedInMorePerturbedWorlds) {
     for (std::uint64_t seed : {1, 2, 3}) {
       PlannerOptions options;
       options.seed = seed;
-      options.time_limit = 20;
+      options.deadline = Deadline::in(20);
       options.improve = 1000;
       const ValidatedPlan improved = plan_and_validate(p.problem(), planner_named("knowledge"), p.preparation("knowledge"), options);
       EXPECT_TRUE(improved.solved());

@@ -231,7 +231,7 @@ TEST(Replay, AStopAndStayTraceThatEntersTheHazardIsRejected) {
   const PlanResult result = p.plan_task(reach_only, [] {
     PlannerOptions o;
     o.seed = 4;
-    o.time_limit = 20;
+    o.deadline = Deadline::in(20);
     return o;
   }());
   ASSERT_TRUE(result.solved);
@@ -287,7 +287,7 @@ TEST(Planner, TheOnlyWayThroughABoxAndAWayRoundFiveTimesLongerArePushedThrough) 
 ValidatedPlan solve_and_improve(const TestProblem& p, std::uint64_t seed, int improve) {
   PlannerOptions options;
   options.seed = seed;
-  options.time_limit = 20;
+  options.deadline = Deadline::in(20);
   options.improve = improve;
   return plan_and_validate(p.problem(), planner_named("knowledge"), p.preparation("knowledge"), options);
 }
@@ -478,7 +478,7 @@ TEST(Deadline, APreparationCutShortEndsTheRunWithNoPlanAndKeepsNothing) {
   options.deadline = Deadline::in(0.0);
   const ValidatedPlan cut = solve(problem, knowledge, options);
   EXPECT_FALSE(cut.solved());
-  EXPECT_EQ(cut.result.stop_reason, "time limit");
+  EXPECT_EQ(cut.result.stop_reason, StopReason::kTimeLimit);
   EXPECT_EQ(cut.result.stats.propagations, 0);
   options.deadline = {};
   options.seed = 2;
@@ -539,10 +539,10 @@ TEST(Planner, GivesUpAtItsTimeLimitOnAnImpossibleTask) {
   p.knowledge = knowledge::formulate(p.world);
   const TaskAutomaton task = TaskAutomaton::make(ltl::parse("F p4"), p.world);
   PlannerOptions options;
-  options.time_limit = 0.3;
+  options.deadline = Deadline::in(0.3);
   const PlanResult result = p.plan_task(task, options);
   EXPECT_FALSE(result.solved);
-  EXPECT_EQ(result.stop_reason, "time limit");
+  EXPECT_EQ(result.stop_reason, StopReason::kTimeLimit);
   EXPECT_LT(result.stats.planning_time_s, 0.6);
   EXPECT_GT(result.stats.propagations, 0);
 }
@@ -555,10 +555,10 @@ TEST(Planner, ATaskAlreadyLostAtTheStartHasNoLead) {
   }
   const TaskAutomaton task = TaskAutomaton::make(ltl::parse("!p2 U p1"), p.world);
   PlannerOptions options;
-  options.time_limit = 5;
+  options.deadline = Deadline::in(5);
   const PlanResult result = p.plan_task(task, options);
   EXPECT_FALSE(result.solved);
-  EXPECT_EQ(result.stop_reason, "no lead");
+  EXPECT_EQ(result.stop_reason, StopReason::kNoLead);
   EXPECT_EQ(result.stats.propagations, 0);
 }
 
@@ -569,7 +569,7 @@ TEST(Planner, StopsWhenAskedTo) {
   options.deadline = physltl::Deadline(physltl::Deadline::Clock::time_point::max(), &stop);
   const PlanResult result = p.plan_task(p.task, options);
   EXPECT_FALSE(result.solved);
-  EXPECT_EQ(result.stop_reason, "interrupted");
+  EXPECT_EQ(result.stop_reason, StopReason::kInterrupted);
 }
 
 }  // namespace

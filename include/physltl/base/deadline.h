@@ -42,6 +42,8 @@ class Deadline {
   // "interrupted" or "time limit", for a stop reason; call when reached().
   const char* reason() const { return interrupted() ? "interrupted" : "time limit"; }
 
+  // Seconds until the instant (infinity for never; 0 once passed).
+  double seconds_left() const;
   // The earlier of this deadline and `seconds` from now, with the same stop flag.
   Deadline sooner(double seconds) const;
   Clock::time_point at() const { return at_; }

@@ -8,6 +8,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <iosfwd>
 #include <map>
 #include <optional>
 #include <memory>
@@ -19,14 +20,16 @@ namespace physltl::planning {
 
 class PlannerData;
 
+struct PlannerParameter;
+
+// The one termination condition of a search, as OMPL's PlannerTerminationCondition: `deadline`. What the
+// caller wants beyond it it asks by count (max_propagations), never by a second clock.
 struct PlannerOptions {
   std::uint64_t seed = 1;
-  double time_limit = scenario::kDefaultTimeLimit;  // s of wall-clock search, from its start
   // When the whole run must end (its time limit from the run's start, preparation included) and the stop
-  // flag (Ctrl-C): the search ends at the sooner of this and its own time_limit, and the preparation,
-  // replay and improvement of the run stop at it (validated_plan.h). Default: never, no stop flag.
+  // flag (Ctrl-C): the search, and the preparation, replay and improvement of the run, stop at it
+  // (validated_plan.h). Default: never, no stop flag.
   Deadline deadline;
-  std::size_t max_tree_nodes = 2'000'000;       // memory bound: ~0.5 KiB per node
   // The knowledge planner and the baseline stop with "budget" after this many propagations (0: no bound),
   // checked between batches, so a seed gives the same plan or the same failure on any machine and load
   // (execution's replanning, docs/robustness.md). OMPL's planners do not take it.
@@ -43,11 +46,13 @@ struct PlannerOptions {
   // takes its default.
   std::map<std::string, std::string> parameters;
 
-  // The value of the planner's parameter `name`, or `fallback` when not given.
-  const std::string& parameter(const std::string& name, const std::string& fallback) const;
+  // The value given for `parameter`, or its default: a planner reads its parameters through the same
+  // PlannerParameter its entry declares, so that each default is written once.
+  const std::string& parameter(const PlannerParameter& parameter) const;
 };
 
-// The options a World's planner settings give (seed and time limit), the rest at their defaults.
+// The options a World's planner settings give (its seed, and a deadline its time limit from now), the
+// rest at their defaults.
 PlannerOptions options_for(const scenario::World& world);
 
 struct PlannerStats {
@@ -56,16 +61,38 @@ struct PlannerStats {
   long long physics_steps = 0;  // ODE steps taken
   long long tree_nodes = 0;
   long long invalid_steps = 0;  // steps the validity checker refused
-  // OMPL's planners: steps refused because the robot crossed into a triangle that is not a neighbour of
-  // the one it left, which OMPL's product graph cannot follow (docs/benchmarks.md).
-  long long cell_skips_refused = 0;
   // Refused steps by rule (refusal.h).
   Refusals refused;
+  // Counters only some planners keep, by name, as OMPL's planner progress properties (OMPL's planners:
+  // "cell_skips_refused"); bench.json shows each.
+  std::map<std::string, long long> own_counts;
+
+  long long own_count(const std::string& name) const;
 };
+
+// Why a search ended.
+enum class StopReason {
+  kSolved,
+  kTimeLimit,    // the deadline's instant
+  kInterrupted,  // the deadline's stop flag (Ctrl-C)
+  kBudget,       // PlannerOptions::max_propagations
+  kTreeFull,     // the planner's own memory bound
+  kNoLead,       // no way left in the task's product graph
+  kNoSolution,   // the planner gave up for a reason of its own
+};
+
+// As reports print it: "solved", "time limit", "interrupted", "budget", "tree full", "no lead", "no solution".
+const char* to_string(StopReason reason);
+std::optional<StopReason> stop_reason_from(const std::string& text);
+// What a deadline that was reached gives: interrupted or time limit.
+StopReason stop_reason_of(const Deadline& reached);
+// The search was cut short by a limit (time, budget, memory), so where it stood is worth a diagnosis.
+bool cut_short(StopReason reason);
+std::ostream& operator<<(std::ostream& out, StopReason reason);
 
 struct PlanResult {
   bool solved = false;
-  std::string stop_reason;  // "solved", "time limit", "budget", "interrupted", "tree full", "no lead", "no solution"
+  StopReason stop_reason = StopReason::kNoSolution;
   Plan plan;
   std::vector<TreeEdge> tree;
   PlannerStats stats;
@@ -74,8 +101,8 @@ struct PlanResult {
   std::shared_ptr<const PlannerData> own;
   // How the planner was configured, for bench.json and the OMPL log (name, value as text).
   std::vector<std::pair<std::string, std::string>> settings;
-  // The planner lowered its plan's cost itself until its time limit (OMPL's SST, --sst-until limit): judged
-  // as it found it, with none of our improvement after.
+  // An anytime planner lowered its plan's cost itself until the deadline (of OMPL's, SST with --sst-until
+  // limit): its plan is judged as it found it, with none of the core's improvement after.
   bool improved_itself = false;
   // Then, the motion time of its best plan over time: (seconds after its first plan, motion seconds), one
   // entry per better plan, as the planner saw them (only the last is replayed).

@@ -159,7 +159,7 @@ BenchRun measure(const planning::PlanningProblem& problem, const planning::Plann
   run.seed = options.seed;
   const planning::PlanResult& result = solution.result;
   run.solved = solution.solved();
-  run.stop_reason = solution.solved() || !result.solved      ? result.stop_reason
+  run.stop_reason = solution.solved() || !result.solved      ? planning::to_string(result.stop_reason)
                     : !solution.replay->cut_short.empty() ? solution.replay->cut_short
                                                           : "failed replay";
   run.tree_nodes = result.stats.tree_nodes;
@@ -192,7 +192,7 @@ BenchRun measure(const planning::PlanningProblem& problem, const planning::Plann
       run.robust_failures = robustness.failures;
     }
   }
-  run.cell_skips_refused = result.stats.cell_skips_refused;
+  run.cell_skips_refused = result.stats.own_count("cell_skips_refused");
   run.settings = result.settings;
   return run;
 }

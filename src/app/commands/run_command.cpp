@@ -199,7 +199,7 @@ int run(const RunArgs& args) {
   const planning::ValidatedPlan solution = run.solve(options);
   progress.done();
   const planning::PlannerStats& stats = solution.result.stats;
-  say(fmt::format("search     {}: {:.2f} s, {} nodes, {} propagations, {} physics steps{}", solution.result.stop_reason,
+  say(fmt::format("search     {}: {:.2f} s, {} nodes, {} propagations, {} physics steps{}", planning::to_string(solution.result.stop_reason),
                   stats.planning_time_s, stats.tree_nodes, stats.propagations, stats.physics_steps,
                   args.threads > 1 && planner.can.threads ? fmt::format(" ({} threads)", args.threads) : ""));
   if (stop_received()) throw Interrupted();

@@ -26,7 +26,7 @@ std::string seeds_text(const BenchResults& r) {
 
 std::map<std::string, std::string> ompl_run(const BenchRun& run, double counted_time_s) {
   const OmplStatus status = run.solved                     ? OmplStatus::kExactSolution
-                            : run.stop_reason == "time limit" ? OmplStatus::kTimeout
+                            : planning::stop_reason_from(run.stop_reason) == planning::StopReason::kTimeLimit ? OmplStatus::kTimeout
                                                               : OmplStatus::kAbort;
   std::map<std::string, std::string> values = {
       {"seed INTEGER", std::to_string(run.seed)},

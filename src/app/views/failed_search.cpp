@@ -13,7 +13,7 @@ namespace physltl::app {
 using json = nlohmann::ordered_json;
 
 bool search_was_cut_short(const planning::PlanResult& result) {
-  return result.stop_reason == "time limit" || result.stop_reason == "tree full" || result.stop_reason == "budget";
+  return planning::cut_short(result.stop_reason);
 }
 
 void write_failed_search(const RunSummary& run, const decomposition::Decomposition& decomposition,
@@ -36,8 +36,8 @@ json failed_report_json(const RunSummary& run) {
 std::string no_plan_line(const planning::PlannerEntry& planner, const planning::PlanResult& result) {
   const planning::Refusals& refused = result.stats.refused;
   const auto most = planning::most_refused(refused, planner.own_refusals);
-  if (!most) return fmt::format("no plan found ({})", result.stop_reason);
-  return fmt::format("no plan found ({}); most refused: {} ({} of {} steps)", result.stop_reason, most->first, most->second,
+  if (!most) return fmt::format("no plan found ({})", planning::to_string(result.stop_reason));
+  return fmt::format("no plan found ({}); most refused: {} ({} of {} steps)", planning::to_string(result.stop_reason), most->first, most->second,
                      refused.total());
 }
 

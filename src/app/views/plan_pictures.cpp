@@ -209,7 +209,7 @@ render::Image draw_tree_picture(const scenario::World& world, const knowledge::R
     for (const auto& s : replay->states) overlay.path.push_back(s.robot_position);
   }
   overlay.legend = {"search tree: " + std::to_string(result.tree.size() + 1) + " nodes, coloured by automaton state",
-                    result.solved ? "solution path on top" : "no solution (" + result.stop_reason + ")"};
+                    result.solved ? "solution path on top" : "no solution (" + std::string(planning::to_string(result.stop_reason)) + ")"};
   if (!moves.arrows.empty()) {
     overlay.segments.insert(overlay.segments.end(), moves.arrows.begin(), moves.arrows.end());
     overlay.legend.push_back(moves.legend);

@@ -47,7 +47,7 @@ json report_json(const RunSummary& run) {
       {"task_class", ltl::class_name(reasoning.task.task_class)},
       {"solved", r.solved && run.replay != nullptr && run.replay->validated()},
       {"validated", run.replay != nullptr && run.replay->validated()},
-      {"stop_reason", r.stop_reason},
+      {"stop_reason", planning::to_string(r.stop_reason)},
       {"planning_time_s", r.stats.planning_time_s},
       {"tree_nodes", r.stats.tree_nodes},
       {"propagations", r.stats.propagations},

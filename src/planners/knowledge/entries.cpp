@@ -37,12 +37,7 @@ planning::PlannerEntry tree_search_entry(std::string name, std::string summary, 
   entry.diagnosis_keys = {"search_end"};
   if (entry.uses_knowledge) {
     entry.prepare = prepare_knowledge;
-    entry.parameters = {{planning::kPushPrimitivesParameter,
-                         "Whether the look-ahead's push order is first carried out by closed-loop push primitives (on) or by sampled controls alone (off)",
-                         {"on", "off"},
-                         [](const std::string& value) {
-                           return value == "off" ? "the knowledge planner follows its push order with sampled controls alone (--push-primitives off)" : "";
-                         }}};
+    entry.parameters = {planning::push_primitives_parameter()};
   }
   entry.plan = [mode](const Problem& problem, const PlannerData* prepared, const planning::PlannerOptions& options) {
     return planning::plan_with_tree_search(problem, dynamic_cast<const KnowledgePreparation*>(prepared), options, mode);

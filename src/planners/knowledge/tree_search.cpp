@@ -24,6 +24,8 @@
 namespace physltl::planning {
 namespace {
 
+// The tree's memory bound: ~0.5 KiB per node.
+constexpr std::size_t kMaxTreeNodes = 2'000'000;
 constexpr int kExpansionsPerLead = 64;  // tree expansions between two lead computations
 // Expansions chosen together and grown in parallel. Choosing a batch before growing it makes the plan
 // independent of the number of threads; a batch much larger than the thread count keeps them all busy
@@ -103,7 +105,7 @@ class Search {
         decomposition_(problem.decomposition),
         options_(options),
         knowledge_mode_(mode == TreeSearchMode::kKnowledge),
-        primitives_(options.parameter(kPushPrimitivesParameter, "on") == "on"),
+        primitives_(options.parameter(push_primitives_parameter()) == "on"),
         stage_graph_(prepared != nullptr && prepared->stages ? prepared->stages : std::make_shared<const StageGraph>(task_)),
         stages_(*stage_graph_),
         // The knowledge planner's lead goes round the bodies where the task needs no pushing (route_choice.h).
@@ -131,7 +133,7 @@ class Search {
     PlanResult result;
     add_root();
     if (accepting(motions_[0].stage)) {
-      finish(result, 0, started, "solved");
+      finish(result, 0, started, StopReason::kSolved);
       return result;
     }
     int lead_start = segment_start_;
@@ -146,7 +148,7 @@ class Search {
         lead = lead_search_.next(product_of(lead_start), horizon());
       }
       if (!body_move && lead.empty()) {
-        finish(result, -1, started, "no lead");
+        finish(result, -1, started, StopReason::kNoLead);
         return result;
       }
       std::vector<int> next_lead;
@@ -177,11 +179,11 @@ class Search {
         }
         const int solution = add_growths();
         if (solution >= 0) {
-          finish(result, solution, started, "solved");
+          finish(result, solution, started, StopReason::kSolved);
           return result;
         }
-        if (const char* reason = should_stop(started)) {
-          finish(result, -1, started, reason);
+        if (const std::optional<StopReason> reason = should_stop()) {
+          finish(result, -1, started, *reason);
           return result;
         }
       }
@@ -195,15 +197,11 @@ class Search {
   }
 
  private:
-  const char* should_stop(std::chrono::steady_clock::time_point started) const {
-    if (options_.deadline.interrupted()) return "interrupted";
-    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >= options_.time_limit ||
-        options_.deadline.passed()) {
-      return "time limit";
-    }
-    if (motions_.size() >= options_.max_tree_nodes) return "tree full";
-    if (options_.max_propagations > 0 && stats_.propagations >= options_.max_propagations) return "budget";
-    return nullptr;
+  std::optional<StopReason> should_stop() const {
+    if (options_.deadline.reached()) return stop_reason_of(options_.deadline);
+    if (motions_.size() >= kMaxTreeNodes) return StopReason::kTreeFull;
+    if (options_.max_propagations > 0 && stats_.propagations >= options_.max_propagations) return StopReason::kBudget;
+    return std::nullopt;
   }
 
   // How far the lead looks: a few stages beyond the furthest the tree has got.
@@ -623,7 +621,7 @@ class Search {
     segment_start_ = stage_motions_[static_cast<size_t>(nearest)].front();
   }
 
-  void finish(PlanResult& result, int solution, std::chrono::steady_clock::time_point started, const char* reason) {
+  void finish(PlanResult& result, int solution, std::chrono::steady_clock::time_point started, StopReason reason) {
     result.solved = solution >= 0;
     result.stop_reason = reason;
     for (int m = solution; m > 0; m = motions_[m].parent) {
@@ -735,6 +733,17 @@ class Search {
 };
 
 }  // namespace
+
+const PlannerParameter& push_primitives_parameter() {
+  static const PlannerParameter parameter{
+      "push-primitives",
+      "Whether the look-ahead's push order is first carried out by closed-loop push primitives (on) or by sampled controls alone (off)",
+      {"on", "off"},
+      [](const std::string& value) {
+        return value == "off" ? "the knowledge planner follows its push order with sampled controls alone (--push-primitives off)" : "";
+      }};
+  return parameter;
+}
 
 PlanResult plan_with_tree_search(const Problem& problem, const KnowledgePreparation* prepared, const PlannerOptions& options,
                                  TreeSearchMode mode) {

@@ -10,6 +10,7 @@
 
 #include "planner_data.h"
 
+#include "physltl/planning/planner_entry.h"
 #include "physltl/planning/planner_options.h"
 #include "physltl/planning/problem.h"
 
@@ -22,9 +23,9 @@ enum class TreeSearchMode {
   kBaseline,   // fixed-body contacts only, uniform controls (the paper's simple planner)
 };
 
-// The knowledge planner's parameter: "on" (the default), the look-ahead's order is first carried out by
-// closed-loop push primitives; "off", by sampled controls alone (for comparing the two).
-inline const std::string kPushPrimitivesParameter = "push-primitives";
+// The knowledge planner's parameter `push-primitives`: "on" (the default), the look-ahead's order is first
+// carried out by closed-loop push primitives; "off", by sampled controls alone (for comparing the two).
+const PlannerParameter& push_primitives_parameter();
 
 // `prepared`: the knowledge planner's route choice and look-ahead; without it, the knowledge search chooses
 // its routes itself and follows no push order.

@@ -22,27 +22,6 @@ const Capability kLtlPlannerNoRest{false,
                                    "safety), satisfied by a finite run that need not end at rest"};
 const Capability kOmplNoBudget{false, "OMPL's planners stop at a time limit only, so a replanning would depend on the machine"};
 
-// --ompl-sampler: OMPL's uniform control sampler (the default), or the one our planners share
-// (planning/propagation/control_sampler.h).
-planning::PlannerParameter sampler_parameter() {
-  return {planning::kOmplSamplerParameter,
-          "Control sampler of OMPL's planners: ompl (OMPL's uniform one) or ours (the knowledge planner's)",
-          {"ompl", "ours"},
-          [](const std::string& value) {
-            return value == "ours" ? "OMPL's planners sample controls with ours (--ompl-sampler ours)" : "";
-          }};
-}
-
-// --sst-until: SST improves its solution until the time limit (a peer of our improvement: its plan is
-// judged by our cost after replay, with none of our improvement), or stops at its first.
-planning::PlannerParameter sst_until_parameter() {
-  return {planning::kSstUntilParameter,
-          "When OMPL's SST stops: limit (keeps lowering its path's length until the time limit) or first (at its first "
-          "solution)",
-          {"limit", "first"},
-          [](const std::string& value) { return value == "first" ? "SST stops at its first solution (--sst-until first)" : ""; }};
-}
-
 // RRT, KPIECE1, SST and PDST take every task: on OMPL's product where it applies, on ours otherwise
 // (ompl_planner.h).
 planning::PlannerEntry ompl_entry(const char* name, const char* summary, OmplAlgorithm algorithm) {
@@ -51,8 +30,8 @@ planning::PlannerEntry ompl_entry(const char* name, const char* summary, OmplAlg
   entry.summary = summary;
   entry.can = algorithm == OmplAlgorithm::kLtl ? Capabilities{kLtlPlannerNoObjectTasks, kLtlPlannerNoRest, kOmplNoBudget, false}
                                                : Capabilities{{}, {}, kOmplNoBudget, false};
-  entry.parameters = {sampler_parameter()};
-  if (algorithm == OmplAlgorithm::kSst) entry.parameters.push_back(sst_until_parameter());
+  entry.parameters = {planning::ompl_sampler_parameter()};
+  if (algorithm == OmplAlgorithm::kSst) entry.parameters.push_back(planning::sst_until_parameter());
   entry.plan = [algorithm](const planning::Problem& problem, const planning::PlannerData*, const planning::PlannerOptions& options) {
     return planning::plan_with_ompl(problem, options, algorithm);
   };

@@ -32,10 +32,29 @@ namespace physltl::planning {
 
 using namespace ompl_adapter;
 
+const PlannerParameter& ompl_sampler_parameter() {
+  static const PlannerParameter parameter{
+      "ompl-sampler",
+      "Control sampler of OMPL's planners: ompl (OMPL's uniform one) or ours (the knowledge planner's)",
+      {"ompl", "ours"},
+      [](const std::string& value) { return value == "ours" ? "OMPL's planners sample controls with ours (--ompl-sampler ours)" : ""; }};
+  return parameter;
+}
+
+const PlannerParameter& sst_until_parameter() {
+  static const PlannerParameter parameter{
+      "sst-until",
+      "When OMPL's SST stops: limit (keeps lowering its path's length until the time limit) or first (at its first "
+      "solution)",
+      {"limit", "first"},
+      [](const std::string& value) { return value == "first" ? "SST stops at its first solution (--sst-until first)" : ""; }};
+  return parameter;
+}
+
 namespace {
 
-bool with_our_sampler(const PlannerOptions& options) { return options.parameter(kOmplSamplerParameter, "ompl") == "ours"; }
-bool sst_improves(const PlannerOptions& options) { return options.parameter(kSstUntilParameter, "limit") == "limit"; }
+bool with_our_sampler(const PlannerOptions& options) { return options.parameter(ompl_sampler_parameter()) == "ours"; }
+bool sst_improves(const PlannerOptions& options) { return options.parameter(sst_until_parameter()) == "limit"; }
 
 // The set-point space and its sampler: OMPL's uniform one, or ours (options.ompl_control_sampler).
 std::shared_ptr<oc::RealVectorControlSpace> make_controls(const std::shared_ptr<PhysicsSpace>& space,
@@ -291,17 +310,16 @@ PlanResult plan_with_ompl(const Problem& problem, const PlannerOptions& options,
 
   // An improving SST would use the whole time limit: it stops at kSstShareOfTimeLimit of it, so that the
   // replay that validates its plan fits in the run's deadline too.
-  const Deadline until = improving ? options.deadline.sooner(kSstShareOfTimeLimit * options.time_limit) : options.deadline;
-  const ob::PlannerTerminationCondition ptc = ob::plannerOrTerminationCondition(
-      ob::timedPlannerTerminationCondition(options.time_limit), ob::PlannerTerminationCondition([&] { return until.reached(); }));
+  const Deadline until = improving ? options.deadline.sooner(kSstShareOfTimeLimit * options.deadline.seconds_left()) : options.deadline;
+  const ob::PlannerTerminationCondition ptc([&] { return until.reached(); });
   const ob::PlannerStatus status = improving ? solve_in_slices(*planner, ptc, search, *space, result.motion_progress) : planner->solve(ptc);
 
   result.solved = search.definition->hasExactSolution();
-  result.stop_reason = result.solved                                                   ? "solved"
-                       : options.deadline.interrupted()                                ? "interrupted"
+  result.stop_reason = result.solved                                                   ? StopReason::kSolved
+                       : options.deadline.interrupted()                                ? StopReason::kInterrupted
                        : status == ob::PlannerStatus::TIMEOUT || status == ob::PlannerStatus::APPROXIMATE_SOLUTION
-                           ? "time limit"
-                           : "no solution";
+                           ? StopReason::kTimeLimit
+                           : StopReason::kNoSolution;
   if (result.solved) result.plan = solution_plan(search, *space);
   result.improved_itself = improving;
   // The tree, for tree.png: OMPL's control planners give their planner data; LTLPlanner only its states.
@@ -323,7 +341,7 @@ PlanResult plan_with_ompl(const Problem& problem, const PlannerOptions& options,
   }
   result.stats.propagations = counts.restores;
   result.stats.physics_steps = counts.steps;
-  result.stats.cell_skips_refused = counts.skips;
+  result.stats.own_counts["cell_skips_refused"] = counts.skips;
   result.stats.refused = counts.refused;
   result.stats.planning_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   result.settings = settings_of(*planner, algorithm, world, options, !ours);

@@ -10,6 +10,7 @@
 //   search it. LTLPlanner needs OMPL's product and is refused such tasks (planners.cpp).
 // OMPL types stay in this folder's .cpp files and private headers.
 
+#include "physltl/planning/planner_entry.h"
 #include "physltl/planning/planner_options.h"
 #include "physltl/planning/problem.h"
 
@@ -17,11 +18,13 @@
 
 namespace physltl::planning {
 
-// The parameter that chooses the control sampler (PlannerEntry::parameters): "ompl" or "ours".
-inline const std::string kOmplSamplerParameter = "ompl-sampler";
-// --sst-until limit (the default): SST keeps lowering its path's cost until the time limit, as an
-// improving planner does; first: it stops at its first solution.
-inline const std::string kSstUntilParameter = "sst-until";
+// --ompl-sampler (PlannerEntry::parameters): OMPL's uniform control sampler ("ompl", the default), or the
+// one our planners share ("ours", planning/propagation/control_sampler.h).
+const PlannerParameter& ompl_sampler_parameter();
+// --sst-until: "limit" (the default), SST keeps lowering its path's cost until the time limit, as an
+// improving planner does (a peer of our improvement: its plan is judged by our cost after replay, with
+// none of our improvement); "first", it stops at its first solution.
+const PlannerParameter& sst_until_parameter();
 inline constexpr double kSstShareOfTimeLimit = 0.9;  // an improving SST's search; the rest for the replay
 
 enum class OmplAlgorithm {

@@ -467,10 +467,10 @@ TEST(LookAhead, ASearchTheOrderLeadsIntoADeadEndGetsOutThroughItsEscape) {
   const TestProblem p(kPuzzles + "tight_store.lua");
   PlannerOptions options;
   options.seed = 3;
-  options.time_limit = 600;  // the budget stops it, never the clock
+  options.deadline = Deadline::in(600);  // the budget stops it, never the clock
   options.threads = 1;
   options.max_propagations = 200'000;  // it needs 144,462
-  options.parameters[kPushPrimitivesParameter] = "off";  // the primitives carry the order out at once
+  options.parameters[push_primitives_parameter().name] = "off";  // the primitives carry the order out at once
   const PlanResult result = p.plan_task(p.task, options);
   ASSERT_TRUE(result.solved) << result.stop_reason;
   // Else this seed no longer stalls on the order, and the test no longer reaches the escape.
@@ -539,10 +539,10 @@ TEST(PushPrimitive, CarriesOutAThreePushOrderInFewerPropagationsThanSampledContr
   PlannerOptions options;
   options.seed = 1;
   options.threads = 1;
-  options.time_limit = 600;  // the budget stops it, never the clock
+  options.deadline = Deadline::in(600);  // the budget stops it, never the clock
   options.max_propagations = 20'000;
   const PlanResult primitives = p.plan_task(p.task, options);
-  options.parameters[kPushPrimitivesParameter] = "off";
+  options.parameters[push_primitives_parameter().name] = "off";
   const PlanResult sampled = p.plan_task(p.task, options);
   ASSERT_TRUE(primitives.solved) << primitives.stop_reason;
   ASSERT_TRUE(sampled.solved) << sampled.stop_reason;
@@ -563,14 +563,14 @@ TEST(PushPrimitive, ASearchStoppedShortNamesThePushOfTheOrderItDidNotCarryOut) {
   PlannerOptions options;
   options.seed = 1;
   options.threads = 1;
-  options.time_limit = 600;
+  options.deadline = Deadline::in(600);
   // Sampled controls, which seed 1 needs 337 of: the primitive carries the whole order out in its first
   // expansion, before any budget is looked at.
-  options.parameters[kPushPrimitivesParameter] = "off";
+  options.parameters[push_primitives_parameter().name] = "off";
   options.max_propagations = 64;
   const PlanResult result = p.plan_task(p.task, options);
   ASSERT_FALSE(result.solved);
-  EXPECT_EQ(result.stop_reason, "budget");
+  EXPECT_EQ(result.stop_reason, StopReason::kBudget);
   const SearchEnd& end = *dynamic_cast<const SearchReport&>(*result.own).end;
   EXPECT_EQ(end.order_pushes, 3);
   ASSERT_GE(end.order_push, 1);

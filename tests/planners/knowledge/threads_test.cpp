@@ -15,7 +15,7 @@ namespace {
 PlannerOptions options_with(std::uint64_t seed, int threads) {
   PlannerOptions options;
   options.seed = seed;
-  options.time_limit = 600;  // a run that stops stops for its own reason, never the clock
+  options.deadline = Deadline::in(600);  // a run that stops stops for its own reason, never the clock
   options.threads = threads;
   return options;
 }
@@ -51,7 +51,7 @@ TEST(Threads, AnOutsideStopEndsEveryThreadPromptly) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   // Sixteen rooms take the planner seconds; a stop after 50 ms lands mid-search.
   EXPECT_FALSE(result.solved());
-  EXPECT_EQ(result.result.stop_reason, "interrupted");
+  EXPECT_EQ(result.result.stop_reason, StopReason::kInterrupted);
   EXPECT_FALSE(result.replay.has_value());
   EXPECT_LT(seconds, 1.0);
 }

@@ -21,8 +21,8 @@ namespace {
 PlannerOptions ompl_options(std::uint64_t seed, double time_limit = 20) {
   PlannerOptions options;
   options.seed = seed;
-  options.time_limit = time_limit;
-  options.parameters[kSstUntilParameter] = "first";
+  options.deadline = Deadline::in(time_limit);
+  options.parameters[sst_until_parameter().name] = "first";
   return options;
 }
 
@@ -127,7 +127,7 @@ TEST(OmplPlanners, PlansCrossTrianglesThinnerThanAStepWithinTheGraph) {
   p.decomposition = decomposition::Decomposition::build(p.world, {.max_edge = 0.06});
   const PlanResult result = p.plan_task(p.task, ompl_options(1, 30), "ompl-kpiece");
   ASSERT_TRUE(result.solved) << result.stop_reason;
-  EXPECT_EQ(result.stats.cell_skips_refused, 0);
+  EXPECT_EQ(result.stats.own_count("cell_skips_refused"), 0);
   const Replay replay = p.check(result.plan);
   EXPECT_TRUE(replay.validated()) << replay.failure;
   expect_every_step_in_the_graph(p, replay);
@@ -172,7 +172,7 @@ TEST(OmplPlanners, EachControlPlannerSolvesATaskAboutAnObjectAndItsPlanReplays) 
 TEST(OmplPlanners, SstImprovesUntilItsTimeLimitAndIsNotImprovedAfter) {
   const TestProblem p("ordered.lua");
   PlannerOptions options = ompl_options(1, 2.0);
-  options.parameters.erase(kSstUntilParameter);
+  options.parameters.erase(sst_until_parameter().name);
   options.improve = 100;
   const ValidatedPlan validated =
       plan_and_validate(p.problem(), planner_named("ompl-sst"), nullptr, options);
