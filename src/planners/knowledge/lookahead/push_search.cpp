@@ -174,7 +174,10 @@ void PushSearcher::add_matchings(Goals& goals) const {
       }
     }
   }
-  for (const auto& [part, place] : wanted) {
+  for (const auto& part_and_place : wanted) {
+    // Not a structured binding: Clang 14 (Debian 12's) refuses one captured by the lambda below.
+    const int part = part_and_place.first;
+    const int place = part_and_place.second;
     Goals::Matching matching{part, place, {}, {}, {}};
     for (int k = 0; k < bodies; ++k) {
       if (lattice_.named(k) == part) matching.bodies.push_back(k);
