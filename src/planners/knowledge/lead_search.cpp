@@ -3,9 +3,8 @@
 namespace physltl::planning {
 namespace {
 
-// Updates between two searches of the whole lead, at least. Measured on rooms_n with 16 rooms, seeds 1..10: 8
-// gives the same median propagations as searching the whole lead every time, and 15 % less time per
-// propagation; the part kept meanwhile only steers the expansions that go to stages already done.
+// Updates between two searches of the whole lead, at least: the part kept meanwhile only steers the
+// expansions that go to stages already done (measured: docs/benchmarks.md, "The tree search's constants").
 constexpr int kUpdatesPerWholeSearch = 8;
 
 }  // namespace

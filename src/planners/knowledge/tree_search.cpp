@@ -35,14 +35,12 @@ static_assert(kExpansionsPerLead % kBatch == 0);
 constexpr int kBatchesPerLead = kExpansionsPerLead / kBatch;
 // Share of expansions that grow from the frontier of the lead (below) rather than from anywhere along it.
 // Bhatia's weights alone spread the effort over every stage the tree has passed, most of it going to
-// rooms already done in a sequencing task; the rest keeps every stage in reach. Measured with the next
-// constant (median propagations, seeds 1..12/8/12/10/10): rooms_n with 4, 8 and 16 rooms 42 %, 29 % and
-// 46 % fewer, rooms.lua 13 % and ordered.lua 45 % fewer.
+// rooms already done in a sequencing task; the rest keeps every stage in reach (measured: docs/benchmarks.md, "The tree search's constants").
 constexpr double kFrontierShare = 0.8;
 // At most this many of the frontier stage's lead states, the furthest along, make the frontier: a stage
 // that crosses a large world (the 6,400-box warehouse's first lane, 95 m, some 160 lead states) otherwise
 // spread its expansions over all the ground it had covered. Above what the shipped scenarios, the
-// regression family and the puzzles reach (their plans are the same with and without it).
+// regression family and the puzzles reach (docs/benchmarks.md, "The tree search's constants").
 constexpr std::ptrdiff_t kMaxFrontierStates = 64;
 // How many lead states ahead an expansion may aim: one triangle is too short a horizon for a robot
 // pushing a box, and small triangles along walls make a few of them short too.
@@ -50,14 +48,11 @@ constexpr int kMaxStepsAhead = 8;
 // A node whose expansions fail at their first physics step this many times in a row is dropped from the
 // candidates: the robot is about to hit a wall or a box's forbidden side whatever it does. Such nodes are
 // common, since a motion keeps the valid steps before the one that failed, and when they were the only
-// ones in the lead's frontier they held the search for thousands of expansions (rooms_n with 16 rooms,
-// seeds 1..12: median propagations 21,700 -> 17,600, worst 65,600 -> 23,900; 2, 4 and 8 within noise of
-// each other; rooms.lua and ordered.lua unchanged).
+// ones in the lead's frontier they held the search for thousands of expansions (docs/benchmarks.md, "The tree search's constants").
 constexpr int kFailuresBeforeDropped = 8;
 // The lead ends this many automaton steps beyond the furthest the tree has got, not at acceptance: the
 // expansions only use its first part, and with many stages ahead the rest was most of the lead search's
-// work (rooms_n with 16 rooms: the same leads in 8 of 10 seeds, no more propagations; one step ahead
-// changed most leads and cost 20 % more).
+// work (docs/benchmarks.md, "The tree search's constants").
 constexpr int kLevelsAhead = 2;
 
 // Where a stage needs a body moved, the expansions go to the frontier stage's nodes whose body is nearest
