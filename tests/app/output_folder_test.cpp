@@ -1,6 +1,6 @@
 // OutputFolder: outputs appear whole at commit, and the previous ones survive anything short of it.
 
-#include "common/output_folder.h"
+#include "physltl/common/output_folder.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "common/statistics.h"
+#include "physltl/common/statistics.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The campaign's units and their dealing into shards: pure functions every machine of a cluster must agree on.
 
-#include "bench/campaign.h"
-#include "common/bad_input.h"
+#include "physltl/campaign/campaign.h"
+#include "physltl/common/bad_input.h"
 #include "physltl/planners/registry.h"
 
 #include <gtest/gtest.h>

@@ -3,8 +3,8 @@
 // another version had them. merge_shards must return the merged campaign or throw BadInput naming what is
 // wrong; anything else (a crash, a sanitizer report, another exception, a hang, a huge allocation) is a bug.
 
-#include "bench/merge.h"
-#include "common/bad_input.h"
+#include "physltl/campaign/merge.h"
+#include "physltl/common/bad_input.h"
 
 #include <unistd.h>
 

@@ -3,7 +3,7 @@
 // is a bug. And the importer writes only what `check` takes: every level within the limits the importer
 // shares with the scenario reader (beyond_limits) becomes a scenario that the scenario reader accepts.
 
-#include "common/bad_input.h"
+#include "physltl/common/bad_input.h"
 #include "import/sokoban_level.h"
 #include "import/sokoban_scenario.h"
 #include "physltl/scenario/load.h"

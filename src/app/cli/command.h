@@ -1,7 +1,7 @@
 #pragma once
 // Internal to the app module: how each subcommand plugs into the command line.
 
-#include "common/bad_input.h"
+#include "physltl/common/bad_input.h"
 
 #include <CLI/CLI.hpp>
 

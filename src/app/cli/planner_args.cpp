@@ -1,6 +1,6 @@
 #include "planner_args.h"
 
-#include "run/planner_names.h"
+#include "physltl/setup/planner_names.h"
 
 namespace physltl::app {
 

@@ -1,7 +1,7 @@
 #include "scenario_args.h"
 
 #include "command.h"
-#include "run/scenario_settings.h"
+#include "physltl/setup/scenario_settings.h"
 
 namespace physltl::app {
 

@@ -1,18 +1,18 @@
 // `physltl-studio bench`: the planners on a range of seeds, side by side (issue 7), over one scenario or a
 // campaign of several, in one process or as one shard of a campaign (docs/campaigns.md).
 
-#include "bench/bench_case.h"
-#include "bench/campaign.h"
-#include "bench/manifest.h"
+#include "physltl/campaign/bench_case.h"
+#include "physltl/campaign/campaign.h"
+#include "physltl/campaign/manifest.h"
 #include "views/bench_outputs.h"
-#include "bench/shard_folder.h"
-#include "bench/unit_runner.h"
+#include "physltl/campaign/shard_folder.h"
+#include "physltl/campaign/unit_runner.h"
 #include "cli/command.h"
 #include "cli/number_args.h"
 #include "cli/planner_args.h"
-#include "run/planner_names.h"
-#include "common/stop_signal.h"
-#include "common/output_paths.h"
+#include "physltl/setup/planner_names.h"
+#include "physltl/common/stop_signal.h"
+#include "physltl/common/output_paths.h"
 
 #include <fmt/format.h>
 #include <unistd.h>

@@ -1,9 +1,9 @@
 // `physltl-studio bench merge DIR...`: a campaign's shards put back together (docs/campaigns.md).
 
-#include "bench/campaign.h"
-#include "bench/merge.h"
+#include "physltl/campaign/campaign.h"
+#include "physltl/campaign/merge.h"
 #include "cli/command.h"
-#include "common/output_paths.h"
+#include "physltl/common/output_paths.h"
 #include "views/bench_outputs.h"
 
 #include <memory>

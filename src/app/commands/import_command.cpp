@@ -1,6 +1,6 @@
 #include "cli/command.h"
 #include "cli/number_args.h"
-#include "common/files.h"
+#include "physltl/common/files.h"
 #include "import/sokoban_level.h"
 #include "import/sokoban_scenario.h"
 #include "import/sokoban_solution.h"

@@ -1,12 +1,12 @@
 #include "cli/command.h"
-#include "run/scenario_settings.h"
+#include "physltl/setup/scenario_settings.h"
 #include "scenario_test/junit_report.h"
 #include "scenario_test/scenario_cases.h"
 #include "scenario_test/schedule.h"
 #include "scenario_test/summary.h"
 #include "scenario_test/test_entries.h"
-#include "common/stop_signal.h"
-#include "common/output_paths.h"
+#include "physltl/common/stop_signal.h"
+#include "physltl/common/output_paths.h"
 
 #include <fmt/format.h>
 

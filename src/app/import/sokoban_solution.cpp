@@ -1,8 +1,8 @@
 #include "sokoban_solution.h"
 
-#include "common/bad_input.h"
-#include "common/files.h"
-#include "common/printable.h"
+#include "physltl/common/bad_input.h"
+#include "physltl/common/files.h"
+#include "physltl/common/printable.h"
 
 #include <fmt/format.h>
 

@@ -1,6 +1,6 @@
 #include "goldens.h"
 
-#include "common/files.h"
+#include "physltl/common/files.h"
 #include "views/report_files.h"
 
 #include "physltl/render/png.h"

@@ -1,7 +1,7 @@
 #include "junit_report.h"
 
-#include "common/files.h"
-#include "common/printable.h"
+#include "physltl/common/files.h"
+#include "physltl/common/printable.h"
 
 #include <fmt/format.h>
 #include <pugixml.hpp>

@@ -5,7 +5,7 @@
 #include "views/overlays.h"
 #include "views/report_files.h"
 #include "views/plan_pictures.h"
-#include "run/planner_names.h"
+#include "physltl/setup/planner_names.h"
 #include "views/planner_views.h"
 #include "views/robustness_report.h"
 #include "physltl/execution/robustness.h"

@@ -1,7 +1,7 @@
 #include "schedule.h"
 
-#include "common/bad_input.h"
-#include "common/files.h"
+#include "physltl/common/bad_input.h"
+#include "physltl/common/files.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,6 +1,6 @@
 #include "summary.h"
 
-#include "common/printable.h"
+#include "physltl/common/printable.h"
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>

@@ -1,6 +1,6 @@
 #include "test_entries.h"
 
-#include "common/bad_input.h"
+#include "physltl/common/bad_input.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,8 +1,8 @@
 #include "bench_outputs.h"
 
-#include "bench/campaign.h"
-#include "common/files.h"
-#include "common/output_folder.h"
+#include "physltl/campaign/campaign.h"
+#include "physltl/common/files.h"
+#include "physltl/common/output_folder.h"
 #include "physltl/render/png.h"
 #include "sweep_results.h"
 

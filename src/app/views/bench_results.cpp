@@ -1,7 +1,7 @@
 #include "bench_results.h"
 
 #include "physltl/render/chart.h"
-#include "common/statistics.h"
+#include "physltl/common/statistics.h"
 #include "planner_views.h"
 #include "report_files.h"
 

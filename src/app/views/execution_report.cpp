@@ -1,6 +1,6 @@
 #include "execution_report.h"
 
-#include "common/statistics.h"
+#include "physltl/common/statistics.h"
 #include "robustness_report.h"
 
 #include <fmt/format.h>

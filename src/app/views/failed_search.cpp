@@ -1,9 +1,9 @@
 #include "failed_search.h"
 
-#include "common/files.h"
-#include "common/output_folder.h"
+#include "physltl/common/files.h"
+#include "physltl/common/output_folder.h"
 #include "plan_pictures.h"
-#include "run/planner_names.h"
+#include "physltl/setup/planner_names.h"
 #include "planner_views.h"
 
 #include <fmt/format.h>

@@ -1,7 +1,7 @@
 #include "plan_pictures.h"
 
-#include "common/bad_input.h"
-#include "common/stop_signal.h"
+#include "physltl/common/bad_input.h"
+#include "physltl/common/stop_signal.h"
 
 #include "overlays.h"
 #include "physltl/knowledge/kappa.h"

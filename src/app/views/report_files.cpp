@@ -1,6 +1,6 @@
 #include "report_files.h"
 
-#include "run/planner_names.h"
+#include "physltl/setup/planner_names.h"
 #include "planner_views.h"
 #include "robustness_report.h"
 

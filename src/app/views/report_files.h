@@ -2,7 +2,7 @@
 // plan.json and report.json: what a run found, for people and for scripts. Keys documented in
 // docs/outputs.md; the ones named there as stable stay.
 
-#include "bench/own_process_run.h"
+#include "physltl/campaign/own_process_run.h"
 #include "physltl/execution/robustness.h"
 #include "physltl/planning/registry.h"
 #include "physltl/planning/validation/validated_plan.h"

@@ -3,7 +3,7 @@
 #include "bench_results.h"
 #include "physltl/render/chart.h"
 
-#include "common/statistics.h"
+#include "physltl/common/statistics.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

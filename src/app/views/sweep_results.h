@@ -1,8 +1,8 @@
 #pragma once
-// How the planning time grows with a swept parameter (bench/sweep.h): as a table, a least-squares line,
+// How the planning time grows with a swept parameter (campaign/sweep.h): as a table, a least-squares line,
 // sweep.json and sweep.png (docs/benchmarks.md).
 
-#include "bench/sweep.h"
+#include "physltl/campaign/sweep.h"
 #include "physltl/render/image.h"
 
 #include <nlohmann/json.hpp>

@@ -1,0 +1,71 @@
+#pragma once
+// The cases of a campaign loaded: one World per scenario entry and swept value, reasoned about and
+// prepared for the planners once, with the facts bench reports about it (campaign.h).
+
+#include "physltl/campaign/campaign.h"
+#include "physltl/campaign/results.h"
+#include "physltl/campaign/results.h"
+#include "physltl/campaign/unit_record.h"
+
+#include "physltl/scenario/world.h"
+#include "physltl/planning/planning_problem.h"
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace physltl::app {
+
+// What every case shares: the command line's settings but the scenarios.
+struct CampaignSettings {
+  std::vector<const planning::PlannerEntry*> planners;
+  std::vector<int> threads{1};
+  int runs = 10;
+  std::optional<std::uint64_t> seed;
+  std::optional<double> time_limit;
+  int improve = 0;
+  int robustness = 0;                      // perturbed worlds per solved run
+  std::optional<std::string> uncertainty;  // --uncertainty: overrides each scenario's
+  std::optional<std::string> cost;         // --cost: overrides each scenario's planner { cost = ... }
+  std::optional<double> improve_margin;    // --improve-margin: overrides each scenario's planner { improve_margin }
+  // Every parameter of the program's planners, by name (planner_names.h parameter_values).
+  std::map<std::string, std::string> parameters;
+};
+
+struct BenchCase {
+  size_t entry = 0;         // the scenario entry it comes from
+  std::string swept_value;  // empty unless the entry sweeps
+  scenario::World world;
+  std::unique_ptr<planning::PlanningProblem> problem;  // of `world`
+  BenchResults results;  // the case's facts, and its planners without runs yet
+};
+
+// Loads every case before any run, so a bad value fails at once. Throws BadInput, ScenarioError or
+// InfeasibleTask. Every value of an entry runs on the same seeds (--seed, or the first value's scenario
+// seed), even if a script chose its default seed by its params.
+std::vector<std::unique_ptr<BenchCase>> load_cases(const std::vector<ScenarioEntry>& entries,
+                                                   const CampaignSettings& settings);
+
+// A sweep's peak memory: for every swept case and planner, the first seed's run again as the main job in
+// a process of its own (PlannerRuns::own_process). Throws Interrupted on Ctrl-C.
+void run_sweeps_in_own_processes(const std::vector<ScenarioEntry>& entries, const CampaignSettings& settings,
+                                 const std::vector<std::unique_ptr<BenchCase>>& cases);
+
+// The cases as the campaign's units see them.
+std::vector<CaseUnits> case_units(const std::vector<std::unique_ptr<BenchCase>>& cases);
+
+// The cases with the runs of `records` (by canonical unit index) in their planners, in unit order; each
+// case's total duration is the sum of its units' times. Host and CPU are this machine's.
+CampaignResults collect_results(const std::vector<ScenarioEntry>& entries,
+                                const std::vector<std::unique_ptr<BenchCase>>& cases, const std::vector<Unit>& units,
+                                const std::map<size_t, UnitRecord>& records);
+
+// One unit: plans and validates, timing the search apart from --improve; with robustness_worlds > 0, a
+// solved plan is replayed in as many worlds drawn from the world's uncertainty (seeded by the run's seed).
+BenchRun measure(const planning::PlanningProblem& problem, const planning::PlannerEntry& planner,
+                 const planning::PlannerOptions& options, int robustness_worlds = 0);
+
+}  // namespace physltl::app
