@@ -18,7 +18,7 @@
 #include <iomanip>
 #include <sstream>
 
-namespace physltl::app {
+namespace physltl::campaign {
 namespace {
 
 std::string local_time_now() {
@@ -35,14 +35,14 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   c->swept_value = value;
   std::vector<std::string> settings_of_case = entry.settings;
   if (entry.sweep) settings_of_case.push_back(entry.sweep->key + "=" + value);
-  c->world = load_with_settings(entry.path, settings_of_case);
+  c->world = setup::load_with_settings(entry.path, settings_of_case);
   if (settings.time_limit) c->world.planner.time_limit = *settings.time_limit;
-  if (settings.uncertainty) c->world.uncertainty = override_uncertainty(c->world.uncertainty, *settings.uncertainty);
-  if (settings.cost) c->world.planner.cost = cost_from_flag(*settings.cost);
+  if (settings.uncertainty) c->world.uncertainty = setup::override_uncertainty(c->world.uncertainty, *settings.uncertainty);
+  if (settings.cost) c->world.planner.cost = setup::cost_from_flag(*settings.cost);
   if (settings.improve_margin) c->world.planner.improve_margin = *settings.improve_margin;
   c->problem = std::make_unique<planning::PlanningProblem>(c->world);
   if (!c->problem->feasible()) {
-    throw InfeasibleTask(fmt::format("{}{}: {}", entry.path, entry.sweep ? " with " + entry.sweep->key + "=" + value : "",
+    throw common::InfeasibleTask(fmt::format("{}{}: {}", entry.path, entry.sweep ? " with " + entry.sweep->key + "=" + value : "",
                                      c->problem->reasoning().task.infeasibility()));
   }
   BenchResults& results = c->results;
@@ -55,10 +55,10 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   results.threads = settings.threads;
   results.improve = settings.improve;
   results.robustness = settings.robustness;
-  results.parameter_notes = parameter_notes(settings.parameters);
+  results.parameter_notes = setup::parameter_notes(settings.parameters);
   results.started_at = local_time_now();
   // Before any unit and outside their time limits; Ctrl-C stops it.
-  const Deadline interruptible(Deadline::Clock::time_point::max(), &stop_flag());
+  const Deadline interruptible(Deadline::Clock::time_point::max(), &common::stop_flag());
   results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->problem->as_written(), interruptible);
   results.shortest_push_free_path_m =
       planning::shortest_push_free_path_length(c->world, c->problem->as_written(), interruptible);
@@ -67,7 +67,7 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   results.cost_bound = planning::plan_cost_bound(results.cost, c->world.robot.max_speed, results.shortest_free_path_m,
                                                  results.shortest_push_free_path_m);
   for (const auto planner : settings.planners) {
-    if (const auto why = registry().refusal(*planner, c->problem->search_task(*planner))) throw BadInput(*why);
+    if (const auto why = setup::registry().refusal(*planner, c->problem->search_task(*planner))) throw common::BadInput(*why);
     // Each planner prepares the problem before its first run, outside every run's time.
     c->problem->preparation(*planner, {interruptible});
     // A planner that grows its search on one thread runs once, with the first thread count.
@@ -96,7 +96,7 @@ std::vector<std::unique_ptr<BenchCase>> load_cases(const std::vector<ScenarioEnt
     for (size_t d = 0; d < c; ++d) {
       if (folder_name(cases[c]->results.scenario, cases[c]->results.settings) ==
           folder_name(cases[d]->results.scenario, cases[d]->results.settings)) {
-        throw BadInput(fmt::format("'{}' and '{}' give the same scenario with the same settings",
+        throw common::BadInput(fmt::format("'{}' and '{}' give the same scenario with the same settings",
                                    entries[cases[d]->entry].text, entries[cases[c]->entry].text));
       }
     }
@@ -165,7 +165,7 @@ BenchRun measure(const planning::PlanningProblem& problem, const planning::Plann
   run.tree_nodes = result.stats.tree_nodes;
   run.propagations = result.stats.propagations;
   run.physics_steps = result.stats.physics_steps;
-  run.refused = refusal_counts(registry(), planner, result.stats.refused);
+  run.refused = setup::refusal_counts(setup::registry(), planner, result.stats.refused);
   if (run.solved) {
     run.controls = static_cast<int>(result.plan.controls.size());
     run.pushes = solution.replay->pushes;
@@ -197,4 +197,4 @@ BenchRun measure(const planning::PlanningProblem& problem, const planning::Plann
   return run;
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

@@ -11,7 +11,7 @@
 #include <charconv>
 #include <map>
 
-namespace physltl::app {
+namespace physltl::campaign {
 namespace {
 
 constexpr std::string_view kSeparator = "::";
@@ -34,7 +34,7 @@ int parse_positive(const std::string& text, const std::string& what) {
   int value = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (error != std::errc() || end != text.data() + text.size()) {
-    throw BadInput(fmt::format("--shard expects K/N with whole numbers, got {} '{}'", what, text));
+    throw common::BadInput(fmt::format("--shard expects K/N with whole numbers, got {} '{}'", what, text));
   }
   return value;
 }
@@ -45,25 +45,25 @@ ScenarioEntry parse_scenario_entry(const std::string& text, const std::vector<st
                                    const std::optional<SweepSpec>& global_sweep) {
   const std::vector<std::string> parts = split_entry(text);
   ScenarioEntry entry{text, parts.front(), global_settings, global_sweep};
-  if (entry.path.empty()) throw BadInput("'" + text + "': the scenario file is missing before ::");
+  if (entry.path.empty()) throw common::BadInput("'" + text + "': the scenario file is missing before ::");
   bool own_sweep = false;
   for (size_t i = 1; i < parts.size(); ++i) {
     const std::string& part = parts[i];
     if (part.rfind(kSweepPrefix, 0) == 0) {
-      if (own_sweep) throw BadInput("'" + text + "' sweeps twice");
+      if (own_sweep) throw common::BadInput("'" + text + "' sweeps twice");
       own_sweep = true;
       entry.sweep = parse_sweep(part.substr(kSweepPrefix.size()));
       continue;
     }
     const auto eq = part.find('=');
     if (eq == std::string::npos || eq == 0) {
-      throw BadInput(fmt::format("'{}': expected ::key=value or ::sweep:key=v1,v2,..., got '{}'", text, part));
+      throw common::BadInput(fmt::format("'{}': expected ::key=value or ::sweep:key=v1,v2,..., got '{}'", text, part));
     }
     const std::string key = part.substr(0, eq);
     const auto own_end = entry.settings.end();
     const auto own_begin = entry.settings.begin() + static_cast<long>(global_settings.size());
     if (std::any_of(own_begin, own_end, [&](const std::string& s) { return key_of(s) == key; })) {
-      throw BadInput(fmt::format("'{}' sets {} twice", text, key));
+      throw common::BadInput(fmt::format("'{}' sets {} twice", text, key));
     }
     // The entry's own value replaces the global --set of the same key.
     const auto global = std::find_if(entry.settings.begin(), own_begin, [&](const std::string& s) { return key_of(s) == key; });
@@ -73,7 +73,7 @@ ScenarioEntry parse_scenario_entry(const std::string& text, const std::vector<st
   if (entry.sweep) {
     for (const auto& setting : entry.settings) {
       if (key_of(setting) == entry.sweep->key) {
-        throw BadInput(fmt::format("'{}': the swept key {} is also set", text, entry.sweep->key));
+        throw common::BadInput(fmt::format("'{}': the swept key {} is also set", text, entry.sweep->key));
       }
     }
   }
@@ -104,13 +104,13 @@ std::vector<Unit> campaign_units(const std::vector<CaseUnits>& cases, int runs) 
 
 ShardSpec parse_shard(const std::string& text) {
   const auto slash = text.find('/');
-  if (slash == std::string::npos) throw BadInput("--shard expects K/N (e.g. 2/5), got '" + text + "'");
+  if (slash == std::string::npos) throw common::BadInput("--shard expects K/N (e.g. 2/5), got '" + text + "'");
   const ShardSpec shard{parse_positive(text.substr(0, slash), "K"), parse_positive(text.substr(slash + 1), "N")};
   if (shard.count < 1 || shard.count > kMaxShards) {
-    throw BadInput(fmt::format("--shard {}: N must be from 1 to {}", text, kMaxShards));
+    throw common::BadInput(fmt::format("--shard {}: N must be from 1 to {}", text, kMaxShards));
   }
   if (shard.index < 1 || shard.index > shard.count) {
-    throw BadInput(fmt::format("--shard {}: K must be between 1 and N = {}", text, shard.count));
+    throw common::BadInput(fmt::format("--shard {}: K must be between 1 and N = {}", text, shard.count));
   }
   return shard;
 }
@@ -156,8 +156,8 @@ void check_campaign_name(const std::string& name) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-';
   });
   if (!plain) {
-    throw BadInput("--campaign '" + name + "': use letters, digits, '.', '_' and '-' (it names a folder)");
+    throw common::BadInput("--campaign '" + name + "': use letters, digits, '.', '_' and '-' (it names a folder)");
   }
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-namespace physltl::app {
+namespace physltl::campaign {
 namespace {
 
 // A scenario and what it reads (modules, meshes): far below this.
@@ -23,7 +23,7 @@ std::uint64_t fnv1a64(std::string_view bytes) {
 }
 
 std::string file_fingerprint(const std::string& path) {
-  return fmt::format("fnv1a64:{:016x}", fnv1a64(read_input_file(path, kMaxInputBytes)));
+  return fmt::format("fnv1a64:{:016x}", fnv1a64(common::read_input_file(path, kMaxInputBytes)));
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

@@ -7,11 +7,11 @@
 #include <string>
 #include <string_view>
 
-namespace physltl::app {
+namespace physltl::campaign {
 
 std::uint64_t fnv1a64(std::string_view bytes);
 
 // "fnv1a64:<16 hex digits>" of the file's bytes; BadInput when it cannot be read.
 std::string file_fingerprint(const std::string& path);
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

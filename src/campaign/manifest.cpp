@@ -13,7 +13,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace physltl::app {
+namespace physltl::campaign {
 namespace {
 
 using json = nlohmann::ordered_json;
@@ -42,7 +42,7 @@ json entry_inputs(const std::vector<std::unique_ptr<BenchCase>>& cases, size_t e
 }
 
 std::string value_text(const nlohmann::json& value) {
-  std::string text = json_text(value);
+  std::string text = common::json_text(value);
   return text.size() > 80 ? text.substr(0, 77) + "..." : text;
 }
 
@@ -90,9 +90,9 @@ json campaign_manifest(const std::string& name, int shard_count, const std::vect
                             {"improve", settings.improve},
                             {"robustness", settings.robustness},
                             {"uncertainty", settings.uncertainty ? json(*settings.uncertainty) : json(nullptr)}};
-  for (const auto& [parameter, value] : settings.parameters) campaign_settings[manifest_key(parameter)] = value;
+  for (const auto& [parameter, value] : settings.parameters) campaign_settings[setup::manifest_key(parameter)] = value;
   return {{"name", name},
-          {"version", build_version()},
+          {"version", common::build_version()},
           {"shards", shard_count},
           {"settings", std::move(campaign_settings)},
           {"scenarios", std::move(scenarios)},
@@ -143,4 +143,4 @@ std::optional<std::string> first_difference(const nlohmann::json& a, const nlohm
   return fmt::format("{}: {} {}, {} {}", path, value_text(a), a_name, value_text(b), b_name);
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

@@ -17,7 +17,7 @@
 #include <optional>
 #include <set>
 
-namespace physltl::app {
+namespace physltl::campaign {
 namespace fs = std::filesystem;
 namespace {
 
@@ -35,7 +35,7 @@ std::vector<fs::path> shard_folders(const std::vector<fs::path>& dirs) {
       folders.push_back(dir);
       continue;
     }
-    if (!fs::is_directory(dir)) throw BadInput(dir.string() + ": no such folder");
+    if (!fs::is_directory(dir)) throw common::BadInput(dir.string() + ": no such folder");
     std::vector<fs::path> inside;
     for (const auto& entry : fs::directory_iterator(dir)) {
       if (entry.is_directory() && entry.path().filename().string().rfind("shard-", 0) == 0 &&
@@ -43,32 +43,32 @@ std::vector<fs::path> shard_folders(const std::vector<fs::path>& dirs) {
         inside.push_back(entry.path());
       }
     }
-    if (inside.empty()) throw BadInput(dir.string() + ": neither a shard folder nor a campaign folder holding shards");
+    if (inside.empty()) throw common::BadInput(dir.string() + ": neither a shard folder nor a campaign folder holding shards");
     std::sort(inside.begin(), inside.end());
     folders.insert(folders.end(), inside.begin(), inside.end());
   }
   return folders;
 }
 
-double number_or_infinity(const JsonFields& facts, const std::string& key) {
+double number_or_infinity(const common::JsonFields& facts, const std::string& key) {
   return facts.at(key).is_null() ? std::numeric_limits<double>::infinity() : facts.number(key, 0.0, 1e12);
 }
 
 // The cases as the manifest describes them, with the facts the first shard found; every number checked.
-CampaignResults skeleton(const JsonFields& campaign, const JsonFields& first_shard) {
+CampaignResults skeleton(const common::JsonFields& campaign, const common::JsonFields& first_shard) {
   CampaignResults results;
   for (const auto& item : campaign.array("scenarios")) {
-    const JsonFields entry(item, campaign.source() + " scenarios");
+    const common::JsonFields entry(item, campaign.source() + " scenarios");
     const auto& sweep = entry.at("sweep");
     results.entries.push_back({entry.texts("settings"), sweep.is_null() ? std::nullopt
-                                                                        : std::optional(JsonFields(sweep, "sweep").text("key"))});
+                                                                        : std::optional(common::JsonFields(sweep, "sweep").text("key"))});
   }
-  const JsonFields settings = campaign.object("settings");
+  const common::JsonFields settings = campaign.object("settings");
   const auto& facts = first_shard.array("cases");
   const auto& cases = campaign.array("cases");
   if (facts.size() != cases.size()) first_shard.refuse("cases", "must list as many cases as the campaign");
   for (size_t c = 0; c < cases.size(); ++c) {
-    const JsonFields description(cases[c], campaign.source() + " cases"), fact(facts[c], first_shard.source() + " cases");
+    const common::JsonFields description(cases[c], campaign.source() + " cases"), fact(facts[c], first_shard.source() + " cases");
     CaseResults result{static_cast<size_t>(description.whole("entry", 0, static_cast<long long>(results.entries.size()) - 1)),
                        description.text("swept_value"), {}};
     BenchResults& r = result.results;
@@ -81,17 +81,17 @@ CampaignResults skeleton(const JsonFields& campaign, const JsonFields& first_sha
     for (const long long threads : settings.wholes("threads", 1, 64)) r.threads.push_back(static_cast<int>(threads));
     r.improve = static_cast<int>(settings.whole("improve", 0, 1'000'000));
     r.robustness = static_cast<int>(settings.whole("robustness", 0, 100'000));
-    r.parameter_notes = parameter_notes(parameter_values(manifest_parameters(campaign.at("settings"))));
+    r.parameter_notes = setup::parameter_notes(setup::parameter_values(setup::manifest_parameters(campaign.at("settings"))));
     r.started_at = fact.text("started_at");
     r.preparation_s = fact.number("preparation_s", 0.0, 1e9);
     r.shortest_free_path_m = number_or_infinity(fact, "shortest_free_path_m");
     r.shortest_push_free_path_m = number_or_infinity(fact, "shortest_push_free_path_m");
-    r.cost = cost_from_flag(description.text("cost"));
+    r.cost = setup::cost_from_flag(description.text("cost"));
     r.improve_margin = description.number("improve_margin", 0.0, 1.0);
     r.cost_bound = number_or_infinity(fact, "cost_bound");
     for (const auto& p : description.array("planners")) {
-      const JsonFields planner(p, description.source() + " planners");
-      r.planners.push_back({&parse_planner(planner.text("name")), static_cast<int>(planner.whole("threads", 1, 64)), {}, {}});
+      const common::JsonFields planner(p, description.source() + " planners");
+      r.planners.push_back({&setup::parse_planner(planner.text("name")), static_cast<int>(planner.whole("threads", 1, 64)), {}, {}});
     }
     results.cases.push_back(std::move(result));
   }
@@ -117,7 +117,7 @@ std::string some(const std::vector<std::string>& items) {
 void check_shard_set(const std::vector<Shard>& shards) {
   std::vector<std::string> problems;
   const nlohmann::json& reference = shards.front().manifest.at("campaign");
-  const int count = static_cast<int>(JsonFields(reference, shards.front().folder.string() + " campaign").whole("shards", 1, kMaxShards));
+  const int count = static_cast<int>(common::JsonFields(reference, shards.front().folder.string() + " campaign").whole("shards", 1, kMaxShards));
   std::map<int, fs::path> seen;
   for (const auto& shard : shards) {
     if (const auto difference = first_difference(reference, shard.manifest.at("campaign"),
@@ -138,7 +138,7 @@ void check_shard_set(const std::vector<Shard>& shards) {
       if (!seen.count(k)) problems.push_back(fmt::format("shard {} of {} is missing", k, count));
     }
   }
-  if (!problems.empty()) throw BadInput("bench merge refuses: " + fmt::format("{}", fmt::join(problems, "; ")));
+  if (!problems.empty()) throw common::BadInput("bench merge refuses: " + fmt::format("{}", fmt::join(problems, "; ")));
 }
 
 // The unit results of the shards, by canonical index: each from the shard that was dealt the unit, or
@@ -167,9 +167,9 @@ std::vector<const UnitRecord*> unit_results(const std::vector<Shard>& shards, co
       }
     }
   }
-  if (!misplaced.empty()) throw BadInput("bench merge refuses: " + some(misplaced));
+  if (!misplaced.empty()) throw common::BadInput("bench merge refuses: " + some(misplaced));
   if (!missing.empty()) {
-    throw BadInput(fmt::format("bench merge refuses: {} of {} units have no result (run their shards again with "
+    throw common::BadInput(fmt::format("bench merge refuses: {} of {} units have no result (run their shards again with "
                                "--resume): {}", missing.size(), units.size(), some(missing)));
   }
   return found;
@@ -182,7 +182,7 @@ MergedCampaign merge_checked(std::vector<Shard> shards) {
   MergedCampaign merged;
   merged.name = campaign.at("name").get<std::string>();
   const std::string source = (shards.front().folder / "manifest.json").string();
-  merged.results = skeleton(JsonFields(campaign, source + " campaign"), JsonFields(shards.front().manifest.at("shard"), source + " shard"));
+  merged.results = skeleton(common::JsonFields(campaign, source + " campaign"), common::JsonFields(shards.front().manifest.at("shard"), source + " shard"));
   merged.folder = shards.front().folder.parent_path();
   for (const auto& shard : shards) merged.shard_folders.push_back(shard.folder);
   const std::vector<CaseUnits> cases = case_units(merged.results);
@@ -190,7 +190,7 @@ MergedCampaign merge_checked(std::vector<Shard> shards) {
   std::vector<std::string> keys;
   for (const auto& unit : units) keys.push_back(unit.key);
   if (campaign.at("units").get<std::vector<std::string>>() != keys) {
-    throw BadInput("bench merge refuses: the manifests' unit list is not the one their campaign makes (another version?)");
+    throw common::BadInput("bench merge refuses: the manifests' unit list is not the one their campaign makes (another version?)");
   }
   const std::vector<const UnitRecord*> found =
       unit_results(shards, units, cases, merged.name, campaign.at("shards").get<int>());
@@ -221,10 +221,10 @@ MergedCampaign merge_shards(const std::vector<fs::path>& dirs) {
   for (const auto& folder : shard_folders(dirs)) {
     Shard shard{folder, read_manifest(folder), 0, read_unit_records(folder)};
     try {
-      shard.index = static_cast<int>(JsonFields(shard.manifest.at("shard"), (folder / "manifest.json").string() + " shard")
+      shard.index = static_cast<int>(common::JsonFields(shard.manifest.at("shard"), (folder / "manifest.json").string() + " shard")
                                          .whole("index", 1, kMaxShards));
     } catch (const nlohmann::json::exception& e) {
-      throw BadInput((folder / "manifest.json").string() + ": not a shard manifest (" + e.what() + ")");
+      throw common::BadInput((folder / "manifest.json").string() + ": not a shard manifest (" + e.what() + ")");
     }
     shards.push_back(std::move(shard));
   }
@@ -232,8 +232,8 @@ MergedCampaign merge_shards(const std::vector<fs::path>& dirs) {
     return merge_checked(std::move(shards));
   } catch (const nlohmann::json::exception& e) {
     // A manifest that parses but lacks what this version writes: made by hand, or by another version.
-    throw BadInput(std::string("bench merge refuses: a shard manifest is not one this version writes (") + e.what() + ")");
+    throw common::BadInput(std::string("bench merge refuses: a shard manifest is not one this version writes (") + e.what() + ")");
   }
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

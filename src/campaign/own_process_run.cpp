@@ -21,7 +21,7 @@
 
 extern char** environ;
 
-namespace physltl::app {
+namespace physltl::campaign {
 namespace {
 
 std::vector<std::string> main_job_arguments(const OwnProcessRequest& r, const std::filesystem::path& out) {
@@ -55,7 +55,7 @@ int run_child(const std::vector<std::string>& args, const std::filesystem::path&
     const pid_t ended = waitpid(child, &status, WNOHANG);
     if (ended == child) break;
     if (ended < 0 && errno != EINTR) throw std::runtime_error("lost it");
-    if (stop_received() && !passed_on) passed_on = kill(child, SIGINT) == 0;
+    if (common::stop_received() && !passed_on) passed_on = kill(child, SIGINT) == 0;
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
@@ -90,20 +90,20 @@ OwnProcessRun read_report(const std::filesystem::path& report) {
 std::optional<OwnProcessRun> run_in_own_process(const OwnProcessRequest& request) {
   static int runs = 0;  // this process's, for a folder of each run's own
   // Never committed: removed when done, and by the stop signal's watchdog if the process must end at once.
-  const OutputFolder out(std::filesystem::temp_directory_path() / fmt::format("physltl-run-{}-{}", getpid(), ++runs));
+  const common::OutputFolder out(std::filesystem::temp_directory_path() / fmt::format("physltl-run-{}-{}", getpid(), ++runs));
   const std::filesystem::path errors = out.path() / "stderr.txt";
   try {
     const int status = run_child(main_job_arguments(request, out.path()), errors);
-    if (status == kExitInterrupted || stop_received()) throw Interrupted();
-    if (status == kExitNoPlan) return OwnProcessRun{};
-    if (status != kExitOk) throw std::runtime_error(fmt::format("exit status {}: {}", status, last_line(errors)));
+    if (status == common::kExitInterrupted || common::stop_received()) throw common::Interrupted();
+    if (status == common::kExitNoPlan) return OwnProcessRun{};
+    if (status != common::kExitOk) throw std::runtime_error(fmt::format("exit status {}: {}", status, last_line(errors)));
     return read_report(out.path() / request.world_name / "report.json");
   } catch (const std::runtime_error& failed) {
-    if (dynamic_cast<const Interrupted*>(&failed) != nullptr) throw;
+    if (dynamic_cast<const common::Interrupted*>(&failed) != nullptr) throw;
     fmt::print(stderr, "physltl-studio: warning: the run in a process of its own of {} failed ({}); its peak memory is not given\n",
                request.scenario_file, failed.what());
     return std::nullopt;
   }
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

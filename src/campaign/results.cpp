@@ -8,7 +8,7 @@
 #include <fstream>
 #include <unistd.h>
 
-namespace physltl::app {
+namespace physltl::campaign {
 namespace {
 
 double median_of(const BenchResults& results, const PlannerRuns& planner) {
@@ -46,27 +46,27 @@ PlannerSummary summarize(const PlannerRuns& planner, double time_limit_s) {
       if (run.robust_worlds > 0) shares.push_back(static_cast<double>(run.robust_succeeded) / run.robust_worlds);
     }
   }
-  s.median_s = statistics::median(s.times_s);
-  s.mean_s = statistics::mean(s.times_s);
-  s.p90_s = statistics::quantile(s.times_s, 0.9);
-  s.max_s = statistics::maximum(s.times_s);
-  s.tree_nodes_median = statistics::median(nodes);
+  s.median_s = common::statistics::median(s.times_s);
+  s.mean_s = common::statistics::mean(s.times_s);
+  s.p90_s = common::statistics::quantile(s.times_s, 0.9);
+  s.max_s = common::statistics::maximum(s.times_s);
+  s.tree_nodes_median = common::statistics::median(nodes);
   s.propagations_per_s = wall > 0.0 ? propagations / wall : 0.0;
-  s.pushes_median = statistics::median(pushes);
-  s.bodies_moved_median = statistics::median(moved);
-  s.improve_median_s = statistics::median(improve);
-  s.first_pushes_median = statistics::median(first_pushes);
-  s.first_duration_median_s = statistics::median(first_durations);
-  s.solution_duration_median_s = statistics::median(durations);
-  s.path_length_median_m = statistics::median(paths);
-  s.cost_median = statistics::median(costs);
-  if (!shares.empty()) s.robustness_mean = statistics::mean(shares);
+  s.pushes_median = common::statistics::median(pushes);
+  s.bodies_moved_median = common::statistics::median(moved);
+  s.improve_median_s = common::statistics::median(improve);
+  s.first_pushes_median = common::statistics::median(first_pushes);
+  s.first_duration_median_s = common::statistics::median(first_durations);
+  s.solution_duration_median_s = common::statistics::median(durations);
+  s.path_length_median_m = common::statistics::median(paths);
+  s.cost_median = common::statistics::median(costs);
+  if (!shares.empty()) s.robustness_mean = common::statistics::mean(shares);
   return s;
 }
 
 std::optional<double> ratio_of_medians(const BenchResults& results) {
   if (results.threads.empty()) return std::nullopt;
-  const planning::PlannerRegistry& planners = registry();
+  const planning::PlannerRegistry& planners = setup::registry();
   const PlannerRuns* knowledge = find_planner(results, &planners.default_planner(), results.threads[0]);
   const PlannerRuns* baseline = find_planner(results, &planners.reference_planner(), results.threads[0]);
   if (knowledge == nullptr || baseline == nullptr) return std::nullopt;
@@ -78,7 +78,7 @@ std::optional<double> ratio_of_medians(const BenchResults& results) {
 std::vector<ThreadsRatio> threads_ratios(const BenchResults& results) {
   std::vector<ThreadsRatio> ratios;
   if (results.threads.empty()) return ratios;
-  const planning::PlannerEntry* knowledge = &registry().default_planner();
+  const planning::PlannerEntry* knowledge = &setup::registry().default_planner();
   const PlannerRuns* first = find_planner(results, knowledge, results.threads[0]);
   if (first == nullptr || median_of(results, *first) <= 0.0) return ratios;
   for (size_t i = 1; i < results.threads.size(); ++i) {
@@ -112,4 +112,4 @@ std::string this_cpu_info() {
   return count > 0 ? fmt::format("{} x {}\n", count, model) : "";
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

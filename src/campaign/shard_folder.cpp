@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace physltl::app {
+namespace physltl::campaign {
 namespace fs = std::filesystem;
 namespace {
 
@@ -35,8 +35,8 @@ fs::path shard_folder_path(const fs::path& out_dir, const std::string& campaign,
 
 nlohmann::json read_manifest(const fs::path& folder) {
   const fs::path file = folder / "manifest.json";
-  if (!fs::exists(file)) throw BadInput(file.string() + ": missing (not a shard folder)");
-  return read_json_file(file, kMaxRecordBytes, "a manifest");
+  if (!fs::exists(file)) throw common::BadInput(file.string() + ": missing (not a shard folder)");
+  return common::read_json_file(file, kMaxRecordBytes, "a manifest");
 }
 
 std::map<size_t, UnitRecord> read_unit_records(const fs::path& folder) {
@@ -44,10 +44,10 @@ std::map<size_t, UnitRecord> read_unit_records(const fs::path& folder) {
   if (!fs::is_directory(folder / "units")) return records;
   for (const auto& entry : fs::directory_iterator(folder / "units")) {
     if (entry.path().extension() != ".json") continue;
-    const nlohmann::json json = read_json_file(entry.path(), kMaxRecordBytes, "a unit result");
+    const nlohmann::json json = common::read_json_file(entry.path(), kMaxRecordBytes, "a unit result");
     UnitRecord record = unit_record_from_json(json, entry.path().string());
     if (entry.path().stem() != std::to_string(record.index)) {
-      throw BadInput(fmt::format("{}: holds unit {}", entry.path().string(), record.index));
+      throw common::BadInput(fmt::format("{}: holds unit {}", entry.path().string(), record.index));
     }
     records.emplace(record.index, std::move(record));
   }
@@ -61,12 +61,12 @@ ShardFolder::ShardFolder(fs::path folder, const nlohmann::ordered_json& manifest
     const nlohmann::json on_disk = read_manifest(folder_);
     if (const auto difference =
             first_difference(identity(nlohmann::json(manifest)), identity(on_disk), "now", "in the folder")) {
-      throw BadInput(fmt::format("--resume: {} was made by another campaign or version: {}. Run without --resume to "
+      throw common::BadInput(fmt::format("--resume: {} was made by another campaign or version: {}. Run without --resume to "
                                  "start the shard afresh", folder_.string(), *difference));
     }
     records_ = read_unit_records(folder_);
     for (const auto& entry : fs::directory_iterator(folder_ / "units")) {
-      if (is_unfinished_write(entry.path())) fs::remove(entry.path());  // a unit killed while written
+      if (common::is_unfinished_write(entry.path())) fs::remove(entry.path());  // a unit killed while written
     }
   } else if (fs::exists(folder_)) {
     discarded_ = fs::is_directory(folder_ / "units")
@@ -75,12 +75,12 @@ ShardFolder::ShardFolder(fs::path folder, const nlohmann::ordered_json& manifest
     fs::remove_all(folder_);
   }
   fs::create_directories(folder_ / "units");
-  write_json_file(folder_ / "manifest.json", manifest, Durability::kSynced);
+  common::write_json_file(folder_ / "manifest.json", manifest, common::Durability::kSynced);
 }
 
 void ShardFolder::record(const UnitRecord& record) {
-  write_json_file(folder_ / "units" / fmt::format("{}.json", record.index), to_json(record), Durability::kSynced);
+  common::write_json_file(folder_ / "units" / fmt::format("{}.json", record.index), to_json(record), common::Durability::kSynced);
   records_.insert_or_assign(record.index, record);
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

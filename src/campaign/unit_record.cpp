@@ -4,7 +4,7 @@
 #include "physltl/common/json_fields.h"
 #include "physltl/setup/planner_names.h"
 
-namespace physltl::app {
+namespace physltl::campaign {
 
 nlohmann::ordered_json to_json(const UnitRecord& record) {
   const BenchRun& run = record.run;
@@ -51,7 +51,7 @@ constexpr long long kMaxCount = 1'000'000'000'000'000;
 constexpr long long kMaxSmallCount = 1'000'000'000;
 constexpr double kMaxSeconds = 1e9;
 
-BenchRun run_from_json(const JsonFields& json) {
+BenchRun run_from_json(const common::JsonFields& json) {
   BenchRun run;
   run.seed = json.seed("seed");
   run.solved = json.flag("solved");
@@ -80,10 +80,10 @@ BenchRun run_from_json(const JsonFields& json) {
   run.unsolved_steps = json.has("unsolved_steps") ? static_cast<int>(json.whole("unsolved_steps", 0, kMaxSmallCount)) : 0;
   run.cell_skips_refused = json.whole("cell_skips_refused", 0, kMaxCount);
   // Results of builds before the refusals were counted have none.
-  run.refused = named_refusals(registry(), json.has("refused") ? json.wholes("refused", 0, kMaxCount) : std::vector<long long>{});
+  run.refused = setup::named_refusals(setup::registry(), json.has("refused") ? json.wholes("refused", 0, kMaxCount) : std::vector<long long>{});
   run.robust_worlds = static_cast<int>(json.whole("robust_worlds", 0, kMaxSmallCount));
   run.robust_succeeded = static_cast<int>(json.whole("robust_succeeded", 0, run.robust_worlds));
-  const JsonFields failures = json.object("robust_failures");
+  const common::JsonFields failures = json.object("robust_failures");
   for (const auto& [kind, unused] : json.at("robust_failures").items()) {
     run.robust_failures[kind] = static_cast<int>(failures.whole(kind, 0, run.robust_worlds));
   }
@@ -99,7 +99,7 @@ BenchRun run_from_json(const JsonFields& json) {
 }  // namespace
 
 UnitRecord unit_record_from_json(const nlohmann::json& json, const std::string& source) {
-  const JsonFields fields(json, source, "a unit result (an object)");
+  const common::JsonFields fields(json, source, "a unit result (an object)");
   UnitRecord record;
   record.index = static_cast<size_t>(fields.whole("index", 0, kMaxSmallCount));
   record.key = fields.text("unit");
@@ -108,4 +108,4 @@ UnitRecord unit_record_from_json(const nlohmann::json& json, const std::string& 
   return record;
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

@@ -5,7 +5,7 @@
 #include <chrono>
 #include <cmath>
 
-namespace physltl::app {
+namespace physltl::campaign {
 namespace {
 
 std::string duration_text(double seconds) {
@@ -52,4 +52,4 @@ bool run_units(const std::vector<std::unique_ptr<BenchCase>>& cases, const std::
   return true;
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

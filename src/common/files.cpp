@@ -12,7 +12,7 @@
 
 #include <string>
 
-namespace physltl::app {
+namespace physltl::common {
 
 std::string read_input_file(const std::filesystem::path& file, std::size_t max_bytes) {
   std::error_code error;
@@ -184,4 +184,4 @@ void write_json_file(const std::filesystem::path& file, const nlohmann::json& js
   write_text_file(file, json_text(json, 2) + "\n", durability);
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::common

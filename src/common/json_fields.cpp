@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-namespace physltl::app {
+namespace physltl::common {
 
 std::optional<std::string> whole_number_problem(const nlohmann::json& value, long long lo, long long hi) {
   const auto range = [&] { return fmt::format("must be a whole number from {} to {}", lo, hi); };
@@ -97,4 +97,4 @@ std::vector<std::string> JsonFields::texts(const std::string& key) const {
   return values;
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::common

@@ -12,7 +12,7 @@
 #include <string>
 #include <system_error>
 
-namespace physltl::app {
+namespace physltl::common {
 namespace {
 
 namespace fs = std::filesystem;
@@ -94,4 +94,4 @@ void OutputFolder::commit_entries() {
   committed_ = true;
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::common

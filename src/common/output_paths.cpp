@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace physltl::app {
+namespace physltl::common {
 namespace {
 
 namespace fs = std::filesystem;
@@ -66,4 +66,4 @@ fs::path checked_output_folder(const std::string& option, const std::string& fol
   return folder;
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::common

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <string>
 
-namespace physltl::app {
+namespace physltl::common {
 
 // The kernel's high-water mark of this program's resident memory (VmHWM). Not getrusage's ru_maxrss:
 // that one keeps the peak of the process before it ran this program, which for a run that bench or a
@@ -23,4 +23,4 @@ double peak_memory_mb() {
   return static_cast<double>(usage.ru_maxrss) * 1024.0 / 1e6;  // KiB on Linux
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::common

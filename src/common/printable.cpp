@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-namespace physltl::app {
+namespace physltl::common {
 namespace {
 
 // The length of the well-formed UTF-8 sequence at text[i] that XML 1.0 allows, or 0.
@@ -47,4 +47,4 @@ std::string printable(const std::string& text) {
   return shown;
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::common

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numeric>
 
-namespace physltl::app::statistics {
+namespace physltl::common::statistics {
 
 double mean(const std::vector<double>& sample) {
   if (sample.empty()) return 0.0;
@@ -42,4 +42,4 @@ LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y) {
   return fit;
 }
 
-}  // namespace physltl::app::statistics
+}  // namespace physltl::common::statistics

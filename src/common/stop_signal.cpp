@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <thread>
 
-namespace physltl::app {
+namespace physltl::common {
 namespace {
 
 std::atomic<bool> stop_requested{false};
@@ -41,4 +41,4 @@ void install_stop_signal() {
 
 const std::atomic<bool>& stop_flag() { return stop_requested; }
 
-}  // namespace physltl::app
+}  // namespace physltl::common

@@ -2,14 +2,14 @@
 
 #include "physltl/common/bad_input.h"
 
-namespace physltl::app {
+namespace physltl::setup {
 
 scenario::PlanCost cost_from_flag(const std::string& text) {
   try {
     return scenario::parse_plan_cost(text);
   } catch (const scenario::PlanCostError& e) {
-    throw BadInput(std::string("--cost: ") + e.what());
+    throw common::BadInput(std::string("--cost: ") + e.what());
   }
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::setup

@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <sstream>
 
-namespace physltl::app {
+namespace physltl::setup {
 
 planning::PlannerRegistry& registry() { return planners::registry(); }
 
@@ -18,7 +18,7 @@ std::string planner_names() { return registry().names(); }
 
 const planning::PlannerEntry& parse_planner(const std::string& name) {
   if (const planning::PlannerEntry* planner = registry().find(name)) return *planner;
-  throw BadInput("unknown planner '" + name + "'; the planners are " + planner_names());
+  throw common::BadInput("unknown planner '" + name + "'; the planners are " + planner_names());
 }
 
 std::vector<const planning::PlannerEntry*> parse_planner_list(const std::string& text) {
@@ -27,11 +27,11 @@ std::vector<const planning::PlannerEntry*> parse_planner_list(const std::string&
   for (std::string name; std::getline(in, name, ',');) {
     const planning::PlannerEntry* planner = &parse_planner(name);
     if (std::find(planners.begin(), planners.end(), planner) != planners.end()) {
-      throw BadInput("--planners: '" + name + "' is given twice");
+      throw common::BadInput("--planners: '" + name + "' is given twice");
     }
     planners.push_back(planner);
   }
-  if (planners.empty()) throw BadInput("--planners: no planner given; the planners are " + planner_names());
+  if (planners.empty()) throw common::BadInput("--planners: no planner given; the planners are " + planner_names());
   return planners;
 }
 
@@ -41,16 +41,16 @@ std::map<std::string, std::string> parameter_values(const std::map<std::string, 
     const auto it = given.find(parameter->name);
     const std::string& value = it != given.end() ? it->second : parameter->default_value();
     if (std::find(parameter->choices.begin(), parameter->choices.end(), value) == parameter->choices.end()) {
-      throw BadInput(fmt::format("--{}: unknown value '{}'; it takes {}", parameter->name, value, fmt::join(parameter->choices, ", ")));
+      throw common::BadInput(fmt::format("--{}: unknown value '{}'; it takes {}", parameter->name, value, fmt::join(parameter->choices, ", ")));
     }
     values[parameter->name] = value;
   }
   return values;
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::setup
 
-namespace physltl::app {
+namespace physltl::setup {
 
 std::vector<std::string> parameter_notes(const std::map<std::string, std::string>& values) {
   std::vector<std::string> notes;
@@ -103,4 +103,4 @@ std::vector<std::pair<std::string, long long>> named_refusals(const planning::Pl
   return named;
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::setup

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <set>
 
-namespace physltl::app {
+namespace physltl::setup {
 
 scenario::Uncertainty override_uncertainty(const scenario::Uncertainty& declared, const std::string& text) {
   scenario::Uncertainty u = declared;
@@ -24,7 +24,7 @@ scenario::Uncertainty override_uncertainty(const scenario::Uncertainty& declared
                                   ? std::from_chars_result{nullptr, std::errc::invalid_argument}
                                   : std::from_chars(pair.data() + eq + 1, pair.data() + pair.size(), value);
     if (eq == std::string::npos || error != std::errc() || end != pair.data() + pair.size() || !std::isfinite(value)) {
-      throw BadInput(fmt::format("--uncertainty expects key=number,..., got '{}'", pair));
+      throw common::BadInput(fmt::format("--uncertainty expects key=number,..., got '{}'", pair));
     }
     const std::string key = pair.substr(0, eq);
     double* field = key == "mass"           ? &u.mass
@@ -34,17 +34,17 @@ scenario::Uncertainty override_uncertainty(const scenario::Uncertainty& declared
                     : key == "body_yaw_deg" ? &u.body_yaw_deg
                                             : nullptr;
     if (field == nullptr) {
-      throw BadInput(fmt::format("--uncertainty: unknown key '{}' (mass, friction, start, body_pose, body_yaw_deg)", key));
+      throw common::BadInput(fmt::format("--uncertainty: unknown key '{}' (mass, friction, start, body_pose, body_yaw_deg)", key));
     }
-    if (!given.insert(key).second) throw BadInput(fmt::format("--uncertainty: {} is given twice", key));
+    if (!given.insert(key).second) throw common::BadInput(fmt::format("--uncertainty: {} is given twice", key));
     *field = value;
     if (comma == std::string::npos) break;
     from = comma + 1;
   }
   if (const auto problems = scenario::validate_uncertainty(u); !problems.empty()) {
-    throw BadInput("--uncertainty: " + problems.front().message.substr(problems.front().message.find(':') + 2));
+    throw common::BadInput("--uncertainty: " + problems.front().message.substr(problems.front().message.find(':') + 2));
   }
   return u;
 }
 
-}  // namespace physltl::app
+}  // namespace physltl::setup

@@ -9,7 +9,7 @@
 #include <set>
 #include <stdexcept>
 
-namespace physltl::app {
+namespace physltl::common {
 namespace {
 
 namespace fs = std::filesystem;
@@ -101,4 +101,4 @@ TEST_F(OutputFolderTest, ATrailingSlashNamesTheSameFolder) {
 }
 
 }  // namespace
-}  // namespace physltl::app
+}  // namespace physltl::common

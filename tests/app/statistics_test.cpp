@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-namespace physltl::app::statistics {
+namespace physltl::common::statistics {
 namespace {
 
 TEST(Statistics, MedianOfOddAndEvenSamplesRegardlessOfOrder) {
@@ -51,4 +51,4 @@ TEST(Statistics, FitLineThroughOneXIsFlat) {
 }
 
 }  // namespace
-}  // namespace physltl::app::statistics
+}  // namespace physltl::common::statistics

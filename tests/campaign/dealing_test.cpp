@@ -11,7 +11,7 @@
 
 namespace campaign_dealing {
 
-using namespace physltl::app;
+using namespace physltl::campaign;
 using physltl::planning::PlannerEntry;
 
 const PlannerEntry* planner(const char* name) { return physltl::planners::registry().find(name); }
@@ -92,7 +92,7 @@ TEST(ShardSpec, KOutsideOneToNAndOtherTextAreRefused) {
   EXPECT_EQ(parse_shard("2/5").index, 2);
   EXPECT_EQ(parse_shard("2/5").count, 5);
   for (const std::string bad : {"0/3", "4/3", "-1/3", "1/0", "3", "a/b", "1/3/4", "1.5/3", "/3", ""}) {
-    EXPECT_THROW(parse_shard(bad), BadInput) << bad;
+    EXPECT_THROW(parse_shard(bad), physltl::common::BadInput) << bad;
   }
 }
 
@@ -126,7 +126,7 @@ TEST(ScenarioEntry, BadEntriesAreRefusedNamingThem) {
     try {
       parse_scenario_entry(text, {}, std::nullopt);
       ADD_FAILURE() << text << " was accepted";
-    } catch (const BadInput& e) {
+    } catch (const physltl::common::BadInput& e) {
       EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << text << ": " << e.what();
     }
   }
@@ -134,7 +134,7 @@ TEST(ScenarioEntry, BadEntriesAreRefusedNamingThem) {
 
 TEST(CampaignName, NamesOneFolder) {
   EXPECT_NO_THROW(check_campaign_name("paper-2026.v2_a"));
-  for (const std::string bad : {"", ".", "..", "a/b", "a b", ".hidden"}) EXPECT_THROW(check_campaign_name(bad), BadInput) << bad;
+  for (const std::string bad : {"", ".", "..", "a/b", "a b", ".hidden"}) EXPECT_THROW(check_campaign_name(bad), physltl::common::BadInput) << bad;
 }
 
 }  // namespace campaign_dealing

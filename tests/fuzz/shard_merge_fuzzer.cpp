@@ -24,8 +24,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::ofstream(shard / "manifest.json", std::ios::binary) << text.substr(0, separator);
   if (separator != std::string::npos) std::ofstream(shard / "units" / "0.json", std::ios::binary) << text.substr(separator + 6);
   try {
-    physltl::app::merge_shards({shard.parent_path()});
-  } catch (const physltl::app::BadInput&) {
+    physltl::campaign::merge_shards({shard.parent_path()});
+  } catch (const physltl::common::BadInput&) {
   }
   return 0;
 }

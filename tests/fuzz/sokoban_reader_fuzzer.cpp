@@ -24,7 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::vector<import::SokobanLevel> levels;
   try {
     levels = import::read_sokoban_levels(stem + ".txt");
-  } catch (const BadInput&) {
+  } catch (const common::BadInput&) {
     return 0;
   }
   for (const import::SokobanLevel& level : levels) {

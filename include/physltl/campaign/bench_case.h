@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-namespace physltl::app {
+namespace physltl::campaign {
 
 // What every case shares: the command line's settings but the scenarios.
 struct CampaignSettings {
@@ -68,4 +68,4 @@ CampaignResults collect_results(const std::vector<ScenarioEntry>& entries,
 BenchRun measure(const planning::PlanningProblem& problem, const planning::PlannerEntry& planner,
                  const planning::PlannerOptions& options, int robustness_worlds = 0);
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace physltl::app {
+namespace physltl::campaign {
 
 // One scenario of a campaign as given on the command line: FILE, or FILE::key=value::key=value... where
 // each key=value is passed to the script's `params` after the global --set pairs (and replaces a global
@@ -84,4 +84,4 @@ std::string folder_name(const std::string& scenario, const std::vector<std::stri
 // Campaign names name folders: letters, digits, '.', '_' and '-', not starting with '.'. BadInput otherwise.
 void check_campaign_name(const std::string& name);
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace physltl::app {
+namespace physltl::campaign {
 
 nlohmann::ordered_json campaign_manifest(const std::string& name, int shard_count,
                                          const std::vector<ScenarioEntry>& entries, const CampaignSettings& settings,
@@ -30,4 +30,4 @@ nlohmann::ordered_json shard_manifest(const nlohmann::ordered_json& campaign, co
 std::optional<std::string> first_difference(const nlohmann::json& a, const nlohmann::json& b, const std::string& a_name,
                                             const std::string& b_name, const std::string& path = "");
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

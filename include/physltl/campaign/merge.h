@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace physltl::app {
+namespace physltl::campaign {
 
 struct MergedCampaign {
   std::string name;
@@ -22,4 +22,4 @@ struct MergedCampaign {
 // otherwise throws BadInput naming the missing, duplicated or mismatched shards and units.
 MergedCampaign merge_shards(const std::vector<std::filesystem::path>& dirs);
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

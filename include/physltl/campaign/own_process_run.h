@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace physltl::app {
+namespace physltl::campaign {
 
 struct OwnProcessRequest {
   std::string scenario_file;
@@ -39,4 +39,4 @@ struct OwnProcessRun {
 // why, when the run failed (a fault of the child's: the benchmark's own figures stand).
 std::optional<OwnProcessRun> run_in_own_process(const OwnProcessRequest& request);
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

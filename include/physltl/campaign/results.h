@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace physltl::app {
+namespace physltl::campaign {
 
 struct BenchRun {
   std::uint64_t seed = 0;
@@ -151,4 +151,4 @@ std::string this_cpu_info();
 
 
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

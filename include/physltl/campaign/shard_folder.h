@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <map>
 
-namespace physltl::app {
+namespace physltl::campaign {
 
 std::filesystem::path shard_folder_path(const std::filesystem::path& out_dir, const std::string& campaign,
                                         const ShardSpec& shard);
@@ -44,4 +44,4 @@ class ShardFolder {
   size_t discarded_ = 0;
 };
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace physltl::app {
+namespace physltl::campaign {
 
 struct SweepSpec {
   std::string key;
@@ -29,4 +29,4 @@ struct Sweep {
   std::vector<SweepPoint> points;     // in the order the values were given
 };
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

@@ -8,7 +8,7 @@
 
 #include <string>
 
-namespace physltl::app {
+namespace physltl::campaign {
 
 struct UnitRecord {
   size_t index = 0;      // canonical position in the campaign
@@ -21,4 +21,4 @@ nlohmann::ordered_json to_json(const UnitRecord& record);
 // Throws BadInput naming `source` when a field is missing or of the wrong type.
 UnitRecord unit_record_from_json(const nlohmann::json& json, const std::string& source);
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace physltl::app {
+namespace physltl::campaign {
 
 struct UnitProgress {
   bool show = false;   // on stderr, when it is a terminal
@@ -26,4 +26,4 @@ bool run_units(const std::vector<std::unique_ptr<BenchCase>>& cases, const std::
                const std::vector<size_t>& which, const CampaignSettings& settings, const UnitProgress& progress,
                const std::atomic<bool>& stop, const std::function<void(const UnitRecord&)>& done);
 
-}  // namespace physltl::app
+}  // namespace physltl::campaign

@@ -1,12 +1,12 @@
 #pragma once
-// Internal to the app module: exit codes, and the errors a command ends with: the user's bad input, an
+// What every command shares: exit codes, and the errors a command ends with: the user's bad input, an
 // infeasible task, an interruption. Apart from the
 // command line's own header (CLI11, costly to compile), so that code which only reports bad input does
 // not pay for the parser.
 
 #include <stdexcept>
 
-namespace physltl::app {
+namespace physltl::common {
 
 // Exit codes documented in README.md and `physltl-studio --help`.
 enum ExitCode : int {
@@ -34,4 +34,4 @@ struct Interrupted : std::runtime_error {
   Interrupted() : std::runtime_error("interrupted; nothing written") {}
 };
 
-}  // namespace physltl::app
+}  // namespace physltl::common

@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <string_view>
 
-namespace physltl::app {
+namespace physltl::common {
 
 enum class Durability {
   kRenamed,  // the rename makes it whole; enough for outputs a failed run replaces anyway
@@ -45,4 +45,4 @@ void write_json_file(const std::filesystem::path& file, const nlohmann::ordered_
                      Durability durability = Durability::kRenamed);
 void write_json_file(const std::filesystem::path& file, const nlohmann::json& json, Durability durability = Durability::kRenamed);
 
-}  // namespace physltl::app
+}  // namespace physltl::common

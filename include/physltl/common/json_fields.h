@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace physltl::app {
+namespace physltl::common {
 
 class JsonFields {
  public:
@@ -44,4 +44,4 @@ class JsonFields {
 // `value` as a whole number in lo..hi, or the problem in words.
 std::optional<std::string> whole_number_problem(const nlohmann::json& value, long long lo, long long hi);
 
-}  // namespace physltl::app
+}  // namespace physltl::common

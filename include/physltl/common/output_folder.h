@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-namespace physltl::app {
+namespace physltl::common {
 
 // Removes the temporary folders of every OutputFolder of this process not yet committed, and the temporary
 // files of writes under way: for a process that must end at once, without unwinding (the physics engine's
@@ -42,4 +42,4 @@ class OutputFolder {
   bool committed_ = false;
 };
 
-}  // namespace physltl::app
+}  // namespace physltl::common

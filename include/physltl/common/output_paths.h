@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace physltl::app {
+namespace physltl::common {
 
 // `file` as an output file for `option`; BadInput naming the option when it is empty, a folder, one of
 // `inputs` (the same file by any name: a symlink, a hard link, "./x"), or under a path that is a file.
@@ -22,4 +22,4 @@ std::filesystem::path checked_output_folder(const std::string& option, const std
 // Whether `a` and `b` name the same file or folder, existing or not.
 bool same_path(const std::filesystem::path& a, const std::filesystem::path& b);
 
-}  // namespace physltl::app
+}  // namespace physltl::common

@@ -5,10 +5,10 @@
 
 #include <string>
 
-namespace physltl::app {
+namespace physltl::common {
 
 // `text` with every control character but the newline, and every byte that is not part of well-formed
 // UTF-8, written as \xNN (a tab as \t, a CR as \r).
 std::string printable(const std::string& text);
 
-}  // namespace physltl::app
+}  // namespace physltl::common

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-namespace physltl::app::statistics {
+namespace physltl::common::statistics {
 
 double mean(const std::vector<double>& sample);
 double median(std::vector<double> sample);
@@ -21,4 +21,4 @@ struct LineFit {
 };
 LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y);
 
-}  // namespace physltl::app::statistics
+}  // namespace physltl::common::statistics

@@ -6,7 +6,7 @@
 
 #include <atomic>
 
-namespace physltl::app {
+namespace physltl::common {
 
 // Installs the handlers and starts the watchdog; once, before the command runs.
 void install_stop_signal();
@@ -15,4 +15,4 @@ void install_stop_signal();
 const std::atomic<bool>& stop_flag();
 inline bool stop_received() { return stop_flag().load(); }
 
-}  // namespace physltl::app
+}  // namespace physltl::common

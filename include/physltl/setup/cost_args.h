@@ -6,9 +6,9 @@
 
 #include <string>
 
-namespace physltl::app {
+namespace physltl::setup {
 
 // Throws BadInput naming the offending token.
 scenario::PlanCost cost_from_flag(const std::string& text);
 
-}  // namespace physltl::app
+}  // namespace physltl::setup

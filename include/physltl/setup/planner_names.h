@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-namespace physltl::app {
+namespace physltl::setup {
 
 // The program's registry.
 planning::PlannerRegistry& registry();
@@ -41,4 +41,4 @@ std::vector<std::pair<std::string, long long>> refusal_counts(const planning::Pl
 std::vector<std::string> refusal_rules(const planning::PlannerRegistry& registry);
 std::vector<std::pair<std::string, long long>> named_refusals(const planning::PlannerRegistry& registry,
                                                               const std::vector<long long>& counts);
-}  // namespace physltl::app
+}  // namespace physltl::setup

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-namespace physltl::app {
+namespace physltl::setup {
 
 // Throws BadInput for a setting that is not key=value, scenario::ScenarioError for the scenario's faults.
 scenario::World load_with_settings(const std::string& path, const std::vector<std::string>& settings);
 
-}  // namespace physltl::app
+}  // namespace physltl::setup

@@ -6,9 +6,9 @@
 
 #include <string>
 
-namespace physltl::app {
+namespace physltl::setup {
 
 // Throws BadInput naming the offending pair (an unknown key, a value that is not a number or out of range).
 scenario::Uncertainty override_uncertainty(const scenario::Uncertainty& declared, const std::string& text);
 
-}  // namespace physltl::app
+}  // namespace physltl::setup

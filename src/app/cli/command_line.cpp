@@ -22,6 +22,7 @@
 namespace {
 
 using namespace physltl::app;
+namespace common = physltl::common;
 
 struct Command {
   std::unique_ptr<CLI::App> app;
@@ -39,8 +40,8 @@ Command make_command(const std::string& name, const std::string& description,
 // way, and end at once.
 [[noreturn]] void end_on_engine_failure(const std::string& message) {
   std::fprintf(stderr, "physltl-studio: internal error: %s (please report it with the command line)\n", message.c_str());
-  remove_unfinished_outputs();
-  std::_Exit(kExitInternalError);
+  common::remove_unfinished_outputs();
+  std::_Exit(common::kExitInternalError);
 }
 
 // The command's own exit code, or the error it ended with reported on stderr and turned into one.
@@ -48,38 +49,38 @@ int run_reporting_errors(Command& command) {
   try {
     return command.run();
   } catch (const physltl::scenario::ScenarioError& e) {
-    if (stop_received()) throw Interrupted();
-    for (const auto& d : e.diagnostics()) std::cerr << printable(d.str()) << "\n";
-  } catch (const InfeasibleTask& e) {
-    std::cerr << "physltl-studio: the task is infeasible: " << printable(e.what()) << "\n";
-    return kExitNoPlan;
-  } catch (const Interrupted&) {
+    if (common::stop_received()) throw common::Interrupted();
+    for (const auto& d : e.diagnostics()) std::cerr << common::printable(d.str()) << "\n";
+  } catch (const common::InfeasibleTask& e) {
+    std::cerr << "physltl-studio: the task is infeasible: " << common::printable(e.what()) << "\n";
+    return common::kExitNoPlan;
+  } catch (const common::Interrupted&) {
     throw;
   } catch (const physltl::DeadlineReached&) {
     // Only an interruption reaches here: a run's time limit is its own result.
-    throw Interrupted();
-  } catch (const BadInput& e) {
-    if (stop_received()) throw Interrupted();
-    std::cerr << "physltl-studio: " << printable(e.what()) << "\n";
+    throw common::Interrupted();
+  } catch (const common::BadInput& e) {
+    if (common::stop_received()) throw common::Interrupted();
+    std::cerr << "physltl-studio: " << common::printable(e.what()) << "\n";
   } catch (const physltl::execution::PerturbationError& e) {
     // An uncertainty too wide for the world (--robustness, execute): the user's to narrow.
-    std::cerr << "physltl-studio: " << printable(e.what()) << "\n";
+    std::cerr << "physltl-studio: " << common::printable(e.what()) << "\n";
   } catch (const std::filesystem::filesystem_error& e) {
     // An --out folder that cannot be made or written (a file in the way, no permission, a full disk).
     // Said as the path and the system's reason ("Too many levels of symbolic links"), not as the library's
     // "filesystem error: cannot create directories".
-    std::cerr << "physltl-studio: cannot write the outputs: " << (e.path1().empty() ? "" : printable(e.path1().string()) + ": ")
+    std::cerr << "physltl-studio: cannot write the outputs: " << (e.path1().empty() ? "" : common::printable(e.path1().string()) + ": ")
               << e.code().message() << "\n";
   } catch (const std::exception& e) {
-    if (stop_received()) throw Interrupted();
+    if (common::stop_received()) throw common::Interrupted();
     // Anything else is a fault of ours, never the user's input: said as such, with an exit code of its own.
-    std::cerr << "physltl-studio: internal error: " << printable(e.what()) << " (please report it with the command line)\n";
-    return kExitInternalError;
+    std::cerr << "physltl-studio: internal error: " << common::printable(e.what()) << " (please report it with the command line)\n";
+    return common::kExitInternalError;
   } catch (...) {
     std::cerr << "physltl-studio: internal error: an unknown exception (please report it with the command line)\n";
-    return kExitInternalError;
+    return common::kExitInternalError;
   }
-  return kExitBadInput;
+  return common::kExitBadInput;
 }
 
 int parse_and_run(Command& command, int argc, char** argv) {
@@ -87,18 +88,18 @@ int parse_and_run(Command& command, int argc, char** argv) {
   try {
     command.app->parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return command.app->exit(e) == 0 ? kExitOk : kExitBadInput;
+    return command.app->exit(e) == 0 ? common::kExitOk : common::kExitBadInput;
   }
-  install_stop_signal();
+  common::install_stop_signal();
   try {
     const int code = run_reporting_errors(command);
     // A command that ended on its own after Ctrl-C ended because of it (a failure it reported meanwhile
     // was the interruption's doing).
-    if (!stop_received() || code == kExitOk || code == kExitInterrupted) return code;
-    throw Interrupted();
-  } catch (const Interrupted& e) {
+    if (!common::stop_received() || code == common::kExitOk || code == common::kExitInterrupted) return code;
+    throw common::Interrupted();
+  } catch (const common::Interrupted& e) {
     std::cerr << "physltl-studio: " << e.what() << "\n";
-    return kExitInterrupted;
+    return common::kExitInterrupted;
   }
 }
 
@@ -150,7 +151,7 @@ int run_command_line(int argc, char** argv) {
   footer += "\nExit codes: 0 ok, 1 no plan found (or task infeasible), 2 bad input or usage, 3 internal error (a fault of\n"
             "ours: please report it), 130 interrupted.";
   main_job.app->footer(footer);
-  main_job.app->set_version_flag("--version", build_version());
+  main_job.app->set_version_flag("--version", common::build_version());
   return parse_and_run(main_job, argc, argv);
 }
 

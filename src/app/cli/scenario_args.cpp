@@ -10,6 +10,6 @@ void ScenarioArgs::add_to(CLI::App& app) {
   app.add_option("--set", settings, "Pass key=value to the script's `params` table (repeatable)")->allow_extra_args(false);
 }
 
-scenario::World ScenarioArgs::load() const { return load_with_settings(path, settings); }
+scenario::World ScenarioArgs::load() const { return setup::load_with_settings(path, settings); }
 
 }  // namespace physltl::app

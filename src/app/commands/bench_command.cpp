@@ -51,15 +51,15 @@ struct BenchArgs {
   bool resume = false;
 };
 
-CampaignSettings campaign_settings(const BenchArgs& args) {
+campaign::CampaignSettings campaign_settings(const BenchArgs& args) {
   for (size_t i = 0; i < args.threads.size(); ++i) {
     if (std::count(args.threads.begin(), args.threads.begin() + static_cast<long>(i), args.threads[i]) > 0) {
-      throw BadInput(fmt::format("--threads: {} is given twice", args.threads[i]));
+      throw common::BadInput(fmt::format("--threads: {} is given twice", args.threads[i]));
     }
   }
-  CampaignSettings settings;
-  const planning::PlannerRegistry& planners = registry();
-  settings.planners = args.planners ? parse_planner_list(*args.planners) : std::vector{&planners.default_planner()};
+  campaign::CampaignSettings settings;
+  const planning::PlannerRegistry& planners = setup::registry();
+  settings.planners = args.planners ? setup::parse_planner_list(*args.planners) : std::vector{&planners.default_planner()};
   const planning::PlannerEntry* reference = &planners.reference_planner();
   if (args.compare && std::find(settings.planners.begin(), settings.planners.end(), reference) == settings.planners.end()) {
     settings.planners.push_back(reference);
@@ -77,87 +77,87 @@ CampaignSettings campaign_settings(const BenchArgs& args) {
   return settings;
 }
 
-std::vector<ScenarioEntry> scenario_entries(const BenchArgs& args) {
+std::vector<campaign::ScenarioEntry> scenario_entries(const BenchArgs& args) {
   for (const auto& setting : args.settings) {
     const auto eq = setting.find('=');
-    if (eq == std::string::npos || eq == 0) throw BadInput("--set expects key=value, got '" + setting + "'");
+    if (eq == std::string::npos || eq == 0) throw common::BadInput("--set expects key=value, got '" + setting + "'");
   }
-  std::optional<SweepSpec> sweep;
+  std::optional<campaign::SweepSpec> sweep;
   if (args.sweep) {
-    sweep = parse_sweep(*args.sweep);
+    sweep = campaign::parse_sweep(*args.sweep);
     for (const auto& setting : args.settings) {
-      if (setting.rfind(sweep->key + "=", 0) == 0) throw BadInput("--sweep " + sweep->key + " is also given to --set");
+      if (setting.rfind(sweep->key + "=", 0) == 0) throw common::BadInput("--sweep " + sweep->key + " is also given to --set");
     }
   }
-  std::vector<ScenarioEntry> entries;
-  for (const auto& text : args.scenarios) entries.push_back(parse_scenario_entry(text, args.settings, sweep));
+  std::vector<campaign::ScenarioEntry> entries;
+  for (const auto& text : args.scenarios) entries.push_back(campaign::parse_scenario_entry(text, args.settings, sweep));
   return entries;
 }
 
-std::vector<std::filesystem::path> entry_files(const std::vector<ScenarioEntry>& entries) {
+std::vector<std::filesystem::path> entry_files(const std::vector<campaign::ScenarioEntry>& entries) {
   std::vector<std::filesystem::path> files;
-  for (const ScenarioEntry& entry : entries) files.emplace_back(entry.path);
+  for (const campaign::ScenarioEntry& entry : entries) files.emplace_back(entry.path);
   return files;
 }
 
 // --log FILE: one case writes FILE; the values of one swept scenario write FILE's stem-key-value; several
 // scenarios write FILE's stem-<case folder>. Each is checked before any run: none may be an input.
-std::vector<std::filesystem::path> log_files(const std::optional<std::string>& file, const std::vector<ScenarioEntry>& entries,
-                                             const std::vector<std::unique_ptr<BenchCase>>& cases) {
+std::vector<std::filesystem::path> log_files(const std::optional<std::string>& file, const std::vector<campaign::ScenarioEntry>& entries,
+                                             const std::vector<std::unique_ptr<campaign::BenchCase>>& cases) {
   std::vector<std::filesystem::path> logs;
   if (!file) return logs;
   const std::vector<std::filesystem::path> inputs = entry_files(entries);
-  const std::filesystem::path path = checked_output_file("--log", *file, inputs);
+  const std::filesystem::path path = common::checked_output_file("--log", *file, inputs);
   // The logs are written last, after minutes of runs: a folder that is not there fails now.
   const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : ".";
-  if (!std::filesystem::is_directory(folder)) throw BadInput("--log " + *file + ": no folder " + folder.string());
+  if (!std::filesystem::is_directory(folder)) throw common::BadInput("--log " + *file + ": no folder " + folder.string());
   for (const auto& c : cases) {
     std::string part;
     if (entries.size() > 1) {
-      part = folder_name(c->results.scenario, c->results.settings);
+      part = campaign::folder_name(c->results.scenario, c->results.settings);
     } else if (entries.front().sweep) {
       part = entries.front().sweep->key + "-" + c->swept_value;
     }
     logs.push_back(part.empty() ? path
-                                : checked_output_file("--log", (path.parent_path() / (path.stem().string() + "-" + part +
+                                : common::checked_output_file("--log", (path.parent_path() / (path.stem().string() + "-" + part +
                                                                                     path.extension().string())).string(),
                                                       inputs));
   }
   return logs;
 }
 
-int list_units(const std::vector<Unit>& units, const std::vector<size_t>& which) {
+int list_units(const std::vector<campaign::Unit>& units, const std::vector<size_t>& which) {
   for (const size_t i : which) fmt::print("{}\t{}\n", i, units[i].key);
-  return kExitOk;
+  return common::kExitOk;
 }
 
-int run_whole(const BenchArgs& args, const std::vector<ScenarioEntry>& entries, const CampaignSettings& settings,
-              const std::vector<std::unique_ptr<BenchCase>>& cases, const std::vector<Unit>& units,
+int run_whole(const BenchArgs& args, const std::vector<campaign::ScenarioEntry>& entries, const campaign::CampaignSettings& settings,
+              const std::vector<std::unique_ptr<campaign::BenchCase>>& cases, const std::vector<campaign::Unit>& units,
               const std::vector<std::filesystem::path>& logs) {
   std::vector<size_t> all(units.size());
   for (size_t i = 0; i < all.size(); ++i) all[i] = i;
-  std::map<size_t, UnitRecord> records;
-  const UnitProgress progress{!args.quiet && isatty(STDERR_FILENO), "", 0, units.size()};
-  if (!run_units(cases, units, all, settings, progress, stop_flag(),
-                 [&](const UnitRecord& record) { records.emplace(record.index, record); })) {
+  std::map<size_t, campaign::UnitRecord> records;
+  const campaign::UnitProgress progress{!args.quiet && isatty(STDERR_FILENO), "", 0, units.size()};
+  if (!campaign::run_units(cases, units, all, settings, progress, common::stop_flag(),
+                 [&](const campaign::UnitRecord& record) { records.emplace(record.index, record); })) {
     std::cerr << "physltl-studio: interrupted; nothing written\n";
-    return kExitInterrupted;
+    return common::kExitInterrupted;
   }
-  run_sweeps_in_own_processes(entries, settings, cases);
-  const CampaignResults results = collect_results(entries, cases, units, records);
+  campaign::run_sweeps_in_own_processes(entries, settings, cases);
+  const campaign::CampaignResults results = campaign::collect_results(entries, cases, units, records);
   // --quiet prints only errors; the files are written all the same.
   std::ostringstream silenced;
   write_campaign_outputs(results, args.out_dir, logs,
                          args.quiet ? silenced : std::cout);
-  return kExitOk;
+  return common::kExitOk;
 }
 
-int run_shard(const BenchArgs& args, const std::vector<ScenarioEntry>& entries, const CampaignSettings& settings,
-              const std::vector<std::unique_ptr<BenchCase>>& cases, const std::vector<Unit>& units,
-              const ShardSpec& shard, const std::vector<size_t>& mine) {
-  const nlohmann::ordered_json manifest = shard_manifest(
-      campaign_manifest(*args.campaign, shard.count, entries, settings, cases, units), shard, mine, cases);
-  ShardFolder folder(shard_folder_path(args.out_dir, *args.campaign, shard), manifest, args.resume);
+int run_shard(const BenchArgs& args, const std::vector<campaign::ScenarioEntry>& entries, const campaign::CampaignSettings& settings,
+              const std::vector<std::unique_ptr<campaign::BenchCase>>& cases, const std::vector<campaign::Unit>& units,
+              const campaign::ShardSpec& shard, const std::vector<size_t>& mine) {
+  const nlohmann::ordered_json manifest = campaign::shard_manifest(
+      campaign::campaign_manifest(*args.campaign, shard.count, entries, settings, cases, units), shard, mine, cases);
+  campaign::ShardFolder folder(campaign::shard_folder_path(args.out_dir, *args.campaign, shard), manifest, args.resume);
   std::vector<size_t> left;
   for (const size_t i : mine) {
     if (!folder.records().count(i)) left.push_back(i);
@@ -166,15 +166,15 @@ int run_shard(const BenchArgs& args, const std::vector<ScenarioEntry>& entries, 
     fmt::print(stderr, "physltl-studio: started {} afresh: {} earlier results deleted (--resume keeps them)\n",
                folder.path().string(), folder.discarded());
   }
-  const UnitProgress progress{!args.quiet && isatty(STDERR_FILENO), fmt::format("shard {}/{}: ", shard.index, shard.count),
+  const campaign::UnitProgress progress{!args.quiet && isatty(STDERR_FILENO), fmt::format("shard {}/{}: ", shard.index, shard.count),
                               mine.size() - left.size(), mine.size()};
-  if (!run_units(cases, units, left, settings, progress, stop_flag(),
-                 [&](const UnitRecord& record) { folder.record(record); })) {
+  if (!campaign::run_units(cases, units, left, settings, progress, common::stop_flag(),
+                 [&](const campaign::UnitRecord& record) { folder.record(record); })) {
     std::cerr << fmt::format("physltl-studio: interrupted; {} of {} units have results in {}, --resume runs the rest\n",
                              folder.records().size(), mine.size(), folder.path().string());
-    return kExitInterrupted;
+    return common::kExitInterrupted;
   }
-  write_shard_logs(folder.path(), collect_results(entries, cases, units, folder.records()));
+  write_shard_logs(folder.path(), campaign::collect_results(entries, cases, units, folder.records()));
   if (!args.quiet) {
     const long solved = std::count_if(folder.records().begin(), folder.records().end(),
                                       [](const auto& entry) { return entry.second.run.solved; });
@@ -183,26 +183,26 @@ int run_shard(const BenchArgs& args, const std::vector<ScenarioEntry>& entries, 
     fmt::print("outputs    {}\nmerge with physltl-studio bench merge {}\n", folder.path().string(),
                folder.path().parent_path().string());
   }
-  return kExitOk;
+  return common::kExitOk;
 }
 
 int bench(const BenchArgs& args) {
-  if (args.campaign) check_campaign_name(*args.campaign);
+  if (args.campaign) campaign::check_campaign_name(*args.campaign);
   if (args.campaign && !args.shard && !args.list) {
-    throw BadInput("--campaign names the campaign of a shard: give --shard K/N too (1/1 runs it all as one shard)");
+    throw common::BadInput("--campaign names the campaign of a shard: give --shard K/N too (1/1 runs it all as one shard)");
   }
   if (args.shard && args.log_file) {
-    throw BadInput("--log: a shard writes its OMPL logs into its folder, one per scenario (docs/campaigns.md)");
+    throw common::BadInput("--log: a shard writes its OMPL logs into its folder, one per scenario (docs/campaigns.md)");
   }
-  const std::optional<ShardSpec> shard = args.shard ? std::optional(parse_shard(*args.shard)) : std::nullopt;
-  const CampaignSettings settings = campaign_settings(args);
-  const std::vector<ScenarioEntry> entries = scenario_entries(args);
+  const std::optional<campaign::ShardSpec> shard = args.shard ? std::optional(campaign::parse_shard(*args.shard)) : std::nullopt;
+  const campaign::CampaignSettings settings = campaign_settings(args);
+  const std::vector<campaign::ScenarioEntry> entries = scenario_entries(args);
   // Checked before the cases load, which may take long or find a task infeasible.
-  if (args.log_file) checked_output_file("--log", *args.log_file, entry_files(entries));
-  const std::vector<std::unique_ptr<BenchCase>> cases = load_cases(entries, settings);
+  if (args.log_file) common::checked_output_file("--log", *args.log_file, entry_files(entries));
+  const std::vector<std::unique_ptr<campaign::BenchCase>> cases = campaign::load_cases(entries, settings);
   const std::vector<std::filesystem::path> logs = log_files(args.log_file, entries, cases);
-  const std::vector<CaseUnits> described = case_units(cases);
-  const std::vector<Unit> units = campaign_units(described, settings.runs);
+  const std::vector<campaign::CaseUnits> described = campaign::case_units(cases);
+  const std::vector<campaign::Unit> units = campaign::campaign_units(described, settings.runs);
   if (!shard) {
     if (args.list) {
       std::vector<size_t> all(units.size());
@@ -211,7 +211,7 @@ int bench(const BenchArgs& args) {
     }
     return run_whole(args, entries, settings, cases, units, logs);
   }
-  const std::vector<size_t> mine = shard_units(units, described, *args.campaign, *shard);
+  const std::vector<size_t> mine = campaign::shard_units(units, described, *args.campaign, *shard);
   if (args.list) return list_units(units, mine);
   return run_shard(args, entries, settings, cases, units, *shard, mine);
 }
@@ -226,12 +226,12 @@ CommandRunner add_bench_command(CLI::App& app) {
       ->required();
   app.add_option("--set", args->settings, "Pass key=value to every script's `params` table (repeatable)")
       ->allow_extra_args(false);
-  app.add_option("--runs", args->runs, "Number of seeds per planner")->check(CLI::Range(1, kMaxRuns))->capture_default_str();
+  app.add_option("--runs", args->runs, "Number of seeds per planner")->check(CLI::Range(1, campaign::kMaxRuns))->capture_default_str();
   app.add_option("--seed", args->seed, "First seed; runs use S, S+1, ... (default: each scenario's)")->check(seed_number());
   app.add_option("--time-limit", args->time_limit, "Planning time limit per run in seconds (default: the scenario's)")
       ->check(number_in(0.0, 1e6));
   app.add_option("--planners", args->planners,
-                 "Planners to measure, interleaved seed by seed (default: knowledge): " + planner_names());
+                 "Planners to measure, interleaved seed by seed (default: knowledge): " + setup::planner_names());
   args->parameters.add_to(app);
   app.add_flag("--compare", args->compare, "Also run the baseline planner on the same seeds, interleaved");
   app.add_option("--improve", args->improve,

@@ -19,15 +19,15 @@ struct MergeArgs {
 };
 
 int merge(const MergeArgs& args) {
-  const MergedCampaign merged = merge_shards({args.dirs.begin(), args.dirs.end()});
+  const campaign::MergedCampaign merged = campaign::merge_shards({args.dirs.begin(), args.dirs.end()});
   // Written into a shard, the merged logs would be read as that shard's by the statistics recipe.
   const std::filesystem::path out =
-      args.out_dir ? checked_output_folder("--out", *args.out_dir, merged.shard_folders) : merged.folder / "merged";
+      args.out_dir ? common::checked_output_folder("--out", *args.out_dir, merged.shard_folders) : merged.folder / "merged";
   std::vector<std::filesystem::path> logs;
-  for (const auto& c : merged.results.cases) logs.push_back(out / (folder_name(c.results.scenario, c.results.settings) + ".log"));
+  for (const auto& c : merged.results.cases) logs.push_back(out / (campaign::folder_name(c.results.scenario, c.results.settings) + ".log"));
   std::ostringstream silenced;
   write_campaign_outputs(merged.results, out, logs, args.quiet ? silenced : std::cout);
-  return kExitOk;
+  return common::kExitOk;
 }
 
 }  // namespace

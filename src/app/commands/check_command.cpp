@@ -24,12 +24,12 @@ namespace {
 std::filesystem::path write_preview(const scenario::World& world, const knowledge::Reasoning& reasoning,
                                     const std::filesystem::path& out_dir) {
   try {
-    OutputFolder folder(out_dir / world.name);
+    common::OutputFolder folder(out_dir / world.name);
     render::render_preview(world, reasoning.initial_state, preview_overlay(world, reasoning), folder.path() / "preview.png");
     folder.commit_entries();
     return folder.final_path() / "preview.png";
   } catch (const std::exception& e) {
-    throw BadInput(std::string("cannot write preview.png: ") + e.what());
+    throw common::BadInput(std::string("cannot write preview.png: ") + e.what());
   }
 }
 
@@ -55,23 +55,23 @@ CommandRunner add_check_command(CLI::App& app) {
     std::optional<std::filesystem::path> preview;
     if (!args->no_preview) preview = write_preview(world, reasoning, args->out_dir);
     // What the planner a run uses would prepare: the knowledge planner's look-ahead.
-    const planning::PlannerEntry& planner = registry().default_planner();
+    const planning::PlannerEntry& planner = setup::registry().default_planner();
     // Not a planning run: no time limit, but Ctrl-C; a preview, whose budgets are the planner's own.
-    const Deadline interruptible(Deadline::Clock::time_point::max(), &stop_flag());
+    const Deadline interruptible(Deadline::Clock::time_point::max(), &common::stop_flag());
     const planning::PlannerAccount prepared = problem.feasible()
                                                   ? account_of(planner, problem.preparation(planner, {interruptible, true}), world)
                                                   : planning::PlannerAccount{};
     if (args->json) {
       nlohmann::ordered_json report = check_report_json(world, reasoning);
-      add_planner_keys(report, registry().report_keys(), prepared.report);
-      std::cout << json_text(report, 2) << "\n";
+      add_planner_keys(report, setup::registry().report_keys(), prepared.report);
+      std::cout << common::json_text(report, 2) << "\n";
     } else {
       print_check_report(std::cout, world, reasoning);
       for (const std::string& line : prepared.lines) std::cout << line << "\n";
       for (const std::string& line : prepared.details) std::cout << line << "\n";
       if (preview) std::cout << "preview    " << preview->string() << "\n";
     }
-    return reasoning.feasible() ? kExitOk : kExitNoPlan;
+    return reasoning.feasible() ? common::kExitOk : common::kExitNoPlan;
   };
 }
 

@@ -78,7 +78,7 @@ void render_execution(const scenario::World& model, const knowledge::Reasoning& 
 }
 
 int execute(const ExecuteArgs& args) {
-  const planning::PlannerEntry& planner = args.planner ? parse_planner(*args.planner) : registry().default_planner();
+  const planning::PlannerEntry& planner = args.planner ? setup::parse_planner(*args.planner) : setup::registry().default_planner();
   const scenario::World world = load_world(args.scenario.path, args.scenario.settings, {args.seed, {}, args.uncertainty, {}, args.view});
   const auto say = [&](const std::string& line) {
     if (!args.quiet) std::cout << line << "\n";
@@ -88,11 +88,11 @@ int execute(const ExecuteArgs& args) {
   run.require_plannable({.propagation_budget = true});
   planning::PlannerOptions options = run.options();
   options.parameters = args.parameters.values();
-  OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
+  common::OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
   const planning::ValidatedPlan solution = run.solve(options);
   if (const auto failure = run.failure(solution, std::nullopt, false)) {
     std::cerr << "physltl-studio: " << failure->line << "; nothing written\n";
-    return kExitNoPlan;
+    return common::kExitNoPlan;
   }
   const planning::Plan& plan = solution.result.plan;
   const planning::Replay& nominal = *solution.replay;
@@ -117,10 +117,10 @@ int execute(const ExecuteArgs& args) {
     render_execution(world, run.problem().reasoning(), formula, nominal, shown != report.worlds.end() ? *shown : report.worlds.front(),
                      out.path(), say);
   }
-  write_json_file(out.path() / "execution.json", execution_json(report));
+  common::write_json_file(out.path() / "execution.json", execution_json(report));
   out.commit_entries();
   say("outputs    " + (out.final_path() / "execution.json").string());
-  return kExitOk;
+  return common::kExitOk;
 }
 
 }  // namespace
@@ -142,7 +142,7 @@ CommandRunner add_execute_command(CLI::App& app) {
   app.add_option("--budget", args->budget, "Propagations each replanning may spend")
       ->check(CLI::Range(1000LL, 100'000'000LL))
       ->capture_default_str();
-  const planning::PlannerRegistry& planners = registry();
+  const planning::PlannerRegistry& planners = setup::registry();
   app.add_option("--planner", args->planner,
                  "The planner that plans and replans, one that takes a budget of propagations: " +
                      planners.names(&planning::Capabilities::propagation_budget) + " (default: " +

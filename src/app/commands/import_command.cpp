@@ -24,7 +24,7 @@ struct ImportArgs {
 // The solution of the one level imported, replayed on its grid before anything is written.
 import::ReferenceSolution replayed_solution(const ImportArgs& args, const std::vector<import::SokobanLevel>& levels) {
   if (levels.size() != 1) {
-    throw BadInput("--solution replays the solution of one level: " + args.file + " has " + std::to_string(levels.size()) +
+    throw common::BadInput("--solution replays the solution of one level: " + args.file + " has " + std::to_string(levels.size()) +
                    " levels, so name one with --level N");
   }
   const std::filesystem::path file(*args.solution);
@@ -34,15 +34,15 @@ import::ReferenceSolution replayed_solution(const ImportArgs& args, const std::v
 }
 
 int run_import(const ImportArgs& args) {
-  if (args.format != "sokoban") throw BadInput("import knows the format 'sokoban', not '" + args.format + "'");
+  if (args.format != "sokoban") throw common::BadInput("import knows the format 'sokoban', not '" + args.format + "'");
   if (args.sizes.box >= args.sizes.cell || 2 * args.sizes.robot_radius >= args.sizes.cell) {
-    throw BadInput("--box and the robot's diameter must be smaller than --cell, or nothing fits through a corridor");
+    throw common::BadInput("--box and the robot's diameter must be smaller than --cell, or nothing fits through a corridor");
   }
   // Every level is read and checked before anything is written: a malformed one stops the import whole.
   std::vector<import::SokobanLevel> levels = import::read_sokoban_levels(args.file);
   if (args.level) {
     if (*args.level > static_cast<int>(levels.size())) {
-      throw BadInput(args.file + " has " + std::to_string(levels.size()) + " levels, not " + std::to_string(*args.level));
+      throw common::BadInput(args.file + " has " + std::to_string(levels.size()) + " levels, not " + std::to_string(*args.level));
     }
     levels = {levels[static_cast<size_t>(*args.level - 1)]};
   }
@@ -60,11 +60,11 @@ int run_import(const ImportArgs& args) {
       continue;
     }
     const std::filesystem::path file = out / (stem + "_" + std::to_string(level.number) + ".lua");
-    write_text_file(file, import::sokoban_scenario(level, std::filesystem::path(args.file).filename().string(), args.sizes, reference));
+    common::write_text_file(file, import::sokoban_scenario(level, std::filesystem::path(args.file).filename().string(), args.sizes, reference));
     const std::size_t boxes = level.boxes.size();
     std::cout << "wrote      " << file.string() << " (" << boxes << (boxes == 1 ? " box" : " boxes") << ")\n";
   }
-  return refused > 0 ? kExitBadInput : kExitOk;
+  return refused > 0 ? common::kExitBadInput : common::kExitOk;
 }
 
 }  // namespace

@@ -38,28 +38,28 @@ CommandRunner add_ltl_command(CLI::App& app) {
       try {
         return ltl::analyse(o->formula, o->invalid);
       } catch (const ltl::ParseError& e) {
-        throw BadInput(std::string("bad formula: ") + e.what() + pointing_at(o->formula, e.column()));
+        throw common::BadInput(std::string("bad formula: ") + e.what() + pointing_at(o->formula, e.column()));
       } catch (const ltl::AutomatonTooLarge& e) {
-        throw BadInput(e.what());
+        throw common::BadInput(e.what());
       }
     }();
     if (o->hoa) {
       if (!analysis.dfa) {
         std::cerr << "physltl-studio: the task is infeasible: " << analysis.infeasibility() << "\n";
-        return kExitNoPlan;
+        return common::kExitNoPlan;
       }
       if (analysis.dfa->acceptance != ltl::Acceptance::kGoodPrefix) {
-        throw BadInput(std::string("--hoa writes co-safe tasks only, whose automaton accepts good prefixes as Spot's "
+        throw common::BadInput(std::string("--hoa writes co-safe tasks only, whose automaton accepts good prefixes as Spot's "
                                    "does; this task is ") +
                        ltl::class_name(analysis.task_class) +
                        ", and its automaton accepts a finite run that stops and stays, which HOA has no "
                        "acceptance condition for (docs/ltl.md)");
       }
       ltl::write_hoa(std::cout, *analysis.dfa);
-      return kExitOk;
+      return common::kExitOk;
     }
     ltl::write_summary(std::cout, analysis);
-    return analysis.feasible() ? kExitOk : kExitNoPlan;
+    return analysis.feasible() ? common::kExitOk : common::kExitNoPlan;
   };
 }
 

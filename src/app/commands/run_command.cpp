@@ -73,11 +73,11 @@ class ProgressLine {
 };
 
 const planning::PlannerEntry& chosen_planner(const RunArgs& args) {
-  const planning::PlannerRegistry& planners = registry();
+  const planning::PlannerRegistry& planners = setup::registry();
   if (args.baseline && args.planner && *args.planner != planners.reference_planner().name) {
-    throw BadInput("--baseline and --planner " + *args.planner + " name two planners");
+    throw common::BadInput("--baseline and --planner " + *args.planner + " name two planners");
   }
-  return args.baseline ? planners.reference_planner() : args.planner ? parse_planner(*args.planner) : planners.default_planner();
+  return args.baseline ? planners.reference_planner() : args.planner ? setup::parse_planner(*args.planner) : planners.default_planner();
 }
 
 using Say = std::function<void(const std::string&)>;
@@ -120,7 +120,7 @@ void say_solution(const planning::ValidatedPlan& solution, const scenario::World
 }
 
 // --render: tree.png, the frames and plan.mp4.
-void render_plan(const PlanningRun& run, const planning::ValidatedPlan& solution, const OutputFolder& out,
+void render_plan(const PlanningRun& run, const planning::ValidatedPlan& solution, const common::OutputFolder& out,
                  ProgressLine& progress, const Say& say) {
   const planning::PlanningProblem& problem = run.problem();
   const scenario::World& world = problem.world();
@@ -146,7 +146,7 @@ void render_plan(const PlanningRun& run, const planning::ValidatedPlan& solution
 
 // The validated plan's files: report.json and plan.json, with --robustness its share of perturbed worlds.
 void write_plan_files(const PlanningRun& run, const planning::ValidatedPlan& solution, const RunArgs& args,
-                      const OutputFolder& out, const Say& say) {
+                      const common::OutputFolder& out, const Say& say) {
   const scenario::World& world = run.problem().world();
   std::optional<execution::Robustness> robustness;
   if (args.robustness > 0) {
@@ -163,15 +163,15 @@ void write_plan_files(const PlanningRun& run, const planning::ValidatedPlan& sol
   summary.robustness = robustness ? &*robustness : nullptr;
   summary.uncertainty = &world.uncertainty;
   const auto started = std::chrono::steady_clock::now();
-  write_json_file(out.path() / "plan.json", plan_json(summary));
+  common::write_json_file(out.path() / "plan.json", plan_json(summary));
   RunCosts costs{.parts = {.prepare_s = run.problem().preparation_s(run.planner()),
                            .search_s = solution.result.stats.planning_time_s,
                            .replay_s = solution.replay_s,
                            .improve_s = solution.improvement ? solution.improvement->time_s : 0.0,
                            .write_plan_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()},
-                 .peak_memory_mb = peak_memory_mb()};
+                 .peak_memory_mb = common::peak_memory_mb()};
   summary.costs = &costs;
-  write_json_file(out.path() / "report.json", report_json(summary));
+  common::write_json_file(out.path() / "report.json", report_json(summary));
 }
 
 int run(const RunArgs& args) {
@@ -188,7 +188,7 @@ int run(const RunArgs& args) {
   options.parameters = args.parameters.values();
   // Made before planning so that an unwritable --out fails at once, not after minutes of search; it is
   // removed again unless the run succeeds.
-  OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
+  common::OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
   say_task(run, say);
 
   ProgressLine progress(args.quiet);
@@ -202,19 +202,19 @@ int run(const RunArgs& args) {
   say(fmt::format("search     {}: {:.2f} s, {} nodes, {} propagations, {} physics steps{}", planning::to_string(solution.result.stop_reason),
                   stats.planning_time_s, stats.tree_nodes, stats.propagations, stats.physics_steps,
                   args.threads > 1 && planner.can.threads ? fmt::format(" ({} threads)", args.threads) : ""));
-  if (stop_received()) throw Interrupted();
+  if (common::stop_received()) throw common::Interrupted();
   if (const auto failure = run.failure(solution, out.final_path() / "failed", args.render)) {
     if (failure->diagnosed) say("outputs    " + (out.final_path() / "failed").string() + "/");
     std::cerr << "physltl-studio: " << failure->line << (solution.result.solved ? "; nothing written" : "") << "\n";
-    return kExitNoPlan;
+    return common::kExitNoPlan;
   }
   say_solution(solution, world, say);
   write_plan_files(run, solution, args, out, say);
   if (args.render) render_plan(run, solution, out, progress, say);
-  if (stop_received()) throw Interrupted();
+  if (common::stop_received()) throw common::Interrupted();
   out.commit();
   say("outputs    " + out.final_path().string() + "/");
-  return kExitOk;
+  return common::kExitOk;
 }
 
 }  // namespace
@@ -228,7 +228,7 @@ CommandRunner add_run_command(CLI::App& app) {
   app.add_option("--time-limit", args->time_limit, "Planning time limit in seconds (default: the scenario's)")
       ->check(number_in(0.0, 1e6));
   app.add_option("--out", args->out_dir, "Folder for outputs; each scenario writes <out>/<name>/")->capture_default_str();
-  app.add_option("--planner", args->planner, "Planner: " + planner_names() + " (default: " + registry().default_planner().name + ")");
+  app.add_option("--planner", args->planner, "Planner: " + setup::planner_names() + " (default: " + setup::registry().default_planner().name + ")");
   args->parameters.add_to(app);
   app.add_flag("--baseline", args->baseline, "Same as --planner baseline: the paper's simple physics-based LTL planner");
   app.add_flag("--quiet", args->quiet, "Print only errors");

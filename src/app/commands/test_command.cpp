@@ -39,7 +39,7 @@ void refuse_shared_goldens(const std::vector<TestEntry>& entries, const TestSett
   for (const TestEntry& e : entries) {
     const auto [it, fresh] = first_of.emplace(std::filesystem::weakly_canonical(goldens_folder(e, settings)), e.label);
     if (!fresh) {
-      throw BadInput("'" + e.label + "' and '" + it->second + "' would share the goldens folder " +
+      throw common::BadInput("'" + e.label + "' and '" + it->second + "' would share the goldens folder " +
                      goldens_folder(e, settings).string());
     }
   }
@@ -52,30 +52,30 @@ int run_tests(const TestArgs& args) {
   if (args.goldens) settings.goldens_dir = *args.goldens;
   settings.out_dir = std::filesystem::path(args.out_dir) / "test";
   settings.update = args.update;
-  settings.stop = &stop_flag();
+  settings.stop = &common::stop_flag();
   refuse_shared_goldens(entries, settings);
   // A goldens folder under a regular file can be neither read nor written (--update): said once, up front.
   for (const TestEntry& entry : entries) {
-    checked_output_folder(args.goldens ? "--goldens" : "goldens folder", goldens_folder(entry, settings).string(), {});
+    common::checked_output_folder(args.goldens ? "--goldens" : "goldens folder", goldens_folder(entry, settings).string(), {});
   }
   const std::filesystem::path times = settings.out_dir / "times.json";
   std::optional<std::filesystem::path> junit;
   if (args.junit) {
     std::vector<std::filesystem::path> inputs{times};
     for (const TestEntry& entry : entries) inputs.push_back(entry.file);
-    junit = checked_output_file("--junit", *args.junit, inputs);
+    junit = common::checked_output_file("--junit", *args.junit, inputs);
   }
   // Every scenario is loaded before any is run: a bad one (an unknown expectation key) stops the command
   // with its file:line before anything is planned or written.
   std::vector<scenario::World> worlds;
-  for (const TestEntry& entry : entries) worlds.push_back(load_with_settings(entry.file.string(), entry.settings));
+  for (const TestEntry& entry : entries) worlds.push_back(setup::load_with_settings(entry.file.string(), entry.settings));
 
   std::vector<ScenarioResult> results(entries.size());
   const std::vector<std::size_t> order = longest_first(entries, worlds, times);
   std::atomic<std::size_t> next{0};
   std::mutex print;
   const auto work = [&] {
-    for (std::size_t n = next++; n < entries.size() && !stop_received(); n = next++) {
+    for (std::size_t n = next++; n < entries.size() && !common::stop_received(); n = next++) {
       const std::size_t i = order[n];
       results[i] = test_scenario(entries[i], worlds[i], settings);
       const std::lock_guard<std::mutex> lock(print);
@@ -87,9 +87,9 @@ int run_tests(const TestArgs& args) {
   for (int j = 1; j < std::min<int>(args.jobs, static_cast<int>(entries.size())); ++j) workers.emplace_back(work);
   work();
   for (std::thread& w : workers) w.join();
-  if (stop_received()) {
+  if (common::stop_received()) {
     std::cerr << "physltl-studio: interrupted; no summary or JUnit file written\n";
-    return kExitInterrupted;
+    return common::kExitInterrupted;
   }
   record_times(results, times);
   print_summary(std::cout, results, std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
@@ -98,9 +98,9 @@ int run_tests(const TestArgs& args) {
     std::cout << "junit      " << junit->string() << "\n";
   }
   for (const ScenarioResult& r : results) {
-    if (!r.passed()) return kExitNoPlan;
+    if (!r.passed()) return common::kExitNoPlan;
   }
-  return kExitOk;
+  return common::kExitOk;
 }
 
 }  // namespace

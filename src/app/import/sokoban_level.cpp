@@ -39,7 +39,7 @@ std::string shown(char c) {
 }
 
 [[noreturn]] void refuse(const std::filesystem::path& file, int line, const std::string& message) {
-  throw BadInput(file.string() + ":" + std::to_string(line) + ": " + message);
+  throw common::BadInput(file.string() + ":" + std::to_string(line) + ": " + message);
 }
 
 // The player must be walled in: a flood over the floor from the player never leaves the rows.
@@ -98,7 +98,7 @@ int SokobanLevel::width() const {
 }
 
 std::vector<SokobanLevel> read_sokoban_levels(const std::filesystem::path& file) {
-  std::string text = read_input_file(file, kMaxFileBytes);
+  std::string text = common::read_input_file(file, kMaxFileBytes);
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // a UTF-8 byte-order mark
   std::istringstream in(text);
   std::vector<SokobanLevel> levels;
@@ -146,7 +146,7 @@ std::vector<SokobanLevel> read_sokoban_levels(const std::filesystem::path& file)
     current.rows.push_back(line);
   }
   close();
-  if (levels.empty()) throw BadInput(file.string() + ": no Sokoban level in it (rows start with #)");
+  if (levels.empty()) throw common::BadInput(file.string() + ": no Sokoban level in it (rows start with #)");
   return levels;
 }
 

@@ -44,12 +44,12 @@ class SolutionReader {
       } else if (kMoves.find(c) != std::string_view::npos) {
         append(std::string(1, c), take_count());
       } else {
-        refuse(fmt::format("'{}' is no move (u d l r, capitals for pushes, counts and parentheses)", printable(std::string(1, c))));
+        refuse(fmt::format("'{}' is no move (u d l r, capitals for pushes, counts and parentheses)", common::printable(std::string(1, c))));
       }
     }
     if (count_) refuse("a count with no move after it");
     if (stack_.size() > 1) refuse(fmt::format("the '(' of line {} is never closed", stack_.back().line));
-    if (stack_.back().moves.empty()) throw BadInput(file_.string() + ": no moves in it");
+    if (stack_.back().moves.empty()) throw common::BadInput(file_.string() + ": no moves in it");
     return std::move(stack_.back().moves);
   }
 
@@ -79,7 +79,7 @@ class SolutionReader {
   }
 
   [[noreturn]] void refuse(const std::string& message) const {
-    throw BadInput(file_.string() + ":" + std::to_string(line_) + ": " + message);
+    throw common::BadInput(file_.string() + ":" + std::to_string(line_) + ": " + message);
   }
 
   std::filesystem::path file_;
@@ -130,7 +130,7 @@ class BoxGrid {
 }  // namespace
 
 std::string read_sokoban_solution(const std::filesystem::path& file) {
-  return SolutionReader(file).read(read_input_file(file, kMaxSolutionFileBytes));
+  return SolutionReader(file).read(common::read_input_file(file, kMaxSolutionFileBytes));
 }
 
 SolutionReplay replay_solution(const SokobanLevel& level, const std::string& moves, const std::string& source) {
@@ -140,7 +140,7 @@ SolutionReplay replay_solution(const SokobanLevel& level, const std::string& mov
   for (const char move : moves) {
     ++replay.moves;
     const auto refuse = [&](const std::string& what) {
-      throw BadInput(fmt::format("{}: move {} ('{}') of level {} {}", source, replay.moves, move, level.number, what));
+      throw common::BadInput(fmt::format("{}: move {} ('{}') of level {} {}", source, replay.moves, move, level.number, what));
     };
     const Step s = step_of(move);
     const Cell next{player.row + s.drow, player.column + s.dcolumn};
@@ -158,7 +158,7 @@ SolutionReplay replay_solution(const SokobanLevel& level, const std::string& mov
   int off_goal = 0;
   for (const Cell& goal : level.goals) off_goal += grid.at(goal) == 'B' ? 0 : 1;
   if (off_goal > 0) {
-    throw BadInput(fmt::format("{}: the solution of level {} ends with {} of its {} goals without a box", source,
+    throw common::BadInput(fmt::format("{}: the solution of level {} ends with {} of its {} goals without a box", source,
                                level.number, off_goal, level.goals.size()));
   }
   return replay;

@@ -15,18 +15,18 @@
 namespace physltl::app {
 
 scenario::World load_world(const std::string& path, const std::vector<std::string>& settings, const WorldOverrides& overrides) {
-  scenario::World world = load_with_settings(path, settings);
+  scenario::World world = setup::load_with_settings(path, settings);
   if (overrides.seed) world.planner.seed = *overrides.seed;
   if (overrides.time_limit) world.planner.time_limit = *overrides.time_limit;
-  if (overrides.uncertainty) world.uncertainty = override_uncertainty(world.uncertainty, *overrides.uncertainty);
-  if (overrides.cost) world.planner.cost = cost_from_flag(*overrides.cost);
+  if (overrides.uncertainty) world.uncertainty = setup::override_uncertainty(world.uncertainty, *overrides.uncertainty);
+  if (overrides.cost) world.planner.cost = setup::cost_from_flag(*overrides.cost);
   if (overrides.view) world.render.view = *overrides.view;
   if (overrides.improve_margin) world.planner.improve_margin = *overrides.improve_margin;
   return world;
 }
 
 PlanningRun::PlanningRun(const scenario::World& world, const planning::PlannerEntry& planner)
-    : deadline_(Deadline::in(world.planner.time_limit, &stop_flag())), problem_(world), planner_(planner) {}
+    : deadline_(Deadline::in(world.planner.time_limit, &common::stop_flag())), problem_(world), planner_(planner) {}
 
 planning::PlannerOptions PlanningRun::options() const {
   planning::PlannerOptions options = planning::options_for(problem_.world());
@@ -35,8 +35,8 @@ planning::PlannerOptions PlanningRun::options() const {
 }
 
 void PlanningRun::require_plannable(planning::Needs needs) const {
-  if (!problem_.feasible()) throw InfeasibleTask(problem_.reasoning().task.infeasibility());
-  if (const auto why = registry().refusal(planner_, problem_.search_task(planner_), needs)) throw BadInput(*why);
+  if (!problem_.feasible()) throw common::InfeasibleTask(problem_.reasoning().task.infeasibility());
+  if (const auto why = setup::registry().refusal(planner_, problem_.search_task(planner_), needs)) throw common::BadInput(*why);
 }
 
 std::optional<PlanningRun::Failure> PlanningRun::failure(const planning::ValidatedPlan& solution,

@@ -16,7 +16,7 @@ namespace {
 // Whole or not at all: a golden interrupted half-way would fail every later run.
 void write_text(const std::filesystem::path& file, const std::string& text) {
   std::filesystem::create_directories(file.parent_path());
-  write_text_file(file, text);
+  common::write_text_file(file, text);
 }
 
 void write_picture(const render::Image& image, const std::filesystem::path& file) {
@@ -65,14 +65,14 @@ std::string golden_plan_text(nlohmann::ordered_json plan) {
   std::string text = "{\n";
   bool first = true;
   for (const auto& [key, value] : golden.items()) {
-    text += (first ? "" : ",\n") + json_text(nlohmann::ordered_json(key)) + ": ";
+    text += (first ? "" : ",\n") + common::json_text(nlohmann::ordered_json(key)) + ": ";
     first = false;
     if (!value.is_array() || value.empty()) {
-      text += json_text(value);
+      text += common::json_text(value);
       continue;
     }
     text += "[\n";
-    for (std::size_t i = 0; i < value.size(); ++i) text += "  " + json_text(value[i]) + (i + 1 < value.size() ? ",\n" : "\n");
+    for (std::size_t i = 0; i < value.size(); ++i) text += "  " + common::json_text(value[i]) + (i + 1 < value.size() ? ",\n" : "\n");
     text += "]";
   }
   return text + "\n}\n";
@@ -147,7 +147,7 @@ CaseResult Goldens::plan(nlohmann::ordered_json plan) {
   const bool exists = std::filesystem::exists(golden);
   if (!exists && !update_) return missing(file_name);
   if (exists) {
-    const std::string expected_text = read_input_file(golden, kMaxGoldenBytes);
+    const std::string expected_text = common::read_input_file(golden, kMaxGoldenBytes);
     if (expected_text == text) return {file_name, Outcome::kPassed, ""};
     if (!update_) {
       const std::filesystem::path actual_path = actual_folder_ / "plan.actual.json";

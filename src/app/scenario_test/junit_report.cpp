@@ -27,7 +27,7 @@ void write_junit(const std::vector<ScenarioResult>& results, const std::filesyst
   double time_s = 0.0;
   for (const ScenarioResult& scenario : results) {
     pugi::xml_node suite = suites.append_child("testsuite");
-    suite.append_attribute("name") = printable(scenario.label).c_str();
+    suite.append_attribute("name") = common::printable(scenario.label).c_str();
     suite.append_attribute("tests") = static_cast<int>(scenario.cases.size());
     suite.append_attribute("failures") = scenario.count(Outcome::kFailed);
     suite.append_attribute("errors") = 0;
@@ -35,17 +35,17 @@ void write_junit(const std::vector<ScenarioResult>& results, const std::filesyst
     suite.append_attribute("time") = seconds(scenario.time_s).c_str();
     for (const CaseResult& c : scenario.cases) {
       pugi::xml_node test = suite.append_child("testcase");
-      test.append_attribute("name") = printable(c.name).c_str();
-      test.append_attribute("classname") = printable(scenario.label).c_str();
+      test.append_attribute("name") = common::printable(c.name).c_str();
+      test.append_attribute("classname") = common::printable(scenario.label).c_str();
       test.append_attribute("time") = seconds(c.time_s).c_str();
       if (c.outcome == Outcome::kFailed) {
         pugi::xml_node failure = test.append_child("failure");
-        failure.append_attribute("message") = printable(c.message).c_str();
-        failure.append_child(pugi::node_pcdata).set_value(printable(c.message).c_str());
+        failure.append_attribute("message") = common::printable(c.message).c_str();
+        failure.append_child(pugi::node_pcdata).set_value(common::printable(c.message).c_str());
       } else if (c.outcome == Outcome::kSkipped) {
-        test.append_child("skipped").append_attribute("message") = printable(c.message).c_str();
+        test.append_child("skipped").append_attribute("message") = common::printable(c.message).c_str();
       } else if (c.outcome == Outcome::kUpdated) {
-        test.append_child("system-out").append_child(pugi::node_pcdata).set_value(printable(c.message).c_str());
+        test.append_child("system-out").append_child(pugi::node_pcdata).set_value(common::printable(c.message).c_str());
       }
     }
     tests += static_cast<int>(scenario.cases.size());
@@ -62,7 +62,7 @@ void write_junit(const std::vector<ScenarioResult>& results, const std::filesyst
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
   std::ostringstream xml;
   doc.save(xml, "  ", pugi::format_default, pugi::encoding_utf8);
-  write_text_file(file, xml.str());
+  common::write_text_file(file, xml.str());
 }
 
 }  // namespace physltl::app::scenario_test

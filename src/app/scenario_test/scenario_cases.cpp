@@ -205,7 +205,7 @@ ScenarioResult test_scenario(const TestEntry& entry, const scenario::World& worl
 
   std::optional<PlanningRun> run;
   cases.push_back(timed("check", [&] {
-    run.emplace(world, registry().default_planner());
+    run.emplace(world, setup::registry().default_planner());
     return check_case(run->problem().reasoning(), e);
   }));
   if (!run) {

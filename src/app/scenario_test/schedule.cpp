@@ -15,9 +15,9 @@ namespace {
 nlohmann::json read_times(const std::filesystem::path& file) {
   if (!std::filesystem::exists(file)) return nlohmann::json::object();
   try {
-    const nlohmann::json times = nlohmann::json::parse(read_input_file(file, std::size_t{16} << 20), nullptr, false);
+    const nlohmann::json times = nlohmann::json::parse(common::read_input_file(file, std::size_t{16} << 20), nullptr, false);
     return times.is_object() ? times : nlohmann::json::object();
-  } catch (const BadInput&) {
+  } catch (const common::BadInput&) {
     return nlohmann::json::object();
   }
 }
@@ -47,7 +47,7 @@ void record_times(const std::vector<ScenarioResult>& results, const std::filesys
   nlohmann::json all = read_times(times);
   for (const ScenarioResult& r : results) all[r.label] = r.time_s;
   std::filesystem::create_directories(times.parent_path());
-  write_json_file(times, all);
+  common::write_json_file(times, all);
 }
 
 }  // namespace physltl::app::scenario_test

@@ -30,15 +30,15 @@ TestEntry parse_entry(const std::string& text) {
     sep = text.find("::", start);
     const std::string setting = text.substr(start, sep == std::string::npos ? std::string::npos : sep - start);
     if (setting.find('=') == std::string::npos || setting.front() == '=') {
-      throw BadInput("'" + text + "': expected FILE::key=value::..., got the setting '" + setting + "'");
+      throw common::BadInput("'" + text + "': expected FILE::key=value::..., got the setting '" + setting + "'");
     }
     entry.settings.push_back(setting);
     entry.golden_name += "." + folder_safe(setting);
   }
   std::error_code error;
-  if (!std::filesystem::exists(entry.file, error)) throw BadInput(entry.file.string() + ": no such file");
+  if (!std::filesystem::exists(entry.file, error)) throw common::BadInput(entry.file.string() + ": no such file");
   if (entry.file.extension() != ".lua" || !std::filesystem::is_regular_file(entry.file, error)) {
-    throw BadInput("'" + entry.file.string() + "' is not a scenario file (.lua)");
+    throw common::BadInput("'" + entry.file.string() + "' is not a scenario file (.lua)");
   }
   entry.output_name = entry.golden_name;
   return entry;
@@ -66,7 +66,7 @@ std::vector<TestEntry> expand_test_paths(const std::vector<std::string>& paths) 
       for (const auto& item : std::filesystem::directory_iterator(path)) {
         if (item.is_regular_file() && item.path().extension() == ".lua") files.push_back(item.path());
       }
-      if (files.empty()) throw BadInput("'" + path + "' holds no scenario file (.lua)");
+      if (files.empty()) throw common::BadInput("'" + path + "' holds no scenario file (.lua)");
       std::sort(files.begin(), files.end());
       for (const auto& file : files) entries.push_back(parse_entry(file.string()));
     } else {

@@ -18,7 +18,7 @@ namespace physltl::app {
 namespace {
 
 // The SQL type ompl_benchmark_statistics gives the swept value's column.
-std::string property_type(const CampaignResults& campaign, size_t entry) {
+std::string property_type(const campaign::CampaignResults& campaign, size_t entry) {
   bool integers = true, numbers = true;
   for (const auto& c : campaign.cases) {
     if (c.entry != entry) continue;
@@ -43,7 +43,7 @@ class PendingLogs {
   }
 
   void commit() {
-    for (const auto& [file, text] : logs_) write_text_file(file, text);
+    for (const auto& [file, text] : logs_) common::write_text_file(file, text);
     logs_.clear();
   }
 
@@ -53,11 +53,11 @@ class PendingLogs {
 
 }  // namespace
 
-OmplExperiment case_experiment(const CampaignResults& campaign, size_t case_index) {
-  const CaseResults& c = campaign.cases[case_index];
-  const EntryResults& entry = campaign.entries[c.entry];
+OmplExperiment case_experiment(const campaign::CampaignResults& campaign, size_t case_index) {
+  const campaign::CaseResults& c = campaign.cases[case_index];
+  const campaign::EntryResults& entry = campaign.entries[c.entry];
   OmplExperiment experiment = ompl_experiment(c.results, campaign.host, campaign.cpu_info);
-  experiment.name = folder_name(c.results.scenario, entry.settings);
+  experiment.name = campaign::folder_name(c.results.scenario, entry.settings);
   if (entry.sweep_key) {
     // ompl_benchmark_statistics names the column after the property; a key that is one of its own
     // columns gets a prefix.
@@ -76,34 +76,34 @@ void write_ompl_log_file(const std::filesystem::path& file, const OmplExperiment
   log.commit();
 }
 
-std::vector<std::string> write_campaign_outputs(const CampaignResults& campaign, const std::filesystem::path& out_dir,
+std::vector<std::string> write_campaign_outputs(const campaign::CampaignResults& campaign, const std::filesystem::path& out_dir,
                                                 const std::vector<std::filesystem::path>& logs, std::ostream& text) {
   // Every folder and log is written before any is committed. The folders come first: they create
   // out_dir, where a log may go.
   std::vector<std::string> written;
-  std::vector<std::unique_ptr<OutputFolder>> folders;
+  std::vector<std::unique_ptr<common::OutputFolder>> folders;
   for (const auto& c : campaign.cases) {
     text << bench_table(c.results);
     auto& out = folders.emplace_back(
-        std::make_unique<OutputFolder>(out_dir / folder_name(c.results.scenario, c.results.settings)));
-    write_json_file(out->path() / "bench.json", bench_json(c.results));
+        std::make_unique<common::OutputFolder>(out_dir / campaign::folder_name(c.results.scenario, c.results.settings)));
+    common::write_json_file(out->path() / "bench.json", bench_json(c.results));
     render::write_png(bench_chart(c.results), out->path() / "bench.png");
     written.push_back(out->final_path().string() + "/bench.json");
     written.push_back(out->final_path().string() + "/bench.png");
   }
   for (size_t e = 0; e < campaign.entries.size(); ++e) {
-    const EntryResults& entry = campaign.entries[e];
+    const campaign::EntryResults& entry = campaign.entries[e];
     if (!entry.sweep_key) continue;
-    Sweep sweep{*entry.sweep_key, entry.settings, {}};
+    campaign::Sweep sweep{*entry.sweep_key, entry.settings, {}};
     for (const auto& c : campaign.cases) {
       if (c.entry == e) sweep.points.push_back({c.swept_value, c.results});
     }
     text << sweep_table(sweep);
     std::vector<std::string> folder_settings = entry.settings;
     folder_settings.push_back("sweep=" + sweep.key);
-    auto& out = folders.emplace_back(std::make_unique<OutputFolder>(
-        out_dir / folder_name(sweep.points.front().results.scenario, folder_settings)));
-    write_json_file(out->path() / "sweep.json", sweep_json(sweep));
+    auto& out = folders.emplace_back(std::make_unique<common::OutputFolder>(
+        out_dir / campaign::folder_name(sweep.points.front().results.scenario, folder_settings)));
+    common::write_json_file(out->path() / "sweep.json", sweep_json(sweep));
     render::write_png(sweep_chart(sweep), out->path() / "sweep.png");
     written.push_back(out->final_path().string() + "/sweep.json");
     written.push_back(out->final_path().string() + "/sweep.png");
@@ -119,17 +119,17 @@ std::vector<std::string> write_campaign_outputs(const CampaignResults& campaign,
   return written;
 }
 
-void write_shard_logs(const std::filesystem::path& shard_folder, const CampaignResults& results) {
+void write_shard_logs(const std::filesystem::path& shard_folder, const campaign::CampaignResults& results) {
   for (size_t c = 0; c < results.cases.size(); ++c) {
-    CampaignResults one = results;
-    BenchResults& r = one.cases[c].results;
-    std::erase_if(r.planners, [](const PlannerRuns& p) { return p.runs.empty(); });
+    campaign::CampaignResults one = results;
+    campaign::BenchResults& r = one.cases[c].results;
+    std::erase_if(r.planners, [](const campaign::PlannerRuns& p) { return p.runs.empty(); });
     if (r.planners.empty()) continue;
     unsigned most = 0;
     for (const auto& p : r.planners) most = std::max(most, static_cast<unsigned>(p.runs.size()));
     OmplExperiment experiment = case_experiment(one, c);
     experiment.run_count = most;  // a shard holds a share of each planner's runs
-    write_ompl_log_file(shard_folder / (folder_name(r.scenario, r.settings) + ".log"), experiment);
+    write_ompl_log_file(shard_folder / (campaign::folder_name(r.scenario, r.settings) + ".log"), experiment);
   }
 }
 

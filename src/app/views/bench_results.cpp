@@ -20,11 +20,11 @@ std::string threads_text(const std::vector<int>& threads) {
   return fmt::format("{} thread{}", fmt::join(threads, ", "), threads.size() == 1 && threads[0] == 1 ? "" : "s");
 }
 
-std::string seeds_text(const BenchResults& r) {
+std::string seeds_text(const campaign::BenchResults& r) {
   return fmt::format("seeds {}..{}", r.first_seed, r.first_seed + static_cast<std::uint64_t>(r.runs) - 1);
 }
 
-std::map<std::string, std::string> ompl_run(const BenchRun& run, double counted_time_s) {
+std::map<std::string, std::string> ompl_run(const campaign::BenchRun& run, double counted_time_s) {
   const OmplStatus status = run.solved                     ? OmplStatus::kExactSolution
                             : planning::stop_reason_from(run.stop_reason) == planning::StopReason::kTimeLimit ? OmplStatus::kTimeout
                                                               : OmplStatus::kAbort;
@@ -52,7 +52,7 @@ std::map<std::string, std::string> ompl_run(const BenchRun& run, double counted_
 
 }  // namespace
 
-std::string bench_table(const BenchResults& r) {
+std::string bench_table(const campaign::BenchResults& r) {
   std::string text = fmt::format("{}: {} runs ({}), time limit {:g} s, {}\n", r.scenario, r.runs, seeds_text(r),
                                  r.time_limit_s, threads_text(r.threads));
   // With --robustness, a last column: the mean share of perturbed worlds a solved run's plan succeeds in.
@@ -61,12 +61,12 @@ std::string bench_table(const BenchResults& r) {
                       "median_s", "mean_s", "p90_s", "max_s", "nodes", "prop/s", "pushes", "moved", "duration_s", "path_m",
                       robust ? fmt::format(" {:>7}", "robust") : "");
   for (const auto& p : r.planners) {
-    const PlannerSummary s = summarize(p, r.time_limit_s);
+    const campaign::PlannerSummary s = campaign::summarize(p, r.time_limit_s);
     const std::string robustness = !robust                ? ""
                                    : s.robustness_mean ? fmt::format(" {:>7.2f}", *s.robustness_mean)
                                                        : fmt::format(" {:>7}", "-");
     text += fmt::format("{:<12} {:>7} {:>9.3f} {:>8.3f} {:>8.3f} {:>8.3f} {:>7.0f} {:>8.0f} {:>7.1f} {:>6.1f} {:>10.2f} {:>7.2f}{}\n",
-                        planner_label(r, p), fmt::format("{}/{}", s.solved, p.runs.size()), s.median_s,
+                        campaign::planner_label(r, p), fmt::format("{}/{}", s.solved, p.runs.size()), s.median_s,
                         s.mean_s, s.p90_s, s.max_s, s.tree_nodes_median, s.propagations_per_s, s.pushes_median,
                         s.bodies_moved_median, s.solution_duration_median_s, s.path_length_median_m, robustness);
   }
@@ -75,21 +75,21 @@ std::string bench_table(const BenchResults& r) {
     text += fmt::format("robust: the mean share, over solved runs, of {} perturbed worlds in which the plan succeeds open loop\n",
                         r.robustness);
   }
-  if (const auto ratio = ratio_of_medians(r)) {
+  if (const auto ratio = campaign::ratio_of_medians(r)) {
     text += fmt::format("ratio of medians (baseline / knowledge): {:.2f}\n", *ratio);
   }
-  for (const auto& [threads, ratio] : threads_ratios(r)) {
+  for (const auto& [threads, ratio] : campaign::threads_ratios(r)) {
     text += fmt::format("ratio of medians (knowledge x{} / knowledge x{}): {:.2f}\n", threads, r.threads[0], ratio);
   }
   if (r.improve > 0) {
     for (const auto& p : r.planners) {
-      const PlannerSummary s = summarize(p, r.time_limit_s);
-      if (std::any_of(p.runs.begin(), p.runs.end(), [](const BenchRun& run) { return run.improved_itself; })) {
-        text += fmt::format("{}: improves its own plan until its time limit (none of ours after)\n", planner_label(r, p));
+      const campaign::PlannerSummary s = campaign::summarize(p, r.time_limit_s);
+      if (std::any_of(p.runs.begin(), p.runs.end(), [](const campaign::BenchRun& run) { return run.improved_itself; })) {
+        text += fmt::format("{}: improves its own plan until its time limit (none of ours after)\n", campaign::planner_label(r, p));
         continue;
       }
       text += fmt::format("{}: improving ({} candidates) took a median {:.3f} s: duration {:.2f} -> {:.2f} s, pushes {:.1f} -> {:.1f}\n",
-                          planner_label(r, p), r.improve, s.improve_median_s, s.first_duration_median_s,
+                          campaign::planner_label(r, p), r.improve, s.improve_median_s, s.first_duration_median_s,
                           s.solution_duration_median_s, s.first_pushes_median, s.pushes_median);
     }
   }
@@ -100,10 +100,10 @@ std::string bench_table(const BenchResults& r) {
               ? fmt::format("shortest push-free path (every box in the way): {:.2f} m\n", r.shortest_push_free_path_m)
               : std::string("shortest push-free path: none (the task needs a push)\n");
   for (const auto& p : r.planners) {
-    const PlannerSummary s = summarize(p, r.time_limit_s);
+    const campaign::PlannerSummary s = campaign::summarize(p, r.time_limit_s);
     if (s.solved == 0) continue;
     const std::optional<double> bound = std::isfinite(r.cost_bound) ? std::optional(r.cost_bound) : std::nullopt;
-    text += fmt::format("{}: cost {} (median over solved runs)\n", planner_label(r, p), plan_cost_text(r.cost, {s.cost_median, bound}));
+    text += fmt::format("{}: cost {} (median over solved runs)\n", campaign::planner_label(r, p), plan_cost_text(r.cost, {s.cost_median, bound}));
   }
   text += fmt::format("prepared once for every run (decomposition, route choice): {:.3f} s\n", r.preparation_s);
   text += "times (of the first validated plan) count unsolved runs at the time limit; pushes, moved (bodies), duration and path are medians over solved runs\n";
@@ -113,7 +113,7 @@ std::string bench_table(const BenchResults& r) {
 namespace {
 
 // How the planner was configured (the first run's settings but its seed): empty for ours.
-std::map<std::string, std::string> planner_settings(const PlannerRuns& p) {
+std::map<std::string, std::string> planner_settings(const campaign::PlannerRuns& p) {
   std::map<std::string, std::string> settings;
   if (p.runs.empty()) return settings;
   for (const auto& [key, value] : p.runs.front().settings) {
@@ -124,7 +124,7 @@ std::map<std::string, std::string> planner_settings(const PlannerRuns& p) {
 
 }  // namespace
 
-json own_process_json(const std::optional<OwnProcessRun>& run) {
+json own_process_json(const std::optional<campaign::OwnProcessRun>& run) {
   if (!run) return nullptr;
   if (!run->solved) return {{"solved", false}, {"peak_memory_mb", nullptr}, {"parts_s", nullptr}};
   return {{"solved", true}, {"peak_memory_mb", run->peak_memory_mb}, {"parts_s", part_times_json(run->parts)}};
@@ -133,7 +133,7 @@ json own_process_json(const std::optional<OwnProcessRun>& run) {
 namespace {
 
 // One run of bench.json's "per_run": what every run has, and what a solved one found.
-json run_json(const BenchRun& run) {
+json run_json(const campaign::BenchRun& run) {
   json entry = {{"seed", run.seed},
                 {"cell_skips_refused", run.cell_skips_refused},
                 {"solved", run.solved},
@@ -167,10 +167,10 @@ json run_json(const BenchRun& run) {
 
 }  // namespace
 
-json bench_json(const BenchResults& r) {
+json bench_json(const campaign::BenchResults& r) {
   json planners = json::array();
   for (const auto& p : r.planners) {
-    const PlannerSummary s = summarize(p, r.time_limit_s);
+    const campaign::PlannerSummary s = campaign::summarize(p, r.time_limit_s);
     json runs = json::array();
     for (const auto& run : p.runs) runs.push_back(run_json(run));
     planners.push_back({{"name", p.planner->name},
@@ -196,9 +196,9 @@ json bench_json(const BenchResults& r) {
                         {"own_process", own_process_json(p.own_process)},
                         {"per_run", std::move(runs)}});
   }
-  const auto ratio = ratio_of_medians(r);
+  const auto ratio = campaign::ratio_of_medians(r);
   json ratios = json::array();
-  for (const auto& [threads, value] : threads_ratios(r)) ratios.push_back({{"threads", threads}, {"ratio", value}});
+  for (const auto& [threads, value] : campaign::threads_ratios(r)) ratios.push_back({{"threads", threads}, {"ratio", value}});
   return {{"scenario", r.scenario},
           {"scenario_file", r.scenario_file},
           {"settings", r.settings},
@@ -221,7 +221,7 @@ json bench_json(const BenchResults& r) {
           {"threads_ratios", std::move(ratios)}};
 }
 
-OmplExperiment ompl_experiment(const BenchResults& r, const std::string& host, const std::string& cpu_info) {
+OmplExperiment ompl_experiment(const campaign::BenchResults& r, const std::string& host, const std::string& cpu_info) {
   OmplExperiment e;
   e.name = r.scenario;
   e.host = host;
@@ -242,18 +242,18 @@ OmplExperiment ompl_experiment(const BenchResults& r, const std::string& host, c
     if (r.threads.size() > 1) planner.name += fmt::format("_{}threads", p.threads);
     planner.common = {{"planner", p.planner->name}, {"threads", std::to_string(p.threads)}};
     planner.common.merge(planner_settings(p));
-    const PlannerSummary s = summarize(p, r.time_limit_s);
+    const campaign::PlannerSummary s = campaign::summarize(p, r.time_limit_s);
     for (size_t i = 0; i < p.runs.size(); ++i) planner.runs.push_back(ompl_run(p.runs[i], s.times_s[i]));
     e.planners.push_back(std::move(planner));
   }
   return e;
 }
 
-render::Image bench_chart(const BenchResults& r) {
+render::Image bench_chart(const campaign::BenchResults& r) {
   std::vector<render::TimeSeries> series;
   for (const auto& p : r.planners) {
-    const PlannerSummary s = summarize(p, r.time_limit_s);
-    series.push_back({planner_label(r, p), s.times_s, s.solved});
+    const campaign::PlannerSummary s = campaign::summarize(p, r.time_limit_s);
+    series.push_back({campaign::planner_label(r, p), s.times_s, s.solved});
   }
   const std::string title = fmt::format("{}: time to the first validated plan, seeds {}..{}", r.scenario, r.first_seed,
                                         r.first_seed + static_cast<std::uint64_t>(r.runs) - 1);
@@ -261,7 +261,7 @@ render::Image bench_chart(const BenchResults& r) {
   // With --improve, below it each planner's best cost over time (runs whose plan it improved).
   std::vector<render::CostCurves> curves;
   for (const auto& p : r.planners) {
-    render::CostCurves planner{planner_label(r, p), {}};
+    render::CostCurves planner{campaign::planner_label(r, p), {}};
     for (const auto& run : p.runs) {
       if (run.solved && !run.cost_progress.empty()) planner.runs.push_back(run.cost_progress);
     }

@@ -25,7 +25,7 @@ Medians medians(const ExecutionReport& report) {
     extra.push_back(motion_s(report, w) - report.nominal_motion_s);
     planning.push_back(w.run.planning_s);
   }
-  return {statistics::median(replans), statistics::median(extra), statistics::median(planning)};
+  return {common::statistics::median(replans), common::statistics::median(extra), common::statistics::median(planning)};
 }
 
 int count(const ExecutionReport& report, bool open_loop) {

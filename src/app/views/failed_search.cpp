@@ -18,8 +18,8 @@ bool search_was_cut_short(const planning::PlanResult& result) {
 
 void write_failed_search(const RunSummary& run, const decomposition::Decomposition& decomposition,
                          const std::filesystem::path& folder, bool render) {
-  OutputFolder out(folder);
-  write_json_file(out.path() / "report.json", failed_report_json(run));
+  common::OutputFolder out(folder);
+  common::write_json_file(out.path() / "report.json", failed_report_json(run));
   if (render) {
     const PlannedMoves moves = planned_moves(account_of(run.planner, run.result.own.get(), run.world));
     write_tree_picture(run.world, run.reasoning, decomposition, run.result, nullptr, moves, out.path() / "tree.png");
@@ -29,7 +29,7 @@ void write_failed_search(const RunSummary& run, const decomposition::Decompositi
 
 json failed_report_json(const RunSummary& run) {
   json report = report_json(run);
-  add_planner_keys(report, registry().diagnosis_keys(), account_of(run.planner, run.result.own.get(), run.world).diagnosis);
+  add_planner_keys(report, setup::registry().diagnosis_keys(), account_of(run.planner, run.result.own.get(), run.world).diagnosis);
   return report;
 }
 

@@ -185,7 +185,7 @@ PlanFrames write_plan_frames(const scenario::World& world, const knowledge::Reas
   render::FrameWriter writer(folder);
   render::VideoEncoder encoder(video, world.render.width, world.render.height, world.render.fps);
   for (int f = 0; f < frames; ++f) {
-    if (stop_received()) throw Interrupted();
+    if (common::stop_received()) throw common::Interrupted();
     const auto frame = std::make_shared<const render::Image>(animation.draw(static_cast<double>(f) / world.render.fps));
     encoder.add(frame);
     writer.add(frame);

@@ -20,7 +20,7 @@ json point(const scenario::Vec2& p) { return {p.x(), p.y()}; }
 
 }  // namespace
 
-json part_times_json(const PartTimes& parts) {
+json part_times_json(const campaign::PartTimes& parts) {
   return {{"prepare", parts.prepare_s}, {"search", parts.search_s}, {"replay", parts.replay_s}, {"improve", parts.improve_s},
           {"write_plan", parts.write_plan_s}};
 }
@@ -53,9 +53,9 @@ json report_json(const RunSummary& run) {
       {"propagations", r.stats.propagations},
       {"physics_steps", r.stats.physics_steps},
       {"invalid_steps", r.stats.invalid_steps},
-      {"refused", refusals_json(refusal_counts(registry(), run.planner, r.stats.refused))},
+      {"refused", refusals_json(setup::refusal_counts(setup::registry(), run.planner, r.stats.refused))},
   };
-  add_planner_keys(report, registry().report_keys(), account_of(run.planner, r.own.get(), run.world).report);
+  add_planner_keys(report, setup::registry().report_keys(), account_of(run.planner, r.own.get(), run.world).report);
   if (run.costs != nullptr) {
     report["times_s"] = part_times_json(run.costs->parts);
     report["peak_memory_mb"] = run.costs->peak_memory_mb;

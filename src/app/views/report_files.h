@@ -20,7 +20,7 @@ namespace physltl::app {
 
 // What each part of a run took (s) and the process's peak memory (MB) by the time report.json is written.
 struct RunCosts {
-  PartTimes parts;
+  campaign::PartTimes parts;
   double peak_memory_mb = 0.0;
 };
 
@@ -50,7 +50,7 @@ struct RunSummary {
 
 nlohmann::ordered_json report_json(const RunSummary& run);
 // report.json's "times_s": {"prepare", "search", "replay", "improve", "write_plan"}.
-nlohmann::ordered_json part_times_json(const PartTimes& parts);
+nlohmann::ordered_json part_times_json(const campaign::PartTimes& parts);
 // plan.json (docs/outputs.md), format kPlanFormat: the bodies' poses at the start, then per state only
 // those that changed. Needs a replay.
 inline constexpr int kPlanFormat = 2;

@@ -26,7 +26,7 @@ std::optional<double> number(const std::string& text) {
 }
 
 // The swept values as numbers, when every one is.
-std::optional<std::vector<double>> numeric_values(const Sweep& sweep) {
+std::optional<std::vector<double>> numeric_values(const campaign::Sweep& sweep) {
   std::vector<double> values;
   for (const auto& point : sweep.points) {
     const auto value = number(point.value);
@@ -38,15 +38,15 @@ std::optional<std::vector<double>> numeric_values(const Sweep& sweep) {
 
 // What the sweep shows for one planner configuration at one value.
 struct Row {
-  PlannerSummary summary;
+  campaign::PlannerSummary summary;
   double propagations_median = 0.0;
   double microseconds_per_propagation = 0.0;
 };
 
-Row row(const BenchResults& results, size_t planner) {
-  const PlannerRuns& runs = results.planners[planner];
+Row row(const campaign::BenchResults& results, size_t planner) {
+  const campaign::PlannerRuns& runs = results.planners[planner];
   Row r;
-  r.summary = summarize(runs, results.time_limit_s);
+  r.summary = campaign::summarize(runs, results.time_limit_s);
   std::vector<double> propagations;
   double wall = 0.0, total = 0.0;
   for (const auto& run : runs.runs) {
@@ -54,7 +54,7 @@ Row row(const BenchResults& results, size_t planner) {
     wall += run.wall_s;
     total += static_cast<double>(run.propagations);
   }
-  r.propagations_median = statistics::median(propagations);
+  r.propagations_median = common::statistics::median(propagations);
   r.microseconds_per_propagation = total > 0.0 ? 1e6 * wall / total : 0.0;
   return r;
 }
@@ -63,25 +63,25 @@ Row row(const BenchResults& results, size_t planner) {
 // least-squares line through the medians.
 struct PlannerSweep {
   std::vector<Row> rows;
-  std::optional<statistics::LineFit> line;
+  std::optional<common::statistics::LineFit> line;
 };
 
-PlannerSweep planner_sweep(const Sweep& sweep, size_t planner) {
+PlannerSweep planner_sweep(const campaign::Sweep& sweep, size_t planner) {
   PlannerSweep result;
   std::vector<double> medians;
   for (const auto& point : sweep.points) {
     result.rows.push_back(row(point.results, planner));
     medians.push_back(result.rows.back().summary.median_s);
   }
-  if (const auto xs = numeric_values(sweep)) result.line = statistics::fit_line(*xs, medians);
+  if (const auto xs = numeric_values(sweep)) result.line = common::statistics::fit_line(*xs, medians);
   return result;
 }
 
 }  // namespace
 
-std::string sweep_table(const Sweep& sweep) {
+std::string sweep_table(const campaign::Sweep& sweep) {
   if (sweep.points.empty()) return "";
-  const BenchResults& first = sweep.points.front().results;
+  const campaign::BenchResults& first = sweep.points.front().results;
   std::vector<std::string> values;
   for (const auto& point : sweep.points) values.push_back(point.value);
   std::string text = fmt::format("{} over {} = {} (seeds {}..{} for each, interleaved)\n", first.scenario, sweep.key,
@@ -89,14 +89,14 @@ std::string sweep_table(const Sweep& sweep) {
                                  first.first_seed + static_cast<std::uint64_t>(first.runs) - 1);
   for (size_t p = 0; p < first.planners.size(); ++p) {
     const PlannerSweep planner = planner_sweep(sweep, p);
-    text += fmt::format("{:<12} {:>8} {:>7} {:>9} {:>7} {:>13} {:>8} {:>8}\n", planner_label(first, first.planners[p]),
+    text += fmt::format("{:<12} {:>8} {:>7} {:>9} {:>7} {:>13} {:>8} {:>8}\n", campaign::planner_label(first, first.planners[p]),
                         sweep.key, "solved", "median_s", "growth", "propagations", "us/prop", "peak_MB");
     double previous = 0.0;
     for (size_t i = 0; i < sweep.points.size(); ++i) {
-      const SweepPoint& point = sweep.points[i];
+      const campaign::SweepPoint& point = sweep.points[i];
       const Row& r = planner.rows[i];
       const std::string growth = previous > 0.0 ? fmt::format("{:.2f}", r.summary.median_s / previous) : "-";
-      const std::optional<OwnProcessRun>& own = point.results.planners[p].own_process;
+      const std::optional<campaign::OwnProcessRun>& own = point.results.planners[p].own_process;
       const std::string peak = own && own->solved ? fmt::format("{:.0f}", own->peak_memory_mb) : "-";
       text += fmt::format("{:<12} {:>8} {:>7} {:>9.3f} {:>7} {:>13.0f} {:>8.1f} {:>8}\n", "", point.value,
                           fmt::format("{}/{}", r.summary.solved, point.results.planners[p].runs.size()),
@@ -114,10 +114,10 @@ std::string sweep_table(const Sweep& sweep) {
   return text;
 }
 
-json sweep_json(const Sweep& sweep) {
+json sweep_json(const campaign::Sweep& sweep) {
   json planners = json::array();
   if (sweep.points.empty()) return {{"key", sweep.key}, {"planners", planners}};
-  const BenchResults& first = sweep.points.front().results;
+  const campaign::BenchResults& first = sweep.points.front().results;
   for (size_t p = 0; p < first.planners.size(); ++p) {
     const PlannerSweep planner = planner_sweep(sweep, p);
     json rows = json::array();
@@ -150,14 +150,14 @@ json sweep_json(const Sweep& sweep) {
           {"planners", std::move(planners)}};
 }
 
-render::Image sweep_chart(const Sweep& sweep) {
-  const BenchResults& first = sweep.points.front().results;
+render::Image sweep_chart(const campaign::Sweep& sweep) {
+  const campaign::BenchResults& first = sweep.points.front().results;
   std::vector<render::SweepLine> lines;
   for (size_t p = 0; p < first.planners.size(); ++p) {
-    render::SweepLine line{planner_label(first, first.planners[p]), {}, {}};
+    render::SweepLine line{campaign::planner_label(first, first.planners[p]), {}, {}};
     for (const auto& point : sweep.points) {
-      const PlannerRuns& runs = point.results.planners[p];
-      line.medians_s.push_back(summarize(runs, point.results.time_limit_s).median_s);
+      const campaign::PlannerRuns& runs = point.results.planners[p];
+      line.medians_s.push_back(campaign::summarize(runs, point.results.time_limit_s).median_s);
       line.peak_memory_mb.push_back(runs.own_process && runs.own_process->solved ? runs.own_process->peak_memory_mb : 0.0);
     }
     lines.push_back(std::move(line));

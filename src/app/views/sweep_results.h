@@ -11,9 +11,9 @@
 
 namespace physltl::app {
 
-std::string sweep_table(const Sweep& sweep);
-nlohmann::ordered_json sweep_json(const Sweep& sweep);
+std::string sweep_table(const campaign::Sweep& sweep);
+nlohmann::ordered_json sweep_json(const campaign::Sweep& sweep);
 // sweep.png: each planner's median time against the swept value.
-render::Image sweep_chart(const Sweep& sweep);
+render::Image sweep_chart(const campaign::Sweep& sweep);
 
 }  // namespace physltl::app
