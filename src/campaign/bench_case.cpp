@@ -36,11 +36,8 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   std::vector<std::string> settings_of_case = entry.settings;
   if (entry.sweep) settings_of_case.push_back(entry.sweep->key + "=" + value);
   c->world = setup::load_with_settings(entry.path, settings_of_case);
-  if (settings.time_limit) c->world.planner.time_limit = *settings.time_limit;
-  if (settings.uncertainty) c->world.uncertainty = setup::override_uncertainty(c->world.uncertainty, *settings.uncertainty);
-  if (settings.cost) c->world.planner.cost = setup::cost_from_flag(*settings.cost);
-  if (settings.improve_margin) c->world.planner.improve_margin = *settings.improve_margin;
-  c->problem = std::make_unique<planning::PlanningProblem>(c->world);
+  c->settings = setup::run_settings(c->world, settings.flags);
+  c->problem = std::make_unique<planning::PlanningProblem>(c->world, c->settings.time_limit_s);
   if (!c->problem->feasible()) {
     throw common::InfeasibleTask(fmt::format("{}{}: {}", entry.path, entry.sweep ? " with " + entry.sweep->key + "=" + value : "",
                                      c->problem->reasoning().task.infeasibility()));
@@ -49,21 +46,21 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   results.scenario = c->world.name;
   results.scenario_file = c->world.source_file;
   results.settings = settings_of_case;
-  results.first_seed = settings.seed.value_or(c->world.planner.seed);
+  results.first_seed = c->settings.seed;
   results.runs = settings.runs;
-  results.time_limit_s = c->world.planner.time_limit;
+  results.time_limit_s = c->settings.time_limit_s;
   results.threads = settings.threads;
-  results.improve = settings.improve;
+  results.improve = c->settings.improvement.candidates;
   results.robustness = settings.robustness;
-  results.parameter_notes = setup::parameter_notes(settings.parameters);
+  results.parameter_notes = setup::parameter_notes(settings.flags.parameters);
   results.started_at = local_time_now();
   // Before any unit and outside their time limits; Ctrl-C stops it.
   const Deadline interruptible(Deadline::Clock::time_point::max(), &common::stop_flag());
   results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->problem->as_written(), interruptible);
   results.shortest_push_free_path_m =
       planning::shortest_push_free_path_length(c->world, c->problem->as_written(), interruptible);
-  results.cost = c->world.planner.cost;
-  results.improve_margin = c->world.planner.improve_margin;
+  results.cost = c->settings.improvement.cost;
+  results.improve_margin = c->settings.improvement.margin_m;
   results.cost_bound = planning::plan_cost_bound(results.cost, c->world.robot.max_speed, results.shortest_free_path_m,
                                                  results.shortest_push_free_path_m);
   for (const auto planner : settings.planners) {
@@ -90,7 +87,9 @@ std::vector<std::unique_ptr<BenchCase>> load_cases(const std::vector<ScenarioEnt
     for (const auto& value : entries[e].sweep ? entries[e].sweep->values : no_sweep) {
       cases.push_back(load_case(entries[e], e, value, settings));
     }
-    for (size_t c = first; c < cases.size(); ++c) cases[c]->results.first_seed = cases[first]->results.first_seed;
+    for (size_t c = first; c < cases.size(); ++c) {
+      cases[c]->settings.seed = cases[c]->results.first_seed = cases[first]->results.first_seed;
+    }
   }
   for (size_t c = 0; c < cases.size(); ++c) {
     for (size_t d = 0; d < c; ++d) {
@@ -121,11 +120,11 @@ void run_sweeps_in_own_processes(const std::vector<ScenarioEntry>& entries, cons
                                              .settings = c->results.settings,
                                              .planner = runs.planner->name,
                                              .seed = c->results.first_seed,
-                                             .time_limit_s = c->world.planner.time_limit + c->results.preparation_s,
+                                             .time_limit_s = c->settings.time_limit_s + c->results.preparation_s,
                                              .threads = runs.threads,
-                                             .improve = settings.improve,
-                                             .parameters = settings.parameters,
-                                             .uncertainty = settings.uncertainty});
+                                             .improve = c->settings.improvement.candidates,
+                                             .parameters = settings.flags.parameters,
+                                             .uncertainty = settings.flags.uncertainty});
     }
   }
 }
@@ -150,9 +149,9 @@ CampaignResults collect_results(const std::vector<ScenarioEntry>& entries,
 }
 
 BenchRun measure(const planning::PlanningProblem& problem, const planning::PlannerEntry& planner,
-                 const planning::PlannerOptions& options, int robustness_worlds) {
+                 const setup::RunSettings& settings, const planning::PlannerOptions& options, int robustness_worlds) {
   const auto started = std::chrono::steady_clock::now();
-  const planning::ValidatedPlan solution = planning::solve(problem, planner, options);
+  const planning::ValidatedPlan solution = planning::solve(problem, planner, options, settings.improvement);
   BenchRun run;
   run.improve_s = solution.improvement ? solution.improvement->time_s : 0.0;
   run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() - run.improve_s;
@@ -174,18 +173,17 @@ BenchRun measure(const planning::PlanningProblem& problem, const planning::Plann
     run.solution_duration_s = result.plan.total_steps() * problem.world().planner.step_size;
     const planning::PlanMeasures measures = planning::measure(problem.world(), result.plan, *solution.replay);
     run.path_length_m = measures.path_length_m;
-    run.cost = planning::cost_of(problem.world().planner.cost, measures);
+    run.cost = planning::cost_of(settings.improvement.cost, measures);
     if (solution.improvement) run.cost_progress = solution.improvement->progress;
     run.improved_itself = result.improved_itself;
     // A planner that improved itself reports its best plan's motion time, which is the cost when the cost
     // is the motion's time alone.
-    if (result.improved_itself && problem.world().planner.cost == scenario::PlanCost{}) run.cost_progress = result.motion_progress;
+    if (result.improved_itself && settings.improvement.cost == scenario::PlanCost{}) run.cost_progress = result.motion_progress;
     run.first_pushes = solution.improvement ? solution.improvement->first.pushes : run.pushes;
     run.first_duration_s = solution.improvement ? solution.improvement->first.duration_s : run.solution_duration_s;
     if (robustness_worlds > 0) {
-      const scenario::World& world = problem.world();
       const execution::Robustness robustness = execution::measure_robustness(
-          world, world.uncertainty, robustness_worlds, options.seed, result.plan, *solution.replay, problem.as_written(),
+          problem.world(), settings.uncertainty, robustness_worlds, options.seed, result.plan, *solution.replay, problem.as_written(),
           Deadline(Deadline::Clock::time_point::max(), options.deadline.stop()));  // timed apart from the run: Ctrl-C only
       run.robust_worlds = robustness.worlds;
       run.robust_succeeded = robustness.succeeded;

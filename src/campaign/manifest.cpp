@@ -82,15 +82,16 @@ json campaign_manifest(const std::string& name, int shard_count, const std::vect
   }
   json unit_keys = json::array();
   for (const auto& unit : units) unit_keys.push_back(unit.key);
+  const setup::RunFlags& flags = settings.flags;
   json campaign_settings = {{"planners", std::move(planners)},
                             {"threads", settings.threads},
                             {"runs", settings.runs},
-                            {"seed", settings.seed ? json(*settings.seed) : json(nullptr)},
-                            {"time_limit_s", optional_number(settings.time_limit)},
-                            {"improve", settings.improve},
+                            {"seed", flags.seed ? json(*flags.seed) : json(nullptr)},
+                            {"time_limit_s", optional_number(flags.time_limit_s)},
+                            {"improve", flags.improve.value_or(0)},
                             {"robustness", settings.robustness},
-                            {"uncertainty", settings.uncertainty ? json(*settings.uncertainty) : json(nullptr)}};
-  for (const auto& [parameter, value] : settings.parameters) campaign_settings[setup::manifest_key(parameter)] = value;
+                            {"uncertainty", flags.uncertainty ? json(*flags.uncertainty) : json(nullptr)}};
+  for (const auto& [parameter, value] : flags.parameters) campaign_settings[setup::manifest_key(parameter)] = value;
   return {{"name", name},
           {"version", common::build_version()},
           {"shards", shard_count},

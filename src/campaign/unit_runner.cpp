@@ -34,14 +34,11 @@ bool run_units(const std::vector<std::unique_ptr<BenchCase>>& cases, const std::
                                                  progress.total, unit.key, left).substr(0, 79));
     }
     const auto unit_started = clock::now();
-    planning::PlannerOptions options = planning::options_for(c.world);
-    options.seed = unit.seed;
     // Each unit's deadline starts with it: the case was prepared before any unit, outside their time.
-    options.deadline = Deadline::in(c.world.planner.time_limit, &stop);
+    planning::PlannerOptions options = c.settings.planner_options(Deadline::in(c.settings.time_limit_s, &stop));
+    options.seed = unit.seed;
     options.threads = planner.threads;
-    options.improve = settings.improve;
-    options.parameters = settings.parameters;
-    BenchRun run = measure(*c.problem, *planner.planner, options, settings.robustness);
+    BenchRun run = measure(*c.problem, *planner.planner, c.settings, options, settings.robustness);
     if (stop) {
       if (progress.show) fmt::print(stderr, "\n");
       return false;

@@ -24,7 +24,6 @@ Replanned replan(const scenario::World& from_here, const planning::PlannerEntry&
   budgeted.deadline = Deadline::in(3600.0, options.deadline.stop());
   budgeted.max_propagations = budget;
   budgeted.threads = 1;
-  budgeted.improve = 0;
   const planning::ValidatedPlan solution = planning::solve(problem, planner, budgeted);
   out.propagations = solution.result.stats.propagations;
   out.planning_s = solution.result.stats.planning_time_s;

@@ -55,11 +55,4 @@ bool cut_short(StopReason reason) {
 
 std::ostream& operator<<(std::ostream& out, StopReason reason) { return out << to_string(reason); }
 
-PlannerOptions options_for(const scenario::World& world) {
-  PlannerOptions options;
-  options.seed = world.planner.seed;
-  options.deadline = Deadline::in(world.planner.time_limit);
-  return options;
-}
-
 }  // namespace physltl::planning

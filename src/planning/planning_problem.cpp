@@ -9,8 +9,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-PlanningProblem::PlanningProblem(const scenario::World& world, std::chrono::steady_clock::time_point started)
+PlanningProblem::PlanningProblem(const scenario::World& world, double time_limit_s, std::chrono::steady_clock::time_point started)
     : world_(world),
+      time_limit_s_(time_limit_s),
       reasoning_(knowledge::reason_about(world)),
       prepared_(prepare(world, reasoning_)),
       preparation_s_(seconds_since(started)) {}
@@ -59,10 +60,11 @@ double PlanningProblem::preparation_s() const {
 }
 
 Problem PlanningProblem::for_planner(const PlannerEntry& planner) const {
-  return {world_, search_task(planner), as_written(), reasoning_.knowledge, decomposition()};
+  return {world_, search_task(planner), as_written(), reasoning_.knowledge, decomposition(), time_limit_s_};
 }
 
-ValidatedPlan solve(const PlanningProblem& problem, const PlannerEntry& planner, const PlannerOptions& options) {
+ValidatedPlan solve(const PlanningProblem& problem, const PlannerEntry& planner, const PlannerOptions& options,
+                    const ImprovementSettings& improvement) {
   const PlannerData* prepared = nullptr;
   try {
     prepared = problem.preparation(planner, {options.deadline});
@@ -72,7 +74,7 @@ ValidatedPlan solve(const PlanningProblem& problem, const PlannerEntry& planner,
     cut.result.stop_reason = reached.interrupted() ? StopReason::kInterrupted : StopReason::kTimeLimit;
     return cut;
   }
-  return plan_and_validate(problem.for_planner(planner), planner, prepared, options);
+  return plan_and_validate(problem.for_planner(planner), planner, prepared, options, improvement);
 }
 
 }  // namespace physltl::planning

@@ -38,7 +38,7 @@ class FixedPlan : public testing::Test {
     planning::PlannerOptions options;
     options.seed = 3;
     result_ = new planning::PlanResult(planners::registry().default_planner().plan(
-        planning::Problem{*world_, task, *as_written_, reasoning_->knowledge, *decomposition_}, nullptr, options));
+        planning::Problem{*world_, task, *as_written_, reasoning_->knowledge, *decomposition_, world_->planner.time_limit}, nullptr, options));
     replay_ = new planning::Replay(planning::replay(*world_, result_->plan, *as_written_, reasoning_->knowledge));
   }
 
@@ -118,7 +118,7 @@ TEST_F(FixedPlan, PlannedMovesAreShownAsThePlanCarriesThemOut) {
   ASSERT_GT((end - start).norm(), 0.3);  // ordered.lua's plan pushes B1 off p1
   PlannedMoves moves;
   moves.moves = {{start, end, (end - start).normalized(), 0}, {end, end + geometry::Vec2(5, 0), geometry::Vec2::UnitX(), 0}};
-  PlanAnimation animation(*world_, *reasoning_, *replay_, static_cast<int>(as_written_->dfa.size()), {}, "", &moves);
+  PlanAnimation animation(*world_, *reasoning_, *replay_, static_cast<int>(as_written_->dfa.size()), {.planned = &moves});
   const auto legend_line = [&](double time) {
     animation.draw(time);
     const auto& legend = animation.words().legend;
@@ -131,7 +131,7 @@ TEST_F(FixedPlan, PlannedMovesAreShownAsThePlanCarriesThemOut) {
   EXPECT_EQ(legend_line(animation.duration_s()), "look-ahead: 1 of 2 pushes carried out as planned (grey)");
   EXPECT_EQ(legend_line(0.0), "look-ahead: push 1 of 2 under way (red), done grey");  // drawn back in time
   moves.moves.pop_back();
-  PlanAnimation carried(*world_, *reasoning_, *replay_, static_cast<int>(as_written_->dfa.size()), {}, "", &moves);
+  PlanAnimation carried(*world_, *reasoning_, *replay_, static_cast<int>(as_written_->dfa.size()), {.planned = &moves});
   carried.draw(carried.duration_s());
   EXPECT_NE(std::find(carried.words().legend.begin(), carried.words().legend.end(), "look-ahead: 1 of 1 push carried out (grey)"),
             carried.words().legend.end());

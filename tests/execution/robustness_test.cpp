@@ -147,14 +147,13 @@ TEST(ImprovementMargin, MakesImprovedPlansSucceedInMorePerturbedWorlds) {
   u.friction = 0.1;
   u.start = 0.02;
   const auto succeeded = [&](double margin) {
-    p.world.planner.improve_margin = margin;
     int worlds = 0;
     for (std::uint64_t seed : {1, 2, 3}) {
       PlannerOptions options;
       options.seed = seed;
       options.deadline = Deadline::in(20);
-      options.improve = 1000;
-      const ValidatedPlan improved = plan_and_validate(p.problem(), planner_named("knowledge"), p.preparation("knowledge"), options);
+      const ValidatedPlan improved = plan_and_validate(p.problem(), planner_named("knowledge"), p.preparation("knowledge"), options,
+                                                       {.candidates = 1000, .margin_m = margin});
       EXPECT_TRUE(improved.solved());
       if (!improved.solved()) continue;
       worlds += measure_robustness(p.world, u, 20, seed, improved.result.plan, *improved.replay, p.original).succeeded;

@@ -129,7 +129,6 @@ TEST(PlanCostBound, NoValidatedPlanCostsLessAndImprovementNeverRaisesTheCost) {
   for (const std::string& name : worlds) {
     TestProblem p(name);
     for (const scenario::PlanCost& cost : costs) {
-      p.world.planner.cost = cost;
       const double bound = plan_cost_bound(p.world, p.original, cost);
       ASSERT_TRUE(std::isfinite(bound)) << name << ", " << cost.text();
       for (std::uint64_t seed : {1, 2}) {
@@ -138,7 +137,7 @@ TEST(PlanCostBound, NoValidatedPlanCostsLessAndImprovementNeverRaisesTheCost) {
         ASSERT_TRUE(result.solved);
         Replay replay = p.check(result.plan);
         ASSERT_TRUE(replay.validated());
-        const Improvement improvement = improve(p.problem(), knowledge::ValidityMode::kKnowledge, seed, 30, result.plan, replay);
+        const Improvement improvement = improve(p.problem(), knowledge::ValidityMode::kKnowledge, seed, {.candidates = 30, .cost = cost}, result.plan, replay);
         EXPECT_LE(bound, cost_of(cost, improvement.improved) + 1e-9);
         EXPECT_LE(cost_of(cost, improvement.improved), cost_of(cost, improvement.first));
         EXPECT_DOUBLE_EQ(cost_of(cost, measure(p.world, result.plan, replay)), cost_of(cost, improvement.improved));
@@ -175,7 +174,7 @@ TEST(PlanCostBound, NoImprovedPlanOfAnyShippedOrFamilyWorldIsFasterOverTwentySee
       if (!result.solved) continue;  // the bound speaks of plans; a search the test's time limit cut has none
       Replay replay = p.check(result.plan);
       ASSERT_TRUE(replay.validated()) << replay.failure;
-      const Improvement improvement = improve(p.problem(), knowledge::ValidityMode::kKnowledge, seed, 100, result.plan, replay);
+      const Improvement improvement = improve(p.problem(), knowledge::ValidityMode::kKnowledge, seed, {.candidates = 100, .cost = p.world.planner.cost}, result.plan, replay);
       EXPECT_LE(bound, cost_of(p.world.planner.cost, improvement.improved) + 1e-9);
     }
   }

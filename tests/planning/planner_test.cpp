@@ -284,12 +284,11 @@ TEST(Planner, TheOnlyWayThroughABoxAndAWayRoundFiveTimesLongerArePushedThrough) 
   }
 }
 
-ValidatedPlan solve_and_improve(const TestProblem& p, std::uint64_t seed, int improve) {
+ValidatedPlan solve_and_improve(const TestProblem& p, std::uint64_t seed, const ImprovementSettings& improvement) {
   PlannerOptions options;
   options.seed = seed;
   options.deadline = Deadline::in(20);
-  options.improve = improve;
-  return plan_and_validate(p.problem(), planner_named("knowledge"), p.preparation("knowledge"), options);
+  return plan_and_validate(p.problem(), planner_named("knowledge"), p.preparation("knowledge"), options, improvement);
 }
 
 void expect_same_plan(const Plan& a, const Plan& b) {
@@ -303,7 +302,7 @@ void expect_same_plan(const Plan& a, const Plan& b) {
 
 TEST(Improve, NoBudgetKeepsTheFirstValidatedPlanAsItWas) {
   const TestProblem p("ordered.lua");
-  const ValidatedPlan kept = solve_and_improve(p, 4, 0);
+  const ValidatedPlan kept = solve_and_improve(p, 4, {});
   ASSERT_TRUE(kept.solved());
   EXPECT_FALSE(kept.improvement);
   expect_same_plan(kept.result.plan, p.solve(4).plan);
@@ -313,7 +312,7 @@ TEST(Improve, TheImprovedPlanValidatesIsNeverWorseAndFollowsFromTheSeed) {
   const TestProblem p("rooms.lua");
   bool shortened = false;
   for (std::uint64_t seed : {1, 2, 3}) {
-    const ValidatedPlan improved = solve_and_improve(p, seed, 60);
+    const ValidatedPlan improved = solve_and_improve(p, seed, {.candidates = 60});
     ASSERT_TRUE(improved.solved()) << improved.result.stop_reason;
     ASSERT_TRUE(improved.improvement);
     const Improvement& m = *improved.improvement;
@@ -327,7 +326,7 @@ TEST(Improve, TheImprovedPlanValidatesIsNeverWorseAndFollowsFromTheSeed) {
     const Replay again = p.check(improved.result.plan);
     EXPECT_TRUE(again.validated()) << again.failure;
     EXPECT_NEAR(improved.result.plan.total_steps() * p.world.planner.step_size, m.improved.duration_s, 1e-9);
-    expect_same_plan(improved.result.plan, solve_and_improve(p, seed, 60).result.plan);
+    expect_same_plan(improved.result.plan, solve_and_improve(p, seed, {.candidates = 60}).result.plan);
   }
   EXPECT_TRUE(shortened);  // the budget found something on the paper's scenario A
 }
@@ -360,11 +359,11 @@ HandPlan needless_push_plan(const TestProblem& p) {
 
 TEST(Improve, CostPushesRemovesANeedlessPush) {
   TestProblem p("../tests/planning/data/wall_and_box.lua");
-  p.world.planner.cost = scenario::parse_plan_cost("pushes");
   auto [plan, replayed] = needless_push_plan(p);
   ASSERT_TRUE(replayed.validated()) << replayed.failure;
   ASSERT_GE(replayed.pushes, 1);
-  const Improvement m = improve(p.problem(), knowledge::ValidityMode::kKnowledge, 1, 200, plan, replayed);
+  const Improvement m = improve(p.problem(), knowledge::ValidityMode::kKnowledge, 1,
+                                {.candidates = 200, .cost = scenario::parse_plan_cost("pushes")}, plan, replayed);
   EXPECT_GE(m.first.pushes, 1);
   EXPECT_EQ(m.improved.pushes, 0);
   const Replay again = p.check(plan);
@@ -378,7 +377,7 @@ TEST(Improve, AShortcutThatFailsReplayIsNotKept) {
   ASSERT_TRUE(replayed.validated()) << replayed.failure;
   // The straightest shortcut, start to goal, runs into the wall: replay refuses it.
   EXPECT_FALSE(p.check(driven_along(p.world, {{1.0, 1.0}, {6.5, 1.0}})).validated());
-  const Improvement m = improve(p.problem(), knowledge::ValidityMode::kKnowledge, 1, 200, plan, replayed);
+  const Improvement m = improve(p.problem(), knowledge::ValidityMode::kKnowledge, 1, {.candidates = 200}, plan, replayed);
   EXPECT_LT(m.improved.duration_s, m.first.duration_s);
   // Shorter, yet never shorter than the way round the wall's end: no candidate that went through was kept.
   const double round_the_wall = plan_cost_bound(p.world, p.original, p.world.planner.cost);
@@ -399,8 +398,7 @@ MarginKept improve_with_margin(const std::string& scenario, double margin, std::
   TestProblem p(scenario);
   MarginKept result;
   for (std::uint64_t seed : {1, 2, 3}) {
-    p.world.planner.improve_margin = 0.0;
-    const ValidatedPlan first = solve_and_improve(p, seed, 0);
+    const ValidatedPlan first = solve_and_improve(p, seed, {});
     EXPECT_TRUE(first.solved());
     if (!first.solved()) continue;
     const std::vector<double> first_depths = visit_depths(p.world, p.check(first.result.plan), p.original.labelling);
@@ -413,9 +411,8 @@ MarginKept improve_with_margin(const std::string& scenario, double margin, std::
       }
       return any;
     };
-    result.clipped_without |= shallower(solve_and_improve(p, seed, 300).result.plan);
-    p.world.planner.improve_margin = margin;
-    const ValidatedPlan kept = solve_and_improve(p, seed, 300);
+    result.clipped_without |= shallower(solve_and_improve(p, seed, {.candidates = 300}).result.plan);
+    const ValidatedPlan kept = solve_and_improve(p, seed, {.candidates = 300, .margin_m = margin});
     EXPECT_TRUE(kept.improvement && kept.improvement->improved.duration_s < kept.improvement->first.duration_s) << seed;
     result.kept &= !shallower(kept.result.plan);
   }
@@ -454,16 +451,16 @@ TEST(Deadline, AReplayCutShortValidatesNothingAndSaysWhy) {
 
 TEST(Deadline, AnImprovementCutShortKeepsTheValidatedPlanItHadAndSaysSo) {
   const TestProblem p("rooms.lua");
-  const ValidatedPlan first = solve_and_improve(p, 1, 0);
+  const ValidatedPlan first = solve_and_improve(p, 1, {});
   ASSERT_TRUE(first.solved());
   Plan plan = first.result.plan;
   Replay replayed = *first.replay;
-  const Improvement cut = improve(p.problem(), knowledge::ValidityMode::kKnowledge, 1, 60, plan, replayed, Deadline::in(0.0));
+  const Improvement cut = improve(p.problem(), knowledge::ValidityMode::kKnowledge, 1, {.candidates = 60}, plan, replayed, Deadline::in(0.0));
   EXPECT_EQ(cut.stopped, "time limit");
   EXPECT_EQ(cut.candidates, 0);
   expect_same_plan(plan, first.result.plan);
   EXPECT_TRUE(replayed.validated());
-  const Improvement whole = improve(p.problem(), knowledge::ValidityMode::kKnowledge, 1, 5, plan, replayed);
+  const Improvement whole = improve(p.problem(), knowledge::ValidityMode::kKnowledge, 1, {.candidates = 5}, plan, replayed);
   EXPECT_EQ(whole.stopped, "");
   EXPECT_EQ(whole.candidates, 5);
 }

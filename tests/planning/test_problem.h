@@ -46,7 +46,7 @@ struct TestProblem {
     return TaskAutomaton::make(*ltl::simplify_semantically(phi, invalid).formula, world);
   }
 
-  Problem problem() const { return {world, task, original, knowledge, decomposition}; }
+  Problem problem() const { return {world, task, original, knowledge, decomposition, world.planner.time_limit}; }
 
   // What `planner` prepares of problem() (its entry's prepare, as a run does once), made on the first call.
   const PlannerData* preparation(const std::string& planner) const {
@@ -68,7 +68,7 @@ struct TestProblem {
                        const std::string& planner = "knowledge") const {
     // What the planner prepared of problem() is for the simplified task: another task plans without it.
     const PlannerData* prepared = &search_task == &task ? preparation(planner) : nullptr;
-    return planner_named(planner).plan(Problem{world, search_task, original, knowledge, decomposition}, prepared, options);
+    return planner_named(planner).plan(Problem{world, search_task, original, knowledge, decomposition, world.planner.time_limit}, prepared, options);
   }
 
   PlanResult solve(std::uint64_t seed, const std::string& planner = "knowledge") const {

@@ -4,11 +4,11 @@
 
 #include "physltl/campaign/campaign.h"
 #include "physltl/campaign/results.h"
-#include "physltl/campaign/results.h"
 #include "physltl/campaign/unit_record.h"
 
-#include "physltl/scenario/world.h"
 #include "physltl/planning/planning_problem.h"
+#include "physltl/scenario/world.h"
+#include "physltl/setup/run_settings.h"
 
 #include <map>
 #include <memory>
@@ -24,21 +24,18 @@ struct CampaignSettings {
   std::vector<const planning::PlannerEntry*> planners;
   std::vector<int> threads{1};
   int runs = 10;
-  std::optional<std::uint64_t> seed;
-  std::optional<double> time_limit;
-  int improve = 0;
-  int robustness = 0;                      // perturbed worlds per solved run
-  std::optional<std::string> uncertainty;  // --uncertainty: overrides each scenario's
-  std::optional<std::string> cost;         // --cost: overrides each scenario's planner { cost = ... }
-  std::optional<double> improve_margin;    // --improve-margin: overrides each scenario's planner { improve_margin }
-  // Every parameter of the program's planners, by name (planner_names.h parameter_values).
-  std::map<std::string, std::string> parameters;
+  int robustness = 0;  // perturbed worlds per solved run
+  // What each case's run settings take from the command line (--seed: the first seed, --time-limit,
+  // --cost, --improve-margin, --uncertainty, every parameter of the program's planners). No improvement
+  // unless --improve: bench times the search.
+  setup::RunFlags flags{.improve = 0};
 };
 
 struct BenchCase {
   size_t entry = 0;         // the scenario entry it comes from
   std::string swept_value;  // empty unless the entry sweeps
   scenario::World world;
+  setup::RunSettings settings;  // the World's with the campaign's flags; its seed is the case's first
   std::unique_ptr<planning::PlanningProblem> problem;  // of `world`
   BenchResults results;  // the case's facts, and its planners without runs yet
 };
@@ -63,9 +60,10 @@ CampaignResults collect_results(const std::vector<ScenarioEntry>& entries,
                                 const std::vector<std::unique_ptr<BenchCase>>& cases, const std::vector<Unit>& units,
                                 const std::map<size_t, UnitRecord>& records);
 
-// One unit: plans and validates, timing the search apart from --improve; with robustness_worlds > 0, a
-// solved plan is replayed in as many worlds drawn from the world's uncertainty (seeded by the run's seed).
+// One unit: plans and validates, timing the search apart from the improvement `settings` ask for; with
+// robustness_worlds > 0, a solved plan is replayed in as many worlds drawn from the settings' uncertainty
+// (seeded by the run's seed).
 BenchRun measure(const planning::PlanningProblem& problem, const planning::PlannerEntry& planner,
-                 const planning::PlannerOptions& options, int robustness_worlds = 0);
+                 const setup::RunSettings& settings, const planning::PlannerOptions& options, int robustness_worlds = 0);
 
 }  // namespace physltl::campaign

@@ -37,11 +37,6 @@ struct PlannerOptions {
   // Threads growing the one tree, each with its own ODE world. The plan does not depend on it: a seed
   // gives the same plan with any number of threads, only sooner.
   int threads = 1;
-  // Candidates plan_and_validate spends lowering the first validated plan's cost (improve.h); 0: none.
-  int improve = 0;
-  // Instead, seconds of improvement, as many candidates as fit (`--improve-for`): opt-in, since the plan
-  // then depends on the machine's speed and load, not only on the seed.
-  std::optional<double> improve_for_s;
   // Values of the planner's own parameters (PlannerEntry::parameters) by name; a parameter not given
   // takes its default.
   std::map<std::string, std::string> parameters;
@@ -50,10 +45,6 @@ struct PlannerOptions {
   // PlannerParameter its entry declares, so that each default is written once.
   const std::string& parameter(const PlannerParameter& parameter) const;
 };
-
-// The options a World's planner settings give (its seed, and a deadline its time limit from now), the
-// rest at their defaults.
-PlannerOptions options_for(const scenario::World& world);
 
 struct PlannerStats {
   double planning_time_s = 0.0;

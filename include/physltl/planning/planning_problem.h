@@ -22,9 +22,12 @@ namespace physltl::planning {
 class PlanningProblem {
  public:
   // Reasons about `world`, which must outlive this object; a feasible task is also prepared for the
-  // planners. `started`: when the run began, for preparation_s().
-  explicit PlanningProblem(const scenario::World& world,
-                           std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now());
+  // planners, for runs of `time_limit_s` (Problem::time_limit_s). `started`: when the run began, for
+  // preparation_s().
+  PlanningProblem(const scenario::World& world, double time_limit_s,
+                  std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now());
+  // For runs of the time limit the World's planner { } gives.
+  explicit PlanningProblem(const scenario::World& world) : PlanningProblem(world, world.planner.time_limit) {}
 
   const scenario::World& world() const { return world_; }
   const knowledge::Reasoning& reasoning() const { return reasoning_; }
@@ -62,6 +65,7 @@ class PlanningProblem {
   static std::optional<Prepared> prepare(const scenario::World& world, const knowledge::Reasoning& reasoning);
 
   const scenario::World& world_;
+  double time_limit_s_;
   knowledge::Reasoning reasoning_;
   std::optional<Prepared> prepared_;
   double preparation_s_ = 0.0;
@@ -69,9 +73,10 @@ class PlanningProblem {
   mutable std::map<const PlannerEntry*, PlannerPreparation> planners_;
 };
 
-// Plans with `planner` (options.threads threads growing one search) and validates the plan by replay; the
-// planner's preparation, when this is its first run, is within options.deadline too (a result with stop
-// reason "time limit" or "interrupted" when it comes first).
-ValidatedPlan solve(const PlanningProblem& problem, const PlannerEntry& planner, const PlannerOptions& options);
+// Plans with `planner` (options.threads threads growing one search), validates the plan by replay and
+// spends `improvement` lowering its cost; the planner's preparation, when this is its first run, is within
+// options.deadline too (a result with stop reason "time limit" or "interrupted" when it comes first).
+ValidatedPlan solve(const PlanningProblem& problem, const PlannerEntry& planner, const PlannerOptions& options,
+                    const ImprovementSettings& improvement = {});
 
 }  // namespace physltl::planning

@@ -16,6 +16,9 @@ struct Problem {
   const TaskAutomaton& formula;  // the task as written, which a plan's replay must satisfy
   const knowledge::AbstractKnowledge& knowledge;
   const decomposition::Decomposition& decomposition;
+  // The run's time limit (s): what a planner sizes its budgets counted in work by (the knowledge planner's
+  // look-ahead counts arrangements), so that what it prepares depends on the limit, never on the clock.
+  double time_limit_s;
 };
 
 }  // namespace physltl::planning

@@ -30,8 +30,6 @@ struct BenchArgs {
   std::vector<std::string> scenarios;
   std::vector<std::string> settings;  // --set
   int runs = 10;
-  std::optional<std::uint64_t> seed;
-  std::optional<double> time_limit;
   bool compare = false;
   std::optional<std::string> planners;  // A,B,...
   PlannerParameterArgs parameters;
@@ -40,11 +38,10 @@ struct BenchArgs {
   std::optional<std::string> log_file;
   std::string out_dir = "out/bench";
   bool quiet = false;
-  int improve = 0;
   int robustness = 0;
-  std::optional<std::string> uncertainty;
-  std::optional<std::string> cost;
-  std::optional<double> improve_margin;
+  // --seed (the first seed), --time-limit, --improve (none by default: bench times the search), --cost,
+  // --improve-margin, --uncertainty; threads are the list above.
+  setup::RunFlags flags{.improve = 0};
   std::optional<std::string> campaign;
   std::optional<std::string> shard;  // K/N
   bool list = false;
@@ -66,14 +63,9 @@ campaign::CampaignSettings campaign_settings(const BenchArgs& args) {
   }
   settings.threads = args.threads;
   settings.runs = args.runs;
-  settings.seed = args.seed;
-  settings.time_limit = args.time_limit;
-  settings.improve = args.improve;
   settings.robustness = args.robustness;
-  settings.uncertainty = args.uncertainty;
-  settings.cost = args.cost;
-  settings.improve_margin = args.improve_margin;
-  settings.parameters = args.parameters.values();
+  settings.flags = args.flags;
+  settings.flags.parameters = args.parameters.values();
   return settings;
 }
 
@@ -227,14 +219,14 @@ CommandRunner add_bench_command(CLI::App& app) {
   app.add_option("--set", args->settings, "Pass key=value to every script's `params` table (repeatable)")
       ->allow_extra_args(false);
   app.add_option("--runs", args->runs, "Number of seeds per planner")->check(CLI::Range(1, campaign::kMaxRuns))->capture_default_str();
-  app.add_option("--seed", args->seed, "First seed; runs use S, S+1, ... (default: each scenario's)")->check(seed_number());
-  app.add_option("--time-limit", args->time_limit, "Planning time limit per run in seconds (default: the scenario's)")
+  app.add_option("--seed", args->flags.seed, "First seed; runs use S, S+1, ... (default: each scenario's)")->check(seed_number());
+  app.add_option("--time-limit", args->flags.time_limit_s, "Planning time limit per run in seconds (default: the scenario's)")
       ->check(number_in(0.0, 1e6));
   app.add_option("--planners", args->planners,
                  "Planners to measure, interleaved seed by seed (default: knowledge): " + setup::planner_names());
   args->parameters.add_to(app);
   app.add_flag("--compare", args->compare, "Also run the baseline planner on the same seeds, interleaved");
-  app.add_option("--improve", args->improve,
+  app.add_option("--improve", args->flags.improve,
                  "Candidates spent shortening each first validated plan, timed apart from the search (default: none)")
       ->check(CLI::Range(0, 1000000))
       ->capture_default_str();
@@ -242,14 +234,14 @@ CommandRunner add_bench_command(CLI::App& app) {
                  "Replay each solved plan in N perturbed worlds drawn from the scenario's uncertainty (timed apart); "
                  "a robustness line per planner (docs/robustness.md)")
       ->check(CLI::Range(0, 100000));
-  app.add_option("--cost", args->cost,
+  app.add_option("--cost", args->flags.cost,
                  "What --improve lowers and the cost line gives: time (default), length, pushes, moved, or a weighted "
                  "sum such as \"time + 2 pushes\" (docs/planner.md, \"What a plan costs\")");
-  app.add_option("--improve-margin", args->improve_margin,
+  app.add_option("--improve-margin", args->flags.improve_margin_m,
                  "Metres --improve keeps from walls and inside the regions the task visits, where the first plan did "
                  "(docs/planner.md, \"A margin for the real world\")")
       ->check(number_in(0.0, 1.0, true));
-  app.add_option("--uncertainty", args->uncertainty,
+  app.add_option("--uncertainty", args->flags.uncertainty,
                  "Override each scenario's uncertainty, e.g. mass=0.3,friction=0.1");
   app.add_option("--threads", args->threads,
                  "Threads growing each run's search tree (same plans, sooner); a list such as 1,2 measures each, "

@@ -32,25 +32,28 @@ namespace {
 struct ExecuteArgs {
   ScenarioArgs scenario;
   int worlds = 20;
-  std::optional<std::string> uncertainty;
   int replans = 5;
   double tolerance = execution::ExecutionOptions{}.tolerance_m;
   long long budget = 200'000;
   std::optional<std::string> planner;  // the registry's default planner when not given
   PlannerParameterArgs parameters;     // of the planners that take a budget
-  std::optional<std::uint64_t> seed;
+  // Each flag replaces what the scenario says. No improvement: execute runs and replans the search's plans
+  // as found.
+  setup::RunFlags flags{.improve = 0};
   std::string out_dir = "out";
   bool quiet = false;
   bool render = false;
-  std::optional<scenario::RenderView> view;  // overrides the scenario's render { view = ... }
 };
 
 // --render: one executed world (the first that replanned, else the first) as frames and a video, with the
 // path the first plan meant in grey and a red cross where each replanning began.
-void render_execution(const scenario::World& model, const knowledge::Reasoning& reasoning, const planning::TaskAutomaton& formula,
-                      const planning::Replay& nominal, const WorldExecution& shown, const std::filesystem::path& folder,
-                      const std::function<void(const std::string&)>& say) {
-  const scenario::World truth = execution::perturbed_world(model, model.uncertainty, model.planner.seed, shown.index);
+void render_execution(const PlanningRun& run, const planning::Replay& nominal, const WorldExecution& shown,
+                      const std::filesystem::path& folder, const std::function<void(const std::string&)>& say) {
+  const scenario::World& model = run.problem().world();
+  const knowledge::Reasoning& reasoning = run.problem().reasoning();
+  const planning::TaskAutomaton& formula = run.problem().as_written();
+  const setup::RunSettings& settings = run.settings();
+  const scenario::World truth = execution::perturbed_world(model, settings.uncertainty, settings.seed, shown.index);
   const planning::Replay executed = planning::replay(truth, planning::Plan{shown.run.controls, {}}, formula,
                                                      knowledge::formulate(truth));
   std::vector<render::SegmentOverlay> marks;
@@ -70,8 +73,10 @@ void render_execution(const scenario::World& model, const knowledge::Reasoning& 
   }
   const PlanFrames pictures =
       write_plan_frames(truth, reasoning, executed, static_cast<int>(formula.dfa.size()), folder / "execution",
-                        folder / "execution.mp4", nullptr, marks,
-                        fmt::format("world {}: {} replans (red), the first plan grey", shown.index, shown.run.replans));
+                        folder / "execution.mp4", nullptr,
+                        {.view = settings.view,
+                         .marks = marks,
+                         .mark_legend = fmt::format("world {}: {} replans (red), the first plan grey", shown.index, shown.run.replans)});
   say(fmt::format("render     world {}: {} frames{}", shown.index, pictures.frames,
                   pictures.video.written ? ", execution.mp4" : ""));
   if (!pictures.video.written) std::cerr << "physltl-studio: no video: " << pictures.video.message << "\n";
@@ -79,17 +84,18 @@ void render_execution(const scenario::World& model, const knowledge::Reasoning& 
 
 int execute(const ExecuteArgs& args) {
   const planning::PlannerEntry& planner = args.planner ? setup::parse_planner(*args.planner) : setup::registry().default_planner();
-  const scenario::World world = load_world(args.scenario.path, args.scenario.settings, {args.seed, {}, args.uncertainty, {}, args.view});
+  const scenario::World world = args.scenario.load();
+  setup::RunFlags flags = args.flags;
+  flags.parameters = args.parameters.values();
+  const setup::RunSettings settings = setup::run_settings(world, flags);
   const auto say = [&](const std::string& line) {
     if (!args.quiet) std::cout << line << "\n";
   };
-  const PlanningRun run(world, planner);
+  const PlanningRun run(world, settings, planner);
   // It replans with a budget of propagations, so that an execution is the same on any machine.
   run.require_plannable({.propagation_budget = true});
-  planning::PlannerOptions options = run.options();
-  options.parameters = args.parameters.values();
   common::OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
-  const planning::ValidatedPlan solution = run.solve(options);
+  const planning::ValidatedPlan solution = run.solve();
   if (const auto failure = run.failure(solution, std::nullopt, false)) {
     std::cerr << "physltl-studio: " << failure->line << "; nothing written\n";
     return common::kExitNoPlan;
@@ -98,24 +104,23 @@ int execute(const ExecuteArgs& args) {
   const planning::Replay& nominal = *solution.replay;
   const planning::TaskAutomaton& formula = run.problem().as_written();
   say(fmt::format("plan       {} controls, {:.1f} s of motion ({} planner, seed {})", plan.controls.size(),
-                  plan.total_steps() * world.planner.step_size, planner.name, world.planner.seed));
+                  plan.total_steps() * world.planner.step_size, planner.name, settings.seed));
 
-  ExecutionReport report{world, &planner, args.replans, args.tolerance, args.budget, plan.total_steps() * world.planner.step_size, {}};
+  ExecutionReport report{world, settings, &planner, args.replans, args.tolerance, args.budget, plan.total_steps() * world.planner.step_size, {}};
   const execution::Executor executor(world, formula, plan, nominal, {.tolerance_m = args.tolerance, .max_replans = args.replans});
   for (int i = 0; i < args.worlds; ++i) {
-    const scenario::World truth = execution::perturbed_world(world, world.uncertainty, world.planner.seed, i);
+    const scenario::World truth = execution::perturbed_world(world, settings.uncertainty, settings.seed, i);
     const execution::WorldRun open_loop = execution::judge_in_world(truth, plan, &nominal, formula);
     execution::SimulatedWorld reality(truth);
     const execution::Execution executed =
-        executor.run(reality, execution::budgeted_replanner(planner, options, i, args.budget));
+        executor.run(reality, execution::budgeted_replanner(planner, settings.planner_options(run.deadline()), i, args.budget));
     const execution::WorldRun judged = execution::judge_in_world(truth, planning::Plan{executed.controls, {}}, nullptr, formula);
     report.worlds.push_back({i, open_loop, judged, executed});
   }
   say("execution  " + execution_summary(report));
   if (args.render) {
     const auto shown = std::find_if(report.worlds.begin(), report.worlds.end(), [](const WorldExecution& w) { return w.run.replans > 0; });
-    render_execution(world, run.problem().reasoning(), formula, nominal, shown != report.worlds.end() ? *shown : report.worlds.front(),
-                     out.path(), say);
+    render_execution(run, nominal, shown != report.worlds.end() ? *shown : report.worlds.front(), out.path(), say);
   }
   common::write_json_file(out.path() / "execution.json", execution_json(report));
   out.commit_entries();
@@ -131,7 +136,7 @@ CommandRunner add_execute_command(CLI::App& app) {
   app.add_option("--worlds", args->worlds, "Perturbed worlds to execute the plan in")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
-  app.add_option("--uncertainty", args->uncertainty,
+  app.add_option("--uncertainty", args->flags.uncertainty,
                  "Override the scenario's uncertainty, e.g. mass=0.3,friction=0.1 (keys: mass, friction, start, "
                  "body_pose, body_yaw_deg)");
   app.add_option("--replans", args->replans, "Replannings allowed per world")->check(CLI::Range(0, 1000))->capture_default_str();
@@ -148,12 +153,12 @@ CommandRunner add_execute_command(CLI::App& app) {
                      planners.names(&planning::Capabilities::propagation_budget) + " (default: " +
                      planners.default_planner().name + ")");
   args->parameters.add_to(app, &planning::Capabilities::propagation_budget);
-  app.add_option("--seed", args->seed, "Seed of the plan and of the perturbed worlds (default: the scenario's)")->check(seed_number());
+  app.add_option("--seed", args->flags.seed, "Seed of the plan and of the perturbed worlds (default: the scenario's)")->check(seed_number());
   app.add_option("--out", args->out_dir, "Folder for outputs; writes <out>/<scenario>/execution.json")->capture_default_str();
   app.add_flag("--quiet", args->quiet, "Print only errors");
   app.add_flag("--render", args->render,
                "Also draw one executed world (the first that replanned) as execution/frame_*.png and execution.mp4");
-  add_view_option(app, args->view);
+  add_view_option(app, args->flags.view);
   return [args] { return execute(*args); };
 }
 

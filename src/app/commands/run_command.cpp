@@ -37,24 +37,15 @@ namespace {
 struct RunArgs {
   ScenarioArgs scenario;
   bool render = false;
-  std::optional<std::uint64_t> seed;
-  std::optional<double> time_limit;
   std::string out_dir = "out";
   std::optional<std::string> planner;
   PlannerParameterArgs parameters;
   bool baseline = false;  // --planner baseline
   bool quiet = false;
-  // Candidates lowering the first validated plan's cost (docs/planner.md); none given: the world's default.
-  std::optional<int> improve;
-  std::optional<double> improve_for;  // seconds of improvement instead (opt-in: depends on the machine)
-  // One per core: threads change how soon the plan is found, never which plan (bench defaults to one
-  // thread, the fair figure).
-  int threads = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
-  int robustness = 0;                      // perturbed worlds to replay the plan in (docs/robustness.md)
-  std::optional<std::string> uncertainty;  // overrides the scenario's uncertainty { ... }
-  std::optional<std::string> cost;         // overrides the scenario's planner { cost = ... }
-  std::optional<double> improve_margin;    // overrides the scenario's planner { improve_margin = ... }
-  std::optional<scenario::RenderView> view;  // overrides the scenario's render { view = ... }
+  // Each flag replaces what the scenario says. Threads: one per core, since they change how soon the plan
+  // is found, never which plan (bench defaults to one thread, the fair figure).
+  setup::RunFlags flags{.threads = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u))};
+  int robustness = 0;  // perturbed worlds to replay the plan in (docs/robustness.md)
 };
 
 // Progress goes to stderr only when a person watches it.
@@ -89,14 +80,14 @@ void say_task(const PlanningRun& run, const Say& say) {
   const scenario::World& world = problem.world();
   say(fmt::format("task       {} ({} automaton states, {} planner, seed {})",
                   planner.uses_knowledge ? ltl::to_string(*problem.reasoning().simplified_formula()) : world.task.formula,
-                  problem.search_task(planner).dfa.size(), planner.name, world.planner.seed));
+                  problem.search_task(planner).dfa.size(), planner.name, run.settings().seed));
   const planning::PlannerData* prepared = nullptr;
   try {
     prepared = run.preparation();
   } catch (const DeadlineReached& reached) {
     if (reached.interrupted()) throw;
     // The search then ends at once with the same reason: "no plan found (time limit)".
-    say(fmt::format("prepare    cut short by the time limit ({:g} s)", world.planner.time_limit));
+    say(fmt::format("prepare    cut short by the time limit ({:g} s)", run.settings().time_limit_s));
     return;
   }
   say(fmt::format("prepare    {:.2f} s: reasoning, decomposition, and where the lead goes round the bodies",
@@ -135,7 +126,7 @@ void render_plan(const PlanningRun& run, const planning::ValidatedPlan& solution
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - frames_started).count();
         progress.show(fmt::format("frames {}/{}, {:.0f} s left", done, total, elapsed / done * (total - done)));
       },
-      {}, "", &moves);
+      {.view = run.settings().view, .planned = &moves});
   progress.done();
   say(fmt::format("render     {} frames, tree.png{}", pictures.frames, pictures.video.written ? ", plan.mp4" : ""));
   if (!pictures.video.written) {
@@ -148,20 +139,20 @@ void render_plan(const PlanningRun& run, const planning::ValidatedPlan& solution
 void write_plan_files(const PlanningRun& run, const planning::ValidatedPlan& solution, const RunArgs& args,
                       const common::OutputFolder& out, const Say& say) {
   const scenario::World& world = run.problem().world();
+  const setup::RunSettings& settings = run.settings();
   std::optional<execution::Robustness> robustness;
   if (args.robustness > 0) {
     // Under the run's deadline: the time limit ends the measure with the worlds judged by then.
-    robustness = execution::measure_robustness(world, world.uncertainty, args.robustness, world.planner.seed,
+    robustness = execution::measure_robustness(world, settings.uncertainty, args.robustness, settings.seed,
                                                solution.result.plan, *solution.replay, run.problem().as_written(),
                                                run.deadline());
-    say("robustness " + robustness_line(*robustness, world.uncertainty));
+    say("robustness " + robustness_line(*robustness, settings.uncertainty));
   }
   const PlanCostFigures plan_cost = run.plan_cost(solution);
-  say("cost       " + plan_cost_text(world.planner.cost, plan_cost));
+  say("cost       " + plan_cost_text(settings.improvement.cost, plan_cost));
   RunSummary summary = run.summary(solution);
   summary.plan_cost = &plan_cost;
   summary.robustness = robustness ? &*robustness : nullptr;
-  summary.uncertainty = &world.uncertainty;
   const auto started = std::chrono::steady_clock::now();
   common::write_json_file(out.path() / "plan.json", plan_json(summary));
   RunCosts costs{.parts = {.prepare_s = run.problem().preparation_s(run.planner()),
@@ -176,32 +167,29 @@ void write_plan_files(const PlanningRun& run, const planning::ValidatedPlan& sol
 
 int run(const RunArgs& args) {
   const planning::PlannerEntry& planner = chosen_planner(args);
-  const scenario::World world =
-      load_world(args.scenario.path, args.scenario.settings, {args.seed, args.time_limit, args.uncertainty, args.cost, args.view, args.improve_margin});
+  const scenario::World world = args.scenario.load();
+  setup::RunFlags flags = args.flags;
+  flags.parameters = args.parameters.values();
+  const setup::RunSettings settings = setup::run_settings(world, flags);
   const Say say = [&](const std::string& line) {
     if (!args.quiet) std::cout << line << "\n";
   };
-  const PlanningRun run(world, planner);
+  const PlanningRun run(world, settings, planner);
   for (const auto& p : run.problem().reasoning().feasibility.invalid) say("invalid    " + p.reason);
   run.require_plannable();
-  planning::PlannerOptions options = run.options();
-  options.parameters = args.parameters.values();
   // Made before planning so that an unwritable --out fails at once, not after minutes of search; it is
   // removed again unless the run succeeds.
   common::OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
   say_task(run, say);
 
   ProgressLine progress(args.quiet);
-  progress.show(fmt::format("planning (up to {:g} s) ...", world.planner.time_limit));
-  options.threads = args.threads;
-  options.improve = args.improve.value_or(planning::default_improvement_candidates(world));
-  options.improve_for_s = args.improve_for;
-  const planning::ValidatedPlan solution = run.solve(options);
+  progress.show(fmt::format("planning (up to {:g} s) ...", settings.time_limit_s));
+  const planning::ValidatedPlan solution = run.solve();
   progress.done();
   const planning::PlannerStats& stats = solution.result.stats;
   say(fmt::format("search     {}: {:.2f} s, {} nodes, {} propagations, {} physics steps{}", planning::to_string(solution.result.stop_reason),
                   stats.planning_time_s, stats.tree_nodes, stats.propagations, stats.physics_steps,
-                  args.threads > 1 && planner.can.threads ? fmt::format(" ({} threads)", args.threads) : ""));
+                  settings.threads > 1 && planner.can.threads ? fmt::format(" ({} threads)", settings.threads) : ""));
   if (common::stop_received()) throw common::Interrupted();
   if (const auto failure = run.failure(solution, out.final_path() / "failed", args.render)) {
     if (failure->diagnosed) say("outputs    " + (out.final_path() / "failed").string() + "/");
@@ -223,32 +211,32 @@ CommandRunner add_run_command(CLI::App& app) {
   auto args = std::make_shared<RunArgs>();
   args->scenario.add_to(app);
   app.add_flag("--render", args->render, "Also write frames/, tree.png and plan.mp4");
-  add_view_option(app, args->view);
-  app.add_option("--seed", args->seed, "Seed of the planner's random generator (default: the scenario's)")->check(seed_number());
-  app.add_option("--time-limit", args->time_limit, "Planning time limit in seconds (default: the scenario's)")
+  add_view_option(app, args->flags.view);
+  app.add_option("--seed", args->flags.seed, "Seed of the planner's random generator (default: the scenario's)")->check(seed_number());
+  app.add_option("--time-limit", args->flags.time_limit_s, "Planning time limit in seconds (default: the scenario's)")
       ->check(number_in(0.0, 1e6));
   app.add_option("--out", args->out_dir, "Folder for outputs; each scenario writes <out>/<name>/")->capture_default_str();
   app.add_option("--planner", args->planner, "Planner: " + setup::planner_names() + " (default: " + setup::registry().default_planner().name + ")");
   args->parameters.add_to(app);
   app.add_flag("--baseline", args->baseline, "Same as --planner baseline: the paper's simple physics-based LTL planner");
   app.add_flag("--quiet", args->quiet, "Print only errors");
-  CLI::Option* improve = app.add_option("--improve", args->improve,
+  CLI::Option* improve = app.add_option("--improve", args->flags.improve,
                                         "Candidates spent lowering the first validated plan's cost (0: keep it as found; "
                                         "same seed, same plan; default: 1000, fewer in worlds of over 100 bodies)")
                              ->check(CLI::Range(0, 1000000));
-  app.add_option("--improve-for", args->improve_for,
+  app.add_option("--improve-for", args->flags.improve_for_s,
                  "Seconds spent lowering the plan's cost instead of a number of candidates (the plan then depends on "
                  "the machine's speed; report.json's improvement.improve_for_s says so)")
       ->check(number_in(0.0, 1e6))
       ->excludes(improve);
-  app.add_option("--cost", args->cost,
+  app.add_option("--cost", args->flags.cost,
                  "What improvement lowers: time (default), length, pushes, moved, or a weighted sum such as "
                  "\"time + 2 pushes\" (docs/planner.md, \"What a plan costs\")");
-  app.add_option("--improve-margin", args->improve_margin,
+  app.add_option("--improve-margin", args->flags.improve_margin_m,
                  "Metres improvement keeps from walls and inside the regions the task visits, where the first plan did "
                  "(default: the scenario's planner { improve_margin }, or 0; docs/planner.md, \"A margin for the real world\")")
       ->check(number_in(0.0, 1.0, true));
-  app.add_option("--threads", args->threads,
+  app.add_option("--threads", args->flags.threads,
                  "Threads growing the search tree (default: one per core; the same plan with any number)")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
@@ -256,7 +244,7 @@ CommandRunner add_run_command(CLI::App& app) {
                  "Also replay the plan in N perturbed worlds drawn from the scenario's uncertainty and report the "
                  "share that still satisfies the task (docs/robustness.md)")
       ->check(CLI::Range(0, 100000));
-  app.add_option("--uncertainty", args->uncertainty,
+  app.add_option("--uncertainty", args->flags.uncertainty,
                  "Override the scenario's uncertainty, e.g. mass=0.3,friction=0.1 (keys: mass, friction, start, "
                  "body_pose, body_yaw_deg)");
   return [args] { return run(*args); };

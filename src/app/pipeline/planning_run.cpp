@@ -3,9 +3,6 @@
 #include "physltl/common/bad_input.h"
 #include "physltl/common/stop_signal.h"
 #include "physltl/setup/planner_names.h"
-#include "physltl/setup/scenario_settings.h"
-#include "physltl/setup/cost_args.h"
-#include "physltl/setup/uncertainty_args.h"
 #include "views/failed_search.h"
 #include "physltl/planning/path_lower_bound.h"
 #include "physltl/planning/validation/improve.h"
@@ -14,24 +11,14 @@
 
 namespace physltl::app {
 
-scenario::World load_world(const std::string& path, const std::vector<std::string>& settings, const WorldOverrides& overrides) {
-  scenario::World world = setup::load_with_settings(path, settings);
-  if (overrides.seed) world.planner.seed = *overrides.seed;
-  if (overrides.time_limit) world.planner.time_limit = *overrides.time_limit;
-  if (overrides.uncertainty) world.uncertainty = setup::override_uncertainty(world.uncertainty, *overrides.uncertainty);
-  if (overrides.cost) world.planner.cost = setup::cost_from_flag(*overrides.cost);
-  if (overrides.view) world.render.view = *overrides.view;
-  if (overrides.improve_margin) world.planner.improve_margin = *overrides.improve_margin;
-  return world;
-}
+PlanningRun::PlanningRun(const scenario::World& world, const setup::RunSettings& settings, const planning::PlannerEntry& planner)
+    : settings_(settings),
+      deadline_(Deadline::in(settings.time_limit_s, &common::stop_flag())),
+      problem_(world, settings.time_limit_s),
+      planner_(planner) {}
 
-PlanningRun::PlanningRun(const scenario::World& world, const planning::PlannerEntry& planner)
-    : deadline_(Deadline::in(world.planner.time_limit, &common::stop_flag())), problem_(world), planner_(planner) {}
-
-planning::PlannerOptions PlanningRun::options() const {
-  planning::PlannerOptions options = planning::options_for(problem_.world());
-  options.deadline = deadline_;
-  return options;
+planning::ValidatedPlan PlanningRun::solve() const {
+  return planning::solve(problem_, planner_, settings_.planner_options(deadline_), settings_.improvement);
 }
 
 void PlanningRun::require_plannable(planning::Needs needs) const {
@@ -60,6 +47,7 @@ std::optional<PlanningRun::Failure> PlanningRun::failure(const planning::Validat
 
 RunSummary PlanningRun::summary(const planning::ValidatedPlan& solution) const {
   return {problem_.world(),
+          settings_,
           problem_.reasoning(),
           problem_.as_written(),
           planner_,
@@ -71,9 +59,10 @@ RunSummary PlanningRun::summary(const planning::ValidatedPlan& solution) const {
 PlanCostFigures PlanningRun::plan_cost(const planning::ValidatedPlan& solution) const {
   const scenario::World& world = problem_.world();
   PlanCostFigures figures;
-  figures.value = planning::cost_of(world.planner.cost, planning::measure(world, solution.result.plan, *solution.replay));
+  const scenario::PlanCost& cost = settings_.improvement.cost;
+  figures.value = planning::cost_of(cost, planning::measure(world, solution.result.plan, *solution.replay));
   try {
-    const double bound = planning::plan_cost_bound(world, problem_.as_written(), world.planner.cost, deadline_);
+    const double bound = planning::plan_cost_bound(world, problem_.as_written(), cost, deadline_);
     if (std::isfinite(bound)) figures.bound = bound;
   } catch (const DeadlineReached& reached) {
     if (reached.interrupted()) throw;  // the time limit leaves the bound unset, Ctrl-C ends the run

@@ -81,14 +81,14 @@ struct SolvedPlan {
 // does not (as bench's measure, docs/reliability.md).
 CaseResult robustness_case(const SolvedPlan& plan, const scenario::Expectations::Robustness& expected) {
   const planning::PlanningProblem& problem = plan.run.problem();
-  const scenario::World& world = problem.world();
+  const setup::RunSettings& settings = plan.run.settings();
   const execution::Robustness measured = execution::measure_robustness(
-      world, world.uncertainty, expected.worlds, world.planner.seed, plan.solution.result.plan, *plan.solution.replay,
+      problem.world(), settings.uncertainty, expected.worlds, settings.seed, plan.solution.result.plan, *plan.solution.replay,
       problem.as_written(), Deadline(Deadline::Clock::time_point::max(), plan.run.deadline().stop()));
   if (!measured.stopped.empty()) return CaseResult{"", Outcome::kSkipped, "interrupted"};
   if (measured.share() >= expected.at_least) return {};
   return failed(fmt::format("the plan succeeds in {:.2f} of the perturbed worlds, less than {:g}: {}", measured.share(),
-                            expected.at_least, robustness_line(measured, world.uncertainty)));
+                            expected.at_least, robustness_line(measured, settings.uncertainty)));
 }
 
 void bound_cases(const SolvedPlan& plan, const scenario::Expectations& e, std::vector<CaseResult>& cases) {
@@ -152,17 +152,14 @@ void picture_cases(const SolvedPlan& plan, const scenario::Expectations& e, Gold
 // case, a search cut short with its diagnosis in `actual_folder`/failed/.
 CaseResult solve_case(const PlanningRun& run, const std::filesystem::path& actual_folder,
                       std::optional<planning::ValidatedPlan>& solution) {
-  const scenario::World& world = run.problem().world();
-  planning::PlannerOptions options = run.options();
-  options.improve = planning::default_improvement_candidates(world);
-  solution = run.solve(options);
+  solution = run.solve();
   if (run.deadline().interrupted()) return CaseResult{"", Outcome::kSkipped, "interrupted"};
   const std::filesystem::path failed_folder = actual_folder / "failed";
   const auto failure = run.failure(*solution, failed_folder, true);
   if (!failure) return CaseResult{};
   if (solution->result.solved) return failed(failure->line);
   return failed(fmt::format("{} in {:.1f} s (seed {}, time limit {:g} s){}", failure->line,
-                            solution->result.stats.planning_time_s, world.planner.seed, world.planner.time_limit,
+                            solution->result.stats.planning_time_s, run.settings().seed, run.settings().time_limit_s,
                             failure->diagnosed ? "; diagnosis: " + failed_folder.string() + "/" : ""));
 }
 
@@ -203,9 +200,11 @@ ScenarioResult test_scenario(const TestEntry& entry, const scenario::World& worl
   std::filesystem::remove_all(actual_folder);  // what an earlier run left describes that run
   Goldens goldens(goldens_folder(entry, settings), actual_folder, settings.update, update_line(entry, settings));
 
+  // What the scenario says: one thread, the main job's improvement (setup/run_settings.h).
+  const setup::RunSettings run_settings = setup::run_settings(world, {});
   std::optional<PlanningRun> run;
   cases.push_back(timed("check", [&] {
-    run.emplace(world, setup::registry().default_planner());
+    run.emplace(world, run_settings, setup::registry().default_planner());
     return check_case(run->problem().reasoning(), e);
   }));
   if (!run) {

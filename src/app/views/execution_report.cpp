@@ -60,8 +60,8 @@ json execution_json(const ExecutionReport& report) {
   const Medians m = medians(report);
   return {{"scenario", report.model.source_file},
           {"planner", report.planner->name},
-          {"seed", report.model.planner.seed},
-          {"uncertainty", uncertainty_json(report.model.uncertainty)},
+          {"seed", report.settings.seed},
+          {"uncertainty", uncertainty_json(report.settings.uncertainty)},
           {"tolerance_m", report.tolerance_m},
           {"max_replans", report.max_replans},
           {"budget_propagations", report.budget},

@@ -4,6 +4,7 @@
 #include "physltl/execution/executor.h"
 #include "physltl/planning/registry.h"
 #include "physltl/execution/robustness.h"
+#include "physltl/setup/run_settings.h"
 
 #include <nlohmann/json.hpp>
 
@@ -21,6 +22,7 @@ struct WorldExecution {
 
 struct ExecutionReport {
   const scenario::World& model;
+  const setup::RunSettings& settings;  // the seed of the plan and the worlds, the uncertainty they are drawn from
   const planning::PlannerEntry* planner = nullptr;
   int max_replans = 0;
   double tolerance_m = 0.0;

@@ -45,23 +45,22 @@ render::Color automaton_state_color(int state, int states) {
 }
 
 PlanAnimation::PlanAnimation(const scenario::World& world, const knowledge::Reasoning& reasoning,
-                             const planning::Replay& replay, int automaton_states,
-                             const std::vector<render::SegmentOverlay>& marks, const std::string& mark_legend,
-                             const PlannedMoves* planned)
+                             const planning::Replay& replay, int automaton_states, const FrameExtras& extras)
     : world_(world),
       reasoning_(reasoning),
       replay_(replay),
       automaton_states_(automaton_states),
-      mark_legend_(mark_legend),
-      marks_(marks),
-      planned_(planned != nullptr && !planned->moves.empty() ? planned : nullptr),
+      view_(extras.view.value_or(world.render.view)),
+      mark_legend_(extras.mark_legend),
+      marks_(extras.marks),
+      planned_(extras.planned != nullptr && !extras.planned->moves.empty() ? extras.planned : nullptr),
       task_line_("task: " + world.task.formula),
       duration_s_(world.planner.step_size * static_cast<double>(replay.states.size() - 1)),
       renderer_(std::make_unique<render::Renderer>(world, world.render.width, world.render.height)) {
-  overlay_.segments = marks;
+  overlay_.segments = marks_;
   overlay_.avoided_regions = ltl::avoided_propositions(reasoning.task.normal_form);
   overlay_.legend_room = {{task_line_}, {time_line(duration_s_, "")}, {automaton_line(automaton_states, true)}};
-  if (!mark_legend.empty()) overlay_.legend_room.push_back({mark_legend});
+  if (!mark_legend_.empty()) overlay_.legend_room.push_back({mark_legend_});
   if (planned_ != nullptr) {
     std::vector<std::string> stages;
     for (int done = 0; done <= static_cast<int>(planned_->moves.size()); ++done) {
@@ -169,16 +168,14 @@ render::Image PlanAnimation::draw(double time_s) {
   // The travelled path up to now: extended while frames go forward, as the video draws them.
   if (overlay_.path.size() > i + 1) overlay_.path.resize(i + 1);
   while (overlay_.path.size() <= i) overlay_.path.push_back(replay_.states.robot_position(overlay_.path.size()));
-  return renderer_->draw(state, overlay_, world_.render.view);
+  return renderer_->draw(state, overlay_, view_);
 }
 
 PlanFrames write_plan_frames(const scenario::World& world, const knowledge::Reasoning& reasoning, const planning::Replay& replay,
                              int automaton_states, const std::filesystem::path& folder,
-                             const std::filesystem::path& video, const Progress& progress,
-                             const std::vector<render::SegmentOverlay>& marks, const std::string& mark_legend,
-                             const PlannedMoves* planned) {
+                             const std::filesystem::path& video, const Progress& progress, const FrameExtras& extras) {
   std::filesystem::create_directories(folder);
-  PlanAnimation animation(world, reasoning, replay, automaton_states, marks, mark_legend, planned);
+  PlanAnimation animation(world, reasoning, replay, automaton_states, extras);
   // One frame per 1/fps from the start, and the last one at the final state: the plan's end (a region
   // entered on its very last step) is always seen.
   const int frames = animation.frame_count();

@@ -12,7 +12,6 @@
 #include "planner_views.h"
 
 #include <filesystem>
-#include <optional>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -28,14 +27,23 @@ struct PlanFrames {
   render::VideoResult video;
 };
 
+// What the frames of a plan show beyond its World and replay.
+struct FrameExtras {
+  std::optional<scenario::RenderView> view{};  // unset: the World's render { view }
+  // Drawn on the floor under the path in every frame (`execute --render`: the path the plan meant and
+  // where replanning began), with `mark_legend` as one more line of the legend.
+  std::vector<render::SegmentOverlay> marks{};
+  std::string mark_legend{};
+  // The planner's planned moves (the look-ahead's push order), drawn as they are carried out.
+  const PlannedMoves* planned = nullptr;
+};
+
 // The replayed plan drawn at any moment, with the legend the video shows (time, region, automaton state,
 // object goals) and the path travelled so far.
 class PlanAnimation {
  public:
-  // `planned`: the planner's planned moves (the look-ahead's push order), drawn as they are carried out.
   PlanAnimation(const scenario::World& world, const knowledge::Reasoning& reasoning, const planning::Replay& replay,
-                int automaton_states, const std::vector<render::SegmentOverlay>& marks = {},
-                const std::string& mark_legend = "", const PlannedMoves* planned = nullptr);
+                int automaton_states, const FrameExtras& extras = {});
   ~PlanAnimation();
   PlanAnimation(const PlanAnimation&) = delete;
   PlanAnimation& operator=(const PlanAnimation&) = delete;
@@ -58,6 +66,7 @@ class PlanAnimation {
   const knowledge::Reasoning& reasoning_;
   const planning::Replay& replay_;
   int automaton_states_;
+  scenario::RenderView view_;
   std::string mark_legend_;
   std::vector<render::SegmentOverlay> marks_;
   const PlannedMoves* planned_;
@@ -80,13 +89,9 @@ class PlanAnimation {
 // frames/frame_00000.png ... at the World's fps, linearly interpolated between physics steps so boxes
 // glide as they were pushed, and the same frames as `video` (plan.mp4), encoded alongside.
 // `automaton_states` is the size of the automaton the replay's trace runs on.
-// `marks` are drawn on the floor under the path in every frame (`execute --render`: the path the plan
-// meant and where replanning began), with `mark_legend` as one more line of the legend.
 PlanFrames write_plan_frames(const scenario::World& world, const knowledge::Reasoning& reasoning, const planning::Replay& replay,
                              int automaton_states, const std::filesystem::path& folder,
-                             const std::filesystem::path& video, const Progress& progress,
-                             const std::vector<render::SegmentOverlay>& marks = {}, const std::string& mark_legend = "",
-                             const PlannedMoves* planned = nullptr);
+                             const std::filesystem::path& video, const Progress& progress, const FrameExtras& extras = {});
 
 // tree.png: the decomposition faintly, the tree's edges coloured by automaton state, the path on top, the
 // planner's planned moves as arrows; `reasoning` names the regions the task avoids.

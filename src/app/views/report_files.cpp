@@ -37,8 +37,8 @@ json report_json(const RunSummary& run) {
   json report = {
       {"scenario", run.world.source_file},
       {"planner", run.planner.name},
-      {"seed", run.world.planner.seed},
-      {"time_limit_s", run.world.planner.time_limit},
+      {"seed", run.settings.seed},
+      {"time_limit_s", run.settings.time_limit_s},
       {"formula", run.world.task.formula},
       {"simplified_formula", simplified ? json(ltl::to_string(*simplified)) : json(nullptr)},
       {"invalid_propositions", invalid},
@@ -71,7 +71,7 @@ json report_json(const RunSummary& run) {
         {"unsolved_steps", run.replay->unsolved_steps.size()},
         {"failure", run.replay->failure.empty() ? json(nullptr) : json(run.replay->failure)},
     };
-    if (run.robustness != nullptr) report["robustness"] = robustness_json(*run.robustness, *run.uncertainty);
+    if (run.robustness != nullptr) report["robustness"] = robustness_json(*run.robustness, run.settings.uncertainty);
     // Where the bodies the task names are at the end: the object facts that hold then.
     report["object_facts_at_end"] = run.as_written.labelling.object_facts(run.replay->facts_trace.back());
     report["controls"] = r.plan.controls.size();
@@ -89,7 +89,7 @@ json report_json(const RunSummary& run) {
                                {"accepted", run.improvement->accepted},
                                {"stopped_by", run.improvement->stopped.empty() ? json(nullptr) : json(run.improvement->stopped)},
                                {"time_s", run.improvement->time_s},
-                               {"margin_m", run.world.planner.improve_margin},
+                               {"margin_m", run.settings.improvement.margin_m},
                                {"progress", run.improvement->progress},
                                {"first", measures(run.improvement->first)},
                                {"improved", measures(run.improvement->improved)}};
@@ -97,7 +97,7 @@ json report_json(const RunSummary& run) {
     report["solution_duration_s"] = r.plan.total_steps() * run.world.planner.step_size;
     if (run.plan_cost != nullptr) {
       const auto& bound = run.plan_cost->bound;
-      report["cost"] = {{"of", run.world.planner.cost.text()},
+      report["cost"] = {{"of", run.settings.improvement.cost.text()},
                         {"value", run.plan_cost->value},
                         {"bound", bound ? json(*bound) : json(nullptr)},
                         {"ratio", bound && *bound > 0.0 ? json(run.plan_cost->value / *bound) : json(nullptr)}};
@@ -158,7 +158,7 @@ json plan_json(const RunSummary& run) {
   return {
       {"format", kPlanFormat},
       {"scenario", world.source_file},
-      {"seed", world.planner.seed},
+      {"seed", run.settings.seed},
       {"step_size_s", dt},
       {"drive", scenario::drive_name(world.robot.drive)},
       {"body_names", [&] {

@@ -9,6 +9,7 @@
 #include "physltl/planning/validation/replay.h"
 #include "physltl/planning/task.h"
 #include "physltl/scenario/world.h"
+#include "physltl/setup/run_settings.h"
 #include "physltl/knowledge/reasoning.h"
 
 #include <nlohmann/json.hpp>
@@ -24,7 +25,7 @@ struct RunCosts {
   double peak_memory_mb = 0.0;
 };
 
-// The plan's cost to its user (the World's planner.cost) and the bound no plan of the task goes below
+// The plan's cost to its user (the run's improvement cost) and the bound no plan of the task goes below
 // (planning::plan_cost_bound; unset when the run's time limit came first or no order of regions is reachable).
 struct PlanCostFigures {
   double value = 0.0;
@@ -36,6 +37,7 @@ std::string plan_cost_text(const scenario::PlanCost& cost, const PlanCostFigures
 
 struct RunSummary {
   const scenario::World& world;
+  const setup::RunSettings& settings;  // its seed, time limit, cost and margin as the run used them
   const knowledge::Reasoning& reasoning;
   const planning::TaskAutomaton& as_written;  // the formula every replay checks, and its labelling
   const planning::PlannerEntry& planner;
@@ -43,7 +45,6 @@ struct RunSummary {
   const planning::Replay* replay;  // null when nothing was solved
   const planning::Improvement* improvement = nullptr;  // when the plan was improved
   const execution::Robustness* robustness = nullptr;    // with --robustness N
-  const scenario::Uncertainty* uncertainty = nullptr;  // what the robustness was measured under
   const RunCosts* costs = nullptr;  // the main job's: what each part of the run took
   const PlanCostFigures* plan_cost = nullptr;  // the main job's: the plan's cost and its bound
 };

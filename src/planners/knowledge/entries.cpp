@@ -20,7 +20,7 @@ std::shared_ptr<const PlannerData> prepare_knowledge(const Problem& problem, con
   prepared->stages = std::make_shared<const planning::StageGraph>(problem.task);
   prepared->routes = planning::choose_routes(problem.world, problem.task, *prepared->stages, problem.decomposition, options.deadline);
   const long long arrangements = options.preview ? planning::lookahead::kPreviewArrangements
-                                                 : planning::lookahead::run_arrangements(problem.world.planner.time_limit);
+                                                 : planning::lookahead::run_arrangements(problem.time_limit_s);
   prepared->lookahead = planning::lookahead::look_ahead(problem.world, problem.knowledge, problem.task, *prepared->stages, options.deadline, arrangements);
   prepared->task_names_bodies = problem.task.names_bodies();
   return prepared;

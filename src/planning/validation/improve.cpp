@@ -101,10 +101,9 @@ bool better(const scenario::PlanCost& cost, const PlanMeasures& a, const PlanMea
 // way as far from the fixed bodies as the steps it replaces were, and each region the task has the robot
 // visit or a body enter as deeply (visit_depths). Checked only for candidates that are better, which are
 // few; a deadline reached on the way refuses the candidate, and the loop stops.
-bool keeps_margin(const Problem& problem, const Replay& current, const Replay& candidate, int from, int to,
+bool keeps_margin(const Problem& problem, double margin, const Replay& current, const Replay& candidate, int from, int to,
                   int way_steps, const Deadline& deadline) {
   const scenario::World& world = problem.world;
-  const double margin = world.planner.improve_margin;
   if (margin <= 0.0) return true;
   const auto step = [](int i) { return static_cast<std::size_t>(i); };
   const std::optional<double> kept = clearance(world, current.states, step(from), step(to), margin, deadline);
@@ -145,14 +144,15 @@ PlanMeasures measure(const scenario::World& world, const Plan& plan, const Repla
   return m;
 }
 
-Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::uint64_t seed, int budget, Plan& plan,
-                    Replay& replay, const Deadline& deadline, std::optional<double> for_seconds) {
+Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::uint64_t seed, const ImprovementSettings& settings,
+                    Plan& plan, Replay& replay, const Deadline& deadline) {
+  const int budget = settings.for_s ? kUnboundedCandidates : settings.candidates;
   const auto started = std::chrono::steady_clock::now();
   Improvement result;
-  result.for_s = for_seconds;
-  const Deadline until = for_seconds ? deadline.sooner(*for_seconds) : deadline;
+  result.for_s = settings.for_s;
+  const Deadline until = settings.for_s ? deadline.sooner(*settings.for_s) : deadline;
   result.first = result.improved = measure(problem.world, plan, replay);
-  const scenario::PlanCost& cost = problem.world.planner.cost;
+  const scenario::PlanCost& cost = settings.cost;
   const auto since_start = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
   result.progress.push_back({0.0, cost_of(cost, result.first)});
   // Only the motion's time counts: a candidate that takes longer cannot be better.
@@ -190,7 +190,7 @@ Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::u
     checked.control_states.clear();
     const PlanMeasures measures = measure(problem.world, candidate, checked);
     if (!better(cost, measures, result.improved)) continue;
-    if (!keeps_margin(problem, replay, checked, from, to, steps_of(way), until)) continue;
+    if (!keeps_margin(problem, settings.margin_m, replay, checked, from, to, steps_of(way), until)) continue;
     plan = std::move(candidate);
     replay = std::move(checked);
     result.improved = measures;

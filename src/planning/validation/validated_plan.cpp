@@ -7,7 +7,7 @@
 namespace physltl::planning {
 
 ValidatedPlan plan_and_validate(const Problem& p, const PlannerEntry& planner, const PlannerData* prepared,
-                                const PlannerOptions& options) {
+                                const PlannerOptions& options, const ImprovementSettings& improvement) {
   ValidatedPlan validated{planner.plan(p, prepared, options), std::nullopt, std::nullopt};
   if (validated.result.solved) {
     const knowledge::ValidityMode mode =
@@ -15,9 +15,8 @@ ValidatedPlan plan_and_validate(const Problem& p, const PlannerEntry& planner, c
     const auto started = std::chrono::steady_clock::now();
     validated.replay = replay(p.world, validated.result.plan, p.formula, p.knowledge, {.mode = mode, .deadline = options.deadline});
     validated.replay_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    if ((options.improve > 0 || options.improve_for_s) && !validated.result.improved_itself && validated.replay->validated()) {
-      validated.improvement = improve(p, mode, options.seed, options.improve_for_s ? kUnboundedCandidates : options.improve,
-                                      validated.result.plan, *validated.replay, options.deadline, options.improve_for_s);
+    if (improvement.any() && !validated.result.improved_itself && validated.replay->validated()) {
+      validated.improvement = improve(p, mode, options.seed, improvement, validated.result.plan, *validated.replay, options.deadline);
     }
   }
   return validated;

@@ -173,9 +173,8 @@ TEST(OmplPlanners, SstImprovesUntilItsTimeLimitAndIsNotImprovedAfter) {
   const TestProblem p("ordered.lua");
   PlannerOptions options = ompl_options(1, 2.0);
   options.parameters.erase(sst_until_parameter().name);
-  options.improve = 100;
   const ValidatedPlan validated =
-      plan_and_validate(p.problem(), planner_named("ompl-sst"), nullptr, options);
+      plan_and_validate(p.problem(), planner_named("ompl-sst"), nullptr, options, {.candidates = 100});
   ASSERT_TRUE(validated.solved()) << validated.result.stop_reason;
   EXPECT_TRUE(validated.result.improved_itself);
   EXPECT_GE(validated.result.stats.planning_time_s, kSstShareOfTimeLimit * 2.0);  // not stopped at its first solution
