@@ -1,5 +1,5 @@
 // The layout docs/architecture.md draws, held against the code: every include points down the layers (the
-// planning core names no planner, no planner includes another), and no function in src/ or render/ runs
+// planning core names no planner, no planner includes another), and no function in src/ runs
 // over kMaxFunctionLines. Both read the sources as text; nothing is compiled.
 
 #include <gtest/gtest.h>
@@ -62,7 +62,6 @@ std::string module_of(const std::string& path) {
       {"src/planners/knowledge/", "knowledge_planner"}, {"physltl/planners/knowledge/", "knowledge_planner"},
       {"src/planners/ompl/", "ompl_planner"},           {"physltl/planners/ompl/", "ompl_planner"},
       {"src/planners/", "planners"},                    {"physltl/planners/", "planners"},
-      {"render/", "render"},
   };
   for (const auto& [prefix, module] : prefixes) {
     if (path.rfind(prefix, 0) == 0) return module;
@@ -97,7 +96,7 @@ std::string read(const fs::path& file) {
 TEST(Layers, EveryIncludeOfAModulePointsToItselfOrALowerModule) {
   const std::regex include(R"re(^\s*#include\s+"(physltl/[^"]+)")re");
   std::vector<std::string> wrong;
-  for (const fs::path& file : sources_under({"src", "include", "render"})) {
+  for (const fs::path& file : sources_under({"src", "include"})) {
     const std::string path = fs::relative(file, kSource).generic_string();
     const std::string module = module_of(path);
     ASSERT_TRUE(allowed().contains(module)) << path << " belongs to no module of the table";
@@ -128,7 +127,7 @@ TEST(Layers, ThePlanningCoreNamesNoPlannerAndNoPlannerAnother) {
   EXPECT_FALSE(allowed().at("execution").contains("planners"));
   // Private headers are reached by quoted names relative to their own folder, never by climbing out of it.
   const std::regex climbing(R"re(^\s*#include\s+"\.\./)re");
-  for (const fs::path& file : sources_under({"src", "render"})) {
+  for (const fs::path& file : sources_under({"src"})) {
     std::istringstream lines(read(file));
     for (std::string line; std::getline(lines, line);) {
       EXPECT_FALSE(std::regex_search(line, climbing)) << file << ": " << line;
@@ -156,7 +155,7 @@ TEST(Layers, EveryPublicHeaderIsOneAnotherModuleUses) {
     headers[fs::relative(file, kSource / "include").generic_string()] = public_includes(file);
   }
   std::set<std::string> needed;
-  for (const fs::path& file : sources_under({"src", "render"})) {
+  for (const fs::path& file : sources_under({"src"})) {
     const std::string module = module_of(fs::relative(file, kSource).generic_string());
     for (const std::string& header : public_includes(file)) {
       if (module_of(header) != module) needed.insert(header);
@@ -359,7 +358,7 @@ TEST(FunctionSize, TheScannerFindsFunctionsAndTheirLength) {
 
 TEST(FunctionSize, NoFunctionInTheProgramRunsOverEightyLines) {
   std::string longest;
-  for (const fs::path& file : sources_under({"src", "render"})) {
+  for (const fs::path& file : sources_under({"src"})) {
     for (const FunctionLength& f : functions_of(file)) {
       if (f.lines > kMaxFunctionLines) longest += f.where + ": " + std::to_string(f.lines) + " lines: " + f.head + "\n";
     }
