@@ -45,7 +45,7 @@ std::optional<StopReason> stop_reason_from(const std::string& text) {
   return std::nullopt;
 }
 
-StopReason stop_reason_of(const Deadline& reached) {
+StopReason stop_reason_of(const base::Deadline& reached) {
   return reached.interrupted() ? StopReason::kInterrupted : StopReason::kTimeLimit;
 }
 
@@ -58,7 +58,7 @@ std::ostream& operator<<(std::ostream& out, StopReason reason) { return out << t
 PlannerOptions options_for(const scenario::World& world) {
   PlannerOptions options;
   options.seed = world.planner.seed;
-  options.deadline = Deadline::in(world.planner.time_limit);
+  options.deadline = base::Deadline::in(world.planner.time_limit);
   return options;
 }
 

@@ -231,7 +231,7 @@ TEST(Replay, AStopAndStayTraceThatEntersTheHazardIsRejected) {
   const PlanResult result = p.plan_task(reach_only, [] {
     PlannerOptions o;
     o.seed = 4;
-    o.deadline = Deadline::in(20);
+    o.deadline = base::Deadline::in(20);
     return o;
   }());
   ASSERT_TRUE(result.solved);
@@ -287,7 +287,7 @@ TEST(Planner, TheOnlyWayThroughABoxAndAWayRoundFiveTimesLongerArePushedThrough) 
 ValidatedPlan solve_and_improve(const TestProblem& p, std::uint64_t seed, int improve) {
   PlannerOptions options;
   options.seed = seed;
-  options.deadline = Deadline::in(20);
+  options.deadline = base::Deadline::in(20);
   options.improve = improve;
   return plan_and_validate(p.problem(), planner_named("knowledge"), p.preparation("knowledge"), options);
 }
@@ -441,14 +441,14 @@ TEST(Deadline, AReplayCutShortValidatesNothingAndSaysWhy) {
   const TestProblem p("ordered.lua");
   const PlanResult result = p.solve(3);
   ASSERT_TRUE(result.solved);
-  const Replay cut = replay(p.world, result.plan, p.original, p.knowledge, {.deadline = Deadline::in(0.0)});
+  const Replay cut = replay(p.world, result.plan, p.original, p.knowledge, {.deadline = base::Deadline::in(0.0)});
   EXPECT_FALSE(cut.validated());
   EXPECT_EQ(cut.cut_short, "time limit");
   EXPECT_EQ(cut.failure, "the replay was cut short (time limit)");
   EXPECT_LT(cut.states.size(), static_cast<size_t>(result.plan.total_steps()));
   std::atomic<bool> stop{true};
   const Replay stopped = replay(p.world, result.plan, p.original, p.knowledge,
-                                {.deadline = Deadline(Deadline::Clock::time_point::max(), &stop)});
+                                {.deadline = base::Deadline(base::Deadline::Clock::time_point::max(), &stop)});
   EXPECT_EQ(stopped.cut_short, "interrupted");
 }
 
@@ -458,7 +458,7 @@ TEST(Deadline, AnImprovementCutShortKeepsTheValidatedPlanItHadAndSaysSo) {
   ASSERT_TRUE(first.solved());
   Plan plan = first.result.plan;
   Replay replayed = *first.replay;
-  const Improvement cut = improve(p.problem(), knowledge::ValidityMode::kKnowledge, 1, 60, plan, replayed, Deadline::in(0.0));
+  const Improvement cut = improve(p.problem(), knowledge::ValidityMode::kKnowledge, 1, 60, plan, replayed, base::Deadline::in(0.0));
   EXPECT_EQ(cut.stopped, "time limit");
   EXPECT_EQ(cut.candidates, 0);
   expect_same_plan(plan, first.result.plan);
@@ -473,9 +473,9 @@ TEST(Deadline, APreparationCutShortEndsTheRunWithNoPlanAndKeepsNothing) {
   const TestProblem p("rooms.lua");
   const PlanningProblem problem(p.world);
   const PlannerEntry& knowledge = planner_named("knowledge");
-  EXPECT_THROW(problem.preparation(knowledge, {Deadline::in(0.0)}), DeadlineReached);
+  EXPECT_THROW(problem.preparation(knowledge, {base::Deadline::in(0.0)}), base::DeadlineReached);
   PlannerOptions options;
-  options.deadline = Deadline::in(0.0);
+  options.deadline = base::Deadline::in(0.0);
   const ValidatedPlan cut = solve(problem, knowledge, options);
   EXPECT_FALSE(cut.solved());
   EXPECT_EQ(cut.result.stop_reason, StopReason::kTimeLimit);
@@ -496,7 +496,7 @@ TEST(Deadline, APreparationAskedForAfterTheDeadlineStartsNoWork) {
     ++preparations;
     return std::shared_ptr<const PlannerData>();
   };
-  EXPECT_THROW(problem.preparation(counting, {Deadline::in(0.0)}), DeadlineReached);
+  EXPECT_THROW(problem.preparation(counting, {base::Deadline::in(0.0)}), base::DeadlineReached);
   EXPECT_EQ(preparations, 0);
   EXPECT_EQ(problem.preparation(counting, {}), nullptr);
   EXPECT_EQ(preparations, 1);
@@ -539,7 +539,7 @@ TEST(Planner, GivesUpAtItsTimeLimitOnAnImpossibleTask) {
   p.knowledge = knowledge::formulate(p.world);
   const TaskAutomaton task = TaskAutomaton::make(ltl::parse("F p4"), p.world);
   PlannerOptions options;
-  options.deadline = Deadline::in(0.3);
+  options.deadline = base::Deadline::in(0.3);
   const PlanResult result = p.plan_task(task, options);
   EXPECT_FALSE(result.solved);
   EXPECT_EQ(result.stop_reason, StopReason::kTimeLimit);
@@ -555,7 +555,7 @@ TEST(Planner, ATaskAlreadyLostAtTheStartHasNoLead) {
   }
   const TaskAutomaton task = TaskAutomaton::make(ltl::parse("!p2 U p1"), p.world);
   PlannerOptions options;
-  options.deadline = Deadline::in(5);
+  options.deadline = base::Deadline::in(5);
   const PlanResult result = p.plan_task(task, options);
   EXPECT_FALSE(result.solved);
   EXPECT_EQ(result.stop_reason, StopReason::kNoLead);
@@ -566,7 +566,7 @@ TEST(Planner, StopsWhenAskedTo) {
   const TestProblem p("rooms.lua");
   std::atomic<bool> stop{true};
   PlannerOptions options;
-  options.deadline = physltl::Deadline(physltl::Deadline::Clock::time_point::max(), &stop);
+  options.deadline = physltl::base::Deadline(physltl::base::Deadline::Clock::time_point::max(), &stop);
   const PlanResult result = p.plan_task(p.task, options);
   EXPECT_FALSE(result.solved);
   EXPECT_EQ(result.stop_reason, StopReason::kInterrupted);

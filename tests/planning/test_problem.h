@@ -74,7 +74,7 @@ struct TestProblem {
   PlanResult solve(std::uint64_t seed, const std::string& planner = "knowledge") const {
     PlannerOptions options;
     options.seed = seed;
-    options.deadline = Deadline::in(20);
+    options.deadline = base::Deadline::in(20);
     return planner_named(planner).plan(problem(), preparation(planner), options);
   }
 

@@ -8,7 +8,7 @@
 #include <chrono>
 #include <stdexcept>
 
-namespace physltl {
+namespace physltl::base {
 
 // Thrown by Deadline::check() deep inside a phase that has no partial result to give (preparation):
 // whoever started the run turns it into "no plan found (time limit)" or an interruption.
@@ -54,4 +54,4 @@ class Deadline {
   const std::atomic<bool>* stop_ = nullptr;
 };
 
-}  // namespace physltl
+}  // namespace physltl::base

@@ -58,7 +58,7 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   results.parameter_notes = parameter_notes(settings.parameters);
   results.started_at = local_time_now();
   // Before any unit and outside their time limits; Ctrl-C stops it.
-  const Deadline interruptible(Deadline::Clock::time_point::max(), &stop_flag());
+  const base::Deadline interruptible(base::Deadline::Clock::time_point::max(), &stop_flag());
   results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->problem->as_written(), interruptible);
   results.shortest_push_free_path_m =
       planning::shortest_push_free_path_length(c->world, c->problem->as_written(), interruptible);
@@ -186,7 +186,7 @@ BenchRun measure(const planning::PlanningProblem& problem, const planning::Plann
       const scenario::World& world = problem.world();
       const execution::Robustness robustness = execution::measure_robustness(
           world, world.uncertainty, robustness_worlds, options.seed, result.plan, *solution.replay, problem.as_written(),
-          Deadline(Deadline::Clock::time_point::max(), options.deadline.stop()));  // timed apart from the run: Ctrl-C only
+          base::Deadline(base::Deadline::Clock::time_point::max(), options.deadline.stop()));  // timed apart from the run: Ctrl-C only
       run.robust_worlds = robustness.worlds;
       run.robust_succeeded = robustness.succeeded;
       run.robust_failures = robustness.failures;

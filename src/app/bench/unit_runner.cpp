@@ -37,7 +37,7 @@ bool run_units(const std::vector<std::unique_ptr<BenchCase>>& cases, const std::
     planning::PlannerOptions options = planning::options_for(c.world);
     options.seed = unit.seed;
     // Each unit's deadline starts with it: the case was prepared before any unit, outside their time.
-    options.deadline = Deadline::in(c.world.planner.time_limit, &stop);
+    options.deadline = base::Deadline::in(c.world.planner.time_limit, &stop);
     options.threads = planner.threads;
     options.improve = settings.improve;
     options.parameters = settings.parameters;

@@ -55,7 +55,7 @@ int run_reporting_errors(Command& command) {
     return kExitNoPlan;
   } catch (const Interrupted&) {
     throw;
-  } catch (const physltl::DeadlineReached&) {
+  } catch (const physltl::base::DeadlineReached&) {
     // Only an interruption reaches here: a run's time limit is its own result.
     throw Interrupted();
   } catch (const BadInput& e) {

@@ -26,7 +26,7 @@ scenario::World load_world(const std::string& path, const std::vector<std::strin
 }
 
 PlanningRun::PlanningRun(const scenario::World& world, const planning::PlannerEntry& planner)
-    : deadline_(Deadline::in(world.planner.time_limit, &stop_flag())), problem_(world), planner_(planner) {}
+    : deadline_(base::Deadline::in(world.planner.time_limit, &stop_flag())), problem_(world), planner_(planner) {}
 
 planning::PlannerOptions PlanningRun::options() const {
   planning::PlannerOptions options = planning::options_for(problem_.world());
@@ -75,7 +75,7 @@ PlanCostFigures PlanningRun::plan_cost(const planning::ValidatedPlan& solution) 
   try {
     const double bound = planning::plan_cost_bound(world, problem_.as_written(), world.planner.cost, deadline_);
     if (std::isfinite(bound)) figures.bound = bound;
-  } catch (const DeadlineReached& reached) {
+  } catch (const base::DeadlineReached& reached) {
     if (reached.interrupted()) throw;  // the time limit leaves the bound unset, Ctrl-C ends the run
     figures.bound_cut_short = true;
   }

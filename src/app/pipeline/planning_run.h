@@ -44,7 +44,7 @@ class PlanningRun {
   // The World's seed and time limit, and the run's deadline, as options (planning::options_for), for the
   // caller to complete.
   planning::PlannerOptions options() const;
-  const Deadline& deadline() const { return deadline_; }
+  const base::Deadline& deadline() const { return deadline_; }
   // What the planner prepared of the problem, within the run's deadline (throws DeadlineReached).
   const planning::PlannerData* preparation() const { return problem_.preparation(planner_, {deadline_}); }
   planning::ValidatedPlan solve(const planning::PlannerOptions& options) const { return planning::solve(problem_, planner_, options); }
@@ -64,7 +64,7 @@ class PlanningRun {
   PlanCostFigures plan_cost(const planning::ValidatedPlan& solution) const;
 
  private:
-  Deadline deadline_;  // before problem_: the reasoning counts too
+  base::Deadline deadline_;  // before problem_: the reasoning counts too
   planning::PlanningProblem problem_;
   const planning::PlannerEntry& planner_;
 };

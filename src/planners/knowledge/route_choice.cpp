@@ -118,7 +118,7 @@ struct PlaceWays {
   std::vector<std::vector<double>> through, push_free;
 };
 
-PlaceWays place_ways(const scenario::World& world, const std::vector<int>& avoided_regions, const Deadline& deadline) {
+PlaceWays place_ways(const scenario::World& world, const std::vector<int>& avoided_regions, const base::Deadline& deadline) {
   std::vector<geometry::Polygon> avoided;
   for (int region : avoided_regions) {
     for (geometry::Polygon& part : geometry::convex_partition(world.regions[static_cast<size_t>(region)].polygon)) {
@@ -149,7 +149,7 @@ bool stage_goes_round(const std::set<int>& entries, const std::vector<int>& targ
 }  // namespace
 
 RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& task, const StageGraph& stages,
-                          const decomposition::Decomposition& decomposition, const Deadline& deadline) {
+                          const decomposition::Decomposition& decomposition, const base::Deadline& deadline) {
   const int count = stages.stages();
   RouteChoice choice{std::vector<bool>(static_cast<size_t>(count), false), {}};
   const std::vector<bool> under = triangles_under_bodies(world, task, decomposition, deadline);
@@ -209,7 +209,7 @@ RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& tas
 }
 
 std::vector<bool> triangles_under_bodies(const scenario::World& world, const TaskAutomaton& task,
-                                         const decomposition::Decomposition& decomposition, const Deadline& deadline) {
+                                         const decomposition::Decomposition& decomposition, const base::Deadline& deadline) {
   std::vector<const geometry::Footprint*> bodies;
   std::vector<geometry::Rect> bounds;
   for (size_t b = 0; b < world.movable_bodies.size(); ++b) {

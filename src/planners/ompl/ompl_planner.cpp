@@ -310,7 +310,7 @@ PlanResult plan_with_ompl(const Problem& problem, const PlannerOptions& options,
 
   // An improving SST would use the whole time limit: it stops at kSstShareOfTimeLimit of it, so that the
   // replay that validates its plan fits in the run's deadline too.
-  const Deadline until = improving ? options.deadline.sooner(kSstShareOfTimeLimit * options.deadline.seconds_left()) : options.deadline;
+  const base::Deadline until = improving ? options.deadline.sooner(kSstShareOfTimeLimit * options.deadline.seconds_left()) : options.deadline;
   const ob::PlannerTerminationCondition ptc([&] { return until.reached(); });
   const ob::PlannerStatus status = improving ? solve_in_slices(*planner, ptc, search, *space, result.motion_progress) : planner->solve(ptc);
 

@@ -102,7 +102,7 @@ bool better(const scenario::PlanCost& cost, const PlanMeasures& a, const PlanMea
 // visit or a body enter as deeply (visit_depths). Checked only for candidates that are better, which are
 // few; a deadline reached on the way refuses the candidate, and the loop stops.
 bool keeps_margin(const Problem& problem, const Replay& current, const Replay& candidate, int from, int to,
-                  int way_steps, const Deadline& deadline) {
+                  int way_steps, const base::Deadline& deadline) {
   const scenario::World& world = problem.world;
   const double margin = world.planner.improve_margin;
   if (margin <= 0.0) return true;
@@ -146,11 +146,11 @@ PlanMeasures measure(const scenario::World& world, const Plan& plan, const Repla
 }
 
 Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::uint64_t seed, int budget, Plan& plan,
-                    Replay& replay, const Deadline& deadline, std::optional<double> for_seconds) {
+                    Replay& replay, const base::Deadline& deadline, std::optional<double> for_seconds) {
   const auto started = std::chrono::steady_clock::now();
   Improvement result;
   result.for_s = for_seconds;
-  const Deadline until = for_seconds ? deadline.sooner(*for_seconds) : deadline;
+  const base::Deadline until = for_seconds ? deadline.sooner(*for_seconds) : deadline;
   result.first = result.improved = measure(problem.world, plan, replay);
   const scenario::PlanCost& cost = problem.world.planner.cost;
   const auto since_start = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };

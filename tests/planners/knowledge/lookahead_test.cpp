@@ -467,7 +467,7 @@ TEST(LookAhead, ASearchTheOrderLeadsIntoADeadEndGetsOutThroughItsEscape) {
   const TestProblem p(kPuzzles + "tight_store.lua");
   PlannerOptions options;
   options.seed = 3;
-  options.deadline = Deadline::in(600);  // the budget stops it, never the clock
+  options.deadline = base::Deadline::in(600);  // the budget stops it, never the clock
   options.threads = 1;
   options.max_propagations = 200'000;  // it needs 144,462
   options.parameters[push_primitives_parameter().name] = "off";  // the primitives carry the order out at once
@@ -539,7 +539,7 @@ TEST(PushPrimitive, CarriesOutAThreePushOrderInFewerPropagationsThanSampledContr
   PlannerOptions options;
   options.seed = 1;
   options.threads = 1;
-  options.deadline = Deadline::in(600);  // the budget stops it, never the clock
+  options.deadline = base::Deadline::in(600);  // the budget stops it, never the clock
   options.max_propagations = 20'000;
   const PlanResult primitives = p.plan_task(p.task, options);
   options.parameters[push_primitives_parameter().name] = "off";
@@ -563,7 +563,7 @@ TEST(PushPrimitive, ASearchStoppedShortNamesThePushOfTheOrderItDidNotCarryOut) {
   PlannerOptions options;
   options.seed = 1;
   options.threads = 1;
-  options.deadline = Deadline::in(600);
+  options.deadline = base::Deadline::in(600);
   // Sampled controls, which seed 1 needs 337 of: the primitive carries the whole order out in its first
   // expansion, before any budget is looked at.
   options.parameters[push_primitives_parameter().name] = "off";

@@ -33,7 +33,7 @@ TEST_P(RegressionFamily, TheKnowledgePlannerSolvesItAndTheReplayAgrees) {
   for (std::uint64_t seed : w.seeds) {
     PlannerOptions options;
     options.seed = seed;
-    options.deadline = Deadline::in(20);
+    options.deadline = base::Deadline::in(20);
     const PlanResult result = p.plan_task(p.task, options);
     ASSERT_TRUE(result.solved) << w.file << " seed " << seed << ": " << result.stop_reason;
     const Replay replay = p.check(result.plan);
@@ -65,7 +65,7 @@ TEST(Baseline, PushesABodyOnlyFromAFaceItsPushFromListsAndStillSolves) {
     for (std::uint64_t seed : {1, 2}) {
       PlannerOptions options;
       options.seed = seed;
-      options.deadline = Deadline::in(20);
+      options.deadline = base::Deadline::in(20);
       const PlanResult result = p.plan_task(p.original, options, "baseline");
       ASSERT_TRUE(result.solved) << drive << " seed " << seed << ": " << result.stop_reason;
       const Replay replay =

@@ -21,7 +21,7 @@ namespace {
 PlannerOptions ompl_options(std::uint64_t seed, double time_limit = 20) {
   PlannerOptions options;
   options.seed = seed;
-  options.deadline = Deadline::in(time_limit);
+  options.deadline = base::Deadline::in(time_limit);
   options.parameters[sst_until_parameter().name] = "first";
   return options;
 }

@@ -95,7 +95,7 @@ std::vector<PlannedPush> runs_of(const PushLattice& lattice, const std::vector<P
 }
 
 Lookahead look_ahead(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge, const TaskAutomaton& task,
-                     const StageGraph& stages, const Deadline& deadline, long long max_arrangements) {
+                     const StageGraph& stages, const base::Deadline& deadline, long long max_arrangements) {
   Lookahead result;
   PushPlan& plan = result.plan;
   if (!task.names_bodies()) {

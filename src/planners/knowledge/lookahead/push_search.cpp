@@ -930,7 +930,7 @@ class ArrangementSearch {
   std::size_t macro_bytes_ = 0;
 };
 
-PushSearch PushSearcher::search(int stage, const std::vector<int>& cells, int robot_cell, const Deadline& deadline,
+PushSearch PushSearcher::search(int stage, const std::vector<int>& cells, int robot_cell, const base::Deadline& deadline,
                                 SearchBudget budget, double weight) const {
   PushSearch result;
   const Goals goals = goals_from(stage);

@@ -94,7 +94,7 @@ class PushSearcher {
   // same order on any machine); `deadline` only ends it early (DeadlineReached). `weight` scales the
   // estimate against the cost so far: 0 is a uniform-cost search, whose order has the fewest body steps
   // (for tests of the estimate).
-  PushSearch search(int stage, const std::vector<int>& cells, int robot_cell, const Deadline& deadline = {},
+  PushSearch search(int stage, const std::vector<int>& cells, int robot_cell, const base::Deadline& deadline = {},
                     SearchBudget budget = {}, double weight = kHeuristicWeight) const;
   // The estimate the search ranks arrangements by: never more than the body steps left from `cells`.
   int estimate(int stage, const std::vector<int>& cells) const;
