@@ -22,6 +22,8 @@
 namespace physltl::planning {
 namespace {
 
+using namespace physltl::planners::knowledge;
+
 const std::string kPuzzles = "../tests/planning/data/puzzles/";
 const std::string kWorlds = "../tests/planning/data/lookahead/";
 const std::string kShapes = "../tests/planning/data/shapes/";

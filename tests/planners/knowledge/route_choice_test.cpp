@@ -14,6 +14,8 @@
 namespace physltl::planning {
 namespace {
 
+using namespace physltl::planners::knowledge;
+
 bool first_stage_goes_round(const std::string& scenario, const std::map<std::string, std::string>& params = {}) {
   const TestProblem p(scenario, params);
   const StageGraph stages(p.task);

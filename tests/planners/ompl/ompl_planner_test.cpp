@@ -16,6 +16,8 @@
 namespace physltl::planning {
 namespace {
 
+using namespace physltl::planners::ompl;
+
 // SST stops at its first solution here, as the others do: a plan in the time a test can spend, the same for
 // a seed on any machine.
 PlannerOptions ompl_options(std::uint64_t seed, double time_limit = 20) {
