@@ -42,7 +42,7 @@ INSTANTIATE_TEST_SUITE_P(Replay, ShippedScenario,
 class RegressionWorld : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(RegressionWorld, IncrementalInferenceEqualsInferenceFromScratchAtEveryReplayedStep) {
-  expect_audited_replay_validates("../tests/planning/data/regression/" + GetParam() + ".lua");
+  expect_audited_replay_validates("../tests/data/regression/" + GetParam() + ".lua");
 }
 
 INSTANTIATE_TEST_SUITE_P(Replay, RegressionWorld,

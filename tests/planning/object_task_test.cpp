@@ -39,7 +39,7 @@ TEST(Labelling, ALetterIsTheRobotsRegionAndWhereEachNamedBodyIs) {
 // crates@docks: one part of three bodies and two places, whatever the number of crates and docks; it
 // holds only when every crate is in some dock, each in its own or two in one.
 TEST(Labelling, AGroupIsOnePartThatHoldsWhenEveryBodyOfItIsInSomeRegionOfTheSet) {
-  const TestProblem p("../tests/planning/data/crates_to_docks.lua");
+  const TestProblem p("../tests/data/crates_to_docks.lua");
   const knowledge::Labelling& labels = p.original.labelling;
   ASSERT_EQ(labels.named_parts().size(), 1u);
   EXPECT_EQ(labels.named_parts()[0].bodies, (std::vector<int>{0, 1, 2}));
@@ -57,7 +57,7 @@ TEST(Labelling, AGroupIsOnePartThatHoldsWhenEveryBodyOfItIsInSomeRegionOfTheSet)
 }
 
 TEST(ObjectTask, TheKnowledgePlannerPutsEveryBodyOfAGroupInSomeRegionOfItsSetAndTheReplayAgrees) {
-  const TestProblem p("../tests/planning/data/crates_to_docks.lua");
+  const TestProblem p("../tests/data/crates_to_docks.lua");
   const PlanResult result = p.solve(1);
   ASSERT_TRUE(result.solved) << result.stop_reason;
   const Replay r = p.check(result.plan);
@@ -140,7 +140,7 @@ TEST(ObjectTask, AStageWhoseOnlyNodeCannotGrowDoesNotHoldTheSearch) {
 }
 
 TEST(ObjectTask, BrakingLongerThanOneControlEndsThePlanInSeveral) {
-  const TestProblem p("../tests/planning/data/slow_stop.lua");  // a sliding crate, controls of <= 6 steps
+  const TestProblem p("../tests/data/slow_stop.lua");  // a sliding crate, controls of <= 6 steps
   const PlanResult result = p.solve(1);
   ASSERT_TRUE(result.solved) << result.stop_reason;
   const auto& controls = result.plan.controls;

@@ -120,9 +120,9 @@ TEST(PathLowerBound, NoValidatedPlanIsShorter) {
 // raises it: its curve of the best cost over time never rises.
 TEST(PlanCostBound, NoValidatedPlanCostsLessAndImprovementNeverRaisesTheCost) {
   const std::vector<std::string> worlds = {"rooms.lua", "ordered.lua", "office.lua", "delivery.lua", "sorting.lua",
-                                           "warehouse_rows.lua", "../tests/planning/data/regression/hazard_gap.lua",
-                                           "../tests/planning/data/regression/start_at_box.lua",
-                                           "../tests/planning/data/regression/chain_corridor.lua"};
+                                           "warehouse_rows.lua", "../tests/data/regression/hazard_gap.lua",
+                                           "../tests/data/regression/start_at_box.lua",
+                                           "../tests/data/regression/chain_corridor.lua"};
   const std::vector<scenario::PlanCost> costs = {scenario::parse_plan_cost("time"), scenario::parse_plan_cost("length"),
                                                  scenario::parse_plan_cost("pushes"), scenario::parse_plan_cost("moved"),
                                                  scenario::parse_plan_cost("time + 2 pushes + 0.5 length")};
@@ -159,7 +159,7 @@ TEST(PlanCostBound, NoValidatedPlanCostsLessAndImprovementNeverRaisesTheCost) {
 // regression-family world, seeds 1..20: no plan beats it.
 TEST(PlanCostBound, NoImprovedPlanOfAnyShippedOrFamilyWorldIsFasterOverTwentySeeds) {
   std::vector<std::string> worlds;
-  for (const char* folder : {"/scenarios", "/tests/planning/data/regression"}) {
+  for (const char* folder : {"/scenarios", "/tests/data/regression"}) {
     for (const auto& entry : std::filesystem::directory_iterator(std::string(PHYSLTL_SOURCE_DIR) + folder)) {
       if (entry.path().extension() == ".lua") worlds.push_back("../" + std::filesystem::relative(entry.path(), PHYSLTL_SOURCE_DIR).string());
     }

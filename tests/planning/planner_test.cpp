@@ -75,7 +75,7 @@ TEST(Replay, AValidatedPlanKeepsTheRobotsLimitsAtEveryStep) {
 // out again, once counted as no touch (plans ended steps up to 4 cm inside). No state of a validated plan
 // overlaps a wall by more than the millimetre a robot resting against one sinks in.
 TEST(Replay, AValidatedPlanThroughATightLaneNeverEndsAStepInsideAWall) {
-  const TestProblem p("../tests/planning/data/lane.lua");
+  const TestProblem p("../tests/data/lane.lua");
   for (int seed = 1; seed <= 3; ++seed) {
     const PlanResult result = p.solve(seed);
     ASSERT_TRUE(result.solved) << result.stop_reason;
@@ -246,7 +246,7 @@ TEST(Replay, AStopAndStayTraceThatEntersTheHazardIsRejected) {
 // The paper's claim for knowledge: it moves objects only when it must. A box in the open is gone round
 // (the lead avoids it); a box in a doorway is pushed (rooms.lua).
 TEST(Planner, TheKnowledgePlannerGoesRoundABoxInTheOpen) {
-  const TestProblem p("../tests/planning/data/open_box.lua");
+  const TestProblem p("../tests/data/open_box.lua");
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     const PlanResult result = p.solve(seed);
     ASSERT_TRUE(result.solved) << result.stop_reason;
@@ -260,7 +260,7 @@ TEST(Planner, TheKnowledgePlannerGoesRoundABoxInTheOpen) {
 // Going round or pushing through (route_choice.h): a row of boxes with a free lane past its end is gone
 // round; a box in the only doorway is pushed; so is a light box whose way round is five times as long.
 TEST(Planner, ARowOfBoxesWithAFreeLanePastItIsGoneRound) {
-  const TestProblem p("../tests/planning/data/box_row.lua");
+  const TestProblem p("../tests/data/box_row.lua");
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     const PlanResult result = p.solve(seed);
     ASSERT_TRUE(result.solved) << result.stop_reason;
@@ -272,7 +272,7 @@ TEST(Planner, ARowOfBoxesWithAFreeLanePastItIsGoneRound) {
 
 TEST(Planner, TheOnlyWayThroughABoxAndAWayRoundFiveTimesLongerArePushedThrough) {
   for (const char* world : {"through_a_box.lua", "long_detour.lua"}) {
-    const TestProblem p(std::string("../tests/planning/data/") + world);
+    const TestProblem p(std::string("../tests/data/") + world);
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
       const PlanResult result = p.solve(seed);
       ASSERT_TRUE(result.solved) << world << " " << result.stop_reason;
@@ -359,7 +359,7 @@ HandPlan needless_push_plan(const TestProblem& p) {
 }
 
 TEST(Improve, CostPushesRemovesANeedlessPush) {
-  TestProblem p("../tests/planning/data/wall_and_box.lua");
+  TestProblem p("../tests/data/wall_and_box.lua");
   p.world.planner.cost = scenario::parse_plan_cost("pushes");
   auto [plan, replayed] = needless_push_plan(p);
   ASSERT_TRUE(replayed.validated()) << replayed.failure;
@@ -373,7 +373,7 @@ TEST(Improve, CostPushesRemovesANeedlessPush) {
 }
 
 TEST(Improve, AShortcutThatFailsReplayIsNotKept) {
-  TestProblem p("../tests/planning/data/wall_and_box.lua");
+  TestProblem p("../tests/data/wall_and_box.lua");
   auto [plan, replayed] = needless_push_plan(p);
   ASSERT_TRUE(replayed.validated()) << replayed.failure;
   // The straightest shortcut, start to goal, runs into the wall: replay refuses it.

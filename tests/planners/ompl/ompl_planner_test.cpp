@@ -156,7 +156,7 @@ TEST(OmplPlanners, ATaskThatMustEndAtRestIsPlannedOnOurProductAndRefusedByLtlPla
 
 // Tasks about where bodies are, on our product: the automaton reads the crate's place at every step.
 TEST(OmplPlanners, EachControlPlannerSolvesATaskAboutAnObjectAndItsPlanReplays) {
-  const TestProblem p("../tests/planning/data/push_to_dock.lua");
+  const TestProblem p("../tests/data/push_to_dock.lua");
   ASSERT_TRUE(p.task.names_bodies());
   for (const std::string planner : {"ompl-rrt", "ompl-kpiece", "ompl-sst", "ompl-pdst"}) {
     const PlanResult result = p.plan_task(p.task, ompl_options(2), planner);
