@@ -1,7 +1,7 @@
 #pragma once
-// When a run must stop: an instant on the steady clock and a stop flag (Ctrl-C, SIGTERM). Every long loop
-// of every layer (the free space's triangulation and its searches, the route choice, the look-ahead, the search, replay,
-// improvement) asks it every few milliseconds of work, so that the time limit and Ctrl-C hold in every
+// When a run must stop: an instant on the steady clock and a stop flag (Ctrl-C, SIGTERM). The long loops of
+// a run's phases (the free space's triangulation and its searches, the route choice, the look-ahead, the
+// search, replay, improvement, robustness) ask it every few milliseconds of work, so that the time limit and Ctrl-C hold in every
 // phase, not only in the search (docs/reliability.md, "The time rule").
 
 #include <atomic>
