@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace physltl {
+namespace physltl::base {
 
 Deadline Deadline::in(double seconds, const std::atomic<bool>* stop) {
   // Beyond about 292 years the clock's nanoseconds overflow: that is never.
@@ -22,4 +22,4 @@ Deadline Deadline::sooner(double seconds) const {
   return Deadline(std::min(at_, other.at_), stop_);
 }
 
-}  // namespace physltl
+}  // namespace physltl::base

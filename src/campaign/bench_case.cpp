@@ -55,7 +55,7 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   results.parameter_notes = setup::parameter_notes(settings.flags.parameters);
   results.started_at = local_time_now();
   // Before any unit and outside their time limits; Ctrl-C stops it.
-  const Deadline interruptible(Deadline::Clock::time_point::max(), &common::stop_flag());
+  const base::Deadline interruptible(base::Deadline::Clock::time_point::max(), &common::stop_flag());
   results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->problem->as_written(), interruptible);
   results.shortest_push_free_path_m =
       planning::shortest_push_free_path_length(c->world, c->problem->as_written(), interruptible);
@@ -184,7 +184,7 @@ BenchRun measure(const planning::PlanningProblem& problem, const planning::Plann
     if (robustness_worlds > 0) {
       const execution::Robustness robustness = execution::measure_robustness(
           problem.world(), settings.uncertainty, robustness_worlds, options.seed, result.plan, *solution.replay, problem.as_written(),
-          Deadline(Deadline::Clock::time_point::max(), options.deadline.stop()));  // timed apart from the run: Ctrl-C only
+          base::Deadline(base::Deadline::Clock::time_point::max(), options.deadline.stop()));  // timed apart from the run: Ctrl-C only
       run.robust_worlds = robustness.worlds;
       run.robust_succeeded = robustness.succeeded;
       run.robust_failures = robustness.failures;

@@ -35,7 +35,7 @@ bool run_units(const std::vector<std::unique_ptr<BenchCase>>& cases, const std::
     }
     const auto unit_started = clock::now();
     // Each unit's deadline starts with it: the case was prepared before any unit, outside their time.
-    planning::PlannerOptions options = c.settings.planner_options(Deadline::in(c.settings.time_limit_s, &stop));
+    planning::PlannerOptions options = c.settings.planner_options(base::Deadline::in(c.settings.time_limit_s, &stop));
     options.seed = unit.seed;
     options.threads = planner.threads;
     BenchRun run = measure(*c.problem, *planner.planner, c.settings, options, settings.robustness);

@@ -21,7 +21,7 @@ Replanned replan(const scenario::World& from_here, const planning::PlannerEntry&
   // The budget, not the clock, ends the search: the time limit only guards against a budget too large,
   // and of the run's deadline only its stop flag (Ctrl-C) holds.
   planning::PlannerOptions budgeted = options;
-  budgeted.deadline = Deadline::in(3600.0, options.deadline.stop());
+  budgeted.deadline = base::Deadline::in(3600.0, options.deadline.stop());
   budgeted.max_propagations = budget;
   budgeted.threads = 1;
   const planning::ValidatedPlan solution = planning::solve(problem, planner, budgeted);

@@ -48,7 +48,7 @@ std::string describe(const std::string& kind, const planning::Replay& run) {
 }  // namespace
 
 WorldRun judge_in_world(const scenario::World& world, const planning::Plan& plan, const planning::Replay* nominal,
-                        const planning::TaskAutomaton& formula, const Deadline& deadline) {
+                        const planning::TaskAutomaton& formula, const base::Deadline& deadline) {
   // The truth's own K: its masses decide what kappa calls immovable.
   const knowledge::AbstractKnowledge truth = knowledge::formulate(world);
   // Every planner's plan is judged by every rule, so kappa's count for the baseline's plans too.
@@ -79,7 +79,7 @@ WorldRun judge_in_world(const scenario::World& world, const planning::Plan& plan
 
 Robustness measure_robustness(const scenario::World& model, const scenario::Uncertainty& uncertainty, int worlds,
                               std::uint64_t seed, const planning::Plan& plan, const planning::Replay& nominal,
-                              const planning::TaskAutomaton& formula, const Deadline& deadline) {
+                              const planning::TaskAutomaton& formula, const base::Deadline& deadline) {
   Robustness robustness;
   robustness.asked = worlds;
   for (int i = 0; i < worlds; ++i) {

@@ -210,7 +210,7 @@ bool FreeSpace::free(const Vec2& a, const Vec2& b) const {
   }
 }
 
-std::vector<std::vector<double>> FreeSpace::distances(const std::vector<Polygon>& places, const Deadline& deadline) const {
+std::vector<std::vector<double>> FreeSpace::distances(const std::vector<Polygon>& places, const base::Deadline& deadline) const {
   const auto obstacles_at = [&](const Vec2& p) -> const std::vector<int>& { return cells_[grid_.index_of(p)]; };
   const FreeMesh mesh = triangulate_free_space(obstacles_, obstacles_at, bounds_, places, deadline);
   std::vector<std::vector<double>> lengths;

@@ -72,7 +72,7 @@ Polygon shrunk(const Polygon& obstacle) {
 // The bounds, the obstacles shrunk and the places as constraints; the places of one point as vertices.
 std::vector<Polygon> insert_constraints(Cdt& cdt, const std::vector<Polygon>& obstacles, const Rect& bounds,
                                         const std::vector<Polygon>& places, std::vector<Cdt::Vertex_handle>& point_places,
-                                        const Deadline& deadline) {
+                                        const base::Deadline& deadline) {
   insert_outline(cdt, Polygon::from_rect(bounds).vertices);
   std::vector<Polygon> inner;
   inner.reserve(obstacles.size());
@@ -94,7 +94,7 @@ std::vector<Polygon> insert_constraints(Cdt& cdt, const std::vector<Polygon>& ob
 // The free faces become the mesh's triangles (numbered in their info, -1 for the rest), each with the
 // places that hold it.
 void keep_free_faces(Cdt& cdt, const std::vector<Polygon>& inner, const std::function<const std::vector<int>&(const Vec2&)>& obstacles_at,
-                     const Rect& bounds, const std::vector<Polygon>& places, FreeMesh& mesh, const Deadline& deadline) {
+                     const Rect& bounds, const std::vector<Polygon>& places, FreeMesh& mesh, const base::Deadline& deadline) {
   std::vector<std::vector<Point>> outlines(places.size());
   for (size_t p = 0; p < places.size(); ++p) {
     if (places[p].vertices.size() < 3) continue;
@@ -165,7 +165,7 @@ void link_triangles(const Cdt& cdt, FreeMesh& mesh) {
 
 FreeMesh triangulate_free_space(const std::vector<Polygon>& obstacles,
                                 const std::function<const std::vector<int>&(const Vec2&)>& obstacles_at, const Rect& bounds,
-                                const std::vector<Polygon>& places, const Deadline& deadline) {
+                                const std::vector<Polygon>& places, const base::Deadline& deadline) {
   Cdt cdt;
   std::vector<Cdt::Vertex_handle> point_places;
   const std::vector<Polygon> inner = insert_constraints(cdt, obstacles, bounds, places, point_places, deadline);

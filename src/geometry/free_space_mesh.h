@@ -39,6 +39,6 @@ struct FreeMesh {
 // superset). Checks `deadline` as it inserts.
 FreeMesh triangulate_free_space(const std::vector<Polygon>& obstacles,
                                 const std::function<const std::vector<int>&(const Vec2&)>& obstacles_at, const Rect& bounds,
-                                const std::vector<Polygon>& places, const Deadline& deadline);
+                                const std::vector<Polygon>& places, const base::Deadline& deadline);
 
 }  // namespace physltl::geometry

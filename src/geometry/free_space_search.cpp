@@ -52,7 +52,7 @@ enum class Exit { kLeftEdge, kRightEdge, kOpposite };
 
 class Search {
  public:
-  Search(const FreeMesh& mesh, int source, const Deadline& deadline)
+  Search(const FreeMesh& mesh, int source, const base::Deadline& deadline)
       : mesh_(mesh), deadline_(deadline), best_(mesh.place_vertex.size(), kInfinity), root_length_(mesh.vertices.size(), kInfinity),
         in_source_(mesh.triangles.size(), 0) {
     seed(source);
@@ -238,7 +238,7 @@ class Search {
   }
 
   const FreeMesh& mesh_;
-  const Deadline& deadline_;
+  const base::Deadline& deadline_;
   std::vector<double> best_;         // per place
   std::vector<double> root_length_;  // per vertex: the shortest path that turned there so far
   std::vector<char> in_source_;      // per triangle
@@ -249,7 +249,7 @@ class Search {
 
 }  // namespace
 
-std::vector<double> distances_from_place(const FreeMesh& mesh, int source, const Deadline& deadline) {
+std::vector<double> distances_from_place(const FreeMesh& mesh, int source, const base::Deadline& deadline) {
   return Search(mesh, source, deadline).run();
 }
 

@@ -18,6 +18,6 @@ namespace physltl::geometry {
 
 // The length of a shortest path from any point of place `source`'s free part to any point of each place's
 // (infinity where there is none).
-std::vector<double> distances_from_place(const FreeMesh& mesh, int source, const Deadline& deadline);
+std::vector<double> distances_from_place(const FreeMesh& mesh, int source, const base::Deadline& deadline);
 
 }  // namespace physltl::geometry

@@ -73,18 +73,18 @@ geometry::FreeSpace robot_free_space(const scenario::World& world, RobotObstacle
 }
 
 std::vector<std::vector<double>> place_distances(const scenario::World& world, const geometry::FreeSpace& space,
-                                                 const Deadline& deadline) {
+                                                 const base::Deadline& deadline) {
   std::vector<geometry::Polygon> places{start_place(space, world.robot.start)};
   for (const auto& region : world.regions) places.push_back(region.polygon);
   return space.distances(places, deadline);
 }
 
-double shortest_free_path_length(const scenario::World& world, const TaskAutomaton& task, const Deadline& deadline) {
+double shortest_free_path_length(const scenario::World& world, const TaskAutomaton& task, const base::Deadline& deadline) {
   const geometry::FreeSpace space = robot_free_space(world, RobotObstacles::kFixedBodies);
   return shortest_accepted_route(world, task, place_distances(world, space, deadline), false);
 }
 
-double shortest_push_free_path_length(const scenario::World& world, const TaskAutomaton& task, const Deadline& deadline) {
+double shortest_push_free_path_length(const scenario::World& world, const TaskAutomaton& task, const base::Deadline& deadline) {
   const geometry::FreeSpace space = robot_free_space(world, RobotObstacles::kAllBodies);
   return shortest_accepted_route(world, task, place_distances(world, space, deadline), true);
 }
@@ -98,7 +98,7 @@ double plan_cost_bound(const scenario::PlanCost& cost, double max_speed, double 
 }
 
 double plan_cost_bound(const scenario::World& world, const TaskAutomaton& task, const scenario::PlanCost& cost,
-                       const Deadline& deadline) {
+                       const base::Deadline& deadline) {
   // Only the ways the cost's terms need (a push-free way costs a free space of every body).
   const double free_path = cost.time > 0.0 || cost.length > 0.0 ? shortest_free_path_length(world, task, deadline) : 0.0;
   const double push_free = cost.pushes > 0.0 || cost.moved > 0.0 ? shortest_push_free_path_length(world, task, deadline) : 0.0;

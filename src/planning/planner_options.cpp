@@ -45,7 +45,7 @@ std::optional<StopReason> stop_reason_from(const std::string& text) {
   return std::nullopt;
 }
 
-StopReason stop_reason_of(const Deadline& reached) {
+StopReason stop_reason_of(const base::Deadline& reached) {
   return reached.interrupted() ? StopReason::kInterrupted : StopReason::kTimeLimit;
 }
 

@@ -68,7 +68,7 @@ ValidatedPlan solve(const PlanningProblem& problem, const PlannerEntry& planner,
   const PlannerData* prepared = nullptr;
   try {
     prepared = problem.preparation(planner, {options.deadline});
-  } catch (const DeadlineReached& reached) {
+  } catch (const base::DeadlineReached& reached) {
     // Cut short before any search: no plan, for the reason the deadline gives.
     ValidatedPlan cut;
     cut.result.stop_reason = reached.interrupted() ? StopReason::kInterrupted : StopReason::kTimeLimit;

@@ -6,7 +6,7 @@
 
 namespace physltl::setup {
 
-planning::PlannerOptions RunSettings::planner_options(const Deadline& deadline) const {
+planning::PlannerOptions RunSettings::planner_options(const base::Deadline& deadline) const {
   planning::PlannerOptions options;
   options.seed = seed;
   options.deadline = deadline;

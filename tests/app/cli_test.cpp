@@ -54,7 +54,7 @@ TEST(Cli, CheckJsonReportsTheReasoningOnRooms) {
 }
 
 TEST(Cli, CheckSaysWhetherTheLookAheadAppliesAndItsPushOrder) {
-  const std::string puzzle = kSource + "/tests/planning/data/puzzles/long_haul.lua";
+  const std::string puzzle = kSource + "/tests/data/puzzles/long_haul.lua";
   const Result text = run("check " + puzzle + " --no-preview");
   ASSERT_EQ(text.exit_code, 0) << text.err;
   EXPECT_NE(text.out.find("lookahead  2 pushes: M1 +x 4.2 m, M1 -y 1.8 m"), std::string::npos) << text.out;
@@ -94,7 +94,7 @@ TEST(Cli, CheckSearchesPushOrdersWithinABudgetOfItsOwnAndSaysWhenItStoppedThere)
 
 TEST(Cli, TheMainJobPrintsThePushOrderItFollowsAndReportJsonHoldsIt) {
   const std::string out = std::string(PHYSLTL_TEST_OUTPUT_DIR) + "/lookahead_run";
-  const Result r = run(kSource + "/tests/planning/data/puzzles/long_haul.lua --improve 0 --out " + out);
+  const Result r = run(kSource + "/tests/data/puzzles/long_haul.lua --improve 0 --out " + out);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("lookahead  2 pushes: M1 +x 4.2 m, M1 -y 1.8 m"), std::string::npos) << r.out;
   std::ifstream report_file(out + "/long_haul/report.json");
@@ -188,7 +188,7 @@ TEST(Cli, CheckWritesPreviewPngAtTheScenariosRenderSize) {
 
 TEST(Cli, CheckPreviewsACompoundBodyAsOneBodyOfConvexParts) {
   const fs::path out = fresh_out_dir();
-  const std::string scenario = kSource + "/tests/planning/data/shapes/u_shape.lua";  // a U of five cells
+  const std::string scenario = kSource + "/tests/data/shapes/u_shape.lua";  // a U of five cells
   const Result r = run("check " + scenario + " --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("U        polygon of 8 corners"), std::string::npos) << r.out;

@@ -125,8 +125,8 @@ TEST(Nonsense, NumbersOnTheCommandLineMustBeFiniteAndInRange) {
       {rooms + " --seed -1", "a seed is a whole number"},
       {"bench " + rooms + " --seed 1e3", "a seed is a whole number"},
       {"execute " + rooms + " --tolerance nan", "--tolerance: 'nan' must be finite"},
-      {"import sokoban " + kSource + "/tests/planning/data/sokoban/microban.txt --cell nan", "--cell: 'nan' must be finite"},
-      {"import sokoban " + kSource + "/tests/planning/data/sokoban/microban.txt --box 1e300", "--box: '1e300' is too large"},
+      {"import sokoban " + kSource + "/tests/data/sokoban/microban.txt --cell nan", "--cell: 'nan' must be finite"},
+      {"import sokoban " + kSource + "/tests/data/sokoban/microban.txt --box 1e300", "--box: '1e300' is too large"},
   };
   expect_each_refused(cases, out);
   EXPECT_FALSE(fs::exists(out));

@@ -27,7 +27,7 @@ TEST(ImportSokoban, WritesOneScenarioPerLevelThatChecksAndTheFirstPlansItsPush) 
 // The levels docs/benchmarks.md measures ("Push puzzles"), seed 1: imported, planned and validated by replay.
 TEST(ImportSokoban, TheFirstTenMicrobanLevelsAreEachSolvedByTheKnowledgePlanner) {
   const fs::path out = fresh_out_dir();
-  ASSERT_EQ(run("import sokoban " + kSource + "/tests/planning/data/sokoban/microban.txt --out " + out.string()).exit_code, 0);
+  ASSERT_EQ(run("import sokoban " + kSource + "/tests/data/sokoban/microban.txt --out " + out.string()).exit_code, 0);
   std::string levels;
   for (int n = 1; n <= 10; ++n) levels += " " + (out / ("microban_" + std::to_string(n) + ".lua")).string();
   const Result r = run("bench" + levels + " --runs 1 --time-limit 30 --quiet --out " + (out / "bench").string());

@@ -52,7 +52,7 @@ void expect_readable(const scenario::World& world) {
 
 TEST(PicturesAtScale, ImportedPuzzlesOfFiveTwentyAndThirtySixBoxes) {
   const fs::path out = fresh_out_dir();
-  const Result imported = run("import sokoban " + kSource + "/tests/planning/data/sokoban/many_boxes.txt --out " + out.string());
+  const Result imported = run("import sokoban " + kSource + "/tests/data/sokoban/many_boxes.txt --out " + out.string());
   ASSERT_EQ(imported.exit_code, 0) << imported.err;
   for (int level : {1, 2, 3}) expect_readable(scenario::load_scenario((out / ("many_boxes_" + std::to_string(level) + ".lua")).string()));
 }

@@ -113,7 +113,7 @@ TEST(Execute, ReplansFromWhereTheRobotBrakedAgainstAWall) {
   // found no plan in 200k propagations in 9 of 20 worlds: the start had no way anywhere, and the stage was
   // taken to go round the box that closes the corridor.
   const fs::path out = fresh_out_dir();
-  const fs::path scenario = fs::path(kSource) / "tests" / "planning" / "data" / "regression" / "start_at_wall.lua";
+  const fs::path scenario = fs::path(kSource) / "tests" / "data" / "regression" / "start_at_wall.lua";
   const Result r = run("execute " + scenario.string() +
                        " --set gap=0 --worlds 20 --uncertainty mass=0.2,friction=0.2,start=0.02 --seed 1 --quiet --out " +
                        out.string());
@@ -131,7 +131,7 @@ TEST(Execute, BrakesBeforeAnOffsetFromThePlanCarriesTheRobotIntoAWall) {
   // current step saw it only as the robot touched a wall (14 of 20 worlds); the offset carried along the
   // plan's next half second is seen before.
   const fs::path out = fresh_out_dir();
-  const fs::path scenario = fs::path(kSource) / "tests" / "planning" / "data" / "regression" / "grid_corner_turn.lua";
+  const fs::path scenario = fs::path(kSource) / "tests" / "data" / "regression" / "grid_corner_turn.lua";
   const Result r = run("execute " + scenario.string() +
                        " --worlds 20 --uncertainty mass=0.2,friction=0.2,start=0.02 --seed 1 --quiet --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;

@@ -1,6 +1,7 @@
 // The layout docs/architecture.md draws, held against the code: every include points down the layers (the
-// planning core names no planner, no planner includes another), and no function in src/ or render/ runs
-// over kMaxFunctionLines. Both read the sources as text; nothing is compiled.
+// planning core names no planner, no planner includes another), every file's namespace is its module
+// folder's, and no function in src/ runs over kMaxFunctionLines. The modules are read from the folders
+// (Modules); all of it reads the sources as text, nothing is compiled.
 
 #include <gtest/gtest.h>
 
@@ -20,7 +21,63 @@ namespace fs = std::filesystem;
 
 const fs::path kSource = PHYSLTL_SOURCE_DIR;
 
-// Each module with the modules it may include, directly or through another (docs/architecture.md).
+// The modules of a source tree, read from its folders: a module is a folder under src/ with a
+// CMakeLists.txt, named by its path under src/ ("planning", "planners/knowledge"); its public headers are
+// include/physltl/<that path>/, its namespace physltl::<that path with / as ::>. A planner is a module
+// folder directly under src/planners/. Nothing here names a module by hand.
+class Modules {
+ public:
+  explicit Modules(const fs::path& root) {
+    if (!fs::exists(root / "src")) return;
+    for (const auto& entry : fs::recursive_directory_iterator(root / "src")) {
+      if (entry.is_regular_file() && entry.path().filename() == "CMakeLists.txt" && entry.path().parent_path() != root / "src") {
+        names_.insert(fs::relative(entry.path().parent_path(), root / "src").generic_string());
+      }
+    }
+  }
+
+  const std::set<std::string>& names() const { return names_; }
+
+  std::set<std::string> planners() const {
+    std::set<std::string> found;
+    for (const std::string& name : names_) {
+      if (name.rfind("planners/", 0) == 0 && name.find('/', 9) == std::string::npos) found.insert(name);
+    }
+    return found;
+  }
+
+  // The module a path of the tree ("src/...", "include/physltl/...") or a public include ("physltl/...")
+  // belongs to: the deepest module folder holding it; empty for none.
+  std::string of(const std::string& path) const {
+    std::string rest;
+    for (const std::string root : {"src/", "include/physltl/", "physltl/"}) {
+      if (path.rfind(root, 0) == 0) rest = path.substr(root.size());
+    }
+    for (std::string folder = fs::path(rest).parent_path().generic_string(); !folder.empty();
+         folder = fs::path(folder).parent_path().generic_string()) {
+      if (names_.contains(folder)) return folder;
+    }
+    return "";
+  }
+
+  static std::string namespace_of(const std::string& module) {
+    std::string name = "physltl::" + module;
+    for (std::size_t slash; (slash = name.find('/')) != std::string::npos;) name.replace(slash, 1, "::");
+    return name;
+  }
+
+ private:
+  std::set<std::string> names_;
+};
+
+const Modules& modules() {
+  static const Modules found(kSource);
+  return found;
+}
+
+// Each layer with the modules it may include, directly or through another (docs/architecture.md). The
+// planners are not listed: each may include the planning core, and the registry above them ("planners")
+// every one of them, whatever folders src/planners holds.
 const std::map<std::string, std::set<std::string>>& allowed() {
   static const std::map<std::string, std::set<std::string>> table = [] {
     std::map<std::string, std::set<std::string>> direct = {
@@ -33,15 +90,17 @@ const std::map<std::string, std::set<std::string>>& allowed() {
         {"decomposition", {"scenario"}},
         {"render", {"scenario"}},
         {"planning", {"knowledge", "physics", "decomposition"}},
-        {"knowledge_planner", {"planning"}},
-        {"ompl_planner", {"planning"}},
-        {"planners", {"knowledge_planner", "ompl_planner"}},
+        {"planners", {}},
         {"execution", {"planning"}},
         {"common", {"scenario"}},
         {"setup", {"common", "planners"}},
         {"campaign", {"setup", "execution"}},
         {"app", {"campaign", "render"}},
     };
+    for (const std::string& planner : modules().planners()) {
+      direct[planner] = {"planning"};
+      direct["planners"].insert(planner);
+    }
     // The closure: a module may include whatever the modules below it may.
     std::map<std::string, std::set<std::string>> closure;
     for (const auto& [module, below] : direct) {
@@ -59,29 +118,11 @@ const std::map<std::string, std::set<std::string>>& allowed() {
   return table;
 }
 
-// The module a path of the repository (or a public header's include path) belongs to; empty for none.
-std::string module_of(const std::string& path) {
-  static const std::vector<std::pair<std::string, std::string>> prefixes = {
-      {"src/planners/knowledge/", "knowledge_planner"}, {"physltl/planners/knowledge/", "knowledge_planner"},
-      {"src/planners/ompl/", "ompl_planner"},           {"physltl/planners/ompl/", "ompl_planner"},
-      {"src/planners/", "planners"},                    {"physltl/planners/", "planners"},
-      {"render/", "render"},
-  };
-  for (const auto& [prefix, module] : prefixes) {
-    if (path.rfind(prefix, 0) == 0) return module;
-  }
-  for (const std::string root : {"src/", "include/physltl/", "physltl/"}) {
-    if (path.rfind(root, 0) != 0) continue;
-    const std::string rest = path.substr(root.size());
-    return rest.substr(0, rest.find('/'));
-  }
-  return "";
-}
-
-std::vector<fs::path> sources_under(const std::vector<std::string>& roots) {
+std::vector<fs::path> sources_under(const fs::path& root, const std::vector<std::string>& folders) {
   std::vector<fs::path> files;
-  for (const std::string& root : roots) {
-    for (const auto& entry : fs::recursive_directory_iterator(kSource / root)) {
+  for (const std::string& folder : folders) {
+    if (!fs::exists(root / folder)) continue;
+    for (const auto& entry : fs::recursive_directory_iterator(root / folder)) {
       const std::string extension = entry.path().extension().string();
       if (entry.is_regular_file() && (extension == ".cpp" || extension == ".h")) files.push_back(entry.path());
     }
@@ -90,6 +131,8 @@ std::vector<fs::path> sources_under(const std::vector<std::string>& roots) {
   return files;
 }
 
+std::vector<fs::path> sources_under(const std::vector<std::string>& folders) { return sources_under(kSource, folders); }
+
 std::string read(const fs::path& file) {
   std::ifstream in(file);
   std::stringstream text;
@@ -97,58 +140,85 @@ std::string read(const fs::path& file) {
   return text.str();
 }
 
+std::string lines_of(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += item + "\n";
+  return text;
+}
+
+// The physltl/... headers a file includes, with their line numbers.
+std::vector<std::pair<int, std::string>> public_includes_with_lines(const fs::path& file) {
+  static const std::regex include(R"re(^\s*#include\s+"(physltl/[^"]+)")re");
+  std::vector<std::pair<int, std::string>> found;
+  std::istringstream lines(read(file));
+  int number = 0;
+  for (std::string line; std::getline(lines, line);) {
+    ++number;
+    std::smatch m;
+    if (std::regex_search(line, m, include)) found.emplace_back(number, m[1]);
+  }
+  return found;
+}
+
+std::vector<std::string> public_includes(const fs::path& file) {
+  std::vector<std::string> found;
+  for (const auto& [line, header] : public_includes_with_lines(file)) found.push_back(header);
+  return found;
+}
+
+TEST(Layers, EveryModuleFolderIsALayerOfTheTable) {
+  for (const std::string& module : modules().names()) EXPECT_TRUE(allowed().contains(module)) << "src/" << module;
+  EXPECT_TRUE(modules().planners().contains("planners/knowledge"));
+  EXPECT_TRUE(modules().planners().contains("planners/ompl"));
+}
+
 TEST(Layers, EveryIncludeOfAModulePointsToItselfOrALowerModule) {
-  const std::regex include(R"re(^\s*#include\s+"(physltl/[^"]+)")re");
   std::vector<std::string> wrong;
-  for (const fs::path& file : sources_under({"src", "include", "render"})) {
+  for (const fs::path& file : sources_under({"src", "include"})) {
     const std::string path = fs::relative(file, kSource).generic_string();
-    const std::string module = module_of(path);
+    const std::string module = modules().of(path);
     ASSERT_TRUE(allowed().contains(module)) << path << " belongs to no module of the table";
-    std::istringstream lines(read(file));
-    int number = 0;
-    for (std::string line; std::getline(lines, line);) {
-      ++number;
-      std::smatch m;
-      if (!std::regex_search(line, m, include)) continue;
-      const std::string to = module_of(m[1]);
+    for (const auto& [line, header] : public_includes_with_lines(file)) {
+      const std::string to = modules().of(header);
       if (to != module && !allowed().at(module).contains(to)) {
-        wrong.push_back(path + ":" + std::to_string(number) + ": " + module + " includes " + m[1].str() + " (" + to + ")");
+        wrong.push_back(path + ":" + std::to_string(line) + ": " + module + " includes " + header + " (" + to + ")");
       }
     }
   }
-  EXPECT_TRUE(wrong.empty()) << [&] {
-    std::string text;
-    for (const std::string& w : wrong) text += w + "\n";
-    return text;
-  }();
+  EXPECT_TRUE(wrong.empty()) << lines_of(wrong);
+}
+
+// The includes by which a planner's files (its folder and its public headers) reach another planner.
+std::vector<std::string> includes_between_planners(const fs::path& root, const Modules& tree) {
+  std::vector<std::string> wrong;
+  for (const fs::path& file : sources_under(root, {"src/planners", "include/physltl/planners"})) {
+    const std::string path = fs::relative(file, root).generic_string();
+    const std::string from = tree.of(path);
+    if (!tree.planners().contains(from)) continue;
+    for (const auto& [line, header] : public_includes_with_lines(file)) {
+      const std::string to = tree.of(header);
+      if (to != from && tree.planners().contains(to)) wrong.push_back(path + ":" + std::to_string(line) + ": " + from + " includes " + to);
+    }
+  }
+  return wrong;
 }
 
 TEST(Layers, ThePlanningCoreNamesNoPlannerAndNoPlannerAnother) {
-  EXPECT_FALSE(allowed().at("planning").contains("knowledge_planner"));
-  EXPECT_FALSE(allowed().at("planning").contains("ompl_planner"));
-  EXPECT_FALSE(allowed().at("knowledge_planner").contains("ompl_planner"));
-  EXPECT_FALSE(allowed().at("ompl_planner").contains("knowledge_planner"));
+  for (const std::string& planner : modules().planners()) {
+    EXPECT_FALSE(allowed().at("planning").contains(planner)) << planner;
+    EXPECT_FALSE(allowed().at("execution").contains(planner)) << planner;
+  }
   EXPECT_FALSE(allowed().at("execution").contains("planners"));
+  const std::vector<std::string> wrong = includes_between_planners(kSource, modules());
+  EXPECT_TRUE(wrong.empty()) << lines_of(wrong);
   // Private headers are reached by quoted names relative to their own folder, never by climbing out of it.
   const std::regex climbing(R"re(^\s*#include\s+"\.\./)re");
-  for (const fs::path& file : sources_under({"src", "render"})) {
+  for (const fs::path& file : sources_under({"src"})) {
     std::istringstream lines(read(file));
     for (std::string line; std::getline(lines, line);) {
       EXPECT_FALSE(std::regex_search(line, climbing)) << file << ": " << line;
     }
   }
-}
-
-// The physltl/... headers a file includes.
-std::vector<std::string> public_includes(const fs::path& file) {
-  static const std::regex include(R"re(^\s*#include\s+"(physltl/[^"]+)")re");
-  std::vector<std::string> found;
-  std::istringstream lines(read(file));
-  for (std::string line; std::getline(lines, line);) {
-    std::smatch m;
-    if (std::regex_search(line, m, include)) found.push_back(m[1]);
-  }
-  return found;
 }
 
 // A public header is one another module uses: included from another module's code, or from a public
@@ -159,15 +229,15 @@ TEST(Layers, EveryPublicHeaderIsOneAnotherModuleUses) {
     headers[fs::relative(file, kSource / "include").generic_string()] = public_includes(file);
   }
   std::set<std::string> needed;
-  for (const fs::path& file : sources_under({"src", "render"})) {
-    const std::string module = module_of(fs::relative(file, kSource).generic_string());
+  for (const fs::path& file : sources_under({"src"})) {
+    const std::string module = modules().of(fs::relative(file, kSource).generic_string());
     for (const std::string& header : public_includes(file)) {
-      if (module_of(header) != module) needed.insert(header);
+      if (modules().of(header) != module) needed.insert(header);
     }
   }
   for (const auto& [header, includes] : headers) {
     for (const std::string& other : includes) {
-      if (module_of(other) != module_of(header)) needed.insert(other);
+      if (modules().of(other) != modules().of(header)) needed.insert(other);
     }
   }
   for (bool grew = true; grew;) {
@@ -359,12 +429,110 @@ TEST(FunctionSize, TheScannerFindsFunctionsAndTheirLength) {
 
 TEST(FunctionSize, NoFunctionInTheProgramRunsOverEightyLines) {
   std::string longest;
-  for (const fs::path& file : sources_under({"src", "render"})) {
+  for (const fs::path& file : sources_under({"src"})) {
     for (const FunctionLength& f : functions_of(file)) {
       if (f.lines > kMaxFunctionLines) longest += f.where + ": " + std::to_string(f.lines) + " lines: " + f.head + "\n";
     }
   }
   EXPECT_TRUE(longest.empty()) << longest;
+}
+
+// The physltl namespaces a file's code opens at namespace scope, each in full ("physltl::ltl::detail"):
+// anonymous namespaces add nothing to the name, other libraries' namespaces (a forward declaration of
+// OMPL's classes) are left out.
+std::set<std::string> namespaces_opened(const fs::path& file) {
+  const std::string code = code_only(read(file));
+  static const std::regex opening(R"(^\s*(?:inline\s+)?namespace\s*([A-Za-z_][\w:]*)?\s*$)");
+  std::vector<std::string> scopes;  // each open brace: its namespace in full, or "{" for any other brace
+  std::set<std::string> found;
+  std::size_t head_start = 0;
+  for (std::size_t i = 0; i < code.size(); ++i) {
+    const char c = code[i];
+    if (c == ';' || c == '}') head_start = i + 1;
+    if (c == '}' && !scopes.empty()) scopes.pop_back();
+    if (c != '{') continue;
+    std::smatch m;
+    static const std::regex directive(R"((^|\n)\s*#[^\n]*)");  // #include and #pragma lines before the first namespace
+    const std::string head = std::regex_replace(code.substr(head_start, i - head_start), directive, "");
+    const bool in_namespace_scope = scopes.empty() || scopes.back() != "{";
+    if (in_namespace_scope && std::regex_match(head, m, opening)) {
+      const std::string outer = scopes.empty() ? "" : scopes.back();
+      const std::string name = !m[1].matched ? outer : outer.empty() ? m[1].str() : outer + "::" + m[1].str();
+      scopes.push_back(name);
+      if (name.rfind("physltl", 0) == 0) found.insert(name);
+    } else {
+      scopes.push_back("{");
+    }
+    head_start = i + 1;
+  }
+  return found;
+}
+
+// The files of src/ and include/physltl/ that open a namespace other than their module folder's (or one
+// nested in it that is not another module's).
+std::vector<std::string> namespaces_not_of_their_folder(const fs::path& root, const Modules& tree) {
+  std::vector<std::string> wrong;
+  for (const fs::path& file : sources_under(root, {"src", "include"})) {
+    const std::string path = fs::relative(file, root).generic_string();
+    const std::string module = tree.of(path);
+    const std::string own = Modules::namespace_of(module);
+    for (const std::string& name : namespaces_opened(file)) {
+      bool fits = name == own || name.rfind(own + "::", 0) == 0;
+      for (const std::string& other : tree.names()) {
+        const std::string theirs = Modules::namespace_of(other);
+        if (other != module && theirs.size() > own.size() && (name == theirs || name.rfind(theirs + "::", 0) == 0)) fits = false;
+      }
+      if (!fits) wrong.push_back(path + ": namespace " + name + " in module " + module + " (" + own + ")");
+    }
+  }
+  return wrong;
+}
+
+TEST(Namespaces, EveryFileIsInItsModuleFoldersNamespace) {
+  const std::vector<std::string> wrong = namespaces_not_of_their_folder(kSource, modules());
+  EXPECT_TRUE(wrong.empty()) << lines_of(wrong);
+  EXPECT_EQ(namespaces_opened(kSource / "src/planners/knowledge/tree_search.h"),
+            std::set<std::string>{"physltl::planners::knowledge"});
+}
+
+// The checks above on a small tree of their own: a planner folder no table names (planners/b) that includes
+// another planner, and a file of it in the core's namespace, are each found; the planner that keeps to
+// itself (planners/a) is not.
+TEST(Layers, ANewPlannerFolderThatIncludesAnotherOrLeavesItsNamespaceFails) {
+  const fs::path root = fs::path(PHYSLTL_TEST_OUTPUT_DIR) / "module_tree";
+  fs::remove_all(root);
+  const auto write = [&](const std::string& path, const std::string& text) {
+    fs::create_directories((root / path).parent_path());
+    std::ofstream(root / path) << text;
+  };
+  for (const std::string module : {"planning", "planners", "planners/a", "planners/b"}) write("src/" + module + "/CMakeLists.txt", "");
+  write("include/physltl/planners/a/entries.h", "#include \"physltl/planning/registry.h\"\nnamespace physltl::planners::a {}\n");
+  write("src/planners/a/search.cpp", "#include \"physltl/planners/a/entries.h\"\nnamespace physltl::planners::a {\nnamespace {}\n}\n");
+  write("src/planners/b/search.cpp", "#include \"physltl/planning/registry.h\"\n#include \"physltl/planners/a/entries.h\"\n"
+                                     "namespace physltl::planning {\n}\n");
+  const Modules tree(root);
+  EXPECT_EQ(tree.planners(), (std::set<std::string>{"planners/a", "planners/b"}));
+  EXPECT_EQ(tree.of("src/planners/b/search.cpp"), "planners/b");
+  EXPECT_EQ(tree.of("physltl/planners/a/entries.h"), "planners/a");
+  EXPECT_EQ(includes_between_planners(root, tree),
+            std::vector<std::string>{"src/planners/b/search.cpp:2: planners/b includes planners/a"});
+  EXPECT_EQ(namespaces_not_of_their_folder(root, tree),
+            std::vector<std::string>{"src/planners/b/search.cpp: namespace physltl::planning in module planners/b (physltl::planners::b)"});
+}
+
+TEST(Namespaces, TheScannerNamesNestedNamespacesInFullAndSkipsOtherLibraries) {
+  const fs::path file = fs::path(PHYSLTL_TEST_OUTPUT_DIR) / "namespaces.h";
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << "#include \"physltl/ltl/formula.h\"\n"
+                         "namespace ompl::control { class World; }\n"
+                         "namespace physltl::ltl {\n"
+                         "namespace {\n"
+                         "struct S { void f() { } };\n"
+                         "}  // namespace\n"
+                         "namespace detail { int g(); }\n"
+                         "// namespace physltl::app { in a comment }\n"
+                         "}\n";
+  EXPECT_EQ(namespaces_opened(file), (std::set<std::string>{"physltl::ltl", "physltl::ltl::detail"}));
 }
 
 }  // namespace

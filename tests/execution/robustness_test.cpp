@@ -108,13 +108,13 @@ TEST_F(ARobustPlan, FailsOpenLoopWhenItsFirstPushedBoxIsThreeTimesHeavierThanMod
 
 TEST_F(ARobustPlan, AMeasureTheDeadlineEndsCountsOnlyTheWorldsJudgedAndSaysWhy) {
   const Robustness late = measure_robustness(problem_.world, wide(), 20, 11, result_.plan, nominal_, problem_.original,
-                                             Deadline::in(0.0));
+                                             base::Deadline::in(0.0));
   EXPECT_EQ(late.asked, 20);
   EXPECT_EQ(late.worlds, 0);
   EXPECT_EQ(late.stopped, "time limit");
   std::atomic<bool> stop{true};
   const Robustness stopped = measure_robustness(problem_.world, wide(), 20, 11, result_.plan, nominal_, problem_.original,
-                                                Deadline(Deadline::Clock::time_point::max(), &stop));
+                                                base::Deadline(base::Deadline::Clock::time_point::max(), &stop));
   EXPECT_EQ(stopped.worlds, 0);
   EXPECT_EQ(stopped.stopped, "interrupted");
   const Robustness whole = measure_robustness(problem_.world, wide(), 20, 11, result_.plan, nominal_, problem_.original);
@@ -151,7 +151,7 @@ TEST(ImprovementMargin, MakesImprovedPlansSucceedInMorePerturbedWorlds) {
     for (std::uint64_t seed : {1, 2, 3}) {
       PlannerOptions options;
       options.seed = seed;
-      options.deadline = Deadline::in(20);
+      options.deadline = base::Deadline::in(20);
       const ValidatedPlan improved = plan_and_validate(p.problem(), planner_named("knowledge"), p.preparation("knowledge"), options,
                                                        {.candidates = 1000, .margin_m = margin});
       EXPECT_TRUE(improved.solved());

@@ -146,8 +146,8 @@ TEST(FreeSpace, DistancesAgreeBothWaysAndAreNeverShorterThanStraight) {
 
 TEST(FreeSpace, ATimeLimitStopsTheDistances) {
   const FreeSpace space({Polygon::from_rect({{-1, -1}, {1, 1}})}, kFloor);
-  const Deadline passed = Deadline::in(0.0);
-  EXPECT_THROW(space.distances({point(-3, 0), point(3, 0)}, passed), DeadlineReached);
+  const base::Deadline passed = base::Deadline::in(0.0);
+  EXPECT_THROW(space.distances({point(-3, 0), point(3, 0)}, passed), base::DeadlineReached);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // What replay counts as a push (count_pushes, replay.h): what `--cost pushes`, `expect { max_pushes }` and
 // every report's "pushes" mean.
 
-#include "test_problem.h"
+#include "prepared_scenario.h"
 
 #include "physltl/planning/validation/replay.h"
 
@@ -57,7 +57,7 @@ TEST(PushCount, AKnockThatSendsTheBodySlidingIsAPush) {
 // wall_and_box.lua: the robot drives north into the box in controls of 4 steps, pushing it about 0.6 m
 // in one go. A push is what a person sees, not how the plan cuts its controls.
 TEST(PushCount, OnePushOverManyControlsCountsOnceAndTwoApartCountTwice) {
-  TestProblem p("../tests/planning/data/wall_and_box.lua");
+  PreparedScenario p("../tests/data/wall_and_box.lua");
   const auto drive = [](Plan& plan, Vec2 velocity, int steps) {
     for (; steps > 0; steps -= 4) plan.controls.push_back({velocity, std::min(steps, 4)});
   };

@@ -237,7 +237,7 @@ TEST(ScenarioFiles, AMovableBodyOfPartsIsTheirUnionNumberedAlongItsOutline) {
 }
 
 TEST(ScenarioHelpers, AGridLetterIsOneBodyOfItsCellsAndItsLowercaseLettersItsGoal) {
-  const std::string shapes = std::string(PHYSLTL_SOURCE_DIR) + "/tests/planning/data/shapes/";
+  const std::string shapes = std::string(PHYSLTL_SOURCE_DIR) + "/tests/data/shapes/";
   const World t = load_scenario(shapes + "t_to_goal.lua");
   const MovableBody& body = movable(t, "T");
   EXPECT_EQ(body.footprint.shape.outline().vertices.size(), 8u) << "a T of four cells";

@@ -1,14 +1,14 @@
 #pragma once
-// When a run must stop: an instant on the steady clock and a stop flag (Ctrl-C, SIGTERM). Every long loop
-// of every layer (the free space's triangulation and its searches, the route choice, the look-ahead, the search, replay,
-// improvement) asks it every few milliseconds of work, so that the time limit and Ctrl-C hold in every
+// When a run must stop: an instant on the steady clock and a stop flag (Ctrl-C, SIGTERM). The long loops of
+// a run's phases (the free space's triangulation and its searches, the route choice, the look-ahead, the
+// search, replay, improvement, robustness) ask it every few milliseconds of work, so that the time limit and Ctrl-C hold in every
 // phase, not only in the search (docs/reliability.md, "The time rule").
 
 #include <atomic>
 #include <chrono>
 #include <stdexcept>
 
-namespace physltl {
+namespace physltl::base {
 
 // Thrown by Deadline::check() deep inside a phase that has no partial result to give (preparation):
 // whoever started the run turns it into "no plan found (time limit)" or an interruption.
@@ -54,4 +54,4 @@ class Deadline {
   const std::atomic<bool>* stop_ = nullptr;
 };
 
-}  // namespace physltl
+}  // namespace physltl::base

@@ -40,7 +40,7 @@ struct WorldRun {
 // push that missed and a box that ended elsewhere from a region not reached; without it (controls that
 // no single plan made, such as an execution's) a failed formula counts as region_not_reached.
 WorldRun judge_in_world(const scenario::World& world, const planning::Plan& plan, const planning::Replay* nominal,
-                        const planning::TaskAutomaton& formula, const Deadline& deadline = {});
+                        const planning::TaskAutomaton& formula, const base::Deadline& deadline = {});
 
 struct Robustness {
   int asked = 0;         // worlds asked for
@@ -56,6 +56,6 @@ struct Robustness {
 // PerturbationError when the uncertainty admits no valid world.
 Robustness measure_robustness(const scenario::World& model, const scenario::Uncertainty& uncertainty, int worlds,
                               std::uint64_t seed, const planning::Plan& plan, const planning::Replay& nominal,
-                              const planning::TaskAutomaton& formula, const Deadline& deadline = {});
+                              const planning::TaskAutomaton& formula, const base::Deadline& deadline = {});
 
 }  // namespace physltl::execution

@@ -36,7 +36,7 @@ class FreeSpace {
   // search over the free space's triangles from each place (free_space_search.h), whose cost follows the
   // area it sweeps, not the pairs of corners that see each other. Checks `deadline` as it goes and throws
   // DeadlineReached.
-  std::vector<std::vector<double>> distances(const std::vector<Polygon>& places, const Deadline& deadline = {}) const;
+  std::vector<std::vector<double>> distances(const std::vector<Polygon>& places, const base::Deadline& deadline = {}) const;
   double distance(const Polygon& from, const Polygon& to) const;  // one pair
 
  private:

@@ -29,21 +29,21 @@ geometry::FreeSpace robot_free_space(const scenario::World& world, RobotObstacle
 // Shortest ways between the places a task's legs run between: place 0 is the robot's start, place k + 1
 // World region k. leg[from][to] is infinite where there is none. Throws DeadlineReached.
 std::vector<std::vector<double>> place_distances(const scenario::World& world, const geometry::FreeSpace& space,
-                                                 const Deadline& deadline = {});
+                                                 const base::Deadline& deadline = {});
 
 // Metres; infinity when no order of regions the task accepts can be reached. Both throw DeadlineReached.
-double shortest_free_path_length(const scenario::World& world, const TaskAutomaton& task, const Deadline& deadline = {});
+double shortest_free_path_length(const scenario::World& world, const TaskAutomaton& task, const base::Deadline& deadline = {});
 // The same among every body, fixed or movable, with the bodies the task names where they stand: the
 // shortest route that pushes nothing; infinity when every accepted order needs a push.
 double shortest_push_free_path_length(const scenario::World& world, const TaskAutomaton& task,
-                                      const Deadline& deadline = {});
+                                      const base::Deadline& deadline = {});
 
 // No plan of the task costs less than this (docs/planner.md, "What a plan costs"): each term of `cost`
 // bounded on its own and weighted. Time: the shortest free path at the robot's top speed; length: the
 // shortest free path; pushes and bodies moved: 1 when every accepted order needs a push (the shortest
 // push-free path is none), else 0. Infinity when no accepted order can be reached. Throws DeadlineReached.
 double plan_cost_bound(const scenario::World& world, const TaskAutomaton& task, const scenario::PlanCost& cost,
-                       const Deadline& deadline = {});
+                       const base::Deadline& deadline = {});
 // The same from the two ways already worked out (shortest_free_path_length, shortest_push_free_path_length).
 double plan_cost_bound(const scenario::PlanCost& cost, double max_speed, double free_path_m, double push_free_path_m);
 

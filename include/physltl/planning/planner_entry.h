@@ -51,7 +51,7 @@ struct PlannerParameter {
 // quick and say the same on any machine, so a planner bounds its work there by budgets of its own, in
 // units of work rather than seconds, smaller than a run's, and its account says when one stopped it.
 struct PreparationOptions {
-  Deadline deadline{};
+  base::Deadline deadline{};
   bool preview = false;
 };
 

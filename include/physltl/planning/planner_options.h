@@ -29,7 +29,7 @@ struct PlannerOptions {
   // When the whole run must end (its time limit from the run's start, preparation included) and the stop
   // flag (Ctrl-C): the search, and the preparation, replay and improvement of the run, stop at it
   // (validated_plan.h). Default: never, no stop flag.
-  Deadline deadline;
+  base::Deadline deadline;
   // The knowledge planner and the baseline stop with "budget" after this many propagations (0: no bound),
   // checked between batches, so a seed gives the same plan or the same failure on any machine and load
   // (execution's replanning, docs/robustness.md). OMPL's planners do not take it.
@@ -76,7 +76,7 @@ enum class StopReason {
 const char* to_string(StopReason reason);
 std::optional<StopReason> stop_reason_from(const std::string& text);
 // What a deadline that was reached gives: interrupted or time limit.
-StopReason stop_reason_of(const Deadline& reached);
+StopReason stop_reason_of(const base::Deadline& reached);
 // The search was cut short by a limit (time, budget, memory), so where it stood is worth a diagnosis.
 bool cut_short(StopReason reason);
 std::ostream& operator<<(std::ostream& out, StopReason reason);

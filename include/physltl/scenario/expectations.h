@@ -11,7 +11,7 @@
 
 namespace physltl::scenario {
 
-// How far a picture may differ from its golden (render/image_compare.h has the defaults and their why).
+// How far a picture may differ from its golden (physltl/render/image_compare.h has the defaults and their why).
 struct PictureTolerance {
   std::optional<int> max_channel_difference;    // 0..255
   std::optional<double> max_fraction_beyond;    // share of the pixels, 0..1

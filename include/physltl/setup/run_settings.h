@@ -31,7 +31,7 @@ struct RunSettings {
 
   // What a planner takes of them: the seed, the threads, the parameters and `deadline` (the run's, which
   // ends at time_limit_s from the run's start).
-  planning::PlannerOptions planner_options(const Deadline& deadline) const;
+  planning::PlannerOptions planner_options(const base::Deadline& deadline) const;
 };
 
 // What a command line may set of a run; each flag not given keeps what the scenario says.

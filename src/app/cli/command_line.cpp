@@ -56,7 +56,7 @@ int run_reporting_errors(Command& command) {
     return common::kExitNoPlan;
   } catch (const common::Interrupted&) {
     throw;
-  } catch (const physltl::DeadlineReached&) {
+  } catch (const physltl::base::DeadlineReached&) {
     // Only an interruption reaches here: a run's time limit is its own result.
     throw common::Interrupted();
   } catch (const common::BadInput& e) {

@@ -57,7 +57,7 @@ CommandRunner add_check_command(CLI::App& app) {
     // What the planner a run uses would prepare: the knowledge planner's look-ahead.
     const planning::PlannerEntry& planner = setup::registry().default_planner();
     // Not a planning run: no time limit, but Ctrl-C; a preview, whose budgets are the planner's own.
-    const Deadline interruptible(Deadline::Clock::time_point::max(), &common::stop_flag());
+    const base::Deadline interruptible(base::Deadline::Clock::time_point::max(), &common::stop_flag());
     const planning::PlannerAccount prepared = problem.feasible()
                                                   ? account_of(planner, problem.preparation(planner, {interruptible, true}), world)
                                                   : planning::PlannerAccount{};

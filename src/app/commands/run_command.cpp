@@ -84,7 +84,7 @@ void say_task(const PlanningRun& run, const Say& say) {
   const planning::PlannerData* prepared = nullptr;
   try {
     prepared = run.preparation();
-  } catch (const DeadlineReached& reached) {
+  } catch (const base::DeadlineReached& reached) {
     if (reached.interrupted()) throw;
     // The search then ends at once with the same reason: "no plan found (time limit)".
     say(fmt::format("prepare    cut short by the time limit ({:g} s)", run.settings().time_limit_s));

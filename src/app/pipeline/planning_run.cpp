@@ -13,7 +13,7 @@ namespace physltl::app {
 
 PlanningRun::PlanningRun(const scenario::World& world, const setup::RunSettings& settings, const planning::PlannerEntry& planner)
     : settings_(settings),
-      deadline_(Deadline::in(settings.time_limit_s, &common::stop_flag())),
+      deadline_(base::Deadline::in(settings.time_limit_s, &common::stop_flag())),
       problem_(world, settings.time_limit_s),
       planner_(planner) {}
 
@@ -64,7 +64,7 @@ PlanCostFigures PlanningRun::plan_cost(const planning::ValidatedPlan& solution) 
   try {
     const double bound = planning::plan_cost_bound(world, problem_.as_written(), cost, deadline_);
     if (std::isfinite(bound)) figures.bound = bound;
-  } catch (const DeadlineReached& reached) {
+  } catch (const base::DeadlineReached& reached) {
     if (reached.interrupted()) throw;  // the time limit leaves the bound unset, Ctrl-C ends the run
     figures.bound_cut_short = true;
   }

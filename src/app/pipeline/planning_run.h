@@ -29,7 +29,7 @@ class PlanningRun {
   // Throws InfeasibleTask when the reasoning finds the task infeasible, BadInput when the planner cannot
   // take it (or `needs`), naming the planners that can.
   void require_plannable(planning::Needs needs = {}) const;
-  const Deadline& deadline() const { return deadline_; }
+  const base::Deadline& deadline() const { return deadline_; }
   // What the planner prepared of the problem, within the run's deadline (throws DeadlineReached).
   const planning::PlannerData* preparation() const { return problem_.preparation(planner_, {deadline_}); }
   // Plans, validates and improves with the run's settings, within its deadline.
@@ -51,7 +51,7 @@ class PlanningRun {
 
  private:
   const setup::RunSettings& settings_;
-  Deadline deadline_;  // before problem_: the reasoning counts too
+  base::Deadline deadline_;  // before problem_: the reasoning counts too
   planning::PlanningProblem problem_;
   const planning::PlannerEntry& planner_;
 };

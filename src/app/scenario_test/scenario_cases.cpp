@@ -84,7 +84,7 @@ CaseResult robustness_case(const SolvedPlan& plan, const scenario::Expectations:
   const setup::RunSettings& settings = plan.run.settings();
   const execution::Robustness measured = execution::measure_robustness(
       problem.world(), settings.uncertainty, expected.worlds, settings.seed, plan.solution.result.plan, *plan.solution.replay,
-      problem.as_written(), Deadline(Deadline::Clock::time_point::max(), plan.run.deadline().stop()));
+      problem.as_written(), base::Deadline(base::Deadline::Clock::time_point::max(), plan.run.deadline().stop()));
   if (!measured.stopped.empty()) return CaseResult{"", Outcome::kSkipped, "interrupted"};
   if (measured.share() >= expected.at_least) return {};
   return failed(fmt::format("the plan succeeds in {:.2f} of the perturbed worlds, less than {:g}: {}", measured.share(),

@@ -6,7 +6,10 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
+
+using geometry::Vec2;
+
 namespace {
 
 using json = nlohmann::ordered_json;
@@ -83,8 +86,8 @@ json search_end_json(const SearchEnd& end, const scenario::World& world) {
           {"widened", end.widened}};
 }
 
-PlannerAccount preparation_account(const KnowledgePreparation& prepared, const scenario::World& world) {
-  PlannerAccount account;
+planning::PlannerAccount preparation_account(const KnowledgePreparation& prepared, const scenario::World& world) {
+  planning::PlannerAccount account;
   const PushPlan& plan = prepared.lookahead.plan;
   account.report["lookahead"] = lookahead_json(plan, world);
   // The main job names the look-ahead only for tasks that move bodies; check always says what it concluded.
@@ -92,8 +95,8 @@ PlannerAccount preparation_account(const KnowledgePreparation& prepared, const s
   return account;
 }
 
-PlannerAccount search_account(const SearchReport& report, const scenario::World& world) {
-  PlannerAccount account;
+planning::PlannerAccount search_account(const SearchReport& report, const scenario::World& world) {
+  planning::PlannerAccount account;
   account.report["lookahead"] = nullptr;
   if (report.lookahead) {
     account.report["lookahead"] = lookahead_json(*report.lookahead, world);
@@ -111,10 +114,10 @@ PlannerAccount search_account(const SearchReport& report, const scenario::World&
 
 }  // namespace
 
-PlannerAccount knowledge_account(const PlannerData& data, const scenario::World& world) {
+planning::PlannerAccount knowledge_account(const planning::PlannerData& data, const scenario::World& world) {
   if (const auto* prepared = dynamic_cast<const KnowledgePreparation*>(&data)) return preparation_account(*prepared, world);
   if (const auto* report = dynamic_cast<const SearchReport*>(&data)) return search_account(*report, world);
   return {};
 }
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

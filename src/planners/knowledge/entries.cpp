@@ -6,10 +6,9 @@
 #include "planner_data.h"
 #include "tree_search.h"
 
-namespace physltl::planners {
+namespace physltl::planners::knowledge {
 namespace {
 
-using planning::KnowledgePreparation;
 using planning::PlannerData;
 using planning::Problem;
 
@@ -18,31 +17,31 @@ std::shared_ptr<const PlannerData> prepare_knowledge(const Problem& problem, con
   // One stage graph for the route choice, the look-ahead and the search: with 16 named bodies it takes
   // half a second to build.
   prepared->stages = std::make_shared<const planning::StageGraph>(problem.task);
-  prepared->routes = planning::choose_routes(problem.world, problem.task, *prepared->stages, problem.decomposition, options.deadline);
-  const long long arrangements = options.preview ? planning::lookahead::kPreviewArrangements
-                                                 : planning::lookahead::run_arrangements(problem.time_limit_s);
-  prepared->lookahead = planning::lookahead::look_ahead(problem.world, problem.knowledge, problem.task, *prepared->stages, options.deadline, arrangements);
+  prepared->routes = choose_routes(problem.world, problem.task, *prepared->stages, problem.decomposition, options.deadline);
+  const long long arrangements = options.preview ? lookahead::kPreviewArrangements
+                                                 : lookahead::run_arrangements(problem.time_limit_s);
+  prepared->lookahead = lookahead::look_ahead(problem.world, problem.knowledge, problem.task, *prepared->stages, options.deadline, arrangements);
   prepared->task_names_bodies = problem.task.names_bodies();
   return prepared;
 }
 
-planning::PlannerEntry tree_search_entry(std::string name, std::string summary, planning::TreeSearchMode mode) {
+planning::PlannerEntry tree_search_entry(std::string name, std::string summary, TreeSearchMode mode) {
   planning::PlannerEntry entry;
   entry.name = std::move(name);
   entry.summary = std::move(summary);
   entry.can = {{}, {}, {}, true};
-  entry.uses_knowledge = mode == planning::TreeSearchMode::kKnowledge;
-  entry.own_refusals = planning::kOwnRefusalNames;
+  entry.uses_knowledge = mode == TreeSearchMode::kKnowledge;
+  entry.own_refusals = kOwnRefusalNames;
   entry.report_keys = {"lookahead"};
   entry.diagnosis_keys = {"search_end"};
   if (entry.uses_knowledge) {
     entry.prepare = prepare_knowledge;
-    entry.parameters = {planning::push_primitives_parameter()};
+    entry.parameters = {push_primitives_parameter()};
   }
   entry.plan = [mode](const Problem& problem, const PlannerData* prepared, const planning::PlannerOptions& options) {
-    return planning::plan_with_tree_search(problem, dynamic_cast<const KnowledgePreparation*>(prepared), options, mode);
+    return plan_with_tree_search(problem, dynamic_cast<const KnowledgePreparation*>(prepared), options, mode);
   };
-  entry.account = planning::knowledge_account;
+  entry.account = knowledge_account;
   return entry;
 }
 
@@ -50,10 +49,10 @@ planning::PlannerEntry tree_search_entry(std::string name, std::string summary, 
 
 void add_knowledge_planners(planning::PlannerRegistry& registry) {
   registry.add(tree_search_entry("knowledge", "ours with the knowledge framework (the paper's planner)",
-                                 planning::TreeSearchMode::kKnowledge));
+                                 TreeSearchMode::kKnowledge));
   registry.add(tree_search_entry("baseline",
                                  "ours without knowledge: fixed-body contacts only, uniform controls (the paper's simple planner)",
-                                 planning::TreeSearchMode::kBaseline));
+                                 TreeSearchMode::kBaseline));
 }
 
-}  // namespace physltl::planners
+}  // namespace physltl::planners::knowledge

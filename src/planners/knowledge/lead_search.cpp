@@ -1,6 +1,6 @@
 #include "lead_search.h"
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
 namespace {
 
 // Updates between two searches of the whole lead, at least: the part kept meanwhile only steers the
@@ -44,4 +44,4 @@ std::vector<int> LeadSearch::next(int start, int horizon) {
   return lead;
 }
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

@@ -10,7 +10,7 @@
 
 #include <vector>
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
 
 class LeadSearch {
  public:
@@ -30,4 +30,4 @@ class LeadSearch {
   long long frontier_work_ = 0;  // and the frontier searches since
 };
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

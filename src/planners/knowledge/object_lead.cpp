@@ -11,7 +11,10 @@
 #include <functional>
 #include <limits>
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
+
+using geometry::Vec2;
+
 namespace {
 
 // The way's grid: fine enough for doorways a body barely fits through, coarse enough to stay small.
@@ -44,11 +47,11 @@ bool crosses(const geometry::Shape& shape, const geometry::Pose2& pose, const Ve
 
 }  // namespace
 
-ObjectLead::ObjectLead(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
+ObjectLead::ObjectLead(const scenario::World& world, const physltl::knowledge::AbstractKnowledge& knowledge,
                        const decomposition::Decomposition& decomposition)
     : world_(world), knowledge_(knowledge), decomposition_(decomposition), regions_(world) {}
 
-const geometry::DiscField& ObjectLead::way(const knowledge::Labelling::NamedPart& part, int body_index, int place) {
+const geometry::DiscField& ObjectLead::way(const physltl::knowledge::Labelling::NamedPart& part, int body_index, int place) {
   std::unique_ptr<geometry::DiscField>& way = ways_[{body_index, place}];
   if (way) return *way;
   const auto& body = knowledge_.movable_bodies[static_cast<std::size_t>(body_index)];
@@ -56,7 +59,7 @@ const geometry::DiscField& ObjectLead::way(const knowledge::Labelling::NamedPart
   for (const auto& f : knowledge_.fixed_bodies) obstacles.push_back(f.footprint);
   for (std::size_t b = 0; b < knowledge_.movable_bodies.size(); ++b) {
     const auto& other = knowledge_.movable_bodies[b];
-    if (static_cast<int>(b) != body_index && other.body_class == knowledge::BodyClass::kFixed) obstacles.push_back(other.footprint);
+    if (static_cast<int>(b) != body_index && other.body_class == physltl::knowledge::BodyClass::kFixed) obstacles.push_back(other.footprint);
   }
   const double inscribed = body.footprint.shape.centre_clearance();
   const Vec2 size = knowledge_.workspace.size();
@@ -73,13 +76,13 @@ const geometry::DiscField& ObjectLead::way(const knowledge::Labelling::NamedPart
   return *way;
 }
 
-bool ObjectLead::placed(const knowledge::Labelling::NamedPart& part, int place, const Vec2& centre) const {
+bool ObjectLead::placed(const physltl::knowledge::Labelling::NamedPart& part, int place, const Vec2& centre) const {
   return part.place_of_region(regions_.at(centre)) == place;
 }
 
-ObjectLead::Goal ObjectLead::goal(const knowledge::Labelling& labelling, const BodyMove& move,
+ObjectLead::Goal ObjectLead::goal(const physltl::knowledge::Labelling& labelling, const planning::BodyMove& move,
                                   const std::function<Vec2(int)>& centre_of) {
-  const knowledge::Labelling::NamedPart& part = labelling.named_parts()[static_cast<std::size_t>(move.named)];
+  const physltl::knowledge::Labelling::NamedPart& part = labelling.named_parts()[static_cast<std::size_t>(move.named)];
   if (part.bodies.size() == 1) return {part.bodies.front(), &way(part, part.bodies.front(), move.place)};
   Goal best{part.bodies.front(), nullptr};
   double least = std::numeric_limits<double>::infinity();
@@ -95,9 +98,9 @@ ObjectLead::Goal ObjectLead::goal(const knowledge::Labelling& labelling, const B
   return best;
 }
 
-int ObjectLead::placed_bodies(const knowledge::Labelling& labelling, const BodyMove& move,
+int ObjectLead::placed_bodies(const physltl::knowledge::Labelling& labelling, const planning::BodyMove& move,
                               const std::function<Vec2(int)>& centre_of) const {
-  const knowledge::Labelling::NamedPart& part = labelling.named_parts()[static_cast<std::size_t>(move.named)];
+  const physltl::knowledge::Labelling::NamedPart& part = labelling.named_parts()[static_cast<std::size_t>(move.named)];
   return static_cast<int>(std::count_if(part.bodies.begin(), part.bodies.end(),
                                         [&](int body) { return placed(part, move.place, centre_of(body)); }));
 }
@@ -145,19 +148,19 @@ std::optional<Vec2> ObjectLead::approach(const Vec2& robot, const Vec2& body) {
   return triangles[static_cast<std::size_t>(at)].centroid;
 }
 
-Vec2 ObjectLead::target(const Goal& goal, const scenario::EnvironmentState& state, const knowledge::Kappa& kappa,
-                        Random& random) const {
+Vec2 ObjectLead::target(const Goal& goal, const scenario::EnvironmentState& state, const physltl::knowledge::Kappa& kappa,
+                        planning::Random& random) const {
   const geometry::Pose2& pose = state.movable_poses[static_cast<std::size_t>(goal.body)];
   const Vec2& robot = state.robot_position;
   const Vec2 from = goal.way->nearest_free(pose.position, 3 * goal.way->cell());
   const Vec2 wanted = unit(goal.way->ahead_of(from, kWayLookahead) - pose.position);
   // The active side whose push helps most along the way.
   const auto& body = knowledge_.movable_bodies[static_cast<std::size_t>(goal.body)];
-  const knowledge::MRegionTemplate* best = nullptr;
+  const physltl::knowledge::MRegionTemplate* best = nullptr;
   double best_help = -std::numeric_limits<double>::infinity();
   for (const auto& m : body.mregions) {
     if (!kappa.bodies[static_cast<std::size_t>(goal.body)].active_faces.contains(m.face)) continue;
-    const double help = knowledge::push_direction(m, pose).dot(wanted);
+    const double help = physltl::knowledge::push_direction(m, pose).dot(wanted);
     if (help > best_help) best_help = help, best = &m;
   }
   if (best == nullptr) {
@@ -165,8 +168,8 @@ Vec2 ObjectLead::target(const Goal& goal, const scenario::EnvironmentState& stat
     const double a = random.uniform(-3.14159265358979, 3.14159265358979);
     return pose.position + (body.bound_radius + 2 * world_.robot.radius) * Vec2(std::cos(a), std::sin(a));
   }
-  const Vec2 push = knowledge::push_direction(*best, pose);
-  if (knowledge::mregion_at(*best, pose).contains(robot)) return robot + push;
+  const Vec2 push = physltl::knowledge::push_direction(*best, pose);
+  if (physltl::knowledge::mregion_at(*best, pose).contains(robot)) return robot + push;
   // The middle of the side's contact segment, where the robot touches it; round the body if it is in the way.
   const Eigen::Rotation2Dd rotation(pose.yaw);
   const Vec2 contact = pose.position + rotation * (0.5 * (best->contact_from + best->contact_to));
@@ -189,4 +192,4 @@ Vec2 ObjectLead::target(const Goal& goal, const scenario::EnvironmentState& stat
   return corner_target;
 }
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

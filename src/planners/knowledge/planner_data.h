@@ -14,12 +14,12 @@
 #include <string>
 #include <vector>
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
 
 // Prepared once per problem (PlannerEntry::prepare): going round or pushing through, per stage, and the
 // look-ahead's push order.
-struct KnowledgePreparation : PlannerData {
-  std::shared_ptr<const StageGraph> stages;  // of the task the planner searches
+struct KnowledgePreparation : planning::PlannerData {
+  std::shared_ptr<const planning::StageGraph> stages;  // of the task the planner searches
   RouteChoice routes;
   lookahead::Lookahead lookahead;
   bool task_names_bodies = false;
@@ -47,7 +47,7 @@ struct SearchEnd {
     long long dropped = 0;  // left out after failing expansions (OwnRefusal::kDroppedNode)
   };
   struct LeadStep {
-    Vec2 point = Vec2::Zero();  // the centroid of the lead's triangle
+    geometry::Vec2 point = geometry::Vec2::Zero();  // the centroid of the lead's triangle
     int automaton_state = 0;
   };
   Stage frontier;  // the stage closest to acceptance any node reached
@@ -66,7 +66,7 @@ struct SearchEnd {
 };
 
 // What a search reports beside its plan (PlanResult::own).
-struct SearchReport : PlannerData {
+struct SearchReport : planning::PlannerData {
   // The look-ahead's push order from the start that the search followed, and how many times it planned
   // the order again from where the physics left the bodies; none when it followed none.
   std::optional<PushPlan> lookahead;
@@ -76,6 +76,6 @@ struct SearchReport : PlannerData {
 };
 
 // The planner's own data in the program's forms (PlannerEntry::account).
-PlannerAccount knowledge_account(const PlannerData& data, const scenario::World& world);
+planning::PlannerAccount knowledge_account(const planning::PlannerData& data, const scenario::World& world);
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

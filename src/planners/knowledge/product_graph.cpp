@@ -4,9 +4,9 @@
 #include <limits>
 #include <functional>
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
 
-ProductGraph::ProductGraph(const decomposition::Decomposition& decomposition, const StageGraph& stages,
+ProductGraph::ProductGraph(const decomposition::Decomposition& decomposition, const planning::StageGraph& stages,
                            std::vector<float> lead_factor)
     : stages_(stages), stages_count_(stages.stages()), lead_factor_(std::move(lead_factor)) {
   for (const auto& triangle : decomposition.triangles()) {
@@ -89,4 +89,4 @@ std::vector<int> ProductGraph::lead(int start, int horizon) {
   return goal < 0 ? std::vector<int>{} : lead_search_.path_to(goal);
 }
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

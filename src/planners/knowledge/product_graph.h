@@ -12,14 +12,14 @@
 #include <utility>
 #include <vector>
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
 
 class ProductGraph {
  public:
   // `lead_factor`, when given, makes each product state that much dearer in the lead search only (1: as
   // Bhatia et al.): the knowledge planner's lead goes round the bodies where the task needs no push
   // (route_choice.h). Where to grow keeps the plain weights.
-  ProductGraph(const decomposition::Decomposition& decomposition, const StageGraph& stages,
+  ProductGraph(const decomposition::Decomposition& decomposition, const planning::StageGraph& stages,
                std::vector<float> lead_factor = {});
 
   int id(int triangle, int stage) const { return triangle * stages_count_ + stage; }
@@ -40,7 +40,7 @@ class ProductGraph {
   long long lead_work() const { return lead_search_.settled(); }
 
  private:
-  const StageGraph& stages_;
+  const planning::StageGraph& stages_;
   int stages_count_;
   // The lead search's view of the decomposition, flat: for each triangle its neighbours and their regions.
   struct Neighbour {
@@ -65,4 +65,4 @@ class ProductGraph {
   geometry::ShortestPaths lead_search_;
 };
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

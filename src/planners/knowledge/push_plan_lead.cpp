@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
 namespace {
 
 using lookahead::kDirections;
@@ -122,7 +122,7 @@ geometry::Vec2 pursuit_point(const std::vector<geometry::Vec2>& way, const geome
 }  // namespace
 
 PushPlanLead::PushPlanLead(const lookahead::PushLattice& lattice, const std::vector<int>& start_cells,
-                           const std::vector<lookahead::PushStep>& steps, const knowledge::AbstractKnowledge& knowledge)
+                           const std::vector<lookahead::PushStep>& steps, const physltl::knowledge::AbstractKnowledge& knowledge)
     : lattice_(lattice), robot_radius_(knowledge.robot.radius) {
   std::vector<int> cells = start_cells;
   for (std::size_t i = 0; i < steps.size(); ++i) {
@@ -353,4 +353,4 @@ std::optional<PushPlanLead::Steer> PushPlanLead::steer(const physics::PhysicsSta
   return Steer{(aim - robot) / to_aim, speed, 0.0, false};
 }
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

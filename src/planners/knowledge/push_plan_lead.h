@@ -19,7 +19,7 @@
 #include <optional>
 #include <vector>
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
 
 class PushPlanLead {
  public:
@@ -29,7 +29,7 @@ class PushPlanLead {
   };
 
   PushPlanLead(const lookahead::PushLattice& lattice, const std::vector<int>& start_cells,
-               const std::vector<lookahead::PushStep>& steps, const knowledge::AbstractKnowledge& knowledge);
+               const std::vector<lookahead::PushStep>& steps, const physltl::knowledge::AbstractKnowledge& knowledge);
 
   int pushes() const { return static_cast<int>(runs_.size()); }
   // Where `state` stands on the order, looked for from push `hint` on (a node's parent's push).
@@ -112,4 +112,4 @@ class PushPlanLead {
   double robot_radius_;
 };
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

@@ -17,7 +17,7 @@
 #include <set>
 #include <utility>
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -25,7 +25,7 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Per stage, the places (0: the start, k + 1: region k) the robot can enter it at: the start for the
 // first stage, the region whose entry led into a stage, and for a stage a body move led into, the body's
 // new region (the robot stands by it).
-std::vector<std::set<int>> entry_places(const scenario::World& world, const TaskAutomaton& task, const StageGraph& stages) {
+std::vector<std::set<int>> entry_places(const scenario::World& world, const planning::TaskAutomaton& task, const planning::StageGraph& stages) {
   std::vector<std::set<int>> entries(static_cast<size_t>(stages.stages()));
   const int first = stages.stage(task.start_state(scenario::EnvironmentState::initial(world)),
                                  task.labelling.facts(scenario::EnvironmentState::initial(world)));
@@ -47,7 +47,7 @@ std::vector<std::set<int>> entry_places(const scenario::World& world, const Task
       if (next != s) reach(next, region + 1);
     }
     if (const auto& move = stages.body_move(s)) {
-      const knowledge::Labelling::NamedPart& part = task.labelling.named_parts()[static_cast<size_t>(move->named)];
+      const physltl::knowledge::Labelling::NamedPart& part = task.labelling.named_parts()[static_cast<size_t>(move->named)];
       const int facts = task.labelling.with_place(stages.facts_of(s), move->named, move->place);
       const int next = stages.after_letter(s, task.labelling.letter(facts, -1));
       const std::set<int> from = entries[static_cast<size_t>(s)];
@@ -63,7 +63,7 @@ std::vector<std::set<int>> entry_places(const scenario::World& world, const Task
 
 // The places (k + 1: region k) whose entry brings a stage closer to acceptance; none for a stage that is
 // accepting, lost, or waits for a body move.
-std::vector<int> target_places(const TaskAutomaton& task, const StageGraph& stages, int s) {
+std::vector<int> target_places(const planning::TaskAutomaton& task, const planning::StageGraph& stages, int s) {
   std::vector<int> targets;
   const int d = stages.distance(s);
   if (d <= 0 || stages.body_move(s)) return targets;
@@ -102,7 +102,7 @@ std::vector<int> place_triangles(const scenario::World& world, const decompositi
 
 // Per stage, the regions the robot may not enter there: entering one loses the task (the hazard under
 // `G !hazard`, or before the goal in `!hazard U goal`).
-std::vector<std::vector<int>> forbidden_regions(const TaskAutomaton& task, const StageGraph& stages) {
+std::vector<std::vector<int>> forbidden_regions(const planning::TaskAutomaton& task, const planning::StageGraph& stages) {
   std::vector<std::vector<int>> forbidden(static_cast<size_t>(stages.stages()));
   for (int s = 0; s < stages.stages(); ++s) {
     for (int region = 0; region < task.labelling.regions(); ++region) {
@@ -118,15 +118,15 @@ struct PlaceWays {
   std::vector<std::vector<double>> through, push_free;
 };
 
-PlaceWays place_ways(const scenario::World& world, const std::vector<int>& avoided_regions, const Deadline& deadline) {
+PlaceWays place_ways(const scenario::World& world, const std::vector<int>& avoided_regions, const base::Deadline& deadline) {
   std::vector<geometry::Polygon> avoided;
   for (int region : avoided_regions) {
     for (geometry::Polygon& part : geometry::convex_partition(world.regions[static_cast<size_t>(region)].polygon)) {
       avoided.push_back(std::move(part));
     }
   }
-  return {place_distances(world, robot_free_space(world, RobotObstacles::kFixedBodies, 0.0, avoided), deadline),
-          place_distances(world, robot_free_space(world, RobotObstacles::kAllBodies, kMinFreeWidth, avoided), deadline)};
+  return {planning::place_distances(world, planning::robot_free_space(world, planning::RobotObstacles::kFixedBodies, 0.0, avoided), deadline),
+          planning::place_distances(world, planning::robot_free_space(world, planning::RobotObstacles::kAllBodies, kMinFreeWidth, avoided), deadline)};
 }
 
 // Whether stage `s` goes round: from every place it is entered at, a push-free way to a region that brings
@@ -148,8 +148,8 @@ bool stage_goes_round(const std::set<int>& entries, const std::vector<int>& targ
 
 }  // namespace
 
-RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& task, const StageGraph& stages,
-                          const decomposition::Decomposition& decomposition, const Deadline& deadline) {
+RouteChoice choose_routes(const scenario::World& world, const planning::TaskAutomaton& task, const planning::StageGraph& stages,
+                          const decomposition::Decomposition& decomposition, const base::Deadline& deadline) {
   const int count = stages.stages();
   RouteChoice choice{std::vector<bool>(static_cast<size_t>(count), false), {}};
   const std::vector<bool> under = triangles_under_bodies(world, task, decomposition, deadline);
@@ -208,8 +208,8 @@ RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& tas
   return choice;
 }
 
-std::vector<bool> triangles_under_bodies(const scenario::World& world, const TaskAutomaton& task,
-                                         const decomposition::Decomposition& decomposition, const Deadline& deadline) {
+std::vector<bool> triangles_under_bodies(const scenario::World& world, const planning::TaskAutomaton& task,
+                                         const decomposition::Decomposition& decomposition, const base::Deadline& deadline) {
   std::vector<const geometry::Footprint*> bodies;
   std::vector<geometry::Rect> bounds;
   for (size_t b = 0; b < world.movable_bodies.size(); ++b) {
@@ -235,4 +235,4 @@ std::vector<bool> triangles_under_bodies(const scenario::World& world, const Tas
   return under;
 }
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

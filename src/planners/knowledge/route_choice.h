@@ -21,7 +21,7 @@
 
 #include <vector>
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
 
 // Measured on the shipped scenarios and worlds of other layouts (docs/planner.md).
 inline constexpr double kDetourFactor = 0.5;
@@ -42,12 +42,12 @@ struct RouteChoice {
 
 // For the stages of `task` (stage_graph.h, `stages` of that task). Depends on the World and the task only,
 // like the decomposition: a run prepares it once for every search (Problem::routes). Throws DeadlineReached.
-RouteChoice choose_routes(const scenario::World& world, const TaskAutomaton& task, const StageGraph& stages,
-                          const decomposition::Decomposition& decomposition, const Deadline& deadline = {});
+RouteChoice choose_routes(const scenario::World& world, const planning::TaskAutomaton& task, const planning::StageGraph& stages,
+                          const decomposition::Decomposition& decomposition, const base::Deadline& deadline = {});
 
 // Per triangle: the robot's centre at the triangle's centroid would overlap a movable body as the World
 // places it, other than the bodies the task names (those are moved on purpose).
-std::vector<bool> triangles_under_bodies(const scenario::World& world, const TaskAutomaton& task,
-                                         const decomposition::Decomposition& decomposition, const Deadline& deadline = {});
+std::vector<bool> triangles_under_bodies(const scenario::World& world, const planning::TaskAutomaton& task,
+                                         const decomposition::Decomposition& decomposition, const base::Deadline& deadline = {});
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

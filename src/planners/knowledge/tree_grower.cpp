@@ -6,7 +6,10 @@
 #include <cmath>
 #include <limits>
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
+
+using geometry::Vec2;
+
 namespace {
 
 // The push primitive (follow_order) ends after this many controls, or after kMaxPrimitiveStall controls
@@ -18,8 +21,8 @@ constexpr double kPrimitiveProgress = 0.01;  // m
 
 }  // namespace
 
-TreeGrower::TreeGrower(const scenario::World& world, const TaskAutomaton& task, const StageGraph& stages,
-                       const knowledge::AbstractKnowledge& knowledge, const decomposition::Decomposition& decomposition,
+TreeGrower::TreeGrower(const scenario::World& world, const planning::TaskAutomaton& task, const planning::StageGraph& stages,
+                       const physltl::knowledge::AbstractKnowledge& knowledge, const decomposition::Decomposition& decomposition,
                        const ProductGraph& graph, const ObjectLead& object_lead, bool use_knowledge)
     : task_(task),
       stages_(stages),
@@ -27,14 +30,14 @@ TreeGrower::TreeGrower(const scenario::World& world, const TaskAutomaton& task, 
       graph_(graph),
       object_lead_(object_lead),
       sampler_(world, knowledge, use_knowledge),
-      max_braking_steps_(static_cast<int>(std::ceil(kMaxBrakingTime / world.planner.step_size))),
+      max_braking_steps_(static_cast<int>(std::ceil(planning::kMaxBrakingTime / world.planner.step_size))),
       max_control_steps_(world.planner.max_steps),
       min_control_steps_(world.planner.min_steps),
       step_size_(world.planner.step_size),
       max_speed_(world.robot.max_speed),
       named_(world.movable_bodies.size(), false),
-      simulation_(world, knowledge, use_knowledge ? knowledge::ValidityMode::kKnowledge : knowledge::ValidityMode::kBaseline) {
-  for (const knowledge::Labelling::NamedPart& n : task.labelling.named_parts()) {
+      simulation_(world, knowledge, use_knowledge ? physltl::knowledge::ValidityMode::kKnowledge : physltl::knowledge::ValidityMode::kBaseline) {
+  for (const physltl::knowledge::Labelling::NamedPart& n : task.labelling.named_parts()) {
     for (int body : n.bodies) named_[static_cast<size_t>(body)] = true;
   }
 }
@@ -42,7 +45,7 @@ TreeGrower::TreeGrower(const scenario::World& world, const TaskAutomaton& task, 
 void TreeGrower::grow(const Motion& from, const Vec2& target, const ObjectLead::Goal* goal, Guidance guidance,
                       std::uint64_t seed, Growth& growth) {
   growth = Growth{};
-  Random random(seed);
+  planning::Random random(seed);
   simulation_.restore(from.state);
   growth.controls = 1;
   if (guidance == Guidance::kWidened) {
@@ -67,7 +70,7 @@ void TreeGrower::follow_order(const Motion& from, const PushPlanLead& order, int
     const std::optional<PushPlanLead::Steer> steer = order.steer(*state, push, max_speed_);
     if (!steer) return;
     const int steps = std::clamp(static_cast<int>(std::ceil(steer->time / step_size_ - 1e-9)), min_control_steps_, max_control_steps_);
-    const Control control{sampler_.along(simulation_.environment(), steer->direction, steer->speed, steps), steps};
+    const planning::Control control{sampler_.along(simulation_.environment(), steer->direction, steer->speed, steps), steps};
     ++growth.controls;
     const bool whole = propagate(control, stage, true, growth);
     if (!whole || growth.motions.empty()) return;
@@ -94,25 +97,25 @@ bool TreeGrower::valid_step(const Vec2& setpoint, bool may_push, Growth& growth)
       return c.body == scenario::RobotContact::Body::kMovable && !named_[static_cast<size_t>(c.index)];
     });
   };
-  const knowledge::Violation violation = simulation_.step(setpoint).violation;
-  if (violation == knowledge::Violation::kNone && (may_push || !pushes_unasked())) return true;
+  const physltl::knowledge::Violation violation = simulation_.step(setpoint).violation;
+  if (violation == physltl::knowledge::Violation::kNone && (may_push || !pushes_unasked())) return true;
   growth.stopped_by_invalid_step = true;
-  if (violation == knowledge::Violation::kNone) {
+  if (violation == physltl::knowledge::Violation::kNone) {
     growth.route_choice_cut = true;
   } else {
-    growth.refusal = refusal_of(violation);
+    growth.refusal = planning::refusal_of(violation);
   }
   return false;
 }
 
-bool TreeGrower::propagate(const Control& control, int stage, bool may_push, Growth& growth) {
+bool TreeGrower::propagate(const planning::Control& control, int stage, bool may_push, Growth& growth) {
   int valid_steps = 0;
   bool accepted = false;
   for (int step = 1; step <= control.steps; ++step) {
     if (!valid_step(control.setpoint, may_push, growth)) break;
     const int next = stage_after_step(stage);
     if (next < 0) {
-      growth.refusal = Refusal::kTaskLetter;
+      growth.refusal = planning::Refusal::kTaskLetter;
       break;
     }
     stage = next;
@@ -141,7 +144,7 @@ bool TreeGrower::brake(int stage, Growth& growth) {
     if (!valid_step(stop, true, growth)) return false;
     stage = stage_after_step(stage);
     if (stage < 0) {
-      growth.refusal = Refusal::kTaskLetter;
+      growth.refusal = planning::Refusal::kTaskLetter;
       return false;
     }
     ++steps;
@@ -157,7 +160,7 @@ bool TreeGrower::brake(int stage, Growth& growth) {
   return false;
 }
 
-Motion TreeGrower::make_motion(const Control& control, int stage) const {
+Motion TreeGrower::make_motion(const planning::Control& control, int stage) const {
   Motion motion;
   motion.state = last_valid_;
   motion.robot = last_valid_.robot_position();
@@ -167,4 +170,4 @@ Motion TreeGrower::make_motion(const Control& control, int stage) const {
   return motion;
 }
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

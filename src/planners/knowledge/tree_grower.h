@@ -22,14 +22,14 @@
 #include <optional>
 #include <vector>
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
 
 // A node of the search tree: the state after `control` from `parent`.
 struct Motion {
   physics::PhysicsState state;
-  Vec2 robot = Vec2::Zero();
+  geometry::Vec2 robot = geometry::Vec2::Zero();
   int parent = -1;
-  Control control;
+  planning::Control control;
   int stage = 0;  // the automaton's state and the named bodies' places (stage_graph.h)
   int product_state = 0;
 };
@@ -45,7 +45,7 @@ struct Growth {
   int controls = 0;       // controls propagated, braking not counted
   int physics_steps = 0;
   bool stopped_by_invalid_step = false;
-  std::optional<Refusal> refusal;  // the rule that ended the motion (or its braking), if one did
+  std::optional<planning::Refusal> refusal;  // the rule that ended the motion (or its braking), if one did
   bool route_choice_cut = false;   // or the route choice did (OwnRefusal::kRouteChoiceCut)
 };
 
@@ -60,14 +60,14 @@ enum class Guidance {
 
 class TreeGrower {
  public:
-  TreeGrower(const scenario::World& world, const TaskAutomaton& task, const StageGraph& stages,
-             const knowledge::AbstractKnowledge& knowledge, const decomposition::Decomposition& decomposition,
+  TreeGrower(const scenario::World& world, const planning::TaskAutomaton& task, const planning::StageGraph& stages,
+             const physltl::knowledge::AbstractKnowledge& knowledge, const decomposition::Decomposition& decomposition,
              const ProductGraph& graph, const ObjectLead& object_lead, bool use_knowledge);
 
   // Replaces `growth` with what grows from `from` towards `target`, drawing from a generator seeded with
   // `seed`. With an object goal the target is where that goal's body move needs the robot (object_lead.h),
   // found in `from`'s state.
-  void grow(const Motion& from, const Vec2& target, const ObjectLead::Goal* goal, Guidance guidance,
+  void grow(const Motion& from, const geometry::Vec2& target, const ObjectLead::Goal* goal, Guidance guidance,
             std::uint64_t seed, Growth& growth);
   // Replaces `growth` with the push primitive's chain from `from`, which stands at push `push` of `order`:
   // one control of min_steps to max_steps steps at a time, each from the state the last left, until the
@@ -80,32 +80,32 @@ class TreeGrower {
   // automaton state or acceptance; the valid steps make the growth's next motion. Whether a motion may
   // follow it: the whole control was valid and did not accept, or it accepted (and braked where the task
   // needs it); then the simulation stands at the growth's end.
-  bool propagate(const Control& control, int stage, bool may_push, Growth& growth);
+  bool propagate(const planning::Control& control, int stage, bool may_push, Growth& growth);
   // From an accepting motion's end: the drive's set-point zero until the robot and the boxes are at rest,
   // every step valid and the automaton still accepting at the end. Whether that worked.
   bool brake(int stage, Growth& growth);
   // One valid step under `control`, then INFERENCE; false when the step was invalid, or when it touched a
   // movable body the task does not name while `may_push` is false (the growth then says which rule).
-  bool valid_step(const Vec2& setpoint, bool may_push, Growth& growth);
+  bool valid_step(const geometry::Vec2& setpoint, bool may_push, Growth& growth);
   // The stage after the physics step just taken, from `stage`; -1 when the automaton died.
   int stage_after_step(int stage) const;
   bool accepting(int stage) const { return task_.dfa.accepting[static_cast<std::size_t>(stages_.automaton_state_of(stage))]; }
-  Motion make_motion(const Control& control, int stage) const;
+  Motion make_motion(const planning::Control& control, int stage) const;
 
-  const TaskAutomaton& task_;
-  const StageGraph& stages_;
+  const planning::TaskAutomaton& task_;
+  const planning::StageGraph& stages_;
   const decomposition::Decomposition& decomposition_;
   const ProductGraph& graph_;
   const ObjectLead& object_lead_;
-  const ControlSampler sampler_;
+  const planning::ControlSampler sampler_;
   const int max_braking_steps_;
   const int max_control_steps_;
   const int min_control_steps_;
   const double step_size_;  // s per physics step
   const double max_speed_;  // the robot's, m/s
   std::vector<bool> named_;  // per movable body: the task says where it must be (touching it is never refused)
-  CheckedSimulation simulation_;
+  planning::CheckedSimulation simulation_;
   physics::PhysicsState last_valid_;
 };
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

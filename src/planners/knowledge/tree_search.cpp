@@ -21,7 +21,10 @@
 #include <limits>
 #include <optional>
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
+
+using geometry::Vec2;
+
 namespace {
 
 // The tree's memory bound: ~0.5 KiB per node.
@@ -93,7 +96,7 @@ struct Expansion {
 
 class Search {
  public:
-  Search(const Problem& problem, const KnowledgePreparation* prepared, const PlannerOptions& options, TreeSearchMode mode)
+  Search(const planning::Problem& problem, const KnowledgePreparation* prepared, const planning::PlannerOptions& options, TreeSearchMode mode)
       : world_(problem.world),
         task_(problem.task),
         knowledge_(problem.knowledge),
@@ -101,7 +104,7 @@ class Search {
         options_(options),
         knowledge_mode_(mode == TreeSearchMode::kKnowledge),
         primitives_(options.parameter(push_primitives_parameter()) == "on"),
-        stage_graph_(prepared != nullptr && prepared->stages ? prepared->stages : std::make_shared<const StageGraph>(task_)),
+        stage_graph_(prepared != nullptr && prepared->stages ? prepared->stages : std::make_shared<const planning::StageGraph>(task_)),
         stages_(*stage_graph_),
         // The knowledge planner's lead goes round the bodies where the task needs no pushing (route_choice.h).
         routes_(!knowledge_mode_       ? RouteChoice{}
@@ -124,11 +127,11 @@ class Search {
   }
 
   // `started`: when planning began, before this search prepared its lead (the route choice costs time too).
-  PlanResult run(std::chrono::steady_clock::time_point started) {
-    PlanResult result;
+  planning::PlanResult run(std::chrono::steady_clock::time_point started) {
+    planning::PlanResult result;
     add_root();
     if (accepting(motions_[0].stage)) {
-      finish(result, 0, started, StopReason::kSolved);
+      finish(result, 0, started, planning::StopReason::kSolved);
       return result;
     }
     int lead_start = segment_start_;
@@ -137,13 +140,13 @@ class Search {
     while (true) {
       // Where the frontier's next move is a body's, the object lead guides the expansions; else the lead
       // through the decomposition, from the first node after the last body the tree moved for the task.
-      const std::optional<BodyMove> body_move = stages_.body_move(frontier_stage_);
+      const std::optional<planning::BodyMove> body_move = stages_.body_move(frontier_stage_);
       if (!body_move && lead_start != segment_start_) {
         lead_start = segment_start_;
         lead = lead_search_.next(product_of(lead_start), horizon());
       }
       if (!body_move && lead.empty()) {
-        finish(result, -1, started, StopReason::kNoLead);
+        finish(result, -1, started, planning::StopReason::kNoLead);
         return result;
       }
       std::vector<int> next_lead;
@@ -174,10 +177,10 @@ class Search {
         }
         const int solution = add_growths();
         if (solution >= 0) {
-          finish(result, solution, started, StopReason::kSolved);
+          finish(result, solution, started, planning::StopReason::kSolved);
           return result;
         }
-        if (const std::optional<StopReason> reason = should_stop()) {
+        if (const std::optional<planning::StopReason> reason = should_stop()) {
           finish(result, -1, started, *reason);
           return result;
         }
@@ -192,10 +195,10 @@ class Search {
   }
 
  private:
-  std::optional<StopReason> should_stop() const {
-    if (options_.deadline.reached()) return stop_reason_of(options_.deadline);
-    if (motions_.size() >= kMaxTreeNodes) return StopReason::kTreeFull;
-    if (options_.max_propagations > 0 && stats_.propagations >= options_.max_propagations) return StopReason::kBudget;
+  std::optional<planning::StopReason> should_stop() const {
+    if (options_.deadline.reached()) return planning::stop_reason_of(options_.deadline);
+    if (motions_.size() >= kMaxTreeNodes) return planning::StopReason::kTreeFull;
+    if (options_.max_propagations > 0 && stats_.propagations >= options_.max_propagations) return planning::StopReason::kBudget;
     return std::nullopt;
   }
 
@@ -335,13 +338,13 @@ class Search {
   }
 
   // The object lead's goal for `move` in the state of node `motion` (for a group: the body it pushes on).
-  ObjectLead::Goal goal_at(int motion, const BodyMove& move) {
+  ObjectLead::Goal goal_at(int motion, const planning::BodyMove& move) {
     return object_lead_.goal(task_.labelling, move, [&](int body) { return body_at(motion, body); });
   }
 
   // The object lead's choice of a node to grow from for `move`: of the frontier stage's nodes, usually the
   // one whose body is nearest its goal along its way of a few drawn at random, sometimes any of them.
-  int object_lead_node(const BodyMove& move) {
+  int object_lead_node(const planning::BodyMove& move) {
     const std::vector<int>& nodes = object_lead_nodes(move);
     const auto distance = [&](int m) {
       const ObjectLead::Goal goal = goal_at(m, move);
@@ -367,7 +370,7 @@ class Search {
   // them with the most bodies of the group where the move wants them. A group's bodies go one by one
   // within one stage, and each one placed is progress as a stage is (20 boxes a push above their goals:
   // no plan in 60 s when all the stage's nodes were drawn from).
-  const std::vector<int>& object_lead_nodes(const BodyMove& move) {
+  const std::vector<int>& object_lead_nodes(const planning::BodyMove& move) {
     const std::vector<int>& nodes = stage_motions_[static_cast<size_t>(frontier_stage_)];
     if (task_.labelling.named_parts()[static_cast<size_t>(move.named)].bodies.size() == 1) return nodes;
     GroupFrontier& g = group_frontier_;
@@ -389,7 +392,7 @@ class Search {
   GroupFrontier group_frontier_;
 
   // The object lead's expansions, kBatch of them, for moving a body of the frontier stage.
-  void choose_object_expansions(const BodyMove& move) {
+  void choose_object_expansions(const planning::BodyMove& move) {
     expansions_.resize(kBatch);
     for (Expansion& e : expansions_) {
       e.from = object_lead_node(move);
@@ -436,7 +439,7 @@ class Search {
   // Past a stall, the widened share of them grows where the baseline's search would, from the object
   // lead's nodes (object_lead_node): an order the physics cannot follow, or a way the lattice does not
   // know, must not keep the tree from what the baseline finds.
-  void choose_push_expansions(const BodyMove& move) {
+  void choose_push_expansions(const planning::BodyMove& move) {
     if (++batches_since_push_progress_ * kBatch >= kReplanExpansions) replan_pushes();
     const std::vector<int>& nodes = stage_motions_[static_cast<size_t>(frontier_stage_)];
     expansions_.resize(kBatch);
@@ -616,7 +619,7 @@ class Search {
     segment_start_ = stage_motions_[static_cast<size_t>(nearest)].front();
   }
 
-  void finish(PlanResult& result, int solution, std::chrono::steady_clock::time_point started, StopReason reason) {
+  void finish(planning::PlanResult& result, int solution, std::chrono::steady_clock::time_point started, planning::StopReason reason) {
     result.solved = solution >= 0;
     result.stop_reason = reason;
     for (int m = solution; m > 0; m = motions_[m].parent) {
@@ -648,7 +651,7 @@ class Search {
     SearchEnd end;
     end.frontier = describe(frontier_stage_);
     if (const auto& move = stages_.body_move(frontier_stage_)) {
-      const knowledge::Labelling::NamedPart& part = task_.labelling.named_parts()[static_cast<size_t>(move->named)];
+      const physltl::knowledge::Labelling::NamedPart& part = task_.labelling.named_parts()[static_cast<size_t>(move->named)];
       const std::string& name = part.name;
       const auto region = [&](int place) { return part.set_names[static_cast<size_t>(place - 1)]; };
       if (move->place > 0) {
@@ -677,19 +680,19 @@ class Search {
   }
 
   const scenario::World& world_;
-  const TaskAutomaton& task_;
-  const knowledge::AbstractKnowledge& knowledge_;
+  const planning::TaskAutomaton& task_;
+  const physltl::knowledge::AbstractKnowledge& knowledge_;
   const decomposition::Decomposition& decomposition_;
-  const PlannerOptions& options_;
+  const planning::PlannerOptions& options_;
   const bool knowledge_mode_;  // the knowledge planner; otherwise the baseline
   const bool primitives_;      // the look-ahead's order carried out by push primitives (--push-primitives)
-  std::shared_ptr<const StageGraph> stage_graph_;  // the preparation's, or the search's own
-  const StageGraph& stages_;
+  std::shared_ptr<const planning::StageGraph> stage_graph_;  // the preparation's, or the search's own
+  const planning::StageGraph& stages_;
   const RouteChoice routes_;
   ProductGraph graph_;
   LeadSearch lead_search_;
   ObjectLead object_lead_;
-  Random random_;
+  planning::Random random_;
   std::vector<Motion> motions_;
   int closest_to_accept_ = 0;             // fewest stage moves to acceptance from any node not dropped
   int frontier_stage_ = 0;                // the stage of the first node that got that close
@@ -718,7 +721,7 @@ class Search {
   double frontier_weight_ = 0.0;       // the running sum where the frontier starts
   std::vector<Expansion> expansions_;  // the current batch
   std::vector<Growth> growths_;        // what each of them grew
-  PlannerStats stats_;
+  planning::PlannerStats stats_;
   WorkerPool pool_;
   std::vector<std::optional<TreeGrower>> growers_;  // one per worker
   std::vector<std::vector<int>> stage_motions_;     // per stage, its nodes that are not dropped
@@ -729,8 +732,8 @@ class Search {
 
 }  // namespace
 
-const PlannerParameter& push_primitives_parameter() {
-  static const PlannerParameter parameter{
+const planning::PlannerParameter& push_primitives_parameter() {
+  static const planning::PlannerParameter parameter{
       "push-primitives",
       "Whether the look-ahead's push order is first carried out by closed-loop push primitives (on) or by sampled controls alone (off)",
       {"on", "off"},
@@ -740,10 +743,10 @@ const PlannerParameter& push_primitives_parameter() {
   return parameter;
 }
 
-PlanResult plan_with_tree_search(const Problem& problem, const KnowledgePreparation* prepared, const PlannerOptions& options,
+planning::PlanResult plan_with_tree_search(const planning::Problem& problem, const KnowledgePreparation* prepared, const planning::PlannerOptions& options,
                                  TreeSearchMode mode) {
   const auto started = std::chrono::steady_clock::now();
   return Search(problem, prepared, options, mode).run(started);
 }
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

@@ -16,7 +16,7 @@
 
 #include <string>
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
 
 enum class TreeSearchMode {
   kKnowledge,  // kappa-aware validity, the route choice and its escape (the paper's planner)
@@ -25,11 +25,11 @@ enum class TreeSearchMode {
 
 // The knowledge planner's parameter `push-primitives`: "on" (the default), the look-ahead's order is first
 // carried out by closed-loop push primitives; "off", by sampled controls alone (for comparing the two).
-const PlannerParameter& push_primitives_parameter();
+const planning::PlannerParameter& push_primitives_parameter();
 
 // `prepared`: the knowledge planner's route choice and look-ahead; without it, the knowledge search chooses
 // its routes itself and follows no push order.
-PlanResult plan_with_tree_search(const Problem& problem, const KnowledgePreparation* prepared, const PlannerOptions& options,
+planning::PlanResult plan_with_tree_search(const planning::Problem& problem, const KnowledgePreparation* prepared, const planning::PlannerOptions& options,
                                  TreeSearchMode mode);
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
 
 WorkerPool::WorkerPool(int threads) {
   try {
@@ -68,4 +68,4 @@ void WorkerPool::work(int worker) {
   }
 }
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

@@ -10,7 +10,7 @@
 #include <thread>
 #include <vector>
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
 
 class WorkerPool {
  public:
@@ -46,4 +46,4 @@ class WorkerPool {
   std::vector<std::jthread> helpers_;
 };
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

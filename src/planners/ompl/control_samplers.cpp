@@ -1,6 +1,8 @@
 #include "control_samplers.h"
 
-namespace physltl::planning::ompl_adapter {
+namespace physltl::planners::ompl {
+
+using geometry::Vec2;
 
 OurSampling::OurSampling(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge, std::uint64_t seed,
                          bool ompl_product)
@@ -16,7 +18,7 @@ unsigned OurSampling::sample(oc::Control* control, const ob::State* state, const
       physics::PhysicsState::from_values({v, (world_.movable_bodies.size() + 1) * physics::PhysicsState::kValuesPerBody}));
   const auto& b = world_.workspace.bounds;
   const Vec2 aim = target ? *target : Vec2(random_.uniform(b.min.x(), b.max.x()), random_.uniform(b.min.y(), b.max.y()));
-  const Control c = sampler_.sample(simulation_.environment(), simulation_.kappa(), aim, true, random_);
+  const planning::Control c = sampler_.sample(simulation_.environment(), simulation_.kappa(), aim, true, random_);
   set_control(control, c.setpoint, world_.robot.drive == scenario::Drive::kDifferential);
   return static_cast<unsigned>(c.steps);
 }
@@ -27,4 +29,4 @@ unsigned int OurDirectedSampler::sampleTo(oc::Control* control, const ob::State*
   return si_->propagateWhileValid(source, control, static_cast<int>(steps), dest);
 }
 
-}  // namespace physltl::planning::ompl_adapter
+}  // namespace physltl::planners::ompl

@@ -17,7 +17,7 @@
 
 #include <optional>
 
-namespace physltl::planning::ompl_adapter {
+namespace physltl::planners::ompl {
 
 // OMPL's uniform control sampler, with a generator seeded from the run's seed.
 class SeededControlSampler : public oc::RealVectorControlUniformSampler {
@@ -35,13 +35,13 @@ class OurSampling {
 
   // Samples from `state` towards `target`, or towards a point drawn at random in the workspace; writes the
   // set-point into `control` and returns the control's steps.
-  unsigned sample(oc::Control* control, const ob::State* state, const std::optional<Vec2>& target);
+  unsigned sample(oc::Control* control, const ob::State* state, const std::optional<geometry::Vec2>& target);
 
  private:
   const scenario::World& world_;
-  const ControlSampler sampler_;
-  CheckedSimulation simulation_;
-  Random random_;
+  const planning::ControlSampler sampler_;
+  planning::CheckedSimulation simulation_;
+  planning::Random random_;
   const bool ompl_product_;
 };
 
@@ -83,4 +83,4 @@ class OurDirectedSampler : public oc::DirectedControlSampler {
   const bool ompl_product_;
 };
 
-}  // namespace physltl::planning::ompl_adapter
+}  // namespace physltl::planners::ompl

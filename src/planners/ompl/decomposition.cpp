@@ -5,7 +5,9 @@
 
 #include <algorithm>
 
-namespace physltl::planning {
+namespace physltl::planners::ompl {
+
+using geometry::Vec2;
 
 std::vector<std::vector<int>> step_neighbours(const decomposition::Decomposition& decomposition, double reach) {
   const auto& triangles = decomposition.triangles();
@@ -35,7 +37,6 @@ std::vector<std::vector<int>> step_neighbours(const decomposition::Decomposition
   return neighbours;
 }
 
-namespace ompl_adapter {
 namespace {
 
 ob::RealVectorBounds bounds_of(const scenario::World& world) {
@@ -66,7 +67,7 @@ void Triangles::getNeighbors(int region, std::vector<int>& neighbours) const {
   neighbours.insert(neighbours.end(), n.begin(), n.end());
 }
 
-void Triangles::sampleFromRegion(int region, ompl::RNG& rng, std::vector<double>& coordinates) const {
+void Triangles::sampleFromRegion(int region, ::ompl::RNG& rng, std::vector<double>& coordinates) const {
   const double u = rng.uniform01(), v = rng.uniform01();
   const Vec2 p = triangle(region).point_at(u, v);
   coordinates = {p.x(), p.y()};
@@ -83,5 +84,4 @@ oc::World RegionLabels::worldAtRegion(int triangle) {
   return region_letter(regions_, decomposition_.triangles()[static_cast<std::size_t>(triangle)].region);
 }
 
-}  // namespace ompl_adapter
-}  // namespace physltl::planning
+}  // namespace physltl::planners::ompl

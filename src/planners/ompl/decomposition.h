@@ -9,7 +9,7 @@
 
 #include <vector>
 
-namespace physltl::planning {
+namespace physltl::planners::ompl {
 
 // OMPL's product graph connects a triangle to the triangles its decomposition names as
 // neighbours, and a propagation step moves the product to the triangle the step ends in. A step that
@@ -21,8 +21,6 @@ namespace physltl::planning {
 // step ends in, as our planner's does.
 std::vector<std::vector<int>> step_neighbours(const decomposition::Decomposition& decomposition, double reach);
 
-namespace ompl_adapter {
-
 // Regions are triangles, located by the robot's position.
 class Triangles : public oc::Decomposition {
  public:
@@ -33,7 +31,7 @@ class Triangles : public oc::Decomposition {
   int locateRegion(const ob::State* state) const override;
   void project(const ob::State* state, std::vector<double>& coordinates) const override;
   void getNeighbors(int region, std::vector<int>& neighbours) const override;
-  void sampleFromRegion(int region, ompl::RNG& rng, std::vector<double>& coordinates) const override;
+  void sampleFromRegion(int region, ::ompl::RNG& rng, std::vector<double>& coordinates) const override;
   void sampleFullState(const ob::StateSamplerPtr& sampler, const std::vector<double>& coordinates,
                        ob::State* state) const override;
 
@@ -59,5 +57,4 @@ class RegionLabels : public oc::PropositionalDecomposition {
   const int regions_;
 };
 
-}  // namespace ompl_adapter
-}  // namespace physltl::planning
+}  // namespace physltl::planners::ompl

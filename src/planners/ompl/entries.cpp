@@ -5,12 +5,11 @@
 
 #include "ompl_planner.h"
 
-namespace physltl::planners {
+namespace physltl::planners::ompl {
 namespace {
 
 using planning::Capabilities;
 using planning::Capability;
-using planning::OmplAlgorithm;
 
 // What OMPL's planners cannot take, with the reasons every refusal that names them gives.
 const Capability kLtlPlannerNoObjectTasks{false,
@@ -30,10 +29,10 @@ planning::PlannerEntry ompl_entry(const char* name, const char* summary, OmplAlg
   entry.summary = summary;
   entry.can = algorithm == OmplAlgorithm::kLtl ? Capabilities{kLtlPlannerNoObjectTasks, kLtlPlannerNoRest, kOmplNoBudget, false}
                                                : Capabilities{{}, {}, kOmplNoBudget, false};
-  entry.parameters = {planning::ompl_sampler_parameter()};
-  if (algorithm == OmplAlgorithm::kSst) entry.parameters.push_back(planning::sst_until_parameter());
+  entry.parameters = {ompl_sampler_parameter()};
+  if (algorithm == OmplAlgorithm::kSst) entry.parameters.push_back(sst_until_parameter());
   entry.plan = [algorithm](const planning::Problem& problem, const planning::PlannerData*, const planning::PlannerOptions& options) {
-    return planning::plan_with_ompl(problem, options, algorithm);
+    return plan_with_ompl(problem, options, algorithm);
   };
   return entry;
 }
@@ -48,4 +47,4 @@ void add_ompl_planners(planning::PlannerRegistry& registry) {
   registry.add(ompl_entry("ompl-pdst", "OMPL's PDST (on OMPL's product, or ours for tasks about bodies or at rest)", OmplAlgorithm::kPdst));
 }
 
-}  // namespace physltl::planners
+}  // namespace physltl::planners::ompl

@@ -3,7 +3,10 @@
 #include <cmath>
 #include <limits>
 
-namespace physltl::planning::ompl_adapter {
+namespace physltl::planners::ompl {
+
+using geometry::Vec2;
+
 bool TaskGoal::isSatisfied(const ob::State* state, double* distance) const {
   const int q = ltl_->getProdGraphState(state)->getCosafeState();
   const bool satisfied = q >= 0 && automaton_->isAccepting(static_cast<unsigned>(q));
@@ -27,15 +30,15 @@ bool ProductGoal::isSatisfied(const ob::State* state, double* distance) const {
   return !product.task.ends_at_rest() || braking(state).has_value();
 }
 
-std::optional<Plan> ProductGoal::braking(const ob::State* state) const {
+std::optional<planning::Plan> ProductGoal::braking(const ob::State* state) const {
   const TaskProduct& product = *space_.product();
-  Plan brake;
+  planning::Plan brake;
   if (!product.task.ends_at_rest()) return brake;
   const double* v = state->as<PhysicsSpace::StateType>()->values;
   simulation_.restore(physics::PhysicsState::from_values({v, space_.values()}));
   int q = static_cast<int>(v[space_.values() + kAutomatonState]);
   const scenario::World& world = space_.world();
-  const int max_steps = static_cast<int>(std::ceil(kMaxBrakingTime / world.planner.step_size));
+  const int max_steps = static_cast<int>(std::ceil(planning::kMaxBrakingTime / world.planner.step_size));
   int steps = 0;  // of the braking control under way
   for (int step = 1; step <= max_steps; ++step) {
     if (!simulation_.step(Vec2::Zero()).valid()) return std::nullopt;
@@ -55,4 +58,4 @@ std::optional<Plan> ProductGoal::braking(const ob::State* state) const {
   return std::nullopt;
 }
 
-}  // namespace physltl::planning::ompl_adapter
+}  // namespace physltl::planners::ompl

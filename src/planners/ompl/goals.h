@@ -14,7 +14,7 @@
 #include <optional>
 #include <vector>
 
-namespace physltl::planning::ompl_adapter {
+namespace physltl::planners::ompl {
 
 // On OMPL's product: reached when the co-safe automaton accepts. OMPL's own goal for the product has no
 // distance (every state reads as infinitely far, which leaves KPIECE1 nothing to prefer); this one gives
@@ -42,11 +42,11 @@ class ProductGoal : public ob::Goal {
 
   // The braking controls from `state` to rest and the states after them, for a task that ends at rest
   // (none for one that does not); nothing when braking fails.
-  std::optional<Plan> braking(const ob::State* state) const;
+  std::optional<planning::Plan> braking(const ob::State* state) const;
 
  private:
   const PhysicsSpace& space_;
-  mutable CheckedSimulation simulation_;
+  mutable planning::CheckedSimulation simulation_;
 };
 
-}  // namespace physltl::planning::ompl_adapter
+}  // namespace physltl::planners::ompl

@@ -7,22 +7,22 @@
 #include <stdexcept>
 #include <vector>
 
-namespace physltl::planning {
-ompl::control::World region_letter(int regions, int region) {
-  ompl::control::World letter(static_cast<unsigned>(regions));
+namespace physltl::planners::ompl {
+::ompl::control::World region_letter(int regions, int region) {
+  ::ompl::control::World letter(static_cast<unsigned>(regions));
   for (int p = 0; p < regions; ++p) letter[static_cast<unsigned>(p)] = p == region;
   return letter;
 }
 
-std::shared_ptr<ompl::control::Automaton> to_ompl_automaton(const TaskAutomaton& task) {
+std::shared_ptr<::ompl::control::Automaton> to_ompl_automaton(const planning::TaskAutomaton& task) {
   if (task.names_bodies()) {
     throw std::invalid_argument("the task names where bodies must be; OMPL's product graph labels each triangle "
                                 "with one letter, the robot's region, and cannot follow them");
   }
   const auto regions = static_cast<unsigned>(task.labelling.regions());
   const auto states = static_cast<unsigned>(task.dfa.size());
-  const StageGraph stages(task);  // its dead states: no letter leads to acceptance from them
-  auto automaton = std::make_shared<ompl::control::Automaton>(regions, states);
+  const planning::StageGraph stages(task);  // its dead states: no letter leads to acceptance from them
+  auto automaton = std::make_shared<::ompl::control::Automaton>(regions, states);
   automaton->setStartState(static_cast<unsigned>(task.dfa.start));
   for (unsigned q = 0; q < states; ++q) {
     automaton->setAccepting(q, task.dfa.accepting[q]);
@@ -39,4 +39,4 @@ std::shared_ptr<ompl::control::Automaton> to_ompl_automaton(const TaskAutomaton&
   return automaton;
 }
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::ompl

@@ -28,12 +28,12 @@
 #include <numbers>
 #include <stdexcept>
 
-namespace physltl::planning {
+namespace physltl::planners::ompl {
 
-using namespace ompl_adapter;
+using geometry::Vec2;
 
-const PlannerParameter& ompl_sampler_parameter() {
-  static const PlannerParameter parameter{
+const planning::PlannerParameter& ompl_sampler_parameter() {
+  static const planning::PlannerParameter parameter{
       "ompl-sampler",
       "Control sampler of OMPL's planners: ompl (OMPL's uniform one) or ours (the knowledge planner's)",
       {"ompl", "ours"},
@@ -41,8 +41,8 @@ const PlannerParameter& ompl_sampler_parameter() {
   return parameter;
 }
 
-const PlannerParameter& sst_until_parameter() {
-  static const PlannerParameter parameter{
+const planning::PlannerParameter& sst_until_parameter() {
+  static const planning::PlannerParameter parameter{
       "sst-until",
       "When OMPL's SST stops: limit (keeps lowering its path's length until the time limit) or first (at its first "
       "solution)",
@@ -53,13 +53,13 @@ const PlannerParameter& sst_until_parameter() {
 
 namespace {
 
-bool with_our_sampler(const PlannerOptions& options) { return options.parameter(ompl_sampler_parameter()) == "ours"; }
-bool sst_improves(const PlannerOptions& options) { return options.parameter(sst_until_parameter()) == "limit"; }
+bool with_our_sampler(const planning::PlannerOptions& options) { return options.parameter(ompl_sampler_parameter()) == "ours"; }
+bool sst_improves(const planning::PlannerOptions& options) { return options.parameter(sst_until_parameter()) == "limit"; }
 
 // The set-point space and its sampler: OMPL's uniform one, or ours (options.ompl_control_sampler).
 std::shared_ptr<oc::RealVectorControlSpace> make_controls(const std::shared_ptr<PhysicsSpace>& space,
                                                           const knowledge::AbstractKnowledge& knowledge,
-                                                          const PlannerOptions& options, SeedSequence& seeds,
+                                                          const planning::PlannerOptions& options, SeedSequence& seeds,
                                                           bool ompl_product) {
   const scenario::World& world = space->world();
   auto controls = std::make_shared<oc::RealVectorControlSpace>(space, 2);
@@ -87,7 +87,7 @@ std::shared_ptr<oc::RealVectorControlSpace> make_controls(const std::shared_ptr<
 // The physics space's information: the propagator, the validity checker and the control durations.
 oc::SpaceInformationPtr physics_information(const std::shared_ptr<PhysicsSpace>& space,
                                             const std::shared_ptr<oc::RealVectorControlSpace>& controls,
-                                            const Problem& problem, const std::vector<std::vector<int>>& neighbours,
+                                            const planning::Problem& problem, const std::vector<std::vector<int>>& neighbours,
                                             GuardCounts& counts) {
   const scenario::World& world = problem.world;
   auto si = std::make_shared<oc::SpaceInformation>(space, controls);
@@ -116,9 +116,9 @@ struct Search {
   std::function<int(const ob::State*)> automaton_state;
 };
 
-Search on_ompls_product(const Problem& problem, const std::shared_ptr<PhysicsSpace>& space,
+Search on_ompls_product(const planning::Problem& problem, const std::shared_ptr<PhysicsSpace>& space,
                         const oc::SpaceInformationPtr& low, const std::vector<std::vector<int>>& neighbours,
-                        const PlannerOptions& options, SeedSequence& seeds, const physics::PhysicsState& start) {
+                        const planning::PlannerOptions& options, SeedSequence& seeds, const physics::PhysicsState& start) {
   const scenario::World& world = problem.world;
   auto automaton = to_ompl_automaton(problem.task);
   auto labels = std::make_shared<RegionLabels>(std::make_shared<Triangles>(problem.decomposition, world, neighbours),
@@ -156,8 +156,8 @@ Search on_ompls_product(const Problem& problem, const std::shared_ptr<PhysicsSpa
   return {si, definition, projection, product, robot, automaton_state};
 }
 
-Search on_our_product(const Problem& problem, const std::shared_ptr<PhysicsSpace>& space, const oc::SpaceInformationPtr& si,
-                      const PlannerOptions& options, SeedSequence& seeds, const physics::PhysicsState& start) {
+Search on_our_product(const planning::Problem& problem, const std::shared_ptr<PhysicsSpace>& space, const oc::SpaceInformationPtr& si,
+                      const planning::PlannerOptions& options, SeedSequence& seeds, const physics::PhysicsState& start) {
   const scenario::World& world = problem.world;
   if (with_our_sampler(options)) {
     si->setDirectedControlSamplerAllocator([&world, &problem, &seeds](const oc::SpaceInformation* s) {
@@ -186,8 +186,8 @@ Search on_our_product(const Problem& problem, const std::shared_ptr<PhysicsSpace
 
 // The solution's controls and the states after them; on our product, braking to rest appended where the
 // task ends at rest.
-Plan solution_plan(const Search& search, const PhysicsSpace& space) {
-  Plan plan;
+planning::Plan solution_plan(const Search& search, const PhysicsSpace& space) {
+  planning::Plan plan;
   const bool ompl_product = search.product != nullptr;
   const auto path = std::static_pointer_cast<oc::PathControl>(
       ompl_product ? std::static_pointer_cast<oc::LTLProblemDefinition>(search.definition)->getLowerSolutionPath()
@@ -200,7 +200,7 @@ Plan solution_plan(const Search& search, const PhysicsSpace& space) {
   }
   if (!ompl_product) {
     const auto& goal = *search.definition->getGoal()->as<ProductGoal>();
-    const Plan brake = *goal.braking(path->getStates().back());
+    const planning::Plan brake = *goal.braking(path->getStates().back());
     plan.controls.insert(plan.controls.end(), brake.controls.begin(), brake.controls.end());
     plan.states.insert(plan.states.end(), brake.states.begin(), brake.states.end());
   }
@@ -232,7 +232,7 @@ ob::PlannerStatus solve_in_slices(ob::Planner& planner, const ob::PlannerTermina
 }
 
 std::vector<std::pair<std::string, std::string>> settings_of(const ob::Planner& planner, OmplAlgorithm algorithm,
-                                                             const scenario::World& world, const PlannerOptions& options,
+                                                             const scenario::World& world, const planning::PlannerOptions& options,
                                                              bool ompl_product) {
   const bool differential = world.robot.drive == scenario::Drive::kDifferential;
   std::vector<std::pair<std::string, std::string>> settings = {
@@ -267,11 +267,11 @@ std::vector<std::pair<std::string, std::string>> settings_of(const ob::Planner& 
 
 }  // namespace
 
-bool on_our_product(const TaskAutomaton& task) { return task.names_bodies() || task.ends_at_rest(); }
+bool on_our_product(const planning::TaskAutomaton& task) { return task.names_bodies() || task.ends_at_rest(); }
 
-PlanResult plan_with_ompl(const Problem& problem, const PlannerOptions& options, OmplAlgorithm algorithm) {
+planning::PlanResult plan_with_ompl(const planning::Problem& problem, const planning::PlannerOptions& options, OmplAlgorithm algorithm) {
   const scenario::World& world = problem.world;
-  const TaskAutomaton& task = problem.task;
+  const planning::TaskAutomaton& task = problem.task;
   const bool ours = on_our_product(task);
   if (ours && algorithm == OmplAlgorithm::kLtl) {
     throw std::invalid_argument("LTLPlanner searches OMPL's product, which takes co-safe tasks about the robot's regions only");
@@ -279,10 +279,10 @@ PlanResult plan_with_ompl(const Problem& problem, const PlannerOptions& options,
   const auto started = std::chrono::steady_clock::now();
   // Every generator OMPL makes without a seed of its own takes the next from its process-wide sequence
   // (OMPL complains once it has started); ours are seeded below.
-  ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+  ::ompl::msg::setLogLevel(::ompl::msg::LOG_NONE);
   SeedSequence seeds(options.seed);
-  ompl::RNG::setSeed(seeds.next());
-  ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+  ::ompl::RNG::setSeed(seeds.next());
+  ::ompl::msg::setLogLevel(::ompl::msg::LOG_WARN);
 
   const physics::PhysicsState start = physics::Simulation(world).save();
   const std::optional<TaskProduct> product = ours ? std::optional<TaskProduct>(task) : std::nullopt;
@@ -303,23 +303,23 @@ PlanResult plan_with_ompl(const Problem& problem, const PlannerOptions& options,
     objective->setCostThreshold(improving ? ob::Cost(0.0) : objective->infiniteCost());
     search.definition->setOptimizationObjective(objective);
   }
-  PlanResult result;
+  planning::PlanResult result;
   const ob::PlannerPtr planner = make_planner(algorithm, search.si, search.product, search.projection, seeds.next());
   planner->setProblemDefinition(search.definition);
   planner->setup();
 
   // An improving SST would use the whole time limit: it stops at kSstShareOfTimeLimit of it, so that the
   // replay that validates its plan fits in the run's deadline too.
-  const Deadline until = improving ? options.deadline.sooner(kSstShareOfTimeLimit * options.deadline.seconds_left()) : options.deadline;
+  const base::Deadline until = improving ? options.deadline.sooner(kSstShareOfTimeLimit * options.deadline.seconds_left()) : options.deadline;
   const ob::PlannerTerminationCondition ptc([&] { return until.reached(); });
   const ob::PlannerStatus status = improving ? solve_in_slices(*planner, ptc, search, *space, result.motion_progress) : planner->solve(ptc);
 
   result.solved = search.definition->hasExactSolution();
-  result.stop_reason = result.solved                                                   ? StopReason::kSolved
-                       : options.deadline.interrupted()                                ? StopReason::kInterrupted
+  result.stop_reason = result.solved                                                   ? planning::StopReason::kSolved
+                       : options.deadline.interrupted()                                ? planning::StopReason::kInterrupted
                        : status == ob::PlannerStatus::TIMEOUT || status == ob::PlannerStatus::APPROXIMATE_SOLUTION
-                           ? StopReason::kTimeLimit
-                           : StopReason::kNoSolution;
+                           ? planning::StopReason::kTimeLimit
+                           : planning::StopReason::kNoSolution;
   if (result.solved) result.plan = solution_plan(search, *space);
   result.improved_itself = improving;
   // The tree, for tree.png: OMPL's control planners give their planner data; LTLPlanner only its states.
@@ -348,4 +348,4 @@ PlanResult plan_with_ompl(const Problem& problem, const PlannerOptions& options,
   return result;
 }
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::ompl

@@ -16,15 +16,15 @@
 
 #include <string>
 
-namespace physltl::planning {
+namespace physltl::planners::ompl {
 
 // --ompl-sampler (PlannerEntry::parameters): OMPL's uniform control sampler ("ompl", the default), or the
 // one our planners share ("ours", planning/propagation/control_sampler.h).
-const PlannerParameter& ompl_sampler_parameter();
+const planning::PlannerParameter& ompl_sampler_parameter();
 // --sst-until: "limit" (the default), SST keeps lowering its path's cost until the time limit, as an
 // improving planner does (a peer of our improvement: its plan is judged by our cost after replay, with
 // none of our improvement); "first", it stops at its first solution.
-const PlannerParameter& sst_until_parameter();
+const planning::PlannerParameter& sst_until_parameter();
 inline constexpr double kSstShareOfTimeLimit = 0.9;  // an improving SST's search; the rest for the replay
 
 enum class OmplAlgorithm {
@@ -36,9 +36,9 @@ enum class OmplAlgorithm {
 };
 
 // Whether the task is planned on our product rather than OMPL's.
-bool on_our_product(const TaskAutomaton& task);
+bool on_our_product(const planning::TaskAutomaton& task);
 
 // std::invalid_argument for LTLPlanner on a task that needs our product.
-PlanResult plan_with_ompl(const Problem& problem, const PlannerOptions& options, OmplAlgorithm algorithm);
+planning::PlanResult plan_with_ompl(const planning::Problem& problem, const planning::PlannerOptions& options, OmplAlgorithm algorithm);
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::ompl

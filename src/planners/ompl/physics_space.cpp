@@ -8,7 +8,10 @@
 #include <cmath>
 #include <numbers>
 
-namespace physltl::planning::ompl_adapter {
+namespace physltl::planners::ompl {
+
+using geometry::Vec2;
+
 namespace {
 
 constexpr std::size_t kValuesPerBody = physics::PhysicsState::kValuesPerBody;
@@ -79,7 +82,7 @@ void set_workspace_bounds(ob::RealVectorBounds& bounds, const scenario::World& w
 
 }  // namespace
 
-TaskProduct::TaskProduct(const TaskAutomaton& automaton) : task(automaton), stages(automaton) {
+TaskProduct::TaskProduct(const planning::TaskAutomaton& automaton) : task(automaton), stages(automaton) {
   for (int q = 0; q < static_cast<int>(automaton.dfa.size()); ++q) {
     if (!stages.dead(q)) live.push_back(q);
   }
@@ -209,4 +212,4 @@ void set_control(oc::Control* control, const Vec2& setpoint, bool differential) 
   }
 }
 
-}  // namespace physltl::planning::ompl_adapter
+}  // namespace physltl::planners::ompl

@@ -17,10 +17,10 @@
 
 #include <vector>
 
-namespace physltl::planning::ompl_adapter {
+namespace physltl::planners::ompl {
 
-namespace ob = ompl::base;
-namespace oc = ompl::control;
+namespace ob = ::ompl::base;
+namespace oc = ::ompl::control;
 using scenario::Vec2;
 
 // After the physics values: the step passed the validity checker; it took the robot into a triangle OMPL's
@@ -36,9 +36,9 @@ inline constexpr double kAutomatonStateWeight = 100.0;
 // The bodies the task names are part of the product too: where they stand counts in distances, samples
 // and KPIECE1's and PDST's grid as the robot's position does, or nothing would lead a search to move them.
 struct TaskProduct {
-  explicit TaskProduct(const TaskAutomaton& task);
-  const TaskAutomaton& task;
-  StageGraph stages;
+  explicit TaskProduct(const planning::TaskAutomaton& task);
+  const planning::TaskAutomaton& task;
+  planning::StageGraph stages;
   std::vector<int> live;  // the automaton states that are not dead, which the state sampler draws from
   std::vector<std::size_t> named_values;  // where each named body's x, y are in the physics values
 };
@@ -102,7 +102,7 @@ class RobotPosition : public ob::ProjectionEvaluator {
 
 // A control is a set-point: a holonomic robot's (speed, heading), a differential robot's (forward speed,
 // turn rate). Both ways:
-Vec2 setpoint_of(const oc::Control* control, bool differential);
-void set_control(oc::Control* control, const Vec2& setpoint, bool differential);
+geometry::Vec2 setpoint_of(const oc::Control* control, bool differential);
+void set_control(oc::Control* control, const geometry::Vec2& setpoint, bool differential);
 
-}  // namespace physltl::planning::ompl_adapter
+}  // namespace physltl::planners::ompl

@@ -11,7 +11,7 @@
 
 #include <stdexcept>
 
-namespace physltl::planning::ompl_adapter {
+namespace physltl::planners::ompl {
 namespace {
 
 // RNG::setLocalSeed: OMPL's process-wide RNG::setSeed takes effect only before the first generator exists.
@@ -68,4 +68,4 @@ ob::PlannerPtr make_planner(OmplAlgorithm algorithm, const oc::SpaceInformationP
   throw std::invalid_argument("not an OMPL planner");
 }
 
-}  // namespace physltl::planning::ompl_adapter
+}  // namespace physltl::planners::ompl

@@ -7,11 +7,9 @@
 #include <ompl/control/SpaceInformation.h>
 #include <ompl/control/planners/ltl/ProductGraph.h>
 
-namespace physltl::planning {
-enum class OmplAlgorithm;
-}
+namespace physltl::planners::ompl {
 
-namespace physltl::planning::ompl_adapter {
+enum class OmplAlgorithm;
 
 // LTLPlanner explores each lead for this long, in wall-clock time: OMPL's default.
 inline constexpr double kLtlExploreTime = 0.5;  // s
@@ -21,4 +19,4 @@ inline constexpr double kLtlExploreTime = 0.5;  // s
 ob::PlannerPtr make_planner(OmplAlgorithm algorithm, const oc::SpaceInformationPtr& si, const oc::ProductGraphPtr& product,
                             const ob::ProjectionEvaluatorPtr& projection, std::uint_fast32_t seed);
 
-}  // namespace physltl::planning::ompl_adapter
+}  // namespace physltl::planners::ompl

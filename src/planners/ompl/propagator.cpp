@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstring>
 
-namespace physltl::planning::ompl_adapter {
+namespace physltl::planners::ompl {
+
+using geometry::Vec2;
 
 PhysicsPropagator::PhysicsPropagator(const oc::SpaceInformationPtr& si, const PhysicsSpace& space,
                                      const knowledge::AbstractKnowledge& knowledge,
@@ -36,12 +38,12 @@ void PhysicsPropagator::propagate(const ob::State* from, const oc::Control* cont
     const knowledge::Violation violation = simulation_.step(setpoint).violation;
     ++counts_.steps;
     valid = violation == knowledge::Violation::kNone;
-    if (!valid) counts_.refused.add(*refusal_of(violation));
+    if (!valid) counts_.refused.add(*planning::refusal_of(violation));
     if (product != nullptr) {
       if (!valid) break;
       automaton_state = product->task.step(automaton_state, product->task.labelling.letter(simulation_.environment()));
       valid = !product->stages.dead(automaton_state);
-      if (!valid) counts_.refused.add(Refusal::kTaskLetter);
+      if (!valid) counts_.refused.add(planning::Refusal::kTaskLetter);
       continue;
     }
     const int next = decomposition_.locate(simulation_.environment().robot_position);
@@ -60,4 +62,4 @@ void PhysicsPropagator::propagate(const ob::State* from, const oc::Control* cont
   at_last_ = true;
 }
 
-}  // namespace physltl::planning::ompl_adapter
+}  // namespace physltl::planners::ompl

@@ -14,14 +14,14 @@
 
 #include <vector>
 
-namespace physltl::planning::ompl_adapter {
+namespace physltl::planners::ompl {
 
 // What the propagator did: restores, steps, and steps refused for landing beyond step_neighbours().
 struct GuardCounts {
   long long restores = 0;  // propagations started from a state other than the last one reached
   long long steps = 0;
   long long skips = 0;
-  Refusals refused;  // refused steps by rule, as our tree search counts them (refusal.h)
+  planning::Refusals refused;  // refused steps by rule, as our tree search counts them (refusal.h)
 };
 
 // One propagation: OMPL asks once per step of its propagation step size. On OMPL's product a step that
@@ -43,7 +43,7 @@ class PhysicsPropagator : public oc::StatePropagator {
   const decomposition::Decomposition& decomposition_;
   const std::vector<std::vector<int>>& neighbours_;
   GuardCounts& counts_;
-  mutable CheckedSimulation simulation_;
+  mutable planning::CheckedSimulation simulation_;
   mutable physics::PhysicsState saved_;
   mutable std::vector<double> last_;
   mutable bool at_last_ = false;
@@ -62,4 +62,4 @@ class StepValidity : public ob::StateValidityChecker {
   const std::size_t values_;
 };
 
-}  // namespace physltl::planning::ompl_adapter
+}  // namespace physltl::planners::ompl

@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-namespace physltl::planning::ompl_adapter {
+namespace physltl::planners::ompl {
 
 class SeedSequence {
  public:
@@ -18,4 +18,4 @@ class SeedSequence {
   std::uint64_t state_;
 };
 
-}  // namespace physltl::planning::ompl_adapter
+}  // namespace physltl::planners::ompl

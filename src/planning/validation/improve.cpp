@@ -102,7 +102,7 @@ bool better(const scenario::PlanCost& cost, const PlanMeasures& a, const PlanMea
 // visit or a body enter as deeply (visit_depths). Checked only for candidates that are better, which are
 // few; a deadline reached on the way refuses the candidate, and the loop stops.
 bool keeps_margin(const Problem& problem, double margin, const Replay& current, const Replay& candidate, int from, int to,
-                  int way_steps, const Deadline& deadline) {
+                  int way_steps, const base::Deadline& deadline) {
   const scenario::World& world = problem.world;
   if (margin <= 0.0) return true;
   const auto step = [](int i) { return static_cast<std::size_t>(i); };
@@ -145,12 +145,12 @@ PlanMeasures measure(const scenario::World& world, const Plan& plan, const Repla
 }
 
 Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::uint64_t seed, const ImprovementSettings& settings,
-                    Plan& plan, Replay& replay, const Deadline& deadline) {
+                    Plan& plan, Replay& replay, const base::Deadline& deadline) {
   const int budget = settings.for_s ? kUnboundedCandidates : settings.candidates;
   const auto started = std::chrono::steady_clock::now();
   Improvement result;
   result.for_s = settings.for_s;
-  const Deadline until = settings.for_s ? deadline.sooner(*settings.for_s) : deadline;
+  const base::Deadline until = settings.for_s ? deadline.sooner(*settings.for_s) : deadline;
   result.first = result.improved = measure(problem.world, plan, replay);
   const scenario::PlanCost& cost = settings.cost;
   const auto since_start = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };

@@ -7,7 +7,7 @@
 namespace physltl::planning {
 
 std::optional<double> clearance(const scenario::World& world, const scenario::StateTrace& states, std::size_t from,
-                                std::size_t to, double cap, const Deadline& deadline) {
+                                std::size_t to, double cap, const base::Deadline& deadline) {
   to = std::min(to, states.size() - 1);
   if (from > to) return cap;
   geometry::Rect swept{states.robot_position(from), states.robot_position(from)};

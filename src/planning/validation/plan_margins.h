@@ -20,7 +20,7 @@ namespace physltl::planning {
 // `states` (clipped to its end), or `cap` when none comes nearer than that: only the bodies within `cap`
 // of where the robot goes are measured. Nothing when `deadline` is reached on the way.
 std::optional<double> clearance(const scenario::World& world, const scenario::StateTrace& states, std::size_t from,
-                                std::size_t to, double cap, const Deadline& deadline = {});
+                                std::size_t to, double cap, const base::Deadline& deadline = {});
 
 // For each step at which the robot entering a region advanced the task's automaton: the deepest its
 // centre went into that region before leaving it (geometry::depth_inside); and for each step at which the

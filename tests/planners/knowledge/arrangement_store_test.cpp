@@ -8,7 +8,7 @@
 
 #include <vector>
 
-namespace physltl::planning::lookahead {
+namespace physltl::planners::knowledge::lookahead {
 namespace {
 
 using Met = ArrangementStore::Met;
@@ -72,4 +72,4 @@ TEST(ArrangementStore, AnArrangementMetCostsTheSameFewBytesWhateverTheBodies) {
 }
 
 }  // namespace
-}  // namespace physltl::planning::lookahead
+}  // namespace physltl::planners::knowledge::lookahead

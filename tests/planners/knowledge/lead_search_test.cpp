@@ -10,6 +10,8 @@
 namespace physltl::planning {
 namespace {
 
+using namespace physltl::planners::knowledge;
+
 TEST(LeadSearch, KeepsThePartBeforeTheFrontierAndSearchesTheRestAgain) {
   const TestProblem p("ordered.lua");
   const StageGraph stages(p.task);

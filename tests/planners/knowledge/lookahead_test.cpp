@@ -1,5 +1,5 @@
 // The look-ahead over arrangements (planners/knowledge/lookahead/push_plan.h) on grid push puzzles of our own
-// (tests/planning/data/puzzles/): when it applies, the push order it finds, what it prunes, and a puzzle
+// (tests/data/puzzles/): when it applies, the push order it finds, what it prunes, and a puzzle
 // solved end to end by the knowledge planner following it.
 
 #include "lookahead/goal_room.h"
@@ -22,9 +22,11 @@
 namespace physltl::planning {
 namespace {
 
-const std::string kPuzzles = "../tests/planning/data/puzzles/";
-const std::string kWorlds = "../tests/planning/data/lookahead/";
-const std::string kShapes = "../tests/planning/data/shapes/";
+using namespace physltl::planners::knowledge;
+
+const std::string kPuzzles = "../tests/data/puzzles/";
+const std::string kWorlds = "../tests/data/lookahead/";
+const std::string kShapes = "../tests/data/shapes/";
 
 // The look-ahead as the knowledge planner prepared it for `p`.
 const lookahead::Lookahead& ahead_of(const TestProblem& p) {
@@ -200,7 +202,7 @@ TEST(LookAhead, FindsThePushOrderWhereTheWrongOrderIsDead) {
   EXPECT_EQ(wrong.outcome, "no order of pushes");
 }
 
-// block_then_bar (tests/planning/data/shapes): a 3x3 block and a bar of three below it, each to a goal on
+// block_then_bar (tests/data/shapes): a 3x3 block and a bar of three below it, each to a goal on
 // the right; the bar cannot get past the block, so the block goes first.
 TEST(LookAhead, OrdersA3x3BlockAndABarOnTheGridTheyStandOn) {
   const TestProblem p(kShapes + "block_then_bar.lua");
@@ -225,10 +227,10 @@ TEST(LookAhead, OrdersA3x3BlockAndABarOnTheGridTheyStandOn) {
   }
 }
 
-// The files of tests/planning/data/`folder`, in name order.
+// The files of tests/data/`folder`, in name order.
 std::vector<std::string> files_in(const std::string& folder) {
   std::vector<std::string> files;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(PHYSLTL_SOURCE_DIR) + "/tests/planning/data/" + folder)) {
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(PHYSLTL_SOURCE_DIR) + "/tests/data/" + folder)) {
     files.push_back(entry.path().filename().string());
   }
   std::sort(files.begin(), files.end());
@@ -261,7 +263,7 @@ int covering(const lookahead::PushLattice& lattice, const std::vector<int>& cell
   return found;
 }
 
-// Each puzzle of tests/planning/data/shapes replays its reference solution on its grid lattice, one move
+// Each puzzle of tests/data/shapes replays its reference solution on its grid lattice, one move
 // at a time (a walk between places no body covers, a push moving one body one place into places none
 // covers), its pushes as many as its comment says, and ends with every named body where the task wants
 // it: the references are right, and the lattice admits them.
@@ -275,7 +277,7 @@ TEST(LookAhead, EveryMixedSizePuzzlesReferenceSolutionReplaysOnItsGrid) {
     const auto lattice = lookahead::PushLattice::build(p.world, p.knowledge, p.task.labelling, why_not);
     ASSERT_TRUE(lattice.has_value()) << file << ": " << why_not;
     EXPECT_FALSE(lattice->unit_bodies()) << file;
-    const auto [moves, claimed] = reference_of(std::string(PHYSLTL_SOURCE_DIR) + "/tests/planning/data/shapes/" + file);
+    const auto [moves, claimed] = reference_of(std::string(PHYSLTL_SOURCE_DIR) + "/tests/data/shapes/" + file);
     ASSERT_FALSE(moves.empty()) << file;
     std::vector<int> cells = *lattice->arrangement(scenario::EnvironmentState::initial(p.world));
     int robot = lattice->robot_cell(p.world.robot.start);
@@ -467,7 +469,7 @@ TEST(LookAhead, ASearchTheOrderLeadsIntoADeadEndGetsOutThroughItsEscape) {
   const TestProblem p(kPuzzles + "tight_store.lua");
   PlannerOptions options;
   options.seed = 3;
-  options.deadline = Deadline::in(600);  // the budget stops it, never the clock
+  options.deadline = base::Deadline::in(600);  // the budget stops it, never the clock
   options.threads = 1;
   options.max_propagations = 200'000;  // it needs 144,462
   options.parameters[push_primitives_parameter().name] = "off";  // the primitives carry the order out at once
@@ -539,7 +541,7 @@ TEST(PushPrimitive, CarriesOutAThreePushOrderInFewerPropagationsThanSampledContr
   PlannerOptions options;
   options.seed = 1;
   options.threads = 1;
-  options.deadline = Deadline::in(600);  // the budget stops it, never the clock
+  options.deadline = base::Deadline::in(600);  // the budget stops it, never the clock
   options.max_propagations = 20'000;
   const PlanResult primitives = p.plan_task(p.task, options);
   options.parameters[push_primitives_parameter().name] = "off";
@@ -563,7 +565,7 @@ TEST(PushPrimitive, ASearchStoppedShortNamesThePushOfTheOrderItDidNotCarryOut) {
   PlannerOptions options;
   options.seed = 1;
   options.threads = 1;
-  options.deadline = Deadline::in(600);
+  options.deadline = base::Deadline::in(600);
   // Sampled controls, which seed 1 needs 337 of: the primitive carries the whole order out in its first
   // expansion, before any budget is looked at.
   options.parameters[push_primitives_parameter().name] = "off";

@@ -13,7 +13,7 @@ namespace physltl::planning {
 
 // Neighbouring triangles, each entered with the stage's step on its region; only the last state is within
 // `horizon` moves of acceptance.
-inline void expect_product_path(const TestProblem& p, const StageGraph& stages, const ProductGraph& graph,
+inline void expect_product_path(const TestProblem& p, const StageGraph& stages, const planners::knowledge::ProductGraph& graph,
                                 const std::vector<int>& lead, int horizon) {
   ASSERT_FALSE(lead.empty());
   EXPECT_LE(stages.distance(graph.stage_of(lead.back())), horizon);

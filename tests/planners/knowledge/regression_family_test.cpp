@@ -1,5 +1,5 @@
 // Worlds written apart from the shipped ones, of the kinds where the knowledge planner's heuristics once
-// cut away the only solutions the baseline finds (tests/planning/data/regression/, docs/benchmarks.md):
+// cut away the only solutions the baseline finds (tests/data/regression/, docs/benchmarks.md):
 // the knowledge planner solves each, and its plan passes the replay against the formula as written.
 
 #include "test_problem.h"
@@ -29,11 +29,11 @@ class RegressionFamily : public ::testing::TestWithParam<FamilyWorld> {};
 
 TEST_P(RegressionFamily, TheKnowledgePlannerSolvesItAndTheReplayAgrees) {
   const FamilyWorld& w = GetParam();
-  const TestProblem p("../tests/planning/data/regression/" + w.file, w.params);
+  const TestProblem p("../tests/data/regression/" + w.file, w.params);
   for (std::uint64_t seed : w.seeds) {
     PlannerOptions options;
     options.seed = seed;
-    options.deadline = Deadline::in(20);
+    options.deadline = base::Deadline::in(20);
     const PlanResult result = p.plan_task(p.task, options);
     ASSERT_TRUE(result.solved) << w.file << " seed " << seed << ": " << result.stop_reason;
     const Replay replay = p.check(result.plan);
@@ -61,11 +61,11 @@ INSTANTIATE_TEST_SUITE_P(
 // too, and still pushes a body through a doorway from the face its author listed.
 TEST(Baseline, PushesABodyOnlyFromAFaceItsPushFromListsAndStillSolves) {
   for (const std::string drive : {"holonomic", "differential"}) {
-    const TestProblem p("../tests/planning/data/regression/authored_side_door.lua", {{"drive", drive}});
+    const TestProblem p("../tests/data/regression/authored_side_door.lua", {{"drive", drive}});
     for (std::uint64_t seed : {1, 2}) {
       PlannerOptions options;
       options.seed = seed;
-      options.deadline = Deadline::in(20);
+      options.deadline = base::Deadline::in(20);
       const PlanResult result = p.plan_task(p.original, options, "baseline");
       ASSERT_TRUE(result.solved) << drive << " seed " << seed << ": " << result.stop_reason;
       const Replay replay =

@@ -15,7 +15,7 @@ namespace {
 PlannerOptions options_with(std::uint64_t seed, int threads) {
   PlannerOptions options;
   options.seed = seed;
-  options.deadline = Deadline::in(600);  // a run that stops stops for its own reason, never the clock
+  options.deadline = base::Deadline::in(600);  // a run that stops stops for its own reason, never the clock
   options.threads = threads;
   return options;
 }
@@ -41,7 +41,7 @@ TEST(Threads, AnOutsideStopEndsEveryThreadPromptly) {
   const TestProblem p("rooms_n.lua", {{"rooms", "16"}});
   std::atomic<bool> stop{false};
   PlannerOptions options = options_with(1, 2);
-  options.deadline = physltl::Deadline(physltl::Deadline::Clock::time_point::max(), &stop);
+  options.deadline = physltl::base::Deadline(physltl::base::Deadline::Clock::time_point::max(), &stop);
   std::jthread stopper([&stop] {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
     stop.store(true);

@@ -12,6 +12,8 @@
 namespace physltl::planning {
 namespace {
 
+using namespace physltl::planners::knowledge;
+
 TEST(WorkerPool, RunsEveryTaskOnceInEveryBatch) {
   WorkerPool pool(3);
   ASSERT_EQ(pool.threads(), 3);

@@ -14,6 +14,8 @@
 namespace physltl::planning {
 namespace {
 
+using namespace physltl::planners::ompl;
+
 // OMPL's automaton steps exactly like ours on every trace a robot can produce, until ours can no longer
 // accept: OMPL's has no transition there (its product prunes such states).
 TEST(OmplAutomaton, AgreesWithTheTaskAutomatonOnRandomRegionTraces) {

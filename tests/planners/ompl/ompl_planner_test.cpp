@@ -16,12 +16,14 @@
 namespace physltl::planning {
 namespace {
 
+using namespace physltl::planners::ompl;
+
 // SST stops at its first solution here, as the others do: a plan in the time a test can spend, the same for
 // a seed on any machine.
 PlannerOptions ompl_options(std::uint64_t seed, double time_limit = 20) {
   PlannerOptions options;
   options.seed = seed;
-  options.deadline = Deadline::in(time_limit);
+  options.deadline = base::Deadline::in(time_limit);
   options.parameters[sst_until_parameter().name] = "first";
   return options;
 }
@@ -154,7 +156,7 @@ TEST(OmplPlanners, ATaskThatMustEndAtRestIsPlannedOnOurProductAndRefusedByLtlPla
 
 // Tasks about where bodies are, on our product: the automaton reads the crate's place at every step.
 TEST(OmplPlanners, EachControlPlannerSolvesATaskAboutAnObjectAndItsPlanReplays) {
-  const TestProblem p("../tests/planning/data/push_to_dock.lua");
+  const TestProblem p("../tests/data/push_to_dock.lua");
   ASSERT_TRUE(p.task.names_bodies());
   for (const std::string planner : {"ompl-rrt", "ompl-kpiece", "ompl-sst", "ompl-pdst"}) {
     const PlanResult result = p.plan_task(p.task, ompl_options(2), planner);

@@ -4,8 +4,8 @@
 
 #include "physltl/planning/registry.h"
 
-namespace physltl::planners {
+namespace physltl::planners::knowledge {
 
 void add_knowledge_planners(planning::PlannerRegistry& registry);
 
-}  // namespace physltl::planners
+}  // namespace physltl::planners::knowledge

@@ -4,8 +4,8 @@
 
 #include "physltl/planning/registry.h"
 
-namespace physltl::planners {
+namespace physltl::planners::ompl {
 
 void add_ompl_planners(planning::PlannerRegistry& registry);
 
-}  // namespace physltl::planners
+}  // namespace physltl::planners::ompl

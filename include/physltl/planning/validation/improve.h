@@ -27,7 +27,7 @@ double cost_of(const scenario::PlanCost& cost, const PlanMeasures& measures);
 // (Improvement::stopped says so: the plan then depends on the machine's speed, not only on the seed).
 // With settings.for_s, it ends after that long instead (or at `deadline`, if sooner): the budget is time.
 Improvement improve(const Problem& problem, knowledge::ValidityMode mode, std::uint64_t seed, const ImprovementSettings& settings,
-                    Plan& plan, Replay& replay, const Deadline& deadline = {});
+                    Plan& plan, Replay& replay, const base::Deadline& deadline = {});
 // The budget the main job and `test` spend when the user names none: about the same work in any world. A
 // candidate's replay costs in proportion to the bodies simulated, so 1,000 candidates up to 100 bodies
 // (fixed and movable), 100,000 / bodies above that, and never fewer than 100.

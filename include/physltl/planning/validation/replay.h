@@ -71,7 +71,7 @@ struct ReplayOptions {
   // validates (the replay then holds the steps up to that one).
   bool stop_at_first_failure = false;
   const ReplayedPrefix* prefix = nullptr;  // steps already replayed, taken as they are
-  Deadline deadline{};  // checked every few physics steps (Replay::cut_short)
+  base::Deadline deadline{};  // checked every few physics steps (Replay::cut_short)
   // Also read every body and infer kappa from scratch at every step, and fail the replay (not valid) where
   // the state, the verdict or kappa kept for the bodies that moved differ: the tests' proof that the
   // incremental way equals the paper's INFERENCE from scratch.

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-namespace physltl::planning::lookahead {
+namespace physltl::planners::knowledge::lookahead {
 namespace {
 
 // MurmurHash3's finaliser: every bit of the input moves about half the bits of the output, so that the
@@ -82,4 +82,4 @@ std::size_t ArrangementStore::bytes() const {
   return mets_.bytes() + settled_.bytes() + places_.bytes() + table;
 }
 
-}  // namespace physltl::planning::lookahead
+}  // namespace physltl::planners::knowledge::lookahead

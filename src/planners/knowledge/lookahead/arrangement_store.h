@@ -15,7 +15,7 @@
 #include <memory>
 #include <vector>
 
-namespace physltl::planning::lookahead {
+namespace physltl::planners::knowledge::lookahead {
 
 // Storage that grows a block at a time: nothing it holds is copied as it grows, and it is released in
 // a few large pieces rather than millions of small ones (a search cut at its deadline must end at once).
@@ -100,4 +100,4 @@ class ArrangementStore {
   mutable std::size_t hashed_value_ = 0;
 };
 
-}  // namespace physltl::planning::lookahead
+}  // namespace physltl::planners::knowledge::lookahead

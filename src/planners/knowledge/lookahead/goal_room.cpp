@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <map>
 
-namespace physltl::planning::lookahead {
+namespace physltl::planners::knowledge::lookahead {
 
 GoalRooms::GoalRooms(const PushLattice& lattice, const std::vector<bool>& goal, int root)
     : entered_(static_cast<std::size_t>(lattice.cells()) * kDirections, -1) {
@@ -150,4 +150,4 @@ std::vector<int> GoalRoom::way_in(const PushLattice& lattice, int k, int d, cons
   return {};
 }
 
-}  // namespace physltl::planning::lookahead
+}  // namespace physltl::planners::knowledge::lookahead

@@ -11,7 +11,7 @@
 #include <functional>
 #include <vector>
 
-namespace physltl::planning::lookahead {
+namespace physltl::planners::knowledge::lookahead {
 
 // The most places a room may have: the macro's way is found by a search over the room's places, each
 // step a walk of the robot through them.
@@ -51,4 +51,4 @@ class GoalRooms {
   std::vector<int> entered_;  // per place and direction: the room, or -1
 };
 
-}  // namespace physltl::planning::lookahead
+}  // namespace physltl::planners::knowledge::lookahead

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
 
 const char* direction_name(const PlannedPush& push) {
   return push.dx > 0 ? "+x" : push.dx < 0 ? "-x" : push.dy > 0 ? "+y" : "-y";
@@ -33,10 +33,10 @@ constexpr double kWayCell = 0.05;  // m: the grid of that check
 
 // Why the look-ahead applies for World body `b`: it cannot get to `regions` with room for the robot beside
 // it; nothing when it can (or cannot move at all).
-std::optional<std::string> narrow_way_of(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge, int b,
+std::optional<std::string> narrow_way_of(const scenario::World& world, const physltl::knowledge::AbstractKnowledge& knowledge, int b,
                                          const std::vector<int>& regions) {
   const auto& body = knowledge.movable_bodies[static_cast<std::size_t>(b)];
-  if (body.body_class == knowledge::BodyClass::kFixed) return std::nullopt;
+  if (body.body_class == physltl::knowledge::BodyClass::kFixed) return std::nullopt;
   std::vector<geometry::Footprint> obstacles;
   for (const auto& f : knowledge.fixed_bodies) obstacles.push_back(f.footprint);
   for (std::size_t other = 0; other < knowledge.movable_bodies.size(); ++other) {
@@ -61,9 +61,9 @@ std::optional<std::string> narrow_way_of(const scenario::World& world, const kno
 // Why the look-ahead applies: a named body cannot get to its regions with room for the robot beside it,
 // among the walls and the other bodies where they stand (boxes side by side need an order as much as a
 // corridor does). Nothing when every named body can.
-std::optional<std::string> narrow_way(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
-                                      const knowledge::Labelling& labelling) {
-  for (const knowledge::Labelling::NamedPart& named : labelling.named_parts()) {
+std::optional<std::string> narrow_way(const scenario::World& world, const physltl::knowledge::AbstractKnowledge& knowledge,
+                                      const physltl::knowledge::Labelling& labelling) {
+  for (const physltl::knowledge::Labelling::NamedPart& named : labelling.named_parts()) {
     std::vector<int> regions;
     for (const std::vector<int>& set : named.region_sets) regions.insert(regions.end(), set.begin(), set.end());
     for (int b : named.bodies) {
@@ -94,8 +94,8 @@ std::vector<PlannedPush> runs_of(const PushLattice& lattice, const std::vector<P
   return runs;
 }
 
-Lookahead look_ahead(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge, const TaskAutomaton& task,
-                     const StageGraph& stages, const Deadline& deadline, long long max_arrangements) {
+Lookahead look_ahead(const scenario::World& world, const physltl::knowledge::AbstractKnowledge& knowledge, const planning::TaskAutomaton& task,
+                     const planning::StageGraph& stages, const base::Deadline& deadline, long long max_arrangements) {
   Lookahead result;
   PushPlan& plan = result.plan;
   if (!task.names_bodies()) {
@@ -142,4 +142,4 @@ Lookahead look_ahead(const scenario::World& world, const knowledge::AbstractKnow
 }
 
 }  // namespace lookahead
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

@@ -10,7 +10,7 @@
 #include <optional>
 #include <vector>
 
-namespace physltl::planning::lookahead {
+namespace physltl::planners::knowledge::lookahead {
 
 struct Lookahead {
   PushPlan plan;
@@ -22,10 +22,10 @@ struct Lookahead {
 
 // `stages`: of `task`. `max_arrangements`: the discrete search's budget (push_search.h). Throws
 // DeadlineReached.
-Lookahead look_ahead(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge, const TaskAutomaton& task,
-                     const StageGraph& stages, const Deadline& deadline = {}, long long max_arrangements = kMaxArrangements);
+Lookahead look_ahead(const scenario::World& world, const physltl::knowledge::AbstractKnowledge& knowledge, const planning::TaskAutomaton& task,
+                     const planning::StageGraph& stages, const base::Deadline& deadline = {}, long long max_arrangements = kMaxArrangements);
 
 // Steps of one body in one direction after each other, as one push each.
 std::vector<PlannedPush> runs_of(const PushLattice& lattice, const std::vector<PushStep>& steps);
 
-}  // namespace physltl::planning::lookahead
+}  // namespace physltl::planners::knowledge::lookahead

@@ -7,7 +7,7 @@
 #include <limits>
 #include <numbers>
 
-namespace physltl::planning::lookahead {
+namespace physltl::planners::knowledge::lookahead {
 namespace {
 
 constexpr double kTouch = 1e-6;  // m: touching a wall is not overlapping it
@@ -25,8 +25,8 @@ bool square(double yaw) {
 
 }  // namespace
 
-std::optional<PushLattice> PushLattice::build(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
-                                              const knowledge::Labelling& labelling, std::string& why_not) {
+std::optional<PushLattice> PushLattice::build(const scenario::World& world, const physltl::knowledge::AbstractKnowledge& knowledge,
+                                              const physltl::knowledge::Labelling& labelling, std::string& why_not) {
   PushLattice lattice;
   if (labelling.named_parts().empty()) {
     why_not = "the task names no body";
@@ -36,14 +36,14 @@ std::optional<PushLattice> PushLattice::build(const scenario::World& world, cons
   for (const auto& f : knowledge.fixed_bodies) walls.push_back(f.footprint);
   if (!lattice.take_bodies(knowledge, walls, why_not)) return std::nullopt;
   const int anchor = labelling.named_parts().front().bodies.front();
-  if (knowledge.movable_bodies[static_cast<std::size_t>(anchor)].body_class == knowledge::BodyClass::kFixed) {
+  if (knowledge.movable_bodies[static_cast<std::size_t>(anchor)].body_class == physltl::knowledge::BodyClass::kFixed) {
     why_not = knowledge.movable_bodies[static_cast<std::size_t>(anchor)].name + " is too heavy to push";
     return std::nullopt;
   }
-  for (const knowledge::Labelling::NamedPart& part : labelling.named_parts()) {
+  for (const physltl::knowledge::Labelling::NamedPart& part : labelling.named_parts()) {
     for (int b : part.bodies) {
       // A group's place is all its bodies' together: one the lattice leaves out would be left out of it.
-      if (part.bodies.size() > 1 && knowledge.movable_bodies[static_cast<std::size_t>(b)].body_class == knowledge::BodyClass::kFixed) {
+      if (part.bodies.size() > 1 && knowledge.movable_bodies[static_cast<std::size_t>(b)].body_class == physltl::knowledge::BodyClass::kFixed) {
         why_not = knowledge.movable_bodies[static_cast<std::size_t>(b)].name + " of " + part.name + " is too heavy to push";
         return std::nullopt;
       }
@@ -58,7 +58,7 @@ std::optional<PushLattice> PushLattice::build(const scenario::World& world, cons
   lattice.anchor_at(first_place, knowledge.workspace);
   lattice.mark_robot_places(walls, knowledge.workspace, knowledge.robot.radius);
   // The region of each place, the same for every unit body (a larger body's centre is off its place).
-  const knowledge::RegionMap regions(world);
+  const physltl::knowledge::RegionMap regions(world);
   std::vector<int> region_of(lattice.unit_bodies_ ? static_cast<std::size_t>(lattice.cells()) : 0);
   for (std::size_t c = 0; c < region_of.size(); ++c) region_of[c] = regions.at(lattice.centre(static_cast<int>(c)));
   for (std::size_t k = 0; k < lattice.bodies_.size(); ++k) {
@@ -71,13 +71,13 @@ std::optional<PushLattice> PushLattice::build(const scenario::World& world, cons
   return lattice;
 }
 
-bool PushLattice::take_bodies(const knowledge::AbstractKnowledge& knowledge, std::vector<geometry::Footprint>& walls,
+bool PushLattice::take_bodies(const physltl::knowledge::AbstractKnowledge& knowledge, std::vector<geometry::Footprint>& walls,
                               std::string& why_not) {
   double largest_side = 0.0, smallest_side = std::numeric_limits<double>::infinity();
   bool boxes = true;
   for (std::size_t b = 0; b < knowledge.movable_bodies.size(); ++b) {
     const auto& body = knowledge.movable_bodies[b];
-    if (body.body_class == knowledge::BodyClass::kFixed) {
+    if (body.body_class == physltl::knowledge::BodyClass::kFixed) {
       walls.push_back(body.footprint);
       continue;
     }
@@ -107,7 +107,7 @@ bool PushLattice::take_bodies(const knowledge::AbstractKnowledge& knowledge, std
   return true;
 }
 
-bool PushLattice::take_grid(const knowledge::AbstractKnowledge& knowledge, double smallest_side) {
+bool PushLattice::take_grid(const physltl::knowledge::AbstractKnowledge& knowledge, double smallest_side) {
   if (bodies_.empty()) return false;
   // Lengths measured from the lower left of the first body's first cell (its bounds less half the gap).
   const geometry::Footprint& first = knowledge.movable_bodies[static_cast<std::size_t>(bodies_.front())].footprint;
@@ -140,7 +140,7 @@ bool PushLattice::take_grid(const knowledge::AbstractKnowledge& knowledge, doubl
   return false;
 }
 
-bool PushLattice::take_cover(std::size_t k, const knowledge::AbstractKnowledge& knowledge) {
+bool PushLattice::take_cover(std::size_t k, const physltl::knowledge::AbstractKnowledge& knowledge) {
   const geometry::Footprint& f = knowledge.movable_bodies[static_cast<std::size_t>(bodies_[k])].footprint;
   if (unit_bodies_) {
     cover_.push_back({{0, 0}});
@@ -241,9 +241,9 @@ void PushLattice::mark_robot_places(const std::vector<geometry::Footprint>& wall
   }
 }
 
-bool PushLattice::add_body(std::size_t k, const knowledge::RegionMap& regions, const std::vector<int>& region_of,
-                           const knowledge::AbstractKnowledge& knowledge,
-                           const knowledge::Labelling& labelling, const std::vector<geometry::Footprint>& walls,
+bool PushLattice::add_body(std::size_t k, const physltl::knowledge::RegionMap& regions, const std::vector<int>& region_of,
+                           const physltl::knowledge::AbstractKnowledge& knowledge,
+                           const physltl::knowledge::Labelling& labelling, const std::vector<geometry::Footprint>& walls,
                            std::string& why_not) {
   const int b = bodies_[k];
   const auto& body = knowledge.movable_bodies[static_cast<std::size_t>(b)];
@@ -268,7 +268,7 @@ bool PushLattice::add_body(std::size_t k, const knowledge::RegionMap& regions, c
   body_free_.push_back(std::move(fits));
   std::vector<bool> pushable(kDirections, false);
   for (const auto& m : body.mregions) {
-    const geometry::Vec2 push = knowledge::push_direction(m, body.footprint.pose);
+    const geometry::Vec2 push = physltl::knowledge::push_direction(m, body.footprint.pose);
     for (int d = 0; d < kDirections; ++d) {
       if (push.dot(geometry::Vec2(kDx[d], kDy[d])) >= kAlongAxis) pushable[static_cast<std::size_t>(d)] = true;
     }
@@ -281,7 +281,7 @@ bool PushLattice::add_body(std::size_t k, const knowledge::RegionMap& regions, c
   named_.push_back(named);
   std::vector<int> place(static_cast<std::size_t>(n), 0);
   if (named >= 0) {
-    const knowledge::Labelling::NamedPart& part = labelling.named_parts()[static_cast<std::size_t>(named)];
+    const physltl::knowledge::Labelling::NamedPart& part = labelling.named_parts()[static_cast<std::size_t>(named)];
     for (int c = 0; c < n; ++c) {
       // A unit body's centre is on its place; a larger one's, where its offset puts it.
       const int region = unit_bodies_ ? region_of[static_cast<std::size_t>(c)] : regions.at(body_centre(static_cast<int>(k), c));
@@ -372,4 +372,4 @@ int PushLattice::robot_cell(const geometry::Vec2& p) const {
   return best;
 }
 
-}  // namespace physltl::planning::lookahead
+}  // namespace physltl::planners::knowledge::lookahead

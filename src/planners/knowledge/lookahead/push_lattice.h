@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-namespace physltl::planning::lookahead {
+namespace physltl::planners::knowledge::lookahead {
 
 inline constexpr double kLatticeGap = 0.10;  // m between neighbouring bodies' sides
 // A body counts as standing on a place when its centre is this share of a step from it, and square when
@@ -40,8 +40,8 @@ inline constexpr int perpendicular(int d) { return d ^ 2; }  // a direction alon
 class PushLattice {
  public:
   // Nothing, with `why_not` said, when the World's pushable bodies do not stand on one lattice.
-  static std::optional<PushLattice> build(const scenario::World& world, const knowledge::AbstractKnowledge& knowledge,
-                                          const knowledge::Labelling& labelling, std::string& why_not);
+  static std::optional<PushLattice> build(const scenario::World& world, const physltl::knowledge::AbstractKnowledge& knowledge,
+                                          const physltl::knowledge::Labelling& labelling, std::string& why_not);
 
   double step() const { return step_; }
   // Whether every body covers one place (the first way above): the search's deadlock rules, tunnels, goal
@@ -111,25 +111,25 @@ class PushLattice {
   int shifted(int cell, const std::array<int, 2>& offset) const;
   // The step when the bodies and the walls stand on one grid of cells the robot fits in: the largest whole
   // share of the smallest body's side and the gap; false when there is none.
-  bool take_grid(const knowledge::AbstractKnowledge& knowledge, double smallest_side);
+  bool take_grid(const physltl::knowledge::AbstractKnowledge& knowledge, double smallest_side);
   // Lattice body k's cover, anchor and centre offset from where it stands; false when its outline is not
   // the places it covers.
-  bool take_cover(std::size_t k, const knowledge::AbstractKnowledge& knowledge);
+  bool take_cover(std::size_t k, const physltl::knowledge::AbstractKnowledge& knowledge);
   // behind_ of the body just covered, whose places are `cover`.
   void add_places_behind(const std::vector<std::array<int, 2>>& cover);
   PushLattice() = default;
   // The pushable bodies (fixed ones join `walls`) and the step; false, with why_not, when one is neither a
   // box nor a polygon standing square, or polygons stand on no grid with the walls.
-  bool take_bodies(const knowledge::AbstractKnowledge& knowledge, std::vector<geometry::Footprint>& walls, std::string& why_not);
+  bool take_bodies(const physltl::knowledge::AbstractKnowledge& knowledge, std::vector<geometry::Footprint>& walls, std::string& why_not);
   // The places: one at `anchor`, the others a step apart from it across the workspace.
   void anchor_at(const geometry::Vec2& anchor, const geometry::Rect& workspace);
   void mark_robot_places(const std::vector<geometry::Footprint>& walls, const geometry::Rect& workspace, double robot_radius);
   // Where lattice body k fits, how it may be pushed, its places for the task (`region_of`: each place's
   // World region, -1 for none, where a unit body's centre is; `regions` for a larger body's centre);
   // false, with why_not, when it stands between places.
-  bool add_body(std::size_t k, const knowledge::RegionMap& regions, const std::vector<int>& region_of,
-                const knowledge::AbstractKnowledge& knowledge,
-                const knowledge::Labelling& labelling, const std::vector<geometry::Footprint>& walls, std::string& why_not);
+  bool add_body(std::size_t k, const physltl::knowledge::RegionMap& regions, const std::vector<int>& region_of,
+                const physltl::knowledge::AbstractKnowledge& knowledge,
+                const physltl::knowledge::Labelling& labelling, const std::vector<geometry::Footprint>& walls, std::string& why_not);
 
   double step_ = 0.0;
   geometry::Vec2 origin_ = geometry::Vec2::Zero();  // the centre of place 0
@@ -154,4 +154,4 @@ class PushLattice {
   std::vector<bool> robot_passes_;             // per place and direction
 };
 
-}  // namespace physltl::planning::lookahead
+}  // namespace physltl::planners::knowledge::lookahead

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace physltl::planning {
+namespace physltl::planners::knowledge {
 
 // One push of the look-ahead's plan: a body moved `cells` lattice steps in one direction, and the bodies
 // in a line ahead of it that it pushes along.
@@ -49,4 +49,4 @@ const char* direction_name(const PlannedPush& push);
 // "M1 +x 0.6 m", "M3 (with M2, M1) -x 0.6 m"
 std::string describe(const PlannedPush& push, const std::vector<std::string>& body_names);
 
-}  // namespace physltl::planning
+}  // namespace physltl::planners::knowledge

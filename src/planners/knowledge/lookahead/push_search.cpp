@@ -14,7 +14,7 @@
 #include <set>
 #include <unordered_map>
 
-namespace physltl::planning::lookahead {
+namespace physltl::planners::knowledge::lookahead {
 namespace {
 
 constexpr int kNever = std::numeric_limits<int>::max();
@@ -69,7 +69,7 @@ long long run_arrangements(double time_limit_s) {
   return std::max(kPreviewArrangements, static_cast<long long>(time_limit_s * kArrangementsPerSecond));
 }
 
-PushSearcher::PushSearcher(const PushLattice& lattice, const StageGraph& stages, const knowledge::Labelling& labelling)
+PushSearcher::PushSearcher(const PushLattice& lattice, const planning::StageGraph& stages, const physltl::knowledge::Labelling& labelling)
     : lattice_(lattice), stages_(stages), labelling_(labelling) {}
 
 bool PushSearcher::ends_pushing(int stage) const {
@@ -586,7 +586,7 @@ bool PushSearcher::frozen_apart(int stage, const std::vector<int>& cells, int k)
 // space for the walks.
 class ArrangementSearch {
  public:
-  ArrangementSearch(const PushLattice& lattice, const StageGraph& stages, const PushSearcher& searcher,
+  ArrangementSearch(const PushLattice& lattice, const planning::StageGraph& stages, const PushSearcher& searcher,
                     const PushSearcher::Goals& goals, double weight, const std::vector<int>& start_cells)
       : lattice_(lattice),
         stages_(stages),
@@ -903,7 +903,7 @@ class ArrangementSearch {
   }
 
   const PushLattice& lattice_;
-  const StageGraph& stages_;
+  const planning::StageGraph& stages_;
   const PushSearcher& searcher_;
   const PushSearcher::Goals& goals_;
   double weight_;
@@ -930,7 +930,7 @@ class ArrangementSearch {
   std::size_t macro_bytes_ = 0;
 };
 
-PushSearch PushSearcher::search(int stage, const std::vector<int>& cells, int robot_cell, const Deadline& deadline,
+PushSearch PushSearcher::search(int stage, const std::vector<int>& cells, int robot_cell, const base::Deadline& deadline,
                                 SearchBudget budget, double weight) const {
   PushSearch result;
   const Goals goals = goals_from(stage);
@@ -966,4 +966,4 @@ PushSearch PushSearcher::search(int stage, const std::vector<int>& cells, int ro
   return result;
 }
 
-}  // namespace physltl::planning::lookahead
+}  // namespace physltl::planners::knowledge::lookahead

@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-namespace physltl::planning::lookahead {
+namespace physltl::planners::knowledge::lookahead {
 
 // Measured on the look-ahead puzzles (docs/benchmarks.md): 2 finds orders for the hardest in seconds
 // with pushes within a few of the fewest; 1 (plain A*) settled ten times as many arrangements.
@@ -88,13 +88,13 @@ struct PushSearch {
 
 class PushSearcher {
  public:
-  PushSearcher(const PushLattice& lattice, const StageGraph& stages, const knowledge::Labelling& labelling);
+  PushSearcher(const PushLattice& lattice, const planning::StageGraph& stages, const physltl::knowledge::Labelling& labelling);
 
   // From `stage` with the lattice bodies on `cells` and the robot on `robot_cell`, within `budget` (the
   // same order on any machine); `deadline` only ends it early (DeadlineReached). `weight` scales the
   // estimate against the cost so far: 0 is a uniform-cost search, whose order has the fewest body steps
   // (for tests of the estimate).
-  PushSearch search(int stage, const std::vector<int>& cells, int robot_cell, const Deadline& deadline = {},
+  PushSearch search(int stage, const std::vector<int>& cells, int robot_cell, const base::Deadline& deadline = {},
                     SearchBudget budget = {}, double weight = kHeuristicWeight) const;
   // The estimate the search ranks arrangements by: never more than the body steps left from `cells`.
   int estimate(int stage, const std::vector<int>& cells) const;
@@ -157,8 +157,8 @@ class PushSearcher {
   bool square_frozen(const Goals& goals, const std::vector<int>& cells, const std::vector<int>& holder, int at) const;
 
   const PushLattice& lattice_;
-  const StageGraph& stages_;
-  const knowledge::Labelling& labelling_;
+  const planning::StageGraph& stages_;
+  const physltl::knowledge::Labelling& labelling_;
 };
 
-}  // namespace physltl::planning::lookahead
+}  // namespace physltl::planners::knowledge::lookahead

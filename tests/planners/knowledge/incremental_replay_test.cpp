@@ -19,7 +19,7 @@ void expect_audited_replay_validates(const std::string& scenario) {
   const TestProblem p(scenario);
   PlannerOptions options;
   options.seed = 1;
-  options.deadline = Deadline::in(20);
+  options.deadline = base::Deadline::in(20);
   const PlanResult result = p.plan_task(p.task, options);
   ASSERT_TRUE(result.solved) << scenario << ": " << result.stop_reason;
   const Replay audited = replay(p.world, result.plan, p.original, p.knowledge, {.audit_inference = true});
@@ -42,7 +42,7 @@ INSTANTIATE_TEST_SUITE_P(Replay, ShippedScenario,
 class RegressionWorld : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(RegressionWorld, IncrementalInferenceEqualsInferenceFromScratchAtEveryReplayedStep) {
-  expect_audited_replay_validates("../tests/planning/data/regression/" + GetParam() + ".lua");
+  expect_audited_replay_validates("../tests/data/regression/" + GetParam() + ".lua");
 }
 
 INSTANTIATE_TEST_SUITE_P(Replay, RegressionWorld,

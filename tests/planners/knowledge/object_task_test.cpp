@@ -1,8 +1,6 @@
-// Tasks about where bodies must be (BODY@REGION): the stages, the planner and the replay.
+// Tasks about where bodies must be (BODY@REGION): the knowledge planner's plans and their replay.
 
-#include "physltl/planners/registry.h"
 #include "physltl/planning/validation/replay.h"
-#include "physltl/planning/stage_graph.h"
 
 #include "test_problem.h"
 
@@ -22,79 +20,14 @@ long first_step_with(const TestProblem& p, const Replay& r, const std::string& f
   return -1;
 }
 
-TEST(Labelling, ALetterIsTheRobotsRegionAndWhereEachNamedBodyIs) {
-  const TestProblem p("sorting.lua");
-  const knowledge::Labelling& labels = p.original.labelling;
-  ASSERT_EQ(labels.named_parts().size(), 3u);  // B1, B2, B3, each with one region
-  EXPECT_EQ(labels.fact_sets(), 8);
-  scenario::EnvironmentState state = scenario::EnvironmentState::initial(p.world);
-  EXPECT_EQ(labels.object_facts(labels.facts(state)), std::vector<std::string>{"B3@shelf"});
-  state.movable_poses[0].position = {-2.8, 2.2};  // B1 into bay 1
-  state.robot_position = {-0.6, 2.2};            // the robot in bay 2: the robot's region, not B2's
-  const int letter = labels.letter(state);
-  EXPECT_EQ(p.world.regions[static_cast<size_t>(labels.robot_region_of(letter))].name, "bay2");
-  EXPECT_EQ(labels.object_facts(labels.facts_of(letter)), (std::vector<std::string>{"B1@bay1", "B3@shelf"}));
-}
-
-// crates@docks: one part of three bodies and two places, whatever the number of crates and docks; it
-// holds only when every crate is in some dock, each in its own or two in one.
-TEST(Labelling, AGroupIsOnePartThatHoldsWhenEveryBodyOfItIsInSomeRegionOfTheSet) {
-  const TestProblem p("../tests/planning/data/crates_to_docks.lua");
-  const knowledge::Labelling& labels = p.original.labelling;
-  ASSERT_EQ(labels.named_parts().size(), 1u);
-  EXPECT_EQ(labels.named_parts()[0].bodies, (std::vector<int>{0, 1, 2}));
-  EXPECT_EQ(labels.fact_sets(), 2);
-  scenario::EnvironmentState state = scenario::EnvironmentState::initial(p.world);
-  const auto holds = [&] { return labels.object_facts(labels.facts(state)) == std::vector<std::string>{"crates@docks"}; };
-  EXPECT_FALSE(holds());
-  state.movable_poses[0].position = {6.0, 4.5};  // C1 in dock3
-  state.movable_poses[1].position = {6.0, 1.5};  // C2 in dock1
-  EXPECT_FALSE(holds());                          // C3 still out
-  state.movable_poses[2].position = {6.1, 3.0};  // C3 in dock2
-  EXPECT_TRUE(holds());
-  state.movable_poses[2].position = {6.0, 5.2};  // C3 just past dock3's edge
-  EXPECT_FALSE(holds());
-}
-
 TEST(ObjectTask, TheKnowledgePlannerPutsEveryBodyOfAGroupInSomeRegionOfItsSetAndTheReplayAgrees) {
-  const TestProblem p("../tests/planning/data/crates_to_docks.lua");
+  const TestProblem p("../tests/data/crates_to_docks.lua");
   const PlanResult result = p.solve(1);
   ASSERT_TRUE(result.solved) << result.stop_reason;
   const Replay r = p.check(result.plan);
   ASSERT_TRUE(r.validated()) << r.failure;
   EXPECT_GE(first_step_with(p, r, "crates@docks"), 0);
   for (const auto& pose : r.states.back().movable_poses) EXPECT_GT(pose.position.x(), 5.6);
-}
-
-TEST(StageGraph, ABodyMoveComesFirstAndABodyNoLongerNeededIsForgotten) {
-  const TestProblem p("delivery.lua");  // F(crate@dock & F charger)
-  const StageGraph stages(p.task);
-  const int start = stages.stage(p.task.start_state(scenario::EnvironmentState::initial(p.world)), 0);
-  EXPECT_EQ(stages.distance(start), 2);  // push the crate in, then go to the charger
-  ASSERT_TRUE(stages.body_move(start));
-  EXPECT_EQ(stages.body_move(start)->place, 1);  // into its first (only) named region, the dock
-  // With the crate in the dock the task is about the charger only: wherever the crate goes next, the stage
-  // is the same, and the robot moves next.
-  const int docked = stages.after_letter(start, p.task.labelling.letter(1, -1));
-  EXPECT_EQ(stages.distance(docked), 1);
-  EXPECT_FALSE(stages.body_move(docked));
-  EXPECT_EQ(stages.after_letter(docked, p.task.labelling.letter(0, -1)), docked);
-}
-
-TEST(StageGraph, ABodyThatMustStayPutKillsTheTaskWhenItLeaves) {
-  const TestProblem p("sorting.lua");  // ... & G B3@shelf
-  const StageGraph stages(p.task);
-  const knowledge::Labelling& labels = p.task.labelling;
-  const int start = stages.stage(p.task.start_state(scenario::EnvironmentState::initial(p.world)), 0);
-  int b3 = -1;
-  for (size_t i = 0; i < labels.named_parts().size(); ++i) {
-    if (p.world.movable_bodies[static_cast<size_t>(labels.named_parts()[i].bodies.front())].name == "B3") b3 = static_cast<int>(i);
-  }
-  ASSERT_GE(b3, 0);
-  const int facts = labels.facts_of(labels.letter(scenario::EnvironmentState::initial(p.world)));
-  const int off_the_shelf = stages.after_letter(start, labels.letter(labels.with_place(facts, b3, 0), -1));
-  EXPECT_TRUE(stages.dead(stages.automaton_state_of(off_the_shelf)));
-  EXPECT_FALSE(stages.dead(stages.automaton_state_of(start)));
 }
 
 TEST(ObjectTask, TheKnowledgePlannerSortsTheBoxesAndTheReplayValidatesIt) {
@@ -140,7 +73,7 @@ TEST(ObjectTask, AStageWhoseOnlyNodeCannotGrowDoesNotHoldTheSearch) {
 }
 
 TEST(ObjectTask, BrakingLongerThanOneControlEndsThePlanInSeveral) {
-  const TestProblem p("../tests/planning/data/slow_stop.lua");  // a sliding crate, controls of <= 6 steps
+  const TestProblem p("../tests/data/slow_stop.lua");  // a sliding crate, controls of <= 6 steps
   const PlanResult result = p.solve(1);
   ASSERT_TRUE(result.solved) << result.stop_reason;
   const auto& controls = result.plan.controls;
@@ -190,16 +123,6 @@ TEST(Replay, AStayTaskWhoseCrateEndsOutsideTheDockIsRejected) {
   EXPECT_FALSE(r.accepted);
   const Replay through = replay(reach.world, result.plan, reach.original, reach.knowledge);
   EXPECT_TRUE(through.accepted);  // while "at some time" holds
-}
-
-TEST(Planner, LtlPlannerRefusesTasksAboutBodiesAndSaysWhyWhileOmplsControlPlannersTakeThem) {
-  const TestProblem p("delivery.lua");
-  const auto why = planners::registry().refusal(planner_named("ompl-ltl"), p.task);
-  ASSERT_TRUE(why);
-  EXPECT_NE(why->find("BODY@REGION"), std::string::npos) << *why;
-  EXPECT_FALSE(planners::registry().refusal(planner_named("ompl-rrt"), p.task));
-  EXPECT_FALSE(planners::registry().refusal(planner_named("knowledge"), p.task));
-  EXPECT_FALSE(planners::registry().refusal(planner_named("baseline"), p.task));
 }
 
 }  // namespace

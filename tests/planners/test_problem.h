@@ -1,14 +1,11 @@
 #pragma once
-// The planning tests' fixture: everything a run prepares before planning, for one shipped scenario.
+// The planners' tests' fixture: a scenario prepared as a run prepares it (the core's PreparedScenario), with
+// the program's planners by name to prepare and search it.
 
-#include "physltl/knowledge/feasibility.h"
-#include "physltl/ltl/parser.h"
-#include "physltl/ltl/simplify.h"
-#include "physltl/ltl/translate.h"
 #include "physltl/planners/registry.h"
-#include "physltl/planning/validation/replay.h"
-#include "physltl/planning/validation/validated_plan.h"
-#include "physltl/scenario/load.h"
+#include "physltl/planning/planning_problem.h"
+
+#include "prepared_scenario.h"
 
 #include <gtest/gtest.h>
 
@@ -25,28 +22,8 @@ inline const PlannerEntry& planner_named(const std::string& name) {
   return *planner;
 }
 
-struct TestProblem {
-  scenario::World world;
-  knowledge::AbstractKnowledge knowledge;
-  TaskAutomaton task;      // of the simplified formula: what the search aims at
-  TaskAutomaton original;  // of the formula as written: what replay checks
-  decomposition::Decomposition decomposition;
-
-  explicit TestProblem(const std::string& name, const std::map<std::string, std::string>& params = {})
-      : world(scenario::load_scenario(std::string(PHYSLTL_SOURCE_DIR) + "/scenarios/" + name, {.params = params})),
-        knowledge(knowledge::formulate(world)),
-        task(make_task(true)),
-        original(make_task(false)),
-        decomposition(decomposition::Decomposition::build(world)) {}
-
-  TaskAutomaton make_task(bool simplified) const {
-    const ltl::Formula& phi = world.task.parsed;
-    if (!simplified) return TaskAutomaton::make(phi, world);
-    const auto invalid = knowledge::evaluate_feasibility(knowledge).invalid_names();
-    return TaskAutomaton::make(*ltl::simplify_semantically(phi, invalid).formula, world);
-  }
-
-  Problem problem() const { return {world, task, original, knowledge, decomposition, world.planner.time_limit}; }
+struct TestProblem : PreparedScenario {
+  using PreparedScenario::PreparedScenario;
 
   // What `planner` prepares of problem() (its entry's prepare, as a run does once), made on the first call.
   const PlannerData* preparation(const std::string& planner) const {
@@ -56,11 +33,6 @@ struct TestProblem {
       known = prepared_.emplace(planner, entry.prepare ? entry.prepare(problem(), {}) : nullptr).first;
     }
     return known->second.get();
-  }
-
-  // The knowledge planner's replay of `plan` against the formula as written.
-  Replay check(const Plan& plan) const {
-    return replay(world, plan, original, knowledge);
   }
 
   // `planner` searching `search_task` (the simplified task, or another), replay checking the formula as written.
@@ -74,13 +46,30 @@ struct TestProblem {
   PlanResult solve(std::uint64_t seed, const std::string& planner = "knowledge") const {
     PlannerOptions options;
     options.seed = seed;
-    options.deadline = Deadline::in(20);
+    options.deadline = base::Deadline::in(20);
     return planner_named(planner).plan(problem(), preparation(planner), options);
   }
 
  private:
   mutable std::map<std::string, std::shared_ptr<const PlannerData>> prepared_;
 };
+
+// The knowledge planner's first validated plan of `seed`, improved as `improvement` asks.
+inline ValidatedPlan solve_and_improve(const TestProblem& p, std::uint64_t seed, const ImprovementSettings& improvement) {
+  PlannerOptions options;
+  options.seed = seed;
+  options.deadline = base::Deadline::in(20);
+  return plan_and_validate(p.problem(), planner_named("knowledge"), p.preparation("knowledge"), options, improvement);
+}
+
+inline void expect_same_plan(const Plan& a, const Plan& b) {
+  ASSERT_EQ(a.controls.size(), b.controls.size());
+  for (size_t i = 0; i < a.controls.size(); ++i) {
+    EXPECT_EQ(a.controls[i].setpoint, b.controls[i].setpoint);
+    EXPECT_EQ(a.controls[i].steps, b.controls[i].steps);
+    EXPECT_EQ(a.states[i], b.states[i]);
+  }
+}
 
 // ordered.lua's plan of seed 3, validated, that pushes boxes: what the robustness and execution tests run
 // in worlds that are not the model.
