@@ -1,7 +1,6 @@
 #include "physltl/render/png.h"
 
 #include <png.h>
-#include <stb_image.h>
 
 #include <csetjmp>
 #include <fstream>
@@ -16,6 +15,10 @@ namespace {
 // the anti-aliased frames it compresses as small as "up" (43 KB against 44 KB on rooms.lua) and ~20 %
 // faster.
 constexpr int kCompressionLevel = 1;
+
+// Larger than any picture this program writes (a frame is at most 8,192 pixels a side): a header that
+// claims more is refused before its pixels are allocated.
+constexpr png_uint_32 kMaxPictureSide = 16384;
 
 void append_bytes(png_structp png, png_bytep data, png_size_t size) {
   auto* out = static_cast<std::vector<std::uint8_t>*>(png_get_io_ptr(png));
@@ -63,12 +66,22 @@ void write_png(const Image& image, const std::filesystem::path& path) {
 Image read_png(const std::filesystem::path& path) {
   // A pipe or a device named for a picture would be waited on for ever.
   if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("cannot read " + path.string() + ": not a regular file");
-  int width = 0, height = 0, channels = 0;
-  std::unique_ptr<unsigned char, decltype(&stbi_image_free)> pixels(
-      stbi_load(path.c_str(), &width, &height, &channels, 3), &stbi_image_free);
-  if (!pixels) throw std::runtime_error("cannot read " + path.string() + ": not a PNG picture this program reads (" + stbi_failure_reason() + ")");
-  Image image(width, height);
-  std::copy(pixels.get(), pixels.get() + image.rgb.size(), image.rgb.begin());
+  // By content, with libpng: a PNG or nothing. Debian's stb_image decodes every format it knows, whatever
+  // the file's name, and spins for ever on a truncated Radiance HDR file (stb_image 2.27).
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  const auto refused = [&](const std::string& why) {
+    png_image_free(&png);
+    return std::runtime_error("cannot read " + path.string() + ": not a PNG picture this program reads (" + why + ")");
+  };
+  if (!png_image_begin_read_from_file(&png, path.c_str())) throw refused(png.message);
+  if (png.width > kMaxPictureSide || png.height > kMaxPictureSide) {
+    throw refused(std::to_string(png.width) + " x " + std::to_string(png.height) + " pixels, over " +
+                  std::to_string(kMaxPictureSide) + " a side");
+  }
+  png.format = PNG_FORMAT_RGB;
+  Image image(static_cast<int>(png.width), static_cast<int>(png.height));
+  if (!png_image_finish_read(&png, nullptr, image.rgb.data(), 0, nullptr)) throw refused(png.message);
   return image;
 }
 
