@@ -39,10 +39,22 @@ std::string read_input_file(const std::filesystem::path& file, std::size_t max_b
   }
 }
 
+nlohmann::json parse_json(std::string_view text) {
+  const nlohmann::json::parser_callback_t within_depth = [](int depth, nlohmann::json::parse_event_t event, nlohmann::json&) {
+    const bool opens = event == nlohmann::json::parse_event_t::object_start || event == nlohmann::json::parse_event_t::array_start;
+    if (opens && depth >= kMaxJsonDepth) {
+      throw nlohmann::json::out_of_range::create(406, "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels",
+                                                 static_cast<const nlohmann::json*>(nullptr));
+    }
+    return true;
+  };
+  return nlohmann::json::parse(text, within_depth);
+}
+
 nlohmann::json read_json_file(const std::filesystem::path& file, std::size_t max_bytes, const std::string& what) {
   const std::string text = read_input_file(file, max_bytes);
   try {
-    return nlohmann::json::parse(text);
+    return parse_json(text);
   } catch (const nlohmann::json::exception& e) {
     throw BadInput(file.string() + ": not " + what + " (" + e.what() + ")");
   }

@@ -424,6 +424,33 @@ TEST(Hang, CtrlCEndsEveryPhaseWithinASecondPreparationAndRenderingIncluded) {
   for (const auto& entry : fs::directory_iterator(out)) ADD_FAILURE() << "left behind: " << entry.path();
 }
 
+// JSON nested 100,000 deep, where a reader that copied, compared or printed it would overflow the stack:
+// bench merge refuses the manifest naming it, and test orders its scenarios without the last times.
+TEST(Crash, JsonNestedDeeperThanSixtyFourLevelsIsRefusedBeforeAnyCopy) {
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  const fs::path out = fresh_out_dir();
+  const std::string avoid = kSource + "/scenarios/avoid.lua";
+  ASSERT_EQ(run("bench " + avoid + " --runs 1 --campaign c --shard 1/1 --quiet --out " + out.string()).exit_code, 0);
+  const fs::path manifest = out / "c" / "shard-1-of-1" / "manifest.json";
+  nlohmann::json written = nlohmann::json::parse(slurp(manifest));
+  written["campaign"] = nullptr;
+  std::string text = written.dump();
+  text.replace(text.find("null"), 4, deep);
+  std::ofstream(manifest, std::ios::trunc) << text;
+  const Result merged = run("bench merge " + (out / "c").string() + " --out " + (out / "merged").string());
+  EXPECT_EQ(merged.exit_code, 2) << merged.err;
+  EXPECT_NE(merged.err.find(manifest.string()), std::string::npos) << merged.err;
+  EXPECT_NE(merged.err.find("nested deeper than 64 levels"), std::string::npos) << merged.err;
+
+  const fs::path dir = test_dir();
+  const std::string scenario = quick_test_scenario(dir).string();
+  ASSERT_EQ(run("test " + scenario + " --update --out " + out.string()).exit_code, 0);
+  std::ofstream(out / "test" / "times.json", std::ios::trunc) << deep;
+  const Result tested = run("test " + scenario + " --out " + out.string());
+  EXPECT_EQ(tested.exit_code, 0) << tested.out << tested.err;
+  EXPECT_LT(fs::file_size(out / "test" / "times.json"), 1000u) << "rewritten from this run's times, not the deep file";
+}
+
 TEST(Nonsense, ACorruptGoldenIsNamedAndRewrittenByUpdateAndAGoldensFolderThatIsAFileIsRefused) {
   const fs::path dir = test_dir();
   const std::string scenario = quick_test_scenario(dir).string();

@@ -20,8 +20,17 @@ enum class Durability {
 // The bytes of `file`, a regular file of at most `max_bytes`; BadInput naming it otherwise ("is a folder,
 // not a file", "is not a regular file", "is larger than 16 MiB", "cannot be read").
 std::string read_input_file(const std::filesystem::path& file, std::size_t max_bytes);
-// The same parsed as JSON; BadInput naming the file and `what` it should be when it is not.
+// The same parsed as JSON (parse_json); BadInput naming the file and `what` it should be when it is not.
 nlohmann::json read_json_file(const std::filesystem::path& file, std::size_t max_bytes, const std::string& what);
+
+// The deepest nesting of arrays and objects the program reads back: far beyond what it writes (plan.json
+// nests 4 deep), and shallow enough that copying, comparing, diffing and printing a value, which recurse,
+// stay well within the stack.
+inline constexpr int kMaxJsonDepth = 64;
+// `text` as JSON. Throws nlohmann::json::exception for text that is not JSON, and nlohmann::json::out_of_range
+// for a value nested deeper than kMaxJsonDepth, refused while it is parsed (the parser does not recurse),
+// before anything copies it.
+nlohmann::json parse_json(std::string_view text);
 
 // Removes the `NAME.tmp-PID` and `NAME.old-PID` siblings of `final_path` whose process has ended: what a
 // run killed before it could clean up left. Every writer calls it before writing.

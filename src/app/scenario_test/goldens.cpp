@@ -152,9 +152,11 @@ CaseResult Goldens::plan(nlohmann::ordered_json plan) {
     if (!update_) {
       const std::filesystem::path actual_path = actual_folder_ / "plan.actual.json";
       write_text(actual_path, text);
-      const nlohmann::json expected = nlohmann::json::parse(expected_text, nullptr, false);
-      if (expected.is_discarded()) {
-        return {file_name, Outcome::kFailed, fmt::format("{} is not JSON; actual: {}", golden.string(), actual_path.string())};
+      nlohmann::json expected;
+      try {
+        expected = common::parse_json(expected_text);
+      } catch (const nlohmann::json::exception& e) {
+        return {file_name, Outcome::kFailed, fmt::format("{} is not JSON ({}); actual: {}", golden.string(), e.what(), actual_path.string())};
       }
       const nlohmann::json patch = nlohmann::json::diff(expected, nlohmann::json::parse(text));
       const std::string where = patch.empty() ? "in layout only" : "first at " + patch[0]["path"].get<std::string>();

@@ -15,9 +15,11 @@ namespace {
 nlohmann::json read_times(const std::filesystem::path& file) {
   if (!std::filesystem::exists(file)) return nlohmann::json::object();
   try {
-    const nlohmann::json times = nlohmann::json::parse(common::read_input_file(file, std::size_t{16} << 20), nullptr, false);
+    const nlohmann::json times = common::parse_json(common::read_input_file(file, std::size_t{16} << 20));
     return times.is_object() ? times : nlohmann::json::object();
   } catch (const common::BadInput&) {
+    return nlohmann::json::object();
+  } catch (const nlohmann::json::exception&) {
     return nlohmann::json::object();
   }
 }
