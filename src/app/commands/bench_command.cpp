@@ -229,7 +229,7 @@ CommandRunner add_bench_command(CLI::App& app) {
   app.add_option("--improve", args->flags.improve,
                  "Candidates spent shortening each first validated plan, timed apart from the search (default: none)")
       ->check(CLI::Range(0, 1000000))
-      ->capture_default_str();
+      ->default_str(std::to_string(*args->flags.improve));  // an optional's default CLI11 does not show
   app.add_option("--robustness", args->robustness,
                  "Replay each solved plan in N perturbed worlds drawn from the scenario's uncertainty (timed apart); "
                  "a robustness line per planner (docs/robustness.md)")

@@ -239,7 +239,7 @@ CommandRunner add_run_command(CLI::App& app) {
   app.add_option("--threads", args->flags.threads,
                  "Threads growing the search tree (default: one per core; the same plan with any number)")
       ->check(CLI::Range(1, 64))
-      ->capture_default_str();
+      ->default_str(std::to_string(*args->flags.threads));  // an optional's default CLI11 does not show
   app.add_option("--robustness", args->robustness,
                  "Also replay the plan in N perturbed worlds drawn from the scenario's uncertainty and report the "
                  "share that still satisfies the task (docs/robustness.md)")
