@@ -65,7 +65,9 @@ TEST(Robustness, BenchShowsAColumnPerPlannerAndEachRunsWorldsInBenchJson) {
   for (const auto& planner : bench["planners"]) {
     ASSERT_TRUE(planner["robustness_mean"].is_number()) << planner["name"];
     for (const auto& run : planner["per_run"]) {
-      if (run["solved"] == true) EXPECT_EQ(run["robustness"]["worlds"], 5);
+      if (run["solved"] == true) {
+        EXPECT_EQ(run["robustness"]["worlds"], 5);
+      }
     }
   }
 }

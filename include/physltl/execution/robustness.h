@@ -32,8 +32,8 @@ inline constexpr const char* kFailureKinds[] = {
 struct WorldRun {
   bool cut_short = false;             // the deadline stopped its replay: nothing known of this world
   bool succeeded = false;
-  std::vector<std::string> failures;  // kinds, in kFailureKinds' order
-  std::string first_failure;          // for people: the rule broken (with its step) or else how the task failed
+  std::vector<std::string> failures{};  // kinds, in kFailureKinds' order
+  std::string first_failure{};        // for people: the rule broken (with its step) or else how the task failed
 };
 
 // One perturbed world's run of `plan`, against `nominal`, the plan's replay in the model, which tells a
