@@ -1,4 +1,6 @@
-#include "physltl/campaign/bench_case.h"
+#include "bench_case.h"
+
+#include "own_process_run.h"
 
 #include "physltl/common/bad_input.h"
 #include "physltl/setup/planner_names.h"

@@ -1,163 +1,177 @@
+// A campaign's request turned into loaded cases and units, and run whole or as one shard (campaign.h).
+
 #include "physltl/campaign/campaign.h"
 
+#include "bench_case.h"
+#include "manifest.h"
+#include "shard_folder.h"
+#include "unit_runner.h"
+#include "units.h"
+
 #include "physltl/common/bad_input.h"
-#include "fingerprint.h"
-#include "physltl/planning/random.h"
+#include "physltl/common/output_paths.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
-#include <charconv>
-#include <map>
+#include <numeric>
 
 namespace physltl::campaign {
 namespace {
 
-constexpr std::string_view kSeparator = "::";
-constexpr std::string_view kSweepPrefix = "sweep:";
-
-std::vector<std::string> split_entry(const std::string& text) {
-  std::vector<std::string> parts;
-  size_t from = 0;
-  while (true) {
-    const size_t at = text.find(kSeparator, from);
-    parts.push_back(text.substr(from, at == std::string::npos ? std::string::npos : at - from));
-    if (at == std::string::npos) return parts;
-    from = at + kSeparator.size();
+void check_request(const CampaignRequest& request) {
+  if (request.name) check_campaign_name(*request.name);
+  if (request.name && !request.shard) {
+    throw common::BadInput("--campaign names the campaign of a shard: give --shard K/N too (1/1 runs it all as one shard)");
+  }
+  if (request.shard && request.log_file) {
+    throw common::BadInput("--log: a shard writes its OMPL logs into its folder, one per scenario (docs/campaigns.md)");
+  }
+  const std::vector<int>& threads = request.run.threads;
+  for (size_t i = 0; i < threads.size(); ++i) {
+    if (std::count(threads.begin(), threads.begin() + static_cast<long>(i), threads[i]) > 0) {
+      throw common::BadInput(fmt::format("--threads: {} is given twice", threads[i]));
+    }
   }
 }
 
-std::string key_of(const std::string& setting) { return setting.substr(0, setting.find('=')); }
-
-int parse_positive(const std::string& text, const std::string& what) {
-  int value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size()) {
-    throw common::BadInput(fmt::format("--shard expects K/N with whole numbers, got {} '{}'", what, text));
+std::vector<ScenarioEntry> scenario_entries(const CampaignRequest& request) {
+  for (const auto& setting : request.settings) {
+    const auto eq = setting.find('=');
+    if (eq == std::string::npos || eq == 0) throw common::BadInput("--set expects key=value, got '" + setting + "'");
   }
-  return value;
+  std::optional<SweepSpec> sweep;
+  if (request.sweep) {
+    sweep = parse_sweep(*request.sweep);
+    for (const auto& setting : request.settings) {
+      if (setting.rfind(sweep->key + "=", 0) == 0) throw common::BadInput("--sweep " + sweep->key + " is also given to --set");
+    }
+  }
+  std::vector<ScenarioEntry> entries;
+  for (const auto& text : request.scenarios) entries.push_back(parse_scenario_entry(text, request.settings, sweep));
+  return entries;
+}
+
+std::vector<std::filesystem::path> entry_files(const std::vector<ScenarioEntry>& entries) {
+  std::vector<std::filesystem::path> files;
+  for (const ScenarioEntry& entry : entries) files.emplace_back(entry.path);
+  return files;
+}
+
+// --log FILE: one case writes FILE; the values of one swept scenario write FILE's stem-key-value; several
+// scenarios write FILE's stem-<case folder>. Each is checked before any run: none may be an input.
+std::vector<std::filesystem::path> log_paths(const std::optional<std::string>& file, const std::vector<ScenarioEntry>& entries,
+                                             const std::vector<std::unique_ptr<BenchCase>>& cases) {
+  std::vector<std::filesystem::path> logs;
+  if (!file) return logs;
+  const std::vector<std::filesystem::path> inputs = entry_files(entries);
+  const std::filesystem::path path = common::checked_output_file("--log", *file, inputs);
+  // The logs are written last, after minutes of runs: a folder that is not there fails now.
+  const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : ".";
+  if (!std::filesystem::is_directory(folder)) throw common::BadInput("--log " + *file + ": no folder " + folder.string());
+  for (const auto& c : cases) {
+    std::string part;
+    if (entries.size() > 1) {
+      part = folder_name(c->results.scenario, c->results.settings);
+    } else if (entries.front().sweep) {
+      part = entries.front().sweep->key + "-" + c->swept_value;
+    }
+    const std::string file_name = path.stem().string() + "-" + part + path.extension().string();
+    logs.push_back(part.empty() ? path : common::checked_output_file("--log", (path.parent_path() / file_name).string(), inputs));
+  }
+  return logs;
+}
+
+std::vector<size_t> all_of(const std::vector<Unit>& units) {
+  std::vector<size_t> all(units.size());
+  std::iota(all.begin(), all.end(), size_t{0});
+  return all;
 }
 
 }  // namespace
 
-ScenarioEntry parse_scenario_entry(const std::string& text, const std::vector<std::string>& global_settings,
-                                   const std::optional<SweepSpec>& global_sweep) {
-  const std::vector<std::string> parts = split_entry(text);
-  ScenarioEntry entry{text, parts.front(), global_settings, global_sweep};
-  if (entry.path.empty()) throw common::BadInput("'" + text + "': the scenario file is missing before ::");
-  bool own_sweep = false;
-  for (size_t i = 1; i < parts.size(); ++i) {
-    const std::string& part = parts[i];
-    if (part.rfind(kSweepPrefix, 0) == 0) {
-      if (own_sweep) throw common::BadInput("'" + text + "' sweeps twice");
-      own_sweep = true;
-      entry.sweep = parse_sweep(part.substr(kSweepPrefix.size()));
-      continue;
-    }
-    const auto eq = part.find('=');
-    if (eq == std::string::npos || eq == 0) {
-      throw common::BadInput(fmt::format("'{}': expected ::key=value or ::sweep:key=v1,v2,..., got '{}'", text, part));
-    }
-    const std::string key = part.substr(0, eq);
-    const auto own_end = entry.settings.end();
-    const auto own_begin = entry.settings.begin() + static_cast<long>(global_settings.size());
-    if (std::any_of(own_begin, own_end, [&](const std::string& s) { return key_of(s) == key; })) {
-      throw common::BadInput(fmt::format("'{}' sets {} twice", text, key));
-    }
-    // The entry's own value replaces the global --set of the same key.
-    const auto global = std::find_if(entry.settings.begin(), own_begin, [&](const std::string& s) { return key_of(s) == key; });
-    if (global != own_begin) entry.settings.erase(global);
-    entry.settings.push_back(part);
-  }
-  if (entry.sweep) {
-    for (const auto& setting : entry.settings) {
-      if (key_of(setting) == entry.sweep->key) {
-        throw common::BadInput(fmt::format("'{}': the swept key {} is also set", text, entry.sweep->key));
-      }
-    }
-  }
-  return entry;
-}
-
-CaseUnits case_units_of(const BenchResults& results) {
-  CaseUnits units{folder_name(results.scenario, results.settings), results.first_seed, {}};
-  for (const auto& planner : results.planners) units.planners.push_back({planner.planner, planner.threads});
-  return units;
-}
-
-std::vector<Unit> campaign_units(const std::vector<CaseUnits>& cases, int runs) {
+struct Campaign::Loaded {
+  CampaignRequest request;
+  std::vector<ScenarioEntry> entries;
+  std::vector<std::unique_ptr<BenchCase>> cases;
+  std::vector<std::filesystem::path> logs;
+  std::vector<CaseUnits> described;
   std::vector<Unit> units;
-  for (int i = 0; i < runs; ++i) {
-    for (size_t c = 0; c < cases.size(); ++c) {
-      const std::uint64_t seed = cases[c].first_seed + static_cast<std::uint64_t>(i);
-      for (size_t p = 0; p < cases[c].planners.size(); ++p) {
-        const PlannerConfig& planner = cases[c].planners[p];
-        units.push_back({c, p, seed,
-                         fmt::format("{} {} x{} seed {}", cases[c].folder, planner.planner->name,
-                                     planner.threads, seed)});
-      }
-    }
-  }
-  return units;
+  std::optional<ShardSpec> shard;
+  std::vector<size_t> mine;  // the units run here: all, or the shard's
+
+  CampaignRun run_whole(bool show_progress, const std::atomic<bool>& stop) const;
+  CampaignRun run_shard(bool show_progress, const std::atomic<bool>& stop) const;
+};
+
+Campaign::Campaign(const CampaignRequest& request) : loaded_(std::make_unique<Loaded>()) {
+  check_request(request);
+  Loaded& l = *loaded_;
+  l.request = request;
+  if (request.shard) l.shard = parse_shard(*request.shard);
+  l.entries = scenario_entries(request);
+  // Checked before the cases load, which may take long or find a task infeasible.
+  if (request.log_file) common::checked_output_file("--log", *request.log_file, entry_files(l.entries));
+  l.cases = load_cases(l.entries, request.run);
+  l.logs = log_paths(request.log_file, l.entries, l.cases);
+  l.described = case_units(l.cases);
+  l.units = campaign_units(l.described, request.run.runs);
+  l.mine = l.shard ? shard_units(l.units, l.described, *request.name, *l.shard) : all_of(l.units);
 }
 
-ShardSpec parse_shard(const std::string& text) {
-  const auto slash = text.find('/');
-  if (slash == std::string::npos) throw common::BadInput("--shard expects K/N (e.g. 2/5), got '" + text + "'");
-  const ShardSpec shard{parse_positive(text.substr(0, slash), "K"), parse_positive(text.substr(slash + 1), "N")};
-  if (shard.count < 1 || shard.count > kMaxShards) {
-    throw common::BadInput(fmt::format("--shard {}: N must be from 1 to {}", text, kMaxShards));
-  }
-  if (shard.index < 1 || shard.index > shard.count) {
-    throw common::BadInput(fmt::format("--shard {}: K must be between 1 and N = {}", text, shard.count));
-  }
-  return shard;
+Campaign::~Campaign() = default;
+
+std::vector<UnitName> Campaign::units() const {
+  std::vector<UnitName> names;
+  for (const size_t i : loaded_->mine) names.push_back({i, loaded_->units[i].key});
+  return names;
 }
 
-std::vector<size_t> shard_units(const std::vector<Unit>& units, const std::vector<CaseUnits>& cases,
-                                const std::string& campaign, const ShardSpec& shard) {
-  // Groups in a fixed order: planner (by name) and thread count, then case.
-  std::map<std::tuple<std::string, int, size_t>, std::vector<size_t>> groups;
-  for (size_t i = 0; i < units.size(); ++i) {
-    const PlannerConfig& planner = cases[units[i].case_index].planners[units[i].planner_index];
-    groups[{planner.planner->name, planner.threads, units[i].case_index}].push_back(i);
-  }
-  // The planner's generator: fixed by its definition, unlike std::shuffle's distributions, so shards are
-  // dealt alike by every standard library.
-  planning::Random generator(fnv1a64(campaign));
-  std::vector<size_t> mine;
-  size_t dealt = 0;
-  for (auto& [group, members] : groups) {
-    // Fisher-Yates: the seeds (and so the hard and the easy ones) of a group spread over the shards.
-    for (size_t i = members.size(); i > 1; --i) std::swap(members[i - 1], members[generator.next() % i]);
-    for (const size_t unit : members) {
-      if (dealt++ % static_cast<size_t>(shard.count) == static_cast<size_t>(shard.index - 1)) mine.push_back(unit);
-    }
-  }
-  std::sort(mine.begin(), mine.end());
-  return mine;
+const std::vector<std::filesystem::path>& Campaign::log_files() const { return loaded_->logs; }
+
+CampaignRun Campaign::run(bool show_progress, const std::atomic<bool>& stop) {
+  return loaded_->shard ? loaded_->run_shard(show_progress, stop) : loaded_->run_whole(show_progress, stop);
 }
 
-std::string folder_name(const std::string& scenario, const std::vector<std::string>& settings) {
-  std::string name = scenario;
-  for (const auto& setting : settings) {
-    name += "-";
-    for (const char c : setting) {
-      const bool plain = std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-';
-      name += c == '=' ? '-' : plain ? c : '_';
-    }
+CampaignRun Campaign::Loaded::run_whole(bool show_progress, const std::atomic<bool>& stop) const {
+  std::map<size_t, UnitRecord> records;
+  const UnitProgress progress{show_progress, "", 0, units.size()};
+  CampaignRun outcome;
+  if (!run_units(cases, units, mine, request.run, progress, stop,
+                 [&](const UnitRecord& record) { records.emplace(record.index, record); })) {
+    outcome.interrupted = true;
+    return outcome;
   }
-  return name;
+  run_sweeps_in_own_processes(entries, request.run, cases);
+  outcome.results = collect_results(entries, cases, units, records);
+  return outcome;
 }
 
-void check_campaign_name(const std::string& name) {
-  const bool plain = !name.empty() && name.front() != '.' && std::all_of(name.begin(), name.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-';
-  });
-  if (!plain) {
-    throw common::BadInput("--campaign '" + name + "': use letters, digits, '.', '_' and '-' (it names a folder)");
+CampaignRun Campaign::Loaded::run_shard(bool show_progress, const std::atomic<bool>& stop) const {
+  const nlohmann::ordered_json manifest = shard_manifest(
+      campaign_manifest(*request.name, shard->count, entries, request.run, cases, units), *shard, mine, cases);
+  ShardFolder folder(shard_folder_path(request.out_dir, *request.name, *shard), manifest, request.resume);
+  std::vector<size_t> left;
+  for (const size_t i : mine) {
+    if (!folder.records().count(i)) left.push_back(i);
   }
+  const UnitProgress progress{show_progress, fmt::format("shard {}/{}: ", shard->index, shard->count),
+                              mine.size() - left.size(), mine.size()};
+  CampaignRun outcome;
+  outcome.interrupted = !run_units(cases, units, left, request.run, progress, stop,
+                                   [&](const UnitRecord& record) { folder.record(record); });
+  ShardRun& ran = outcome.shard.emplace();
+  ran.folder = folder.path();
+  ran.index = shard->index;
+  ran.count = shard->count;
+  ran.units = mine.size();
+  ran.run_now = left.size();
+  ran.discarded = folder.discarded();
+  ran.with_results = folder.records().size();
+  ran.solved = static_cast<size_t>(std::count_if(folder.records().begin(), folder.records().end(),
+                                                 [](const auto& entry) { return entry.second.run.solved; }));
+  if (!outcome.interrupted) outcome.results = collect_results(entries, cases, units, folder.records());
+  return outcome;
 }
 
 }  // namespace physltl::campaign

@@ -1,11 +1,11 @@
-#include "physltl/campaign/manifest.h"
+#include "manifest.h"
 
 #include "physltl/setup/planner_names.h"
 
 #include "physltl/common/build_version.h"
 #include "physltl/common/files.h"
 #include "fingerprint.h"
-#include "physltl/campaign/results.h"
+#include "physltl/campaign/campaign.h"
 #include "physltl/scenario/load.h"
 
 #include <fmt/format.h>

@@ -1,12 +1,13 @@
-#include "physltl/campaign/merge.h"
+#include "physltl/campaign/campaign.h"
+
+#include "manifest.h"
+#include "shard_folder.h"
+#include "units.h"
 
 #include "physltl/common/bad_input.h"
 #include "physltl/common/json_fields.h"
-#include "physltl/campaign/campaign.h"
-#include "physltl/campaign/manifest.h"
 #include "physltl/setup/cost_args.h"
 #include "physltl/setup/planner_names.h"
-#include "physltl/campaign/shard_folder.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

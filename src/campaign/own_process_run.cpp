@@ -1,4 +1,4 @@
-#include "physltl/campaign/own_process_run.h"
+#include "own_process_run.h"
 
 #include "physltl/common/bad_input.h"
 #include "physltl/common/output_folder.h"

@@ -1,4 +1,4 @@
-#include "physltl/campaign/results.h"
+#include "physltl/campaign/campaign.h"
 
 #include "physltl/common/statistics.h"
 #include "physltl/setup/planner_names.h"

@@ -1,8 +1,8 @@
-#include "physltl/campaign/shard_folder.h"
+#include "shard_folder.h"
 
 #include "physltl/common/bad_input.h"
 #include "physltl/common/files.h"
-#include "physltl/campaign/manifest.h"
+#include "manifest.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "physltl/campaign/sweep.h"
+#include "sweep.h"
 
 #include "physltl/common/bad_input.h"
 

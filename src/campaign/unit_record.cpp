@@ -1,4 +1,4 @@
-#include "physltl/campaign/unit_record.h"
+#include "unit_record.h"
 
 #include "physltl/common/bad_input.h"
 #include "physltl/common/json_fields.h"

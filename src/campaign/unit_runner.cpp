@@ -1,4 +1,4 @@
-#include "physltl/campaign/unit_runner.h"
+#include "unit_runner.h"
 
 #include <fmt/format.h>
 

@@ -1,6 +1,6 @@
 // The campaign's units and their dealing into shards: pure functions every machine of a cluster must agree on.
 
-#include "physltl/campaign/campaign.h"
+#include "units.h"  // internal to the campaign module: tests/campaign/CMakeLists.txt
 #include "physltl/common/bad_input.h"
 #include "physltl/planners/registry.h"
 

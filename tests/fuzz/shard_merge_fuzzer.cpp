@@ -3,7 +3,7 @@
 // another version had them. merge_shards must return the merged campaign or throw BadInput naming what is
 // wrong; anything else (a crash, a sanitizer report, another exception, a hang, a huge allocation) is a bug.
 
-#include "physltl/campaign/merge.h"
+#include "physltl/campaign/campaign.h"
 #include "physltl/common/bad_input.h"
 
 #include <unistd.h>

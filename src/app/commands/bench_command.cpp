@@ -1,18 +1,14 @@
 // `physltl-studio bench`: the planners on a range of seeds, side by side (issue 7), over one scenario or a
 // campaign of several, in one process or as one shard of a campaign (docs/campaigns.md).
 
-#include "physltl/campaign/bench_case.h"
-#include "physltl/campaign/campaign.h"
-#include "physltl/campaign/manifest.h"
-#include "views/bench_outputs.h"
-#include "physltl/campaign/shard_folder.h"
-#include "physltl/campaign/unit_runner.h"
 #include "cli/command.h"
 #include "cli/number_args.h"
 #include "cli/planner_args.h"
-#include "physltl/setup/planner_names.h"
+#include "views/bench_outputs.h"
+
+#include "physltl/campaign/campaign.h"
 #include "physltl/common/stop_signal.h"
-#include "physltl/common/output_paths.h"
+#include "physltl/setup/planner_names.h"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -48,164 +44,71 @@ struct BenchArgs {
   bool resume = false;
 };
 
-campaign::CampaignSettings campaign_settings(const BenchArgs& args) {
-  for (size_t i = 0; i < args.threads.size(); ++i) {
-    if (std::count(args.threads.begin(), args.threads.begin() + static_cast<long>(i), args.threads[i]) > 0) {
-      throw common::BadInput(fmt::format("--threads: {} is given twice", args.threads[i]));
-    }
-  }
-  campaign::CampaignSettings settings;
+campaign::CampaignRequest campaign_request(const BenchArgs& args) {
+  campaign::CampaignRequest request;
+  request.scenarios = args.scenarios;
+  request.settings = args.settings;
+  request.sweep = args.sweep;
   const planning::PlannerRegistry& planners = setup::registry();
-  settings.planners = args.planners ? setup::parse_planner_list(*args.planners) : std::vector{&planners.default_planner()};
+  campaign::CampaignSettings& run = request.run;
+  run.planners = args.planners ? setup::parse_planner_list(*args.planners) : std::vector{&planners.default_planner()};
   const planning::PlannerEntry* reference = &planners.reference_planner();
-  if (args.compare && std::find(settings.planners.begin(), settings.planners.end(), reference) == settings.planners.end()) {
-    settings.planners.push_back(reference);
+  if (args.compare && std::find(run.planners.begin(), run.planners.end(), reference) == run.planners.end()) {
+    run.planners.push_back(reference);
   }
-  settings.threads = args.threads;
-  settings.runs = args.runs;
-  settings.robustness = args.robustness;
-  settings.flags = args.flags;
-  settings.flags.parameters = args.parameters.values();
-  return settings;
+  run.threads = args.threads;
+  run.runs = args.runs;
+  run.robustness = args.robustness;
+  run.flags = args.flags;
+  run.flags.parameters = args.parameters.values();
+  request.name = args.campaign;
+  request.shard = args.shard;
+  request.resume = args.resume;
+  request.out_dir = args.out_dir;
+  request.log_file = args.log_file;
+  return request;
 }
 
-std::vector<campaign::ScenarioEntry> scenario_entries(const BenchArgs& args) {
-  for (const auto& setting : args.settings) {
-    const auto eq = setting.find('=');
-    if (eq == std::string::npos || eq == 0) throw common::BadInput("--set expects key=value, got '" + setting + "'");
-  }
-  std::optional<campaign::SweepSpec> sweep;
-  if (args.sweep) {
-    sweep = campaign::parse_sweep(*args.sweep);
-    for (const auto& setting : args.settings) {
-      if (setting.rfind(sweep->key + "=", 0) == 0) throw common::BadInput("--sweep " + sweep->key + " is also given to --set");
-    }
-  }
-  std::vector<campaign::ScenarioEntry> entries;
-  for (const auto& text : args.scenarios) entries.push_back(campaign::parse_scenario_entry(text, args.settings, sweep));
-  return entries;
-}
-
-std::vector<std::filesystem::path> entry_files(const std::vector<campaign::ScenarioEntry>& entries) {
-  std::vector<std::filesystem::path> files;
-  for (const campaign::ScenarioEntry& entry : entries) files.emplace_back(entry.path);
-  return files;
-}
-
-// --log FILE: one case writes FILE; the values of one swept scenario write FILE's stem-key-value; several
-// scenarios write FILE's stem-<case folder>. Each is checked before any run: none may be an input.
-std::vector<std::filesystem::path> log_files(const std::optional<std::string>& file, const std::vector<campaign::ScenarioEntry>& entries,
-                                             const std::vector<std::unique_ptr<campaign::BenchCase>>& cases) {
-  std::vector<std::filesystem::path> logs;
-  if (!file) return logs;
-  const std::vector<std::filesystem::path> inputs = entry_files(entries);
-  const std::filesystem::path path = common::checked_output_file("--log", *file, inputs);
-  // The logs are written last, after minutes of runs: a folder that is not there fails now.
-  const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : ".";
-  if (!std::filesystem::is_directory(folder)) throw common::BadInput("--log " + *file + ": no folder " + folder.string());
-  for (const auto& c : cases) {
-    std::string part;
-    if (entries.size() > 1) {
-      part = campaign::folder_name(c->results.scenario, c->results.settings);
-    } else if (entries.front().sweep) {
-      part = entries.front().sweep->key + "-" + c->swept_value;
-    }
-    logs.push_back(part.empty() ? path
-                                : common::checked_output_file("--log", (path.parent_path() / (path.stem().string() + "-" + part +
-                                                                                    path.extension().string())).string(),
-                                                      inputs));
-  }
-  return logs;
-}
-
-int list_units(const std::vector<campaign::Unit>& units, const std::vector<size_t>& which) {
-  for (const size_t i : which) fmt::print("{}\t{}\n", i, units[i].key);
-  return common::kExitOk;
-}
-
-int run_whole(const BenchArgs& args, const std::vector<campaign::ScenarioEntry>& entries, const campaign::CampaignSettings& settings,
-              const std::vector<std::unique_ptr<campaign::BenchCase>>& cases, const std::vector<campaign::Unit>& units,
-              const std::vector<std::filesystem::path>& logs) {
-  std::vector<size_t> all(units.size());
-  for (size_t i = 0; i < all.size(); ++i) all[i] = i;
-  std::map<size_t, campaign::UnitRecord> records;
-  const campaign::UnitProgress progress{!args.quiet && isatty(STDERR_FILENO), "", 0, units.size()};
-  if (!campaign::run_units(cases, units, all, settings, progress, common::stop_flag(),
-                 [&](const campaign::UnitRecord& record) { records.emplace(record.index, record); })) {
+int report_whole(const BenchArgs& args, const campaign::Campaign& campaign, const campaign::CampaignRun& ran) {
+  if (ran.interrupted) {
     std::cerr << "physltl-studio: interrupted; nothing written\n";
     return common::kExitInterrupted;
   }
-  campaign::run_sweeps_in_own_processes(entries, settings, cases);
-  const campaign::CampaignResults results = campaign::collect_results(entries, cases, units, records);
   // --quiet prints only errors; the files are written all the same.
   std::ostringstream silenced;
-  write_campaign_outputs(results, args.out_dir, logs,
-                         args.quiet ? silenced : std::cout);
+  write_campaign_outputs(ran.results, args.out_dir, campaign.log_files(), args.quiet ? silenced : std::cout);
   return common::kExitOk;
 }
 
-int run_shard(const BenchArgs& args, const std::vector<campaign::ScenarioEntry>& entries, const campaign::CampaignSettings& settings,
-              const std::vector<std::unique_ptr<campaign::BenchCase>>& cases, const std::vector<campaign::Unit>& units,
-              const campaign::ShardSpec& shard, const std::vector<size_t>& mine) {
-  const nlohmann::ordered_json manifest = campaign::shard_manifest(
-      campaign::campaign_manifest(*args.campaign, shard.count, entries, settings, cases, units), shard, mine, cases);
-  campaign::ShardFolder folder(campaign::shard_folder_path(args.out_dir, *args.campaign, shard), manifest, args.resume);
-  std::vector<size_t> left;
-  for (const size_t i : mine) {
-    if (!folder.records().count(i)) left.push_back(i);
-  }
-  if (!args.quiet && folder.discarded() > 0) {
+int report_shard(const BenchArgs& args, const campaign::CampaignRun& ran) {
+  const campaign::ShardRun& shard = *ran.shard;
+  if (!args.quiet && shard.discarded > 0) {
     fmt::print(stderr, "physltl-studio: started {} afresh: {} earlier results deleted (--resume keeps them)\n",
-               folder.path().string(), folder.discarded());
+               shard.folder.string(), shard.discarded);
   }
-  const campaign::UnitProgress progress{!args.quiet && isatty(STDERR_FILENO), fmt::format("shard {}/{}: ", shard.index, shard.count),
-                              mine.size() - left.size(), mine.size()};
-  if (!campaign::run_units(cases, units, left, settings, progress, common::stop_flag(),
-                 [&](const campaign::UnitRecord& record) { folder.record(record); })) {
+  if (ran.interrupted) {
     std::cerr << fmt::format("physltl-studio: interrupted; {} of {} units have results in {}, --resume runs the rest\n",
-                             folder.records().size(), mine.size(), folder.path().string());
+                             shard.with_results, shard.units, shard.folder.string());
     return common::kExitInterrupted;
   }
-  write_shard_logs(folder.path(), campaign::collect_results(entries, cases, units, folder.records()));
+  write_shard_logs(shard.folder, ran.results);
   if (!args.quiet) {
-    const long solved = std::count_if(folder.records().begin(), folder.records().end(),
-                                      [](const auto& entry) { return entry.second.run.solved; });
     fmt::print("shard {} of {} of campaign {}: {} units ({} run now, {} earlier), {} solved\n", shard.index, shard.count,
-               *args.campaign, mine.size(), left.size(), mine.size() - left.size(), solved);
-    fmt::print("outputs    {}\nmerge with physltl-studio bench merge {}\n", folder.path().string(),
-               folder.path().parent_path().string());
+               *args.campaign, shard.units, shard.run_now, shard.units - shard.run_now, shard.solved);
+    fmt::print("outputs    {}\nmerge with physltl-studio bench merge {}\n", shard.folder.string(),
+               shard.folder.parent_path().string());
   }
   return common::kExitOk;
 }
 
 int bench(const BenchArgs& args) {
-  if (args.campaign) campaign::check_campaign_name(*args.campaign);
-  if (args.campaign && !args.shard && !args.list) {
-    throw common::BadInput("--campaign names the campaign of a shard: give --shard K/N too (1/1 runs it all as one shard)");
+  campaign::Campaign campaign(campaign_request(args));
+  if (args.list) {
+    for (const campaign::UnitName& unit : campaign.units()) fmt::print("{}\t{}\n", unit.index, unit.key);
+    return common::kExitOk;
   }
-  if (args.shard && args.log_file) {
-    throw common::BadInput("--log: a shard writes its OMPL logs into its folder, one per scenario (docs/campaigns.md)");
-  }
-  const std::optional<campaign::ShardSpec> shard = args.shard ? std::optional(campaign::parse_shard(*args.shard)) : std::nullopt;
-  const campaign::CampaignSettings settings = campaign_settings(args);
-  const std::vector<campaign::ScenarioEntry> entries = scenario_entries(args);
-  // Checked before the cases load, which may take long or find a task infeasible.
-  if (args.log_file) common::checked_output_file("--log", *args.log_file, entry_files(entries));
-  const std::vector<std::unique_ptr<campaign::BenchCase>> cases = campaign::load_cases(entries, settings);
-  const std::vector<std::filesystem::path> logs = log_files(args.log_file, entries, cases);
-  const std::vector<campaign::CaseUnits> described = campaign::case_units(cases);
-  const std::vector<campaign::Unit> units = campaign::campaign_units(described, settings.runs);
-  if (!shard) {
-    if (args.list) {
-      std::vector<size_t> all(units.size());
-      for (size_t i = 0; i < all.size(); ++i) all[i] = i;
-      return list_units(units, all);
-    }
-    return run_whole(args, entries, settings, cases, units, logs);
-  }
-  const std::vector<size_t> mine = campaign::shard_units(units, described, *args.campaign, *shard);
-  if (args.list) return list_units(units, mine);
-  return run_shard(args, entries, settings, cases, units, *shard, mine);
+  const campaign::CampaignRun ran = campaign.run(!args.quiet && isatty(STDERR_FILENO), common::stop_flag());
+  return ran.shard ? report_shard(args, ran) : report_whole(args, campaign, ran);
 }
 
 }  // namespace

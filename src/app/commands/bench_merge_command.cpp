@@ -1,7 +1,6 @@
 // `physltl-studio bench merge DIR...`: a campaign's shards put back together (docs/campaigns.md).
 
 #include "physltl/campaign/campaign.h"
-#include "physltl/campaign/merge.h"
 #include "cli/command.h"
 #include "physltl/common/output_paths.h"
 #include "views/bench_outputs.h"

@@ -2,7 +2,7 @@
 // A benchmark's results as a person and the tools read them: the table on stdout, bench.json, bench.png
 // and the OMPL benchmark log's experiment (docs/benchmarks.md).
 
-#include "physltl/campaign/results.h"
+#include "physltl/campaign/campaign.h"
 #include "ompl_log.h"
 #include "physltl/render/image.h"
 

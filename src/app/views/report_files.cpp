@@ -20,7 +20,7 @@ json point(const scenario::Vec2& p) { return {p.x(), p.y()}; }
 
 }  // namespace
 
-json part_times_json(const campaign::PartTimes& parts) {
+json part_times_json(const common::PartTimes& parts) {
   return {{"prepare", parts.prepare_s}, {"search", parts.search_s}, {"replay", parts.replay_s}, {"improve", parts.improve_s},
           {"write_plan", parts.write_plan_s}};
 }

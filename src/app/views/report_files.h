@@ -2,7 +2,7 @@
 // plan.json and report.json: what a run found, for people and for scripts. Keys documented in
 // docs/outputs.md; the ones named there as stable stay.
 
-#include "physltl/campaign/own_process_run.h"
+#include "physltl/common/part_times.h"
 #include "physltl/execution/robustness.h"
 #include "physltl/planning/registry.h"
 #include "physltl/planning/validation/validated_plan.h"
@@ -21,7 +21,7 @@ namespace physltl::app {
 
 // What each part of a run took (s) and the process's peak memory (MB) by the time report.json is written.
 struct RunCosts {
-  campaign::PartTimes parts;
+  common::PartTimes parts;
   double peak_memory_mb = 0.0;
 };
 
@@ -51,7 +51,7 @@ struct RunSummary {
 
 nlohmann::ordered_json report_json(const RunSummary& run);
 // report.json's "times_s": {"prepare", "search", "replay", "improve", "write_plan"}.
-nlohmann::ordered_json part_times_json(const campaign::PartTimes& parts);
+nlohmann::ordered_json part_times_json(const common::PartTimes& parts);
 // plan.json (docs/outputs.md), format kPlanFormat: the bodies' poses at the start, then per state only
 // those that changed. Needs a replay.
 inline constexpr int kPlanFormat = 2;

@@ -2,7 +2,7 @@
 // How the planning time grows with a swept parameter (campaign/sweep.h): as a table, a least-squares line,
 // sweep.json and sweep.png (docs/benchmarks.md).
 
-#include "physltl/campaign/sweep.h"
+#include "physltl/campaign/campaign.h"
 #include "physltl/render/image.h"
 
 #include <nlohmann/json.hpp>

@@ -2,9 +2,9 @@
 // Runs units of a campaign one after the other in this process, with progress on a terminal (units done
 // of the total and the time left) and Ctrl-C between or inside runs.
 
-#include "physltl/campaign/bench_case.h"
+#include "bench_case.h"
 #include "physltl/campaign/campaign.h"
-#include "physltl/campaign/unit_record.h"
+#include "unit_record.h"
 
 #include <atomic>
 #include <functional>

@@ -2,7 +2,7 @@
 // One unit's result as a shard stores it (units/<index>.json) and the merge reads it back: every field of
 // the BenchRun, exactly (doubles round-trip), with the unit's key and how long the whole unit took.
 
-#include "physltl/campaign/results.h"
+#include "physltl/campaign/campaign.h"
 
 #include <nlohmann/json.hpp>
 

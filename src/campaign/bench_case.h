@@ -2,9 +2,10 @@
 // The cases of a campaign loaded: one World per scenario entry and swept value, reasoned about and
 // prepared for the planners once, with the facts bench reports about it (campaign.h).
 
+#include "units.h"
+#include "unit_record.h"
+
 #include "physltl/campaign/campaign.h"
-#include "physltl/campaign/results.h"
-#include "physltl/campaign/unit_record.h"
 
 #include "physltl/planning/planning_problem.h"
 #include "physltl/scenario/world.h"
@@ -18,18 +19,6 @@
 #include <vector>
 
 namespace physltl::campaign {
-
-// What every case shares: the command line's settings but the scenarios.
-struct CampaignSettings {
-  std::vector<const planning::PlannerEntry*> planners;
-  std::vector<int> threads{1};
-  int runs = 10;
-  int robustness = 0;  // perturbed worlds per solved run
-  // What each case's run settings take from the command line (--seed: the first seed, --time-limit,
-  // --cost, --improve-margin, --uncertainty, every parameter of the program's planners). No improvement
-  // unless --improve: bench times the search.
-  setup::RunFlags flags{.improve = 0};
-};
 
 struct BenchCase {
   size_t entry = 0;         // the scenario entry it comes from

@@ -4,9 +4,9 @@
 // was running) and, once every unit has a result, one OMPL log per case (docs/campaigns.md,
 // views/bench_outputs.h write_shard_logs).
 
+#include "units.h"
 #include "physltl/campaign/campaign.h"
-#include "physltl/campaign/results.h"
-#include "physltl/campaign/unit_record.h"
+#include "unit_record.h"
 
 #include <nlohmann/json.hpp>
 

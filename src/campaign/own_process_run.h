@@ -3,6 +3,8 @@
 // memory (a process's peak never goes down, so runs sharing one process would each report the largest
 // before them) and what each part of the run took (report.json's times_s).
 
+#include "physltl/campaign/campaign.h"
+
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -22,16 +24,6 @@ struct OwnProcessRequest {
   int improve = 0;
   std::map<std::string, std::string> parameters;  // the planners' parameters, each given as --NAME VALUE
   std::optional<std::string> uncertainty;
-};
-
-struct PartTimes {
-  double prepare_s = 0.0, search_s = 0.0, replay_s = 0.0, improve_s = 0.0, write_plan_s = 0.0;
-};
-
-struct OwnProcessRun {
-  bool solved = false;
-  double peak_memory_mb = 0.0;  // of the whole process, loading the scenario included
-  PartTimes parts;              // solved runs only
 };
 
 // Runs this program's main job as a child process (writing into a temporary folder, removed after) and

@@ -5,7 +5,7 @@
 // from, the cases and the full unit list. Its "shard" object is this shard's: K, its units, and what it
 // measured or saw once (host, start, each case's preparation time and shortest paths). docs/campaigns.md.
 
-#include "physltl/campaign/bench_case.h"
+#include "bench_case.h"
 #include "physltl/campaign/campaign.h"
 
 #include <nlohmann/json.hpp>
