@@ -172,6 +172,7 @@ BenchRun measure(const planning::PlanningProblem& problem, const planning::Plann
     run.pushes = solution.replay->pushes;
     run.bodies_moved = static_cast<int>(solution.replay->moved_bodies.size());
     run.unsolved_steps = static_cast<int>(solution.replay->unsolved_steps.size());
+    run.deepest_overlap_m = solution.replay->deepest_overlap_m();
     run.solution_duration_s = result.plan.total_steps() * problem.world().planner.step_size;
     const planning::PlanMeasures measures = planning::measure(problem.world(), result.plan, *solution.replay);
     run.path_length_m = measures.path_length_m;

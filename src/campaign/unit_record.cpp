@@ -32,6 +32,7 @@ nlohmann::ordered_json to_json(const UnitRecord& record) {
           {"first_pushes", run.first_pushes},
           {"first_duration_s", run.first_duration_s},
           {"unsolved_steps", run.unsolved_steps},
+          {"deepest_overlap_m", run.deepest_overlap_m},
           {"cell_skips_refused", run.cell_skips_refused},
           {"refused", [&] {
              std::vector<long long> counts;
@@ -78,6 +79,8 @@ BenchRun run_from_json(const common::JsonFields& json) {
   run.first_duration_s = json.number("first_duration_s", 0.0, kMaxSeconds);
   // Results of builds before the solver's failures were counted have none.
   run.unsolved_steps = json.has("unsolved_steps") ? static_cast<int>(json.whole("unsolved_steps", 0, kMaxSmallCount)) : 0;
+  // Results of builds before overlaps were measured have none.
+  run.deepest_overlap_m = json.has("deepest_overlap_m") ? json.number("deepest_overlap_m", 0.0, 1e3) : 0.0;
   run.cell_skips_refused = json.whole("cell_skips_refused", 0, kMaxCount);
   // Results of builds before the refusals were counted have none.
   run.refused = setup::named_refusals(setup::registry(), json.has("refused") ? json.wholes("refused", 0, kMaxCount) : std::vector<long long>{});

@@ -101,6 +101,7 @@ struct Simulation::Impl {
   dJointID wheel_grip = nullptr;  // differential drive only
   dContactGeom contact_buffer[kMaxContactsPerPair];
   std::vector<dContactGeom> pair_contacts;  // collide()'s, kept between calls: no allocation per pair
+  Overlap overlap;  // where the last step ended
 
   explicit Impl(const scenario::World& w) : world(w) {
     ensure_ode_ready_on_this_thread();
@@ -265,11 +266,24 @@ struct Simulation::Impl {
     changed_blocks.push_back(static_cast<int>(b));
   }
 
-  // Sets body i in `state`, and in ODE if it holds it, to `v`, in PhysicsState's layout.
+  // A body ODE does not hold: its geoms where `state` has it, so that what a step measures against it is
+  // where it is, not where ODE last held it.
+  void place_parts(size_t i) {
+    const double* v = values(i);
+    const geometry::Pose2 pose{{v[0], v[1]}, v[3]};
+    for (const PartGeom& part : dynamic[i].parts) place(part.id, {geometry::to_world(pose, part.offset), pose.yaw});
+  }
+
+  // Sets body i in `state`, and in ODE if it holds it (its geoms otherwise), to `v`, in PhysicsState's
+  // layout.
   void set_body(size_t i, const double* v) {
     std::copy(v, v + kValuesPerBody, values(i));
     mark_changed(i);
-    if (dynamic[i].body != nullptr) write_body(i);
+    if (dynamic[i].body != nullptr) {
+      write_body(i);
+    } else {
+      place_parts(i);
+    }
     if (dynamic_near.size() == dynamic.size()) dynamic_near.move(static_cast<int>(i), {v[0], v[1]});
     const char moving = i > 0 && !at_rest(i);
     if (moving == in_motion[i]) return;
@@ -399,8 +413,7 @@ struct Simulation::Impl {
   // once each (two parts sharing a corner both find it); the robot's contact with `b` is where it first
   // touches.
   void collide(const Geom& a, const Geom& b, std::vector<scenario::RobotContact>& robot_contacts) {
-    pair_contacts.clear();
-    for_each_part(a, [&](dGeomID part_a) { for_each_part(b, [&](dGeomID part_b) { gather_contacts(part_a, part_b); }); });
+    gather_pair_contacts(a, b);
     for (const dContactGeom& found : pair_contacts) {
       dContact contact{};
       contact.geom = found;
@@ -421,6 +434,37 @@ struct Simulation::Impl {
     if (!pair_contacts.empty() && a.index < 0) {  // `a` is the robot: it is always the first of a pair
       const dReal* p = pair_contacts.front().pos;
       robot_contacts.push_back({b.kind, b.index, {p[0], p[1]}});
+    }
+  }
+
+  // The contacts of every convex part of `a` with every part of `b` where they stand, into pair_contacts.
+  void gather_pair_contacts(const Geom& a, const Geom& b) {
+    pair_contacts.clear();
+    for_each_part(a, [&](dGeomID part_a) { for_each_part(b, [&](dGeomID part_b) { gather_contacts(part_a, part_b); }); });
+  }
+
+  // Calls f(a, b) for every pair of bodies within reach of each other with an awake one among them: each
+  // awake body with the dynamic bodies above it and the fixed bodies, in a fixed order (no collision
+  // space, so contact order never depends on history). Where a step begins, a sleeping body is out of
+  // reach of every awake one (wake_bodies woke those); where it ends, an awake one may have come within
+  // reach of one, and is measured against it where `state` has it (place_parts). The grid only leaves out
+  // fixed bodies too far away to touch, in index order.
+  template <class F>
+  void for_each_awake_pair(F&& f) {
+    for (int awake_index : woken) {
+      const auto i = static_cast<size_t>(awake_index);
+      const scenario::Vec2 p = position(i);
+      const double radius = dynamic[i].bound_radius;
+      dynamic_near.near(p, radius + largest_bound_radius, candidates);
+      std::sort(candidates.begin(), candidates.end());  // contacts in index order, as testing every pair
+      for (int other : candidates) {
+        const auto j = static_cast<size_t>(other);
+        if (j > i && within_reach(p, radius, position(j), dynamic[j].bound_radius)) f(dynamic[i], dynamic[j]);
+      }
+      for (int f_index : fixed_near.near(p)) {
+        const Geom& g = fixed[static_cast<size_t>(f_index)];
+        if (within_reach(p, radius, g.position, g.bound_radius)) f(dynamic[i], g);
+      }
     }
   }
 
@@ -496,56 +540,39 @@ struct Simulation::Impl {
     dBodyAddForce(dynamic[0].body, last_drive.force.x(), last_drive.force.y(), 0.0);
     dBodyAddTorque(dynamic[0].body, 0.0, 0.0, last_drive.torque);
     wake_bodies();
-    // Fixed pair order, no collision space: contact order never depends on history. A sleeping body is
-    // out of reach of every awake one (wake_bodies woke those) and of every other sleeping one's motion,
-    // so only awake bodies have pairs to test. The grid only leaves out fixed bodies too far away to
-    // touch, in index order, so the contacts are those of testing every pair.
-    for (int awake_index : woken) {
-      const auto i = static_cast<size_t>(awake_index);
-      const scenario::Vec2 p = position(i);
-      const double radius = dynamic[i].bound_radius;
-      dynamic_near.near(p, radius + largest_bound_radius, candidates);
-      std::sort(candidates.begin(), candidates.end());  // contacts in index order, as testing every pair
-      for (int other : candidates) {
-        const auto j = static_cast<size_t>(other);
-        if (j > i && within_reach(p, radius, position(j), dynamic[j].bound_radius)) {
-          collide(dynamic[i], dynamic[j], robot_contacts);
-        }
-      }
-      for (int f : fixed_near.near(p)) {
-        const Geom& g = fixed[static_cast<size_t>(f)];
-        if (within_reach(p, radius, g.position, g.bound_radius)) collide(dynamic[i], g, robot_contacts);
-      }
-    }
+    for_each_awake_pair([&](const Geom& a, const Geom& b) { collide(a, b, robot_contacts); });
     const unsigned long long messages_before = solver_messages_on_this_thread();
     dWorldStep(ode_world, world.planner.step_size);
     last_step_solved = solver_messages_on_this_thread() == messages_before;
     dJointGroupEmpty(contact_group);
     for (int i : woken) settle(static_cast<size_t>(i));
-    add_overlaps_at_end(robot_contacts);
+    measure_overlaps(robot_contacts);
   }
 
-  // ODE finds contacts where a step starts, so a robot at full speed can end a step centimetres inside a
-  // wall it did not touch at the start (5 cm a step at 1 m/s and 0.05 s), and only the next step pushes it
-  // out. Such a step touched the wall: the fixed bodies the robot overlaps where the step ends are its
-  // contacts too.
-  void add_overlaps_at_end(std::vector<scenario::RobotContact>& robot_contacts) {
-    const Geom& robot = dynamic[0];
-    const scenario::Vec2 p = position(0);
-    for (int f : fixed_near.near(p)) {
-      const Geom& g = fixed[static_cast<size_t>(f)];
-      if (!within_reach(p, robot.bound_radius, g.position, g.bound_radius)) continue;
-      const bool known = std::any_of(robot_contacts.begin(), robot_contacts.end(), [&](const scenario::RobotContact& c) {
-        return c.body == scenario::RobotContact::Body::kFixed && c.index == g.index;
-      });
-      if (known) continue;
-      const int found = dCollide(robot.id, g.id, kMaxContactsPerPair, contact_buffer, sizeof(dContactGeom));
-      for (int i = 0; i < found; ++i) {
-        if (contact_buffer[i].depth <= 0.0) continue;
-        robot_contacts.push_back({scenario::RobotContact::Body::kFixed, g.index, {contact_buffer[i].pos[0], contact_buffer[i].pos[1]}});
-        break;
+  // Where the step ended: the deepest overlap of two bodies (last_overlap), and, as contacts of the step,
+  // the fixed bodies the robot overlaps. ODE finds contacts where a step starts, so a robot at full speed
+  // can end a step centimetres inside a wall it did not touch at the start (5 cm a step at 1 m/s and
+  // 0.05 s), and only the next step pushes it out. Such a step touched the wall.
+  void measure_overlaps(std::vector<scenario::RobotContact>& robot_contacts) {
+    overlap = {};
+    for_each_awake_pair([&](const Geom& a, const Geom& b) {
+      gather_pair_contacts(a, b);
+      const dContactGeom* first_inside = nullptr;
+      for (const dContactGeom& found : pair_contacts) {
+        if (found.depth > overlap.depth) overlap = {found.depth, body_id(a), body_id(b)};
+        if (first_inside == nullptr && found.depth > 0.0) first_inside = &found;
       }
-    }
+      if (first_inside == nullptr || a.index >= 0 || b.kind != scenario::RobotContact::Body::kFixed) return;
+      const bool known = std::any_of(robot_contacts.begin(), robot_contacts.end(), [&](const scenario::RobotContact& c) {
+        return c.body == scenario::RobotContact::Body::kFixed && c.index == b.index;
+      });
+      if (!known) robot_contacts.push_back({b.kind, b.index, {first_inside->pos[0], first_inside->pos[1]}});
+    });
+  }
+
+  static BodyId body_id(const Geom& g) {
+    if (g.index < 0) return {BodyId::Kind::kRobot, -1};
+    return {g.kind == scenario::RobotContact::Body::kFixed ? BodyId::Kind::kFixed : BodyId::Kind::kMovable, g.index};
   }
 };
 
@@ -640,6 +667,8 @@ void Simulation::step(const Vec2& setpoint, std::vector<scenario::RobotContact>&
 const DriveEffort& Simulation::last_drive() const { return impl_->last_drive; }
 
 bool Simulation::last_step_solved() const { return impl_->last_step_solved; }
+
+const Overlap& Simulation::last_overlap() const { return impl_->overlap; }
 
 std::span<const int> Simulation::last_movers() const { return impl_->movers; }
 

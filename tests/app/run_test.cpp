@@ -152,6 +152,13 @@ TEST(Run, AnObjectTaskWritesTheObjectFactsOfEveryStateAndAtTheEnd) {
   ASSERT_LT(docked, objects.size());  // the crate got into the dock ...
   EXPECT_EQ(plan["region_trace"].back(), "charger");  // ... and then the robot went to the charger
   EXPECT_EQ(report["object_facts_at_end"], objects.back());
+  // The robot pressed on the crate: the deepest overlap names them, with the step, which plan.json has.
+  const auto& deepest = report["validation"]["deepest_overlap"];
+  ASSERT_TRUE(deepest.is_object()) << deepest;
+  EXPECT_GT(deepest["depth_m"].get<double>(), 0.0);
+  EXPECT_LT(deepest["step"].get<size_t>(), plan["states"].size());
+  EXPECT_DOUBLE_EQ(deepest["time_s"].get<double>(), deepest["step"].get<double>() * plan["step_size_s"].get<double>());
+  EXPECT_EQ(deepest["bodies"], nlohmann::json::array({"robot", "crate"}));
 }
 
 TEST(Run, ADifferentialRobotsPlanCarriesItsHeadingAndKeepsItsLimits) {

@@ -90,6 +90,8 @@ struct BenchRun {
   // Of the plan bench ends with: steps ODE's solver did not solve (docs/physics.md, "Steps the solver
   // fails on").
   int unsolved_steps = 0;
+  // Of the same plan: the deepest two bodies overlapped at any step (m).
+  double deepest_overlap_m = 0.0;
   double first_duration_s = 0.0;
   long long cell_skips_refused = 0;  // OMPL's planners (PlannerStats)
   // Refused steps by rule, every rule of the program's planners (planner_views.h refusal_counts).

@@ -73,6 +73,22 @@ class PhysicsState {
   std::vector<std::shared_ptr<const Chunk>> chunks_;
 };
 
+// A body as an overlap names it: the robot, or a body of the World's movable or fixed bodies.
+struct BodyId {
+  enum class Kind { kRobot, kMovable, kFixed };
+  Kind kind = Kind::kRobot;
+  int index = -1;  // into World::movable_bodies or World::fixed_bodies; -1 for the robot
+  bool operator==(const BodyId&) const = default;
+};
+
+// How deep two bodies overlap in the plane where a step ended (a prism's contacts through its top or
+// bottom are not horizontal and do not count): the deepest pair of the bodies the step moved, with every
+// body they may touch. Zero when none overlaps (docs/physics.md, "How deep bodies overlap").
+struct Overlap {
+  double depth = 0.0;  // m
+  BodyId a, b;         // a: the robot or a movable body; b: a movable or fixed body
+};
+
 // What the robot's drive applied during a step: the planar force on the robot (N) and, for a
 // differential drive, the torque about the vertical axis (N m).
 struct DriveEffort {
@@ -102,6 +118,8 @@ class Simulation {
   // integrates the step with the forces it had: often what the contacts would do, sometimes a robot
   // passing into a box (docs/physics.md, "Steps the solver fails on").
   bool last_step_solved() const;
+  // The deepest overlap where the last step ended.
+  const Overlap& last_overlap() const;
 
   void read_environment(scenario::EnvironmentState& out) const;  // reuses out's storage
   // The movable bodies (World indices, ascending) the last step integrated or the last restore changed:

@@ -156,6 +156,7 @@ json run_json(const campaign::BenchRun& run) {
     entry["cost_progress"] = run.cost_progress;
     entry["improved_itself"] = run.improved_itself;
     entry["unsolved_steps"] = run.unsolved_steps;
+    entry["deepest_overlap_m"] = run.deepest_overlap_m;
     if (run.robust_worlds > 0) {
       entry["robustness"] = {{"worlds", run.robust_worlds},
                              {"succeeded", run.robust_succeeded},

@@ -18,6 +18,41 @@ using json = nlohmann::ordered_json;
 
 json point(const scenario::Vec2& p) { return {p.x(), p.y()}; }
 
+std::string body_name(const scenario::World& world, const physics::BodyId& body) {
+  const auto i = static_cast<size_t>(body.index);
+  switch (body.kind) {
+    case physics::BodyId::Kind::kRobot: return "robot";
+    case physics::BodyId::Kind::kMovable: return world.movable_bodies[i].name;
+    case physics::BodyId::Kind::kFixed: return world.fixed_bodies[i].name;
+  }
+  return "?";
+}
+
+// The plan's deepest overlap of two bodies: how deep, when, and which (null when none overlapped).
+json deepest_overlap_json(const planning::Replay& replay, const scenario::World& world) {
+  if (replay.deepening_overlaps.empty()) return nullptr;
+  const planning::StepOverlap& deepest = replay.deepening_overlaps.back();
+  return {{"depth_m", deepest.overlap.depth},
+          {"step", deepest.step},
+          {"time_s", static_cast<double>(deepest.step) * world.planner.step_size},
+          {"bodies", {body_name(world, deepest.overlap.a), body_name(world, deepest.overlap.b)}}};
+}
+
+// What the replay found of the plan.
+json validation_json(const planning::Replay& replay, const scenario::World& world) {
+  return {
+      {"reproduces_plan", replay.reproduces_plan},
+      {"valid_states", replay.valid},
+      {"satisfies_formula", replay.accepted},
+      {"within_limits", replay.within_limits},
+      {"ends_at_rest", replay.ends_at_rest},
+      {"peak_speed", replay.peak_speed},
+      {"unsolved_steps", replay.unsolved_steps.size()},
+      {"deepest_overlap", deepest_overlap_json(replay, world)},
+      {"failure", replay.failure.empty() ? json(nullptr) : json(replay.failure)},
+  };
+}
+
 }  // namespace
 
 json part_times_json(const common::PartTimes& parts) {
@@ -61,16 +96,7 @@ json report_json(const RunSummary& run) {
     report["peak_memory_mb"] = run.costs->peak_memory_mb;
   }
   if (run.replay != nullptr) {
-    report["validation"] = {
-        {"reproduces_plan", run.replay->reproduces_plan},
-        {"valid_states", run.replay->valid},
-        {"satisfies_formula", run.replay->accepted},
-        {"within_limits", run.replay->within_limits},
-        {"ends_at_rest", run.replay->ends_at_rest},
-        {"peak_speed", run.replay->peak_speed},
-        {"unsolved_steps", run.replay->unsolved_steps.size()},
-        {"failure", run.replay->failure.empty() ? json(nullptr) : json(run.replay->failure)},
-    };
+    report["validation"] = validation_json(*run.replay, run.world);
     if (run.robustness != nullptr) report["robustness"] = robustness_json(*run.robustness, run.settings.uncertainty);
     // Where the bodies the task names are at the end: the object facts that hold then.
     report["object_facts_at_end"] = run.as_written.labelling.object_facts(run.replay->facts_trace.back());

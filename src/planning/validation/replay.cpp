@@ -146,6 +146,9 @@ class Replayer {
     for (std::size_t step : done.unsolved_steps) {
       if (step < static_cast<std::size_t>(end)) r_.unsolved_steps.push_back(step);
     }
+    for (const StepOverlap& deeper : done.deepening_overlaps) {
+      if (deeper.step < static_cast<std::size_t>(end)) r_.deepening_overlaps.push_back(deeper);
+    }
     for (size_t i = 1; i < r_.states.size(); ++i) r_.peak_speed = std::max(r_.peak_speed, r_.states.robot_velocity(i).norm());
     simulation_.restore(plan_.states[prefix.controls - 1]);
     return prefix.controls;
@@ -182,6 +185,8 @@ class Replayer {
     const size_t step = r_.states.size() - 1;
     r_.peak_speed = std::max(r_.peak_speed, state.robot_velocity.norm());
     if (!simulation_.physics().last_step_solved()) r_.unsolved_steps.push_back(step);
+    const physics::Overlap& overlap = simulation_.physics().last_overlap();
+    if (overlap.depth > r_.deepest_overlap_m()) r_.deepening_overlaps.push_back({step, overlap});
     const double force_bound = world_.robot.max_force * (1.0 + 1e-9);  // rounding of the norm only
     if (simulation_.physics().last_drive().force.norm() > force_bound) {
       fail(r_.within_limits, fmt::format("step {} (control {}): drive force above max_force", step, c));

@@ -132,6 +132,16 @@ TEST(Replay, NamesTheStepsThePhysicsSolverDidNotSolveFromTheStartAndAfterAPrefix
   const ReplayedPrefix prefix{whole, result.plan.controls.size() / 2};
   const Replay r = replay(p.world, result.plan, p.original, p.knowledge, {.prefix = &prefix});
   EXPECT_EQ(r.unsolved_steps, whole.unsolved_steps);
+  // So are the steps that overlapped two bodies deeper than any before (docs/physics.md).
+  ASSERT_FALSE(whole.deepening_overlaps.empty());
+  ASSERT_EQ(r.deepening_overlaps.size(), whole.deepening_overlaps.size());
+  for (size_t i = 0; i < whole.deepening_overlaps.size(); ++i) {
+    EXPECT_EQ(r.deepening_overlaps[i].step, whole.deepening_overlaps[i].step);
+    EXPECT_EQ(r.deepening_overlaps[i].overlap.depth, whole.deepening_overlaps[i].overlap.depth);
+    if (i > 0) {
+      EXPECT_GT(whole.deepening_overlaps[i].overlap.depth, whole.deepening_overlaps[i - 1].overlap.depth);
+    }
+  }
 }
 
 TEST(Replay, AStopAndStayPlanCutBeforeItsBrakingIsRejected) {

@@ -15,6 +15,12 @@
 
 namespace physltl::planning {
 
+// A step whose bodies overlapped deeper than every step before it.
+struct StepOverlap {
+  std::size_t step = 0;  // into Replay::states, the step into that state
+  physics::Overlap overlap;
+};
+
 struct Replay {
   // One entry per physics step, the initial state first; each body kept where it changed.
   scenario::StateTrace states;
@@ -49,6 +55,12 @@ struct Replay {
   // The steps (indices into `states`, of the step into that state) whose constraints ODE's solver did not
   // solve (physics::Simulation::last_step_solved): reported, not refused (docs/physics.md).
   std::vector<std::size_t> unsolved_steps;
+  // The steps that overlapped two bodies deeper than any before, in order (physics::Simulation::
+  // last_overlap): the last is the plan's deepest overlap. Reported, not refused yet (docs/physics.md,
+  // "How deep bodies overlap").
+  std::vector<StepOverlap> deepening_overlaps;
+  // The plan's deepest overlap of two bodies, in m: 0 when none ever overlapped.
+  double deepest_overlap_m() const { return deepening_overlaps.empty() ? 0.0 : deepening_overlaps.back().overlap.depth; }
   std::string failure;           // why not, for people; empty when validated
   // "time limit" or "interrupted" when ReplayOptions::deadline stopped the replay before the plan's end:
   // nothing is known of the rest, so the plan is not validated.
