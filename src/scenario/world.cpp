@@ -53,9 +53,22 @@ std::string number_text(double value) {
 
 std::optional<std::string> number_problem(double value, double lo, double hi, bool lo_allowed) {
   const auto text = number_text;
+  // With as many digits as tell the value from the bound it passed ("1.0000001 > 1", not "1 > 1").
+  const auto text_beside = [](double v, double bound) {
+    char a[32], b[32];
+    for (int digits = 6; digits < 17; ++digits) {
+      std::snprintf(a, sizeof a, "%.*g", digits, v);
+      std::snprintf(b, sizeof b, "%.*g", digits, bound);
+      if (std::string_view(a) != b) return std::string(a);
+    }
+    std::snprintf(a, sizeof a, "%.17g", v);
+    return std::string(a);
+  };
   if (!std::isfinite(value)) return "must be finite";
-  if (value < lo || (value == lo && !lo_allowed)) return std::string("must be ") + (lo_allowed ? "at least " : "greater than ") + text(lo) + ", got " + text(value);
-  if (value > hi) return "is too large (" + text(value) + " > " + text(hi) + ")";
+  if (value < lo || (value == lo && !lo_allowed)) {
+    return std::string("must be ") + (lo_allowed ? "at least " : "greater than ") + text(lo) + ", got " + text_beside(value, lo);
+  }
+  if (value > hi) return "is too large (" + text_beside(value, hi) + " > " + text(hi) + ")";
   return std::nullopt;
 }
 

@@ -127,6 +127,13 @@ TEST(Nonsense, NumbersOnTheCommandLineMustBeFiniteAndInRange) {
       {"execute " + rooms + " --tolerance nan", "--tolerance: 'nan' must be finite"},
       {"import sokoban " + kSource + "/tests/data/sokoban/microban.txt --cell nan", "--cell: 'nan' must be finite"},
       {"import sokoban " + kSource + "/tests/data/sokoban/microban.txt --box 1e300", "--box: '1e300' is too large"},
+      // Whole numbers and ranges in a person's words (issue 66), and a value told from the bound it passed.
+      {rooms + " --threads two", "--threads: 'two' is not a whole number"},
+      {rooms + " --threads 65", "--threads: '65' is too large (at most 64)"},
+      {"bench " + rooms + " --runs 0", "--runs: '0' must be at least 1"},
+      {"execute " + rooms + " --worlds 2.5", "--worlds: '2.5' is not a whole number"},
+      {"import sokoban " + kSource + "/tests/data/sokoban/microban.txt --level 0", "--level: '0' must be at least 1"},
+      {rooms + " --improve-margin 1.0000001", "'1.0000001' is too large (1.0000001 > 1)"},
   };
   expect_each_refused(cases, out);
   EXPECT_FALSE(fs::exists(out));

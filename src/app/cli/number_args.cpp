@@ -20,6 +20,21 @@ CLI::Validator number_in(double lo, double hi, bool lo_allowed) {
       "NUMBER");
 }
 
+CLI::Validator whole_in(long long lo, long long hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& text) -> std::string {
+        const size_t digits_from = !text.empty() && text.front() == '-' ? 1 : 0;
+        const bool digits = text.size() > digits_from && text.size() <= 19 &&
+                            text.find_first_not_of("0123456789", digits_from) == std::string::npos;
+        if (!digits) return "'" + text + "' is not a whole number";
+        const long long value = std::strtoll(text.c_str(), nullptr, 10);
+        if (value < lo) return "'" + text + "' must be at least " + std::to_string(lo);
+        if (value > hi) return "'" + text + "' is too large (at most " + std::to_string(hi) + ")";
+        return "";
+      },
+      "INTEGER");
+}
+
 CLI::Validator seed_number() {
   return CLI::Validator(
       [](std::string& text) -> std::string {

@@ -121,7 +121,7 @@ CommandRunner add_bench_command(CLI::App& app) {
       ->required();
   app.add_option("--set", args->settings, "Pass key=value to every script's `params` table (repeatable)")
       ->allow_extra_args(false);
-  app.add_option("--runs", args->runs, "Number of seeds per planner")->check(CLI::Range(1, campaign::kMaxRuns))->capture_default_str();
+  app.add_option("--runs", args->runs, "Number of seeds per planner")->check(whole_in(1, campaign::kMaxRuns))->capture_default_str();
   app.add_option("--seed", args->flags.seed, "First seed; runs use S, S+1, ... (default: each scenario's)")->check(seed_number());
   app.add_option("--time-limit", args->flags.time_limit_s, "Planning time limit per run in seconds (default: the scenario's)")
       ->check(number_in(0.0, 1e6));
@@ -131,12 +131,12 @@ CommandRunner add_bench_command(CLI::App& app) {
   app.add_flag("--compare", args->compare, "Also run the baseline planner on the same seeds, interleaved");
   app.add_option("--improve", args->flags.improve,
                  "Candidates spent shortening each first validated plan, timed apart from the search (default: none)")
-      ->check(CLI::Range(0, 1000000))
+      ->check(whole_in(0, 1000000))
       ->default_str(std::to_string(*args->flags.improve));  // an optional's default CLI11 does not show
   app.add_option("--robustness", args->robustness,
                  "Replay each solved plan in N perturbed worlds drawn from the scenario's uncertainty (timed apart); "
                  "a robustness line per planner (docs/robustness.md)")
-      ->check(CLI::Range(0, 100000));
+      ->check(whole_in(0, 100000));
   app.add_option("--cost", args->flags.cost,
                  "What --improve lowers and the cost line gives: time (default), length, pushes, moved, or a weighted "
                  "sum such as \"time + 2 pushes\" (docs/planner.md, \"What a plan costs\")");
@@ -150,7 +150,7 @@ CommandRunner add_bench_command(CLI::App& app) {
                  "Threads growing each run's search tree (same plans, sooner); a list such as 1,2 measures each, "
                  "interleaved")
       ->delimiter(',')
-      ->check(CLI::Range(1, 64))
+      ->check(whole_in(1, 64))
       ->capture_default_str();
   app.add_option("--sweep", args->sweep,
                  "Also measure each scenario with key set to each value (key=v1,v2,...), on the same seeds, "

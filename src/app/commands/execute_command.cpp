@@ -134,18 +134,18 @@ CommandRunner add_execute_command(CLI::App& app) {
   auto args = std::make_shared<ExecuteArgs>();
   args->scenario.add_to(app);
   app.add_option("--worlds", args->worlds, "Perturbed worlds to execute the plan in")
-      ->check(CLI::Range(1, 100000))
+      ->check(whole_in(1, 100000))
       ->capture_default_str();
   app.add_option("--uncertainty", args->flags.uncertainty,
                  "Override the scenario's uncertainty, e.g. mass=0.3,friction=0.1 (keys: mass, friction, start, "
                  "body_pose, body_yaw_deg)");
-  app.add_option("--replans", args->replans, "Replannings allowed per world")->check(CLI::Range(0, 1000))->capture_default_str();
+  app.add_option("--replans", args->replans, "Replannings allowed per world")->check(whole_in(0, 1000))->capture_default_str();
   app.add_option("--tolerance", args->tolerance,
                  "Metres the robot or a body the plan moves may be from its planned position before replanning")
       ->check(number_in(0.001, 10.0, true))
       ->capture_default_str();
   app.add_option("--budget", args->budget, "Propagations each replanning may spend")
-      ->check(CLI::Range(1000LL, 100'000'000LL))
+      ->check(whole_in(1000, 100'000'000))
       ->capture_default_str();
   const planning::PlannerRegistry& planners = setup::registry();
   app.add_option("--planner", args->planner,

@@ -5,6 +5,7 @@
 #include "import/sokoban_scenario.h"
 #include "import/sokoban_solution.h"
 
+#include <limits>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -73,7 +74,7 @@ CommandRunner add_import_command(CLI::App& app) {
   auto args = std::make_shared<ImportArgs>();
   app.add_option("format", args->format, "The file's format: sokoban (the standard Sokoban text format)")->required();
   app.add_option("file", args->file, "The file of levels")->required()->check(CLI::ExistingFile);
-  app.add_option("--level", args->level, "Import only level N (numbered from 1 in file order)")->check(CLI::PositiveNumber);
+  app.add_option("--level", args->level, "Import only level N (numbered from 1 in file order)")->check(whole_in(1, std::numeric_limits<int>::max()));
   app.add_option("--solution", args->solution,
                  "A solution of the level (LURD moves, as collections ship them) to replay on its grid before import: "
                  "proves the import and gives the reference moves and pushes")

@@ -223,7 +223,7 @@ CommandRunner add_run_command(CLI::App& app) {
   CLI::Option* improve = app.add_option("--improve", args->flags.improve,
                                         "Candidates spent lowering the first validated plan's cost (0: keep it as found; "
                                         "same seed, same plan; default: 1000, fewer in worlds of over 100 bodies)")
-                             ->check(CLI::Range(0, 1000000));
+                             ->check(whole_in(0, 1000000));
   app.add_option("--improve-for", args->flags.improve_for_s,
                  "Seconds spent lowering the plan's cost instead of a number of candidates (the plan then depends on "
                  "the machine's speed; report.json's improvement.improve_for_s says so)")
@@ -238,12 +238,12 @@ CommandRunner add_run_command(CLI::App& app) {
       ->check(number_in(0.0, 1.0, true));
   app.add_option("--threads", args->flags.threads,
                  "Threads growing the search tree (default: one per core; the same plan with any number)")
-      ->check(CLI::Range(1, 64))
+      ->check(whole_in(1, 64))
       ->default_str(std::to_string(*args->flags.threads));  // an optional's default CLI11 does not show
   app.add_option("--robustness", args->robustness,
                  "Also replay the plan in N perturbed worlds drawn from the scenario's uncertainty and report the "
                  "share that still satisfies the task (docs/robustness.md)")
-      ->check(CLI::Range(0, 100000));
+      ->check(whole_in(0, 100000));
   app.add_option("--uncertainty", args->flags.uncertainty,
                  "Override the scenario's uncertainty, e.g. mass=0.3,friction=0.1 (keys: mass, friction, start, "
                  "body_pose, body_yaw_deg)");

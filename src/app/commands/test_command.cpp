@@ -1,4 +1,5 @@
 #include "cli/command.h"
+#include "cli/number_args.h"
 #include "physltl/setup/scenario_settings.h"
 #include "scenario_test/junit_report.h"
 #include "scenario_test/scenario_cases.h"
@@ -116,7 +117,7 @@ CommandRunner add_test_command(CLI::App& app) {
                "Write the goldens that are missing or differ beyond their tolerance, and list them");
   app.add_option("--junit", args->junit, "Also write a JUnit XML report to this file");
   app.add_option("--jobs", args->jobs, "Scenarios tested at once, each with one planning thread (same results)")
-      ->check(CLI::Range(1, 64))
+      ->check(whole_in(1, 64))
       ->capture_default_str();
   app.add_option("--out", args->out_dir, "Folder for outputs; a mismatch leaves its pictures in <out>/test/<scenario>/")
       ->capture_default_str();
