@@ -4,6 +4,9 @@
 #include "physltl/common/json_fields.h"
 #include "physltl/setup/planner_names.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 namespace physltl::campaign {
 
 nlohmann::ordered_json to_json(const UnitRecord& record) {
@@ -82,8 +85,17 @@ BenchRun run_from_json(const common::JsonFields& json) {
   // Results of builds before overlaps were measured have none.
   run.deepest_overlap_m = json.has("deepest_overlap_m") ? json.number("deepest_overlap_m", 0.0, 1e3) : 0.0;
   run.cell_skips_refused = json.whole("cell_skips_refused", 0, kMaxCount);
-  // Results of builds before the refusals were counted have none.
-  run.refused = setup::named_refusals(setup::registry(), json.has("refused") ? json.wholes("refused", 0, kMaxCount) : std::vector<long long>{});
+  // Results of builds before the refusals were counted have none; otherwise one count per rule, in order.
+  std::vector<long long> refused;
+  if (json.has("refused")) {
+    refused = json.wholes("refused", 0, kMaxCount);
+    const std::vector<std::string> rules = setup::refusal_rules(setup::registry());
+    if (refused.size() != rules.size()) {
+      json.refuse("refused", fmt::format("must hold {} counts, one per rule ({}), not {}", rules.size(), fmt::join(rules, ", "),
+                                         refused.size()));
+    }
+  }
+  run.refused = setup::named_refusals(setup::registry(), refused);
   run.robust_worlds = static_cast<int>(json.whole("robust_worlds", 0, kMaxSmallCount));
   run.robust_succeeded = static_cast<int>(json.whole("robust_succeeded", 0, run.robust_worlds));
   const common::JsonFields failures = json.object("robust_failures");
