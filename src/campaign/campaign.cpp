@@ -95,7 +95,6 @@ struct Campaign::Loaded {
   std::vector<ScenarioEntry> entries;
   std::vector<std::unique_ptr<BenchCase>> cases;
   std::vector<std::filesystem::path> logs;
-  std::vector<CaseUnits> described;
   std::vector<Unit> units;
   std::optional<ShardSpec> shard;
   std::vector<size_t> mine;  // the units run here: all, or the shard's
@@ -114,9 +113,9 @@ Campaign::Campaign(const CampaignRequest& request) : loaded_(std::make_unique<Lo
   if (request.log_file) common::checked_output_file("--log", *request.log_file, entry_files(l.entries));
   l.cases = load_cases(l.entries, request.run);
   l.logs = log_paths(request.log_file, l.entries, l.cases);
-  l.described = case_units(l.cases);
-  l.units = campaign_units(l.described, request.run.runs);
-  l.mine = l.shard ? shard_units(l.units, l.described, *request.name, *l.shard) : all_of(l.units);
+  const std::vector<CaseUnits> described = case_units(l.cases);
+  l.units = campaign_units(described, request.run.runs);
+  l.mine = l.shard ? shard_units(l.units, described, *request.name, *l.shard) : all_of(l.units);
 }
 
 Campaign::~Campaign() = default;
