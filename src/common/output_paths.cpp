@@ -53,6 +53,11 @@ fs::path checked_output_file(const std::string& option, const std::string& file,
 
 fs::path checked_output_folder(const std::string& option, const std::string& folder, const std::vector<fs::path>& inputs) {
   if (folder.empty()) throw BadInput(option + ": an empty path; give a folder");
+  refuse_file_on_the_way(option, folder);
+  std::error_code error;
+  if (fs::exists(folder, error) && !fs::is_directory(folder, error)) {
+    throw BadInput(option + " " + folder + ": is a file, not a folder");
+  }
   const fs::path out = normal(folder);
   for (const fs::path& input : inputs) {
     const fs::path in = normal(input);
@@ -62,7 +67,6 @@ fs::path checked_output_folder(const std::string& option, const std::string& fol
                      ", an input of this command; give another folder");
     }
   }
-  refuse_file_on_the_way(option, folder);
   return folder;
 }
 

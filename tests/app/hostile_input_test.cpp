@@ -147,6 +147,28 @@ fs::path quick_test_scenario(const fs::path& dir, const std::string& name = "enc
   return dir / name;
 }
 
+// Every command's --out is a folder: empty, a file (the scenario itself, by mistake) or under a file, it is
+// refused before any work, naming the option and the path, and the file is left as it was.
+TEST(DestroyedFile, EveryCommandRefusesAnOutThatIsEmptyOrAFile) {
+  const fs::path dir = test_dir();
+  const fs::path scenario = quick_test_scenario(dir, "out_rule.lua");
+  const std::string s = scenario.string(), original = slurp(scenario);
+  const std::string levels = std::string(kSource) + "/tests/app/sokoban_against_the_wall.txt";
+  for (const std::string& command : {s, "check " + s, "execute " + s + " --worlds 1", "bench " + s + " --runs 1", "test " + s,
+                                     "import sokoban " + levels}) {
+    const Result empty = run(command + " --out ''");
+    EXPECT_EQ(empty.exit_code, 2) << command;
+    EXPECT_NE(empty.err.find("--out: an empty path; give a folder"), std::string::npos) << command << ": " << empty.err;
+    const Result file = run(command + " --out " + s);
+    EXPECT_EQ(file.exit_code, 2) << command;
+    EXPECT_NE(file.err.find("--out " + s + ": is "), std::string::npos) << command << ": " << file.err;
+    const Result under = run(command + " --out " + (scenario / "out").string());
+    EXPECT_EQ(under.exit_code, 2) << command;
+    EXPECT_NE(under.err.find("out_rule.lua is a file, not a folder"), std::string::npos) << command << ": " << under.err;
+  }
+  EXPECT_EQ(slurp(scenario), original);
+}
+
 TEST(DestroyedFile, AnOutputPathThatIsAnInputAFolderOrEmptyIsRefusedBeforeAnyWork) {
   const fs::path dir = test_dir();
   const fs::path scenario = quick_test_scenario(dir);

@@ -15,7 +15,8 @@ namespace physltl::common {
 std::filesystem::path checked_output_file(const std::string& option, const std::string& file,
                                           const std::vector<std::filesystem::path>& inputs);
 
-// `folder` as an output folder for `option`; BadInput when it is empty, one of `inputs` or inside one.
+// `folder` as an output folder for `option`; BadInput when it is empty, a file, under a path that is a file,
+// one of `inputs` or inside one. Every command's --out goes through it before any work.
 std::filesystem::path checked_output_folder(const std::string& option, const std::string& folder,
                                             const std::vector<std::filesystem::path>& inputs);
 

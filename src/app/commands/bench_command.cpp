@@ -7,6 +7,7 @@
 #include "views/bench_outputs.h"
 
 #include "physltl/campaign/campaign.h"
+#include "physltl/common/output_paths.h"
 #include "physltl/common/stop_signal.h"
 #include "physltl/setup/planner_names.h"
 
@@ -102,6 +103,7 @@ int report_shard(const BenchArgs& args, const campaign::CampaignRun& ran) {
 }
 
 int bench(const BenchArgs& args) {
+  common::checked_output_folder("--out", args.out_dir, {args.scenarios.begin(), args.scenarios.end()});
   campaign::Campaign campaign(campaign_request(args));
   if (args.list) {
     for (const campaign::UnitName& unit : campaign.units()) fmt::print("{}\t{}\n", unit.index, unit.key);

@@ -4,6 +4,7 @@
 #include "physltl/planning/planning_problem.h"
 #include "cli/command.h"
 #include "physltl/common/files.h"
+#include "physltl/common/output_paths.h"
 #include "physltl/common/stop_signal.h"
 #include "physltl/common/output_folder.h"
 #include "views/overlays.h"
@@ -48,6 +49,7 @@ CommandRunner add_check_command(CLI::App& app) {
   app.add_option("--out", args->out_dir, "Folder for outputs; writes <out>/<name>/preview.png")->capture_default_str();
   app.add_flag("--no-preview", args->no_preview, "Do not render preview.png");
   return [args] {
+    if (!args->no_preview) common::checked_output_folder("--out", args->out_dir, {args->scenario.path});
     const scenario::World world = args->scenario.load();
     const planning::PlanningProblem problem(world);
     const knowledge::Reasoning& reasoning = problem.reasoning();

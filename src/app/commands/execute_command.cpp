@@ -8,6 +8,7 @@
 #include "cli/view_args.h"
 #include "physltl/common/files.h"
 #include "physltl/common/output_folder.h"
+#include "physltl/common/output_paths.h"
 #include "physltl/execution/executor.h"
 #include "physltl/execution/perturbation.h"
 #include "physltl/execution/replanner.h"
@@ -83,6 +84,7 @@ void render_execution(const PlanningRun& run, const planning::Replay& nominal, c
 }
 
 int execute(const ExecuteArgs& args) {
+  common::checked_output_folder("--out", args.out_dir, {args.scenario.path});
   const planning::PlannerEntry& planner = args.planner ? setup::parse_planner(*args.planner) : setup::registry().default_planner();
   const scenario::World world = args.scenario.load();
   setup::RunFlags flags = args.flags;

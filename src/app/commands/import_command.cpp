@@ -1,6 +1,7 @@
 #include "cli/command.h"
 #include "cli/number_args.h"
 #include "physltl/common/files.h"
+#include "physltl/common/output_paths.h"
 #include "import/sokoban_level.h"
 #include "import/sokoban_scenario.h"
 #include "import/sokoban_solution.h"
@@ -36,6 +37,7 @@ import::ReferenceSolution replayed_solution(const ImportArgs& args, const std::v
 
 int run_import(const ImportArgs& args) {
   if (args.format != "sokoban") throw common::BadInput("import knows the format 'sokoban', not '" + args.format + "'");
+  common::checked_output_folder("--out", args.out_dir, {args.file});
   if (args.sizes.box >= args.sizes.cell || 2 * args.sizes.robot_radius >= args.sizes.cell) {
     throw common::BadInput("--box and the robot's diameter must be smaller than --cell, or nothing fits through a corridor");
   }

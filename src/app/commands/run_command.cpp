@@ -6,6 +6,7 @@
 #include "cli/planner_args.h"
 #include "cli/scenario_args.h"
 #include "cli/view_args.h"
+#include "physltl/common/output_paths.h"
 #include "physltl/common/stop_signal.h"
 #include "physltl/common/files.h"
 #include "physltl/common/output_folder.h"
@@ -166,6 +167,7 @@ void write_plan_files(const PlanningRun& run, const planning::ValidatedPlan& sol
 }
 
 int run(const RunArgs& args) {
+  common::checked_output_folder("--out", args.out_dir, {args.scenario.path});
   const planning::PlannerEntry& planner = chosen_planner(args);
   const scenario::World world = args.scenario.load();
   setup::RunFlags flags = args.flags;

@@ -48,6 +48,7 @@ void refuse_shared_goldens(const std::vector<TestEntry>& entries, const TestSett
 
 int run_tests(const TestArgs& args) {
   const auto started = std::chrono::steady_clock::now();
+  common::checked_output_folder("--out", args.out_dir, {});
   const std::vector<TestEntry> entries = expand_test_paths(args.paths);
   TestSettings settings;
   if (args.goldens) settings.goldens_dir = *args.goldens;
