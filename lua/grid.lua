@@ -14,6 +14,8 @@
 -- in it only when the body covers them). A letter without a goal is an obstacle the task does not name.
 -- Where a body starts on cells of its own goal, `goals = { rows }` gives the goal letters apart.
 --   require "grid" { "#######", "#@AA aa#", "#######" }
+-- A grid without a robot or with two, rows that are not strings, or a box not smaller than its cell is
+-- refused, naming the scenario's line that requires the grid.
 local P = require "physltl"
 
 local function fail(message) error(message, 4) end
@@ -158,8 +160,25 @@ local function letter_bodies(rows, goal_rows, height, cell, box, terms)
   end
 end
 
+-- A grid the scenario got wrong, said at the scenario's line that requires the grid.
+local function refuse(message, ...) error(string.format("grid: " .. message, ...), 4) end
+
+local function check_arguments(rows, cell, box)
+  if type(rows) ~= "table" or #rows == 0 then
+    refuse("give the rows as a table of strings, e.g. require \"grid\" { \"#####\", \"#@$.#\", \"#####\" }")
+  end
+  for r, row in ipairs(rows) do
+    if type(row) ~= "string" then refuse("row %d is a %s, not a string of cells", r, type(row)) end
+  end
+  if type(cell) ~= "number" or type(box) ~= "number" or not (box > 0 and box < cell) then
+    refuse("the box size (%s) must be a number above 0 and below the cell size (%s)", tostring(box), tostring(cell))
+  end
+end
+
 return function(rows, cell, box)
   cell, box = cell or 0.6, box or 0.5
+  check_arguments(rows, cell, box)
+  local robot_row = nil
   local height, width = #rows, 0
   for _, row in ipairs(rows) do width = math.max(width, #row) end
   workspace { bounds = { { 0, 0 }, { width * cell, height * cell } }, floor_friction = 0.5 }
@@ -190,10 +209,13 @@ return function(rows, cell, box)
         P.area("goal" .. goals, { x0, y0 }, { x0 + cell, y0 + cell })
       end
       if ch == "@" or ch == "+" then
+        if robot_row then error(string.format("grid: a second robot in row %d (the first is in row %d)", r, robot_row), 2) end
+        robot_row = r
         robot { radius = 0.25, mass = 1.0, max_force = 20, max_speed = 1.0, start = centre, drive = params.drive or "holonomic" }
       end
     end
   end
+  if not robot_row then error("grid: no robot: put '@' (or '+' on a goal) in a row", 2) end
   for k = 1, boxes do terms[#terms + 1] = string.format("M%d@goal%d", k, k) end
   letter_bodies(rows, rows.goals or rows, height, cell, box, terms)
   task { formula = params.task or ("F G(" .. table.concat(terms, " & ") .. ")") }

@@ -1,0 +1,2 @@
+-- expect: 2: grid: give the rows as a table of strings
+require "grid" (5)
