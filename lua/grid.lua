@@ -173,12 +173,19 @@ local function check_arguments(rows, cell, box)
   if type(cell) ~= "number" or type(box) ~= "number" or not (box > 0 and box < cell) then
     refuse("the box size (%s) must be a number above 0 and below the cell size (%s)", tostring(box), tostring(cell))
   end
+  local robot_row = nil
+  for r, row in ipairs(rows) do
+    for _ in row:gmatch("[@+]") do
+      if robot_row then refuse("a second robot in row %d (the first is in row %d)", r, robot_row) end
+      robot_row = r
+    end
+  end
+  if not robot_row then refuse("no robot: put '@' (or '+' on a goal) in a row") end
 end
 
 return function(rows, cell, box)
   cell, box = cell or 0.6, box or 0.5
   check_arguments(rows, cell, box)
-  local robot_row = nil
   local height, width = #rows, 0
   for _, row in ipairs(rows) do width = math.max(width, #row) end
   workspace { bounds = { { 0, 0 }, { width * cell, height * cell } }, floor_friction = 0.5 }
@@ -209,13 +216,10 @@ return function(rows, cell, box)
         P.area("goal" .. goals, { x0, y0 }, { x0 + cell, y0 + cell })
       end
       if ch == "@" or ch == "+" then
-        if robot_row then error(string.format("grid: a second robot in row %d (the first is in row %d)", r, robot_row), 2) end
-        robot_row = r
         robot { radius = 0.25, mass = 1.0, max_force = 20, max_speed = 1.0, start = centre, drive = params.drive or "holonomic" }
       end
     end
   end
-  if not robot_row then error("grid: no robot: put '@' (or '+' on a goal) in a row", 2) end
   for k = 1, boxes do terms[#terms + 1] = string.format("M%d@goal%d", k, k) end
   letter_bodies(rows, rows.goals or rows, height, cell, box, terms)
   task { formula = params.task or ("F G(" .. table.concat(terms, " & ") .. ")") }
