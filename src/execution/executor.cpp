@@ -3,6 +3,7 @@
 #include "physltl/geometry/shape.h"
 #include "physltl/ltl/lasso.h"
 #include "physltl/ltl/progression.h"
+#include "physltl/physics/simulation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -117,7 +118,7 @@ bool offset_touches(const scenario::World& model, const planning::Replay& nomina
   for (size_t s = t; s < end; ++s) {
     if (clearance[s] >= drift) continue;  // shifted by `drift` at most, it stays clear
     const double shifted = clearance_at(model, nominal.states.robot_position(s) + offset);
-    if (shifted < 0.0 && shifted < clearance[s]) return true;
+    if (shifted < physics::kTouchingGap && shifted < clearance[s]) return true;
   }
   return false;
 }

@@ -40,13 +40,6 @@ bool pushes_from_authored_side(const MovableBodyKnowledge& body, const geometry:
                      [&](const MRegionTemplate& m) { return in_strip(m, pose, robot_centre, slack); });
 }
 
-// A robot that starts a step against a wall or a box (at rest after braking there, or placed there by the
-// scenario) is still in contact during the step that takes it away: that step leaves the body, it neither
-// touches the wall nor pushes the box.
-bool leaves_contact(const scenario::EnvironmentState& state, const scenario::RobotContact& contact) {
-  return state.robot_velocity.dot(contact.point - state.robot_position) < 0.0;
-}
-
 }  // namespace
 
 const char* violation_name(Violation violation) {
@@ -57,6 +50,7 @@ const char* violation_name(Violation violation) {
     case Violation::kTouchesFixedBody: return "robot touches a fixed body";
     case Violation::kTouchesImmovableBody: return "robot touches an immovable body";
     case Violation::kPushesFromForbiddenSide: return "robot pushes a constraint-oriented body from a forbidden side";
+    case Violation::kBodiesOverlap: return "two bodies overlap deeper than max_overlap";
   }
   return "?";
 }
@@ -82,12 +76,7 @@ Validity check(const AbstractKnowledge& knowledge, const Kappa& kappa, const sce
     }
   }
   for (const scenario::RobotContact& contact : contacts) {
-    if (contact.body == scenario::RobotContact::Body::kFixed) {
-      if (leaves_contact(state, contact)) continue;
-      return {Violation::kTouchesFixedBody, contact.index};
-    }
-    // Backing away from a body is no push, from whichever side.
-    if (leaves_contact(state, contact)) continue;
+    if (contact.body == scenario::RobotContact::Body::kFixed) return {Violation::kTouchesFixedBody, contact.index};
     const auto i = static_cast<size_t>(contact.index);
     if (!uses_kappa) {
       if (!pushes_from_authored_side(knowledge.movable_bodies[i], state.movable_poses[i], state.robot_position,

@@ -59,7 +59,7 @@ namespace {
 // What each kind of shape is to ODE, one row per kind (geometry/shape_kinds.h has the geometry's): its
 // geoms, its mass distribution and the floor's friction torque.
 struct ShapeKindPhysics {
-  std::vector<PartGeom> (*geoms)(const geometry::Shape& shape, ConvexStore& store);
+  std::vector<PartGeom> (*geoms)(const geometry::Shape& shape, ConvexStore& store, double inflation);
   dMass (*mass)(const geometry::Shape& shape, double mass);
   double (*floor_torque)(const geometry::Shape& shape, double floor_force);
 };
@@ -69,8 +69,11 @@ namespace box {
 Vec2 size(const geometry::Shape& shape) { return 2.0 * shape.half_extents(); }
 
 constexpr ShapeKindPhysics kRow{
-    [](const geometry::Shape& shape, ConvexStore&) {
-      return std::vector<PartGeom>{{dCreateBox(nullptr, size(shape).x(), size(shape).y(), kCollisionHeight)}};
+    [](const geometry::Shape& shape, ConvexStore&, double inflation) {
+      const Vec2 inflated = size(shape) + Vec2::Constant(2.0 * inflation);
+      const Vec2 h = shape.half_extents();
+      return std::vector<PartGeom>{{dCreateBox(nullptr, inflated.x(), inflated.y(), kCollisionHeight), Vec2::Zero(),
+                                    {{{-h.x(), -h.y()}, {h.x(), -h.y()}, {h.x(), h.y()}, {-h.x(), h.y()}}, 0.0}}};
     },
     [](const geometry::Shape& shape, double mass) {
       dMass m;
@@ -85,8 +88,9 @@ constexpr ShapeKindPhysics kRow{
 namespace circle {
 
 constexpr ShapeKindPhysics kRow{
-    [](const geometry::Shape& shape, ConvexStore&) {
-      return std::vector<PartGeom>{{dCreateCylinder(nullptr, shape.radius(), kCollisionHeight)}};
+    [](const geometry::Shape& shape, ConvexStore&, double inflation) {
+      return std::vector<PartGeom>{
+          {dCreateCylinder(nullptr, shape.radius() + inflation, kCollisionHeight), Vec2::Zero(), {{}, shape.radius()}}};
     },
     [](const geometry::Shape& shape, double mass) {
       dMass m;
@@ -101,14 +105,33 @@ constexpr ShapeKindPhysics kRow{
 
 namespace polygon {
 
-std::vector<PartGeom> geoms(const geometry::Shape& shape, ConvexStore& store) {
+// The convex, counter-clockwise `part` with each side moved out by `by`: its corners where the moved sides
+// meet, so the corners stay square.
+geometry::Polygon pushed_out(const geometry::Polygon& part, double by) {
+  if (by == 0.0) return part;
+  const std::vector<Vec2>& v = part.vertices;
+  const size_t n = v.size();
+  geometry::Polygon out;
+  for (size_t i = 0; i < n; ++i) {
+    const Vec2& prev = v[(i + n - 1) % n];
+    const Vec2 in = (v[i] - prev).normalized(), next = (v[(i + 1) % n] - v[i]).normalized();
+    // Outward normals of a counter-clockwise polygon's sides point right of their direction.
+    const Vec2 n_in(in.y(), -in.x()), n_next(next.y(), -next.x());
+    out.vertices.push_back(v[i] + by * (n_in + n_next) / (1.0 + n_in.dot(n_next)));
+  }
+  return out;
+}
+
+std::vector<PartGeom> geoms(const geometry::Shape& shape, ConvexStore& store, double inflation) {
   std::vector<PartGeom> geoms;
   // A convex body's one part is about its centroid already, the body's centre; a fixed body's parts each
   // about their own.
   const bool one = shape.parts().size() == 1;
   for (const geometry::Polygon& part : shape.parts()) {
     const Vec2 centre = one ? Vec2::Zero() : part.centroid();
-    geoms.push_back({store.prism(part, centre), centre});
+    PartOutline outline;
+    for (const Vec2& corner : part.vertices) outline.corners.push_back(corner - centre);
+    geoms.push_back({store.prism(pushed_out(part, inflation), centre), centre, std::move(outline)});
   }
   return geoms;
 }
@@ -148,7 +171,9 @@ const ShapeKindPhysics& kind_of(const geometry::Shape& shape) { return *kKinds[s
 
 }  // namespace
 
-std::vector<PartGeom> make_geoms(const geometry::Shape& shape, ConvexStore& store) { return kind_of(shape).geoms(shape, store); }
+std::vector<PartGeom> make_geoms(const geometry::Shape& shape, ConvexStore& store, double inflation) {
+  return kind_of(shape).geoms(shape, store, inflation);
+}
 
 dMass body_mass(const geometry::Shape& shape, double mass) { return kind_of(shape).mass(shape, mass); }
 

@@ -30,13 +30,22 @@ class ConvexStore {
   std::deque<Prism> prisms_;
 };
 
+// A convex part's own outline in its geom's frame: its corners, or a circle's radius (no corners).
+struct PartOutline {
+  std::vector<geometry::Vec2> corners;
+  double radius = 0.0;
+};
+
 // One geom per convex part (a box and a cylinder are one), each about its own origin, which stands at
-// `offset` in the body's frame (a box's and a cylinder's at the body's centre).
+// `offset` in the body's frame (a box's and a cylinder's at the body's centre). The geom is larger than
+// the part by `inflation` all round (a moving body's speculative margin: docs/physics.md, "No body sinks
+// into another"); `outline` is the part itself.
 struct PartGeom {
   dGeomID id = nullptr;
   geometry::Vec2 offset = geometry::Vec2::Zero();
+  PartOutline outline;
 };
-std::vector<PartGeom> make_geoms(const geometry::Shape& shape, ConvexStore& store);
+std::vector<PartGeom> make_geoms(const geometry::Shape& shape, ConvexStore& store, double inflation = 0.0);
 
 // A body of `mass` kg, uniformly dense over its footprint.
 dMass body_mass(const geometry::Shape& shape, double mass);

@@ -12,8 +12,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <deque>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 namespace physltl::physics {
 namespace {
@@ -26,6 +29,18 @@ constexpr std::size_t kBlocksPerChunk = PhysicsState::kBlocksPerChunk;
 // ODE pushes overlapping bodies apart at up to this speed. The robot's speed limit holds at every step
 // only if this correction stays well below it (docs/physics.md measures what remains).
 constexpr double kMaxCorrectingSpeed = 0.1;  // m/s
+// The robot's geom is larger than the robot by its speculative margin, so that the contacts where a step
+// begins include every body it may reach within the step: this much more than its top speed covers in a
+// step, and never under a centimetre (docs/physics.md, "No body sinks into another").
+constexpr double kMarginOverReach = 1.2;
+constexpr double kMinMargin = 0.01;  // m
+// A step Dantzig's LCP fails on is taken again from where it began in 2, then 4 sub-steps (ODE's iterative
+// solver would never fail, but it reorders its rows with one random generator for the whole process, so
+// its steps would depend on the threads).
+constexpr int kMostSubSteps = 4;
+// The world's rows are a little soft (dWorldSetCFM) so that Dantzig's LCP solves the contacts; the floor's
+// friction and a differential robot's wheel grip stay as stiff as ever, so that they hold what they hold.
+constexpr double kFrictionMotorCfm = 1e-6;
 // A holonomic robot keeps its heading: the plane-2D joint's angular motor holds it with this torque bound.
 constexpr double kHeadingHoldTorque = 1e3;  // N m
 // A box slower than scenario::kRestSpeed is at rest: floor friction takes ~0.2 m/s off a sliding box per
@@ -46,6 +61,10 @@ struct Geom {
   int index = 0;           // into the World's list of its kind; -1 for the robot
   double friction = 0.5;
   double bound_radius = 0.0;  // of the footprint, for a cheap test before dCollide
+  // How much larger than the body its geoms are, all round: a moving body's speculative margin (contacts
+  // before it sinks in), 0 for fixed bodies. Contacts of inflated geoms are measured on the parts
+  // themselves (true_depth).
+  double inflation = 0.0;
   scenario::Vec2 position = scenario::Vec2::Zero();  // fixed bodies only: they never move
   // What a dynamic body is made of in ODE, to make it again.
   dMass mass{};
@@ -101,7 +120,24 @@ struct Simulation::Impl {
   dJointID wheel_grip = nullptr;  // differential drive only
   dContactGeom contact_buffer[kMaxContactsPerPair];
   std::vector<dContactGeom> pair_contacts;  // collide()'s, kept between calls: no allocation per pair
+  // The robot's contacts of the step being taken; a speculative one with the force the solver put on it.
+  struct PendingContact {
+    scenario::RobotContact contact;
+    const dJointFeedback* force = nullptr;  // null: touching where the step began
+  };
+  std::vector<PendingContact> robot_pending;
+  std::deque<dJointFeedback> contact_forces;  // ODE writes into them during the step: addresses must hold
+  std::deque<PartOutline> outlines;  // every geom's part, its user data: addresses must hold
   Overlap overlap;  // where the last step ended
+  std::vector<Vec2> separating_axes, corners_of_part;  // exact_depth's, kept: no allocation per contact
+  // The robot's depth into each body within its margin where the last step ended (below zero, the gap).
+  struct RobotEnd {
+    scenario::RobotContact::Body body;
+    int index = 0;
+    double depth = 0.0;
+    Vec2 point = Vec2::Zero();
+  };
+  std::vector<RobotEnd> robot_ends;
 
   explicit Impl(const scenario::World& w) : world(w) {
     ensure_ode_ready_on_this_thread();
@@ -112,7 +148,10 @@ struct Simulation::Impl {
     dWorldSetStepThreadingImplementation(ode_world, dThreadingImplementationGetFunctions(threading), threading);
     dWorldSetGravity(ode_world, 0, 0, 0);
     dWorldSetERP(ode_world, 0.2);
-    dWorldSetCFM(ode_world, 1e-6);
+    // Every row a little soft: Dantzig's LCP fails on rigid, near-redundant rows (friction rows of a box
+    // held by the floor and pushed by the robot into another); at 1e-6 the search of chain_corridor met
+    // 60 times more failed steps (docs/physics.md, "Steps the solver fails on").
+    dWorldSetCFM(ode_world, 1e-4);
     dWorldSetContactSurfaceLayer(ode_world, 0.001);
     dWorldSetContactMaxCorrectingVel(ode_world, kMaxCorrectingSpeed);
     dWorldSetAutoDisableFlag(ode_world, 0);  // no hidden sleep counters: the state is all in PhysicsState
@@ -124,8 +163,10 @@ struct Simulation::Impl {
     dMassSetSphereTotal(&mass, r.mass, r.radius);
     // The robot rolls on its wheels: no sliding friction with the floor, only what its drive applies.
     const bool differential = r.drive == scenario::Drive::kDifferential;
-    add_dynamic({{dCreateSphere(nullptr, r.radius)}}, mass, r.friction, r.radius, -1, 0.0,
-                differential ? 0.0 : kHeadingHoldTorque);
+    // Boxes move as fast as the robot pushes them: every moving body gets the robot's margin.
+    const double margin = std::max(kMinMargin, kMarginOverReach * r.max_speed * w.planner.step_size);
+    add_dynamic({{dCreateSphere(nullptr, r.radius + margin), Vec2::Zero(), {{}, r.radius}}}, mass, r.friction,
+                r.radius, -1, 0.0, differential ? 0.0 : kHeadingHoldTorque, margin);
     drive = {r.mass, mass.I[2 * 4 + 2], r.radius, r.max_force};
     if (differential) add_wheel_grip(mix_friction(floor, r.friction) * r.mass * kGravity);
 
@@ -133,14 +174,19 @@ struct Simulation::Impl {
       const auto& b = w.movable_bodies[i];
       const geometry::Shape& shape = b.footprint.shape;
       const double floor_force = mix_friction(floor, b.friction) * b.mass * kGravity;
-      // One ODE body, whatever its outline: a geom per convex part, all carried by it.
-      add_dynamic(make_geoms(shape, convex_store), body_mass(shape, b.mass), b.friction, shape.bound_radius(),
-                  static_cast<int>(i), floor_force, floor_torque(shape, floor_force));
+      // One ODE body, whatever its outline: a geom per convex part, all carried by it. A polygon's parts are
+      // ODE convex prisms, whose separating-axis contacts are one point on an axis of ODE's choosing once
+      // they overlap: grown by a margin, a polygon flush against a wall would pivot on that point. Its
+      // contacts are the robot's margin alone (the depth rule holds it to max_overlap all the same).
+      const double body_margin = shape.kind() == geometry::Shape::Kind::kPolygon ? 0.0 : margin;
+      add_dynamic(make_geoms(shape, convex_store, body_margin), body_mass(shape, b.mass), b.friction, shape.bound_radius(),
+                  static_cast<int>(i), floor_force, floor_torque(shape, floor_force), body_margin);
     }
     std::vector<geometry::Rect> fixed_bounds;
     for (size_t i = 0; i < w.fixed_bodies.size(); ++i) {
       const auto& f = w.fixed_bodies[i];
       for (const PartGeom& part : make_geoms(f.footprint.shape, convex_store)) {
+        keep_outline(part);
         Geom g;
         g.id = part.id;
         g.index = static_cast<int>(i);
@@ -172,6 +218,87 @@ struct Simulation::Impl {
     dThreadingFreeImplementation(threading);
   }
 
+  // The part's own outline, which the contacts of its (inflated) geom are measured against (true_depth).
+  void keep_outline(const PartGeom& part) {
+    dGeomSetData(part.id, &outlines.emplace_back(part.outline));
+  }
+
+  // How deep the two parts of a contact overlap themselves, not their inflated geoms: the overlap of their
+  // outlines' projections on the contact's normal (negative: the gap along it). Exact where the normal is
+  // the one between the parts' nearest features, as ODE finds it for a sphere against anything and for
+  // faces against faces.
+  static double true_depth(const dContactGeom& contact) {
+    const Vec2 normal = Vec2(contact.normal[0], contact.normal[1]).normalized();
+    const auto [a_low, a_high] = projection(contact.g1, normal);
+    const auto [b_low, b_high] = projection(contact.g2, normal);
+    return std::min(a_high, b_high) - std::max(a_low, b_low);
+  }
+
+  // How deep two parts overlap in the plane, exactly: the least overlap of their outlines' projections on
+  // the axes that may separate them, each side's normal of either part and, for a circle, the line from
+  // its centre to the other part's nearest corner (or centre). ODE's contact normal between boxes or prisms
+  // is not always the least one; this is what the overlap rule judges (docs/physics.md).
+  double exact_depth(dGeomID a, dGeomID b) {
+    separating_axes.clear();
+    add_separating_axes(a, b);
+    add_separating_axes(b, a);
+    double depth = std::numeric_limits<double>::infinity();
+    for (const Vec2& axis : separating_axes) {
+      const auto [a_low, a_high] = projection(a, axis);
+      const auto [b_low, b_high] = projection(b, axis);
+      depth = std::min(depth, std::min(a_high, b_high) - std::max(a_low, b_low));
+    }
+    return depth;
+  }
+
+  void add_separating_axes(dGeomID part, dGeomID other) {
+    world_corners(part, corners_of_part);
+    if (!corners_of_part.empty()) {
+      for (size_t i = 0; i < corners_of_part.size(); ++i) {
+        const Vec2 side = corners_of_part[(i + 1) % corners_of_part.size()] - corners_of_part[i];
+        separating_axes.push_back(Vec2(-side.y(), side.x()).normalized());
+      }
+      return;
+    }
+    const dReal* p = dGeomGetPosition(part);
+    const Vec2 centre(p[0], p[1]);
+    world_corners(other, corners_of_part);
+    if (corners_of_part.empty()) {
+      const dReal* q = dGeomGetPosition(other);
+      corners_of_part.push_back(Vec2(q[0], q[1]));
+    }
+    const Vec2 nearest = *std::min_element(corners_of_part.begin(), corners_of_part.end(), [&](const Vec2& x, const Vec2& y) {
+      return (x - centre).squaredNorm() < (y - centre).squaredNorm();
+    });
+    if ((nearest - centre).squaredNorm() > 0.0) separating_axes.push_back((nearest - centre).normalized());
+  }
+
+  // The corners of a part's own outline where its geom stands (none for a circle).
+  static void world_corners(dGeomID part, std::vector<Vec2>& corners) {
+    corners.clear();
+    const auto* outline = static_cast<const PartOutline*>(dGeomGetData(part));
+    const dReal* p = dGeomGetPosition(part);
+    const dReal* r = dGeomGetRotation(part);  // 3 x 4, row by row
+    for (const Vec2& c : outline->corners) corners.emplace_back(p[0] + r[0] * c.x() + r[1] * c.y(), p[1] + r[4] * c.x() + r[5] * c.y());
+  }
+
+  static std::pair<double, double> projection(dGeomID part, const Vec2& direction) {
+    const auto* outline = static_cast<const PartOutline*>(dGeomGetData(part));
+    const dReal* p = dGeomGetPosition(part);
+    const dReal* r = dGeomGetRotation(part);  // 3 x 4, row by row
+    if (outline->corners.empty()) {
+      const double centre = p[0] * direction.x() + p[1] * direction.y();
+      return {centre - outline->radius, centre + outline->radius};
+    }
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (const Vec2& c : outline->corners) {
+      const Vec2 corner(p[0] + r[0] * c.x() + r[1] * c.y(), p[1] + r[4] * c.x() + r[5] * c.y());
+      low = std::min(low, corner.dot(direction));
+      high = std::max(high, corner.dot(direction));
+    }
+    return {low, high};
+  }
+
   static void place(dGeomID geom, const geometry::Pose2& pose) {
     dGeomSetPosition(geom, pose.position.x(), pose.position.y(), 0.0);
     dMatrix3 rotation;
@@ -180,15 +307,18 @@ struct Simulation::Impl {
   }
 
   // Boxes start outside ODE (hold_awake() brings them in); the robot is made at once and stays.
+  // `bound_radius` of the body itself; its geoms are `inflation` larger.
   void add_dynamic(std::vector<PartGeom> parts, const dMass& mass, double friction, double bound_radius, int index,
-                   double floor_force, double floor_torque) {
+                   double floor_force, double floor_torque, double inflation) {
+    for (const PartGeom& part : parts) keep_outline(part);
     Geom g;
     g.id = parts.front().id;
     g.parts = std::move(parts);
     g.kind = scenario::RobotContact::Body::kMovable;
     g.index = index;
     g.friction = friction;
-    g.bound_radius = bound_radius;
+    g.bound_radius = bound_radius + inflation;
+    g.inflation = inflation;
     g.mass = mass;
     g.floor_force = floor_force;
     g.floor_torque = floor_torque;
@@ -220,6 +350,9 @@ struct Simulation::Impl {
     dJointSetPlane2DXParam(g.planar, dParamFMax, g.floor_force);
     dJointSetPlane2DYParam(g.planar, dParamFMax, g.floor_force);
     dJointSetPlane2DAngleParam(g.planar, dParamFMax, g.floor_torque);
+    dJointSetPlane2DXParam(g.planar, dParamCFM, kFrictionMotorCfm);
+    dJointSetPlane2DYParam(g.planar, dParamCFM, kFrictionMotorCfm);
+    dJointSetPlane2DAngleParam(g.planar, dParamCFM, kFrictionMotorCfm);
     write_body(i);
   }
 
@@ -241,6 +374,7 @@ struct Simulation::Impl {
     dJointSetLMotorNumAxes(wheel_grip, 1);
     dJointSetLMotorParam(wheel_grip, dParamVel, 0.0);
     dJointSetLMotorParam(wheel_grip, dParamFMax, max_grip_force);
+    dJointSetLMotorParam(wheel_grip, dParamCFM, kFrictionMotorCfm);
   }
 
   double* values(size_t i) { return state.data() + i * kValuesPerBody; }
@@ -349,8 +483,11 @@ struct Simulation::Impl {
     block_changed[b] = 0;
   }
 
-  bool may_touch(size_t i, size_t j) const {
-    return within_reach(position(i), dynamic[i].bound_radius, position(j), dynamic[j].bound_radius);
+  // Whether moving body `mover` may reach resting body `rest` within a step: the mover's margin covers
+  // how far it goes in a step, the resting body stays where it is (its own outline, not its margin).
+  bool may_touch(size_t mover, size_t rest) const {
+    const double rest_radius = dynamic[rest].bound_radius - dynamic[rest].inflation;
+    return within_reach(position(mover), dynamic[mover].bound_radius, position(rest), rest_radius);
   }
 
   bool at_rest(size_t i) const {
@@ -410,10 +547,13 @@ struct Simulation::Impl {
   }
 
   // Every convex part of `a` against every part of `b`, in their order, the contacts of all of them kept
-  // once each (two parts sharing a corner both find it); the robot's contact with `b` is where it first
-  // touches.
-  void collide(const Geom& a, const Geom& b, std::vector<scenario::RobotContact>& robot_contacts) {
+  // once each (two parts sharing a corner both find it), each a contact joint of the step. A contact of an
+  // inflated geom (the robot's) that is not yet touching is speculative: it lets the bodies close the gap
+  // within the step and no further (docs/physics.md, "No body sinks into another"). The robot's contacts
+  // wait for the step to say whether they touched (robot_contacts_of_step).
+  void collide(const Geom& a, const Geom& b, double dt) {
     gather_pair_contacts(a, b);
+    const double inflation = a.inflation + b.inflation;
     for (const dContactGeom& found : pair_contacts) {
       dContact contact{};
       contact.geom = found;
@@ -428,19 +568,59 @@ struct Simulation::Impl {
       contact.surface.mu2 = 0.0;
       contact.surface.soft_cfm = 1e-5;
       contact.surface.soft_erp = 0.2;
+      const double depth = inflation > 0.0 ? true_depth(found) : found.depth;  // below zero, the gap
+      contact.geom.depth = depth;
+      if (depth < 0.0) {
+        // ODE asks the bodies to part at erp/dt x the depth beyond its surface layer (none here) plus
+        // motionN: a negative motionN lets them approach by at most the gap within the step.
+        contact.surface.mode |= dContactMotionN;
+        contact.surface.motionN = depth / dt;
+      }
       dJointID joint = dJointCreateContact(ode_world, contact_group, &contact);
       dJointAttach(joint, a.body, b.body);
-    }
-    if (!pair_contacts.empty() && a.index < 0) {  // `a` is the robot: it is always the first of a pair
-      const dReal* p = pair_contacts.front().pos;
-      robot_contacts.push_back({b.kind, b.index, {p[0], p[1]}});
+      if (a.index >= 0) continue;  // `a` is the robot: it is always the first of a pair
+      dJointFeedback* feedback = &contact_forces.emplace_back();
+      dJointSetFeedback(joint, feedback);
+      robot_pending.push_back({{b.kind, b.index, {found.pos[0], found.pos[1]}}, feedback});
     }
   }
 
   // The contacts of every convex part of `a` with every part of `b` where they stand, into pair_contacts.
   void gather_pair_contacts(const Geom& a, const Geom& b) {
     pair_contacts.clear();
-    for_each_part(a, [&](dGeomID part_a) { for_each_part(b, [&](dGeomID part_b) { gather_contacts(part_a, part_b); }); });
+    const bool inflated = a.inflation + b.inflation > 0.0;
+    for_each_part(a, [&](dGeomID part_a) { for_each_part(b, [&](dGeomID part_b) { gather_contacts(part_a, part_b, inflated); }); });
+  }
+
+  // The robot's contacts of the step just taken, one per body, where it first touched it: those that
+  // touched where the step began, and the speculative ones the solver pressed on.
+  // A speculative one counts only where the step ends with the robot at the body (within kTouchingGap): a
+  // failed solve can leave force on a row whose bodies stayed apart. Then, as contacts of the step too,
+  // the fixed bodies the robot overlaps where the step ends: a step that ends inside a wall touched it.
+  void robot_contacts_of_step(std::vector<scenario::RobotContact>& robot_contacts) const {
+    robot_contacts.clear();
+    const auto known = [&](scenario::RobotContact::Body body, int index) {
+      return std::any_of(robot_contacts.begin(), robot_contacts.end(),
+                         [&](const scenario::RobotContact& r) { return r.body == body && r.index == index; });
+    };
+    for (const PendingContact& pending : robot_pending) {
+      const scenario::RobotContact& c = pending.contact;
+      const bool pressed = pending.force->f1[0] != 0.0 || pending.force->f1[1] != 0.0;
+      if (!pressed || robot_end_depth(c.body, c.index) < -kTouchingGap) continue;
+      if (!known(c.body, c.index)) robot_contacts.push_back(c);
+    }
+    for (const RobotEnd& end : robot_ends) {
+      if (end.depth > 0.0 && end.body == scenario::RobotContact::Body::kFixed && !known(end.body, end.index)) {
+        robot_contacts.push_back({end.body, end.index, end.point});
+      }
+    }
+  }
+
+  double robot_end_depth(scenario::RobotContact::Body body, int index) const {
+    for (const RobotEnd& end : robot_ends) {
+      if (end.body == body && end.index == index) return end.depth;
+    }
+    return -std::numeric_limits<double>::infinity();
   }
 
   // Calls f(a, b) for every pair of bodies within reach of each other with an awake one among them: each
@@ -476,7 +656,7 @@ struct Simulation::Impl {
   }
 
   // The contacts of two convex parts, added to pair_contacts unless one there is at the same point.
-  void gather_contacts(dGeomID part_a, dGeomID part_b) {
+  void gather_contacts(dGeomID part_a, dGeomID part_b, bool inflated) {
     const int found = dCollide(part_a, part_b, kMaxContactsPerPair, contact_buffer, sizeof(dContactGeom));
     // Tall boxes touch at the top and the bottom of the same vertical edge; in the plane those are one
     // contact, and the duplicate rows make the LCP singular ("LCP internal error"), so keep one.
@@ -485,7 +665,8 @@ struct Simulation::Impl {
     // Touching without depth pushes nothing; the next step, with depth, has the true normal.
     const bool convex = dGeomGetClass(part_a) == dConvexClass || dGeomGetClass(part_b) == dConvexClass;
     for (int i = 0; i < found; ++i) {
-      if (convex && (contact_buffer[i].depth <= 1e-9 || std::abs(contact_buffer[i].normal[2]) > 0.5)) continue;
+      if (convex && std::abs(contact_buffer[i].normal[2]) > 0.5) continue;
+      if (convex && std::abs(inflated ? true_depth(contact_buffer[i]) : contact_buffer[i].depth) <= 1e-9) continue;
       const dReal* p = contact_buffer[i].pos;
       const bool duplicate = std::any_of(pair_contacts.begin(), pair_contacts.end(), [&](const dContactGeom& q) {
         return std::abs(p[0] - q.pos[0]) < 1e-4 && std::abs(p[1] - q.pos[1]) < 1e-4;
@@ -534,39 +715,68 @@ struct Simulation::Impl {
     return wheels.effort;
   }
 
+  // One step of the drive's effort: Dantzig's LCP (dWorldStep) first; when it stops short ("LCP internal
+  // error"), the awake bodies go back to where the step began and the step is taken again in 2, then 4
+  // sub-steps, each with the contacts where it begins. Still failing, it is taken once more with the drive
+  // idle: a failed solve integrates the drive's force without the contact forces that would hold it, which
+  // drives a robot pressing a box against a wall straight through the box; idle, the robot keeps its
+  // motion and the contacts what they reached (the step stays unsolved, last_step_solved, and the overlap
+  // it ends with is what judges it).
   void step(const Vec2& setpoint, std::vector<scenario::RobotContact>& robot_contacts) {
-    robot_contacts.clear();
-    last_drive = drive_effort(setpoint);
-    dBodyAddForce(dynamic[0].body, last_drive.force.x(), last_drive.force.y(), 0.0);
-    dBodyAddTorque(dynamic[0].body, 0.0, 0.0, last_drive.torque);
     wake_bodies();
-    for_each_awake_pair([&](const Geom& a, const Geom& b) { collide(a, b, robot_contacts); });
-    const unsigned long long messages_before = solver_messages_on_this_thread();
-    dWorldStep(ode_world, world.planner.step_size);
-    last_step_solved = solver_messages_on_this_thread() == messages_before;
-    dJointGroupEmpty(contact_group);
+    last_drive = drive_effort(setpoint);
+    last_step_solved = integrate(1);
+    for (int sub_steps = 2; !last_step_solved && sub_steps <= kMostSubSteps; sub_steps *= 2) {
+      for (int i : woken) write_body(static_cast<size_t>(i));  // `state` still holds where the step began
+      last_step_solved = integrate(sub_steps);
+    }
+    if (!last_step_solved) {
+      for (int i : woken) write_body(static_cast<size_t>(i));
+      last_drive = {};
+      integrate(1);
+    }
     for (int i : woken) settle(static_cast<size_t>(i));
-    measure_overlaps(robot_contacts);
+    measure_overlaps();
+    robot_contacts_of_step(robot_contacts);
   }
 
-  // Where the step ended: the deepest overlap of two bodies (last_overlap), and, as contacts of the step,
-  // the fixed bodies the robot overlaps. ODE finds contacts where a step starts, so a robot at full speed
-  // can end a step centimetres inside a wall it did not touch at the start (5 cm a step at 1 m/s and
-  // 0.05 s), and only the next step pushes it out. Such a step touched the wall.
-  void measure_overlaps(std::vector<scenario::RobotContact>& robot_contacts) {
+  // The step in `sub_steps` equal parts, each with the drive's force and the contacts where it begins;
+  // whether ODE's solver solved every part.
+  bool integrate(int sub_steps) {
+    robot_pending.clear();
+    contact_forces.clear();
+    const double dt = world.planner.step_size / sub_steps;
+    bool solved = true;
+    for (int k = 0; k < sub_steps; ++k) {
+      dBodyAddForce(dynamic[0].body, last_drive.force.x(), last_drive.force.y(), 0.0);
+      dBodyAddTorque(dynamic[0].body, 0.0, 0.0, last_drive.torque);
+      for_each_awake_pair([&](const Geom& a, const Geom& b) { collide(a, b, dt); });
+      const unsigned long long messages_before = solver_messages_on_this_thread();
+      dWorldStep(ode_world, dt);
+      dJointGroupEmpty(contact_group);
+      solved = solved && solver_messages_on_this_thread() == messages_before;
+    }
+    return solved;
+  }
+
+  // Where the step ended: the deepest overlap of two bodies (last_overlap), and how deep the robot is into
+  // each body within its margin (robot_ends; below zero, the gap).
+  void measure_overlaps() {
     overlap = {};
+    robot_ends.clear();
     for_each_awake_pair([&](const Geom& a, const Geom& b) {
       gather_pair_contacts(a, b);
-      const dContactGeom* first_inside = nullptr;
+      const bool inflated = a.inflation + b.inflation > 0.0;
+      const dContactGeom* deepest = nullptr;
+      double depth = -std::numeric_limits<double>::infinity(), exact = 0.0;
       for (const dContactGeom& found : pair_contacts) {
-        if (found.depth > overlap.depth) overlap = {found.depth, body_id(a), body_id(b)};
-        if (first_inside == nullptr && found.depth > 0.0) first_inside = &found;
+        const double d = inflated ? true_depth(found) : found.depth;
+        if (d > depth) depth = d, deepest = &found;
+        if (d > 0.0) exact = std::max(exact, inflated ? exact_depth(found.g1, found.g2) : d);
       }
-      if (first_inside == nullptr || a.index >= 0 || b.kind != scenario::RobotContact::Body::kFixed) return;
-      const bool known = std::any_of(robot_contacts.begin(), robot_contacts.end(), [&](const scenario::RobotContact& c) {
-        return c.body == scenario::RobotContact::Body::kFixed && c.index == b.index;
-      });
-      if (!known) robot_contacts.push_back({b.kind, b.index, {first_inside->pos[0], first_inside->pos[1]}});
+      if (deepest == nullptr) return;
+      if (exact > overlap.depth) overlap = {exact, body_id(a), body_id(b)};
+      if (a.index < 0) robot_ends.push_back({b.kind, b.index, depth, {deepest->pos[0], deepest->pos[1]}});
     });
   }
 
@@ -575,6 +785,16 @@ struct Simulation::Impl {
     return {g.kind == scenario::RobotContact::Body::kFixed ? BodyId::Kind::kFixed : BodyId::Kind::kMovable, g.index};
   }
 };
+
+std::string body_name(const scenario::World& world, const BodyId& body) {
+  const auto i = static_cast<size_t>(body.index);
+  switch (body.kind) {
+    case BodyId::Kind::kRobot: return "robot";
+    case BodyId::Kind::kMovable: return world.movable_bodies[i].name;
+    case BodyId::Kind::kFixed: return world.fixed_bodies[i].name;
+  }
+  return "?";
+}
 
 Simulation::Simulation(const scenario::World& world) : impl_(std::make_unique<Impl>(world)) {}
 Simulation::~Simulation() = default;

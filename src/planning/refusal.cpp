@@ -10,6 +10,7 @@ const char* refusal_name(Refusal refusal) {
     case Refusal::kLimit: return "limit";
     case Refusal::kImmovableBody: return "immovable_body";
     case Refusal::kPushSide: return "push_side";
+    case Refusal::kOverlap: return "overlap";
   }
   return "?";
 }
@@ -23,6 +24,7 @@ std::optional<Refusal> refusal_of(knowledge::Violation violation) {
     case Violation::kTouchesFixedBody: return Refusal::kFixedContact;
     case Violation::kTouchesImmovableBody: return Refusal::kImmovableBody;
     case Violation::kPushesFromForbiddenSide: return Refusal::kPushSide;
+    case Violation::kBodiesOverlap: return Refusal::kOverlap;
   }
   return std::nullopt;
 }

@@ -259,6 +259,7 @@ void read_planner(TableReader& r, PlannerSettings& p) {
   p.min_steps = r.integer("min_steps", p.min_steps);
   p.max_steps = r.integer("max_steps", p.max_steps);
   p.improve_margin = r.number("improve_margin", p.improve_margin);
+  p.max_overlap = r.number("max_overlap", p.max_overlap);
   if (r.has("cost")) {
     try {
       p.cost = parse_plan_cost(r.string("cost"));

@@ -407,6 +407,7 @@ class Validator {
     check_range(p.where, "planner: 'max_steps'", p.max_steps, 1.0, 1e4, true);
     if (p.min_steps > p.max_steps) error(p.where, "planner: 'min_steps' must not exceed 'max_steps'");
     check_range(p.where, "planner: 'improve_margin'", p.improve_margin, 0.0, 1.0, true);
+    check_range(p.where, "planner: 'max_overlap'", p.max_overlap, 0.0, kMaxOverlapLimit);
   }
 
   void check_uncertainty(const Uncertainty& u) {

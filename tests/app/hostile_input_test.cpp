@@ -341,7 +341,7 @@ TEST(Nonsense, BenchMergeRefusesNumbersNoRunMakesNamingTheFileAndTheKey) {
       {shard / "units" / "0.json", edited(unit, "\"pushes\": " + pushes, "\"pushes\": -3"), "'pushes' must be a whole number from 0"},
       {shard / "units" / "0.json", edited(unit, "\"wall_s\": ", "\"wall_s\": 1e999, \"x\": "), "not a unit result"},
       {shard / "units" / "0.json", edited(unit, "\"elapsed_s\": ", "\"elapsed_s\": -1, \"x\": "), "'elapsed_s' must be at least 0"},
-      {shard / "units" / "0.json", edited(unit, "\"refused\": [", "\"refused\": [7, "), "'refused' must hold 8 counts, one per rule (fixed_contact"},
+      {shard / "units" / "0.json", edited(unit, "\"refused\": [", "\"refused\": [7, "), "'refused' must hold 9 counts, one per rule (fixed_contact"},
       {shard / "manifest.json", edited(manifest, "\"shards\": 1", "\"shards\": 2000000000"), "'shards' must be a whole number from 1 to 10000"},
       {shard / "manifest.json", edited(manifest, "\"runs\": 1", "\"runs\": 1e12"), "'runs' must be a whole number from 1 to 100000"},
   };

@@ -114,10 +114,14 @@ TEST_F(FixedPlan, TheLegendNamesTheRegionTheRobotIsInAndNoOther) {
 TEST_F(FixedPlan, PlannedMovesAreShownAsThePlanCarriesThemOut) {
   const scenario::EnvironmentState& first = replay_->states.front();
   const scenario::EnvironmentState last = replay_->states[replay_->states.size() - 1];
-  const geometry::Vec2 start = first.movable_poses[0].position, end = last.movable_poses[0].position;
-  ASSERT_GT((end - start).norm(), 0.3);  // ordered.lua's plan pushes B1 off p1
+  // The body the plan moves furthest (ordered.lua's plan pushes a box off its region).
+  int body = 0;
+  const auto moved = [&](int b) { return (last.movable_poses[b].position - first.movable_poses[b].position).norm(); };
+  for (int b = 1; b < static_cast<int>(first.movable_poses.size()); ++b) body = moved(b) > moved(body) ? b : body;
+  const geometry::Vec2 start = first.movable_poses[body].position, end = last.movable_poses[body].position;
+  ASSERT_GT((end - start).norm(), 0.1);
   PlannedMoves moves;
-  moves.moves = {{start, end, (end - start).normalized(), 0}, {end, end + geometry::Vec2(5, 0), geometry::Vec2::UnitX(), 0}};
+  moves.moves = {{start, end, (end - start).normalized(), body}, {end, end + geometry::Vec2(5, 0), geometry::Vec2::UnitX(), body}};
   PlanAnimation animation(*world_, *reasoning_, *replay_, static_cast<int>(as_written_->dfa.size()), {.planned = &moves});
   const auto legend_line = [&](double time) {
     animation.draw(time);

@@ -69,19 +69,6 @@ TEST_F(ValidityTest, TouchingAFixedBodyIsInvalidWithOrWithoutKnowledge) {
   }
 }
 
-TEST_F(ValidityTest, AStepThatTakesTheRobotAwayFromAWallItTouchesIsValid) {
-  // At rest against the wall (after braking there, or placed there): the step away still has the contact.
-  const std::vector<RobotContact> contacts{{RobotContact::Body::kFixed, 0, {2.0, 0.0}}};
-  for (ValidityMode mode : {ValidityMode::kKnowledge, ValidityMode::kBaseline}) {
-    state_.robot_velocity = {-0.3, 0.1};
-    EXPECT_TRUE(check({1.75, 0}, contacts, mode).valid());
-    state_.robot_velocity = {0.3, 0.1};  // into the wall
-    EXPECT_EQ(check({1.75, 0}, contacts, mode).violation, Violation::kTouchesFixedBody);
-    state_.robot_velocity = {0.0, 0.3};  // along it
-    EXPECT_EQ(check({1.75, 0}, contacts, mode).violation, Violation::kTouchesFixedBody);
-  }
-}
-
 TEST_F(ValidityTest, TouchingAFreeBodyFromAnySideIsValid) {
   EXPECT_TRUE(check({-2.0, 1.5}, {touching_movable(kFree, {-1.75, 1.5})}).valid());
   EXPECT_TRUE(check({-1.5, 1.0}, {touching_movable(kFree, {-1.5, 1.25})}).valid());

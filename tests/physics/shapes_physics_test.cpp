@@ -29,17 +29,18 @@ scenario::World floor_with(const geometry::Shape& shape, const geometry::Pose2& 
 }
 
 TEST(ShapesPhysics, ACylinderPushedOffItsAxisSlidesOffSideways) {
-  // The robot drives along y = 5; a light cylinder's axis is 0.4 m above that line, so the contact normal
-  // at first touch points 47 degrees up from the push. The floor's friction holds each world axis on its
-  // own (docs/physics.md): the normal's sideways part must beat it, which it does here, barely; the
-  // cylinder leaves the robot's line, and the robot's next contacts push it on along their normals.
-  scenario::World world = floor_with(geometry::Shape::circle(0.3), {{3.0, 5.4}, 0.0});
+  // The robot drives along y = 5; a light cylinder's axis is 0.5 m above that line, so the contact normal
+  // at first touch points 65 degrees up from the push. The floor's friction holds each world axis on its
+  // own (docs/physics.md): the normal's sideways part beats it, and the cylinder slides out of the robot's
+  // way rather than along its line.
+  scenario::World world = floor_with(geometry::Shape::circle(0.3), {{3.0, 5.5}, 0.0});
   world.movable_bodies[0].mass = 0.2;
   Simulation sim(world);
   for (int i = 0; i < 60; ++i) sim.step({1, 0}, contacts);
-  const Vec2 moved = sim.environment().movable_poses[0].position - Vec2(3.0, 5.4);
-  EXPECT_GT(moved.x(), 0.5);
+  const Vec2 moved = sim.environment().movable_poses[0].position - Vec2(3.0, 5.5);
   EXPECT_GT(moved.y(), 0.02) << "it slid off, away from the robot's line";
+  EXPECT_LT(moved.x(), 0.2) << "and let the robot pass";
+  EXPECT_GT(sim.environment().robot_position.x(), 3.5);
   // Centred, the same push keeps it on the line.
   world.movable_bodies[0].footprint.pose.position = {3.0, 5.0};
   Simulation centred(world);

@@ -25,6 +25,9 @@ enum class Violation {
   kTouchesImmovableBody,        // a movable body kappa types immovable (blocked on all sides, or too heavy)
   kPushesFromForbiddenSide,     // a constraint-oriented body, robot centre outside its active mRegions
                                 // (baseline: outside every face its push_from lists)
+  kBodiesOverlap,               // two bodies (the robot, a movable or a fixed one) overlap deeper than the
+                                // planner's max_overlap where the step ended: found by the physics
+                                // (planning::CheckedSimulation), never by check_validity
 };
 const char* violation_name(Violation violation);
 

@@ -73,6 +73,10 @@ class PhysicsState {
   std::vector<std::shared_ptr<const Chunk>> chunks_;
 };
 
+// The robot touched a body in a step if the solver pressed on their contact and the step ends with them
+// this close (docs/physics.md, "No body sinks into another").
+inline constexpr double kTouchingGap = 1e-3;  // m
+
 // A body as an overlap names it: the robot, or a body of the World's movable or fixed bodies.
 struct BodyId {
   enum class Kind { kRobot, kMovable, kFixed };
@@ -80,10 +84,12 @@ struct BodyId {
   int index = -1;  // into World::movable_bodies or World::fixed_bodies; -1 for the robot
   bool operator==(const BodyId&) const = default;
 };
+// Its name in `world`: "robot", or the body's own.
+std::string body_name(const scenario::World& world, const BodyId& body);
 
 // How deep two bodies overlap in the plane where a step ended (a prism's contacts through its top or
 // bottom are not horizontal and do not count): the deepest pair of the bodies the step moved, with every
-// body they may touch. Zero when none overlaps (docs/physics.md, "How deep bodies overlap").
+// body they may touch. Zero when none overlaps (docs/physics.md, "No body sinks into another").
 struct Overlap {
   double depth = 0.0;  // m
   BodyId a, b;         // a: the robot or a movable body; b: a movable or fixed body
@@ -114,9 +120,9 @@ class Simulation {
   void step(const Vec2& setpoint, std::vector<scenario::RobotContact>& contacts);
   // What the drive applied during the last step (zero before the first).
   const DriveEffort& last_drive() const;
-  // Whether ODE's constraint solver solved the last step. When it stops short ("LCP internal error"), ODE
-  // integrates the step with the forces it had: often what the contacts would do, sometimes a robot
-  // passing into a box (docs/physics.md, "Steps the solver fails on").
+  // Whether ODE's constraint solver solved the last step. When Dantzig's LCP stops short ("LCP internal
+  // error"), the step is taken again from where it began in 2, then 4 sub-steps; false when those failed
+  // too, and the step stands as the last try left it (docs/physics.md, "Steps the solver fails on").
   bool last_step_solved() const;
   // The deepest overlap where the last step ended.
   const Overlap& last_overlap() const;

@@ -22,8 +22,9 @@ enum class Refusal {
   kLimit,           // the robot exceeded its speed or turn rate
   kImmovableBody,   // the robot touched a body kappa types immovable
   kPushSide,        // the robot pushed a constraint-oriented body from outside its active mRegions
+  kOverlap,         // two bodies overlapped deeper than the planner's max_overlap
 };
-inline constexpr int kRefusalKinds = 6;
+inline constexpr int kRefusalKinds = 7;
 
 // The rule's name in report.json and bench.json: "fixed_contact", "task_letter", ...
 const char* refusal_name(Refusal refusal);

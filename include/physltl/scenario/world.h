@@ -130,8 +130,12 @@ struct PlannerSettings {
   // Metres improvement keeps from the fixed bodies and inside the regions the robot visits for its task,
   // where the plan it improves did (docs/planner.md, "A margin for the real world"); 0: none.
   double improve_margin = 0.0;
+  // The deepest any body may sink into another (m), at any physics step: a step deeper is invalid, in the
+  // search and in the replay (docs/physics.md, "No body sinks into another"). At most kMaxOverlapLimit.
+  double max_overlap = 0.01;
   Location where{};
 };
+inline constexpr double kMaxOverlapLimit = 0.02;  // m
 
 struct Camera {
   std::optional<Vec2> target;  // unset: the workspace's centre, and the picture centred on the workspace

@@ -18,16 +18,6 @@ using json = nlohmann::ordered_json;
 
 json point(const scenario::Vec2& p) { return {p.x(), p.y()}; }
 
-std::string body_name(const scenario::World& world, const physics::BodyId& body) {
-  const auto i = static_cast<size_t>(body.index);
-  switch (body.kind) {
-    case physics::BodyId::Kind::kRobot: return "robot";
-    case physics::BodyId::Kind::kMovable: return world.movable_bodies[i].name;
-    case physics::BodyId::Kind::kFixed: return world.fixed_bodies[i].name;
-  }
-  return "?";
-}
-
 // The plan's deepest overlap of two bodies: how deep, when, and which (null when none overlapped).
 json deepest_overlap_json(const planning::Replay& replay, const scenario::World& world) {
   if (replay.deepening_overlaps.empty()) return nullptr;
@@ -35,7 +25,7 @@ json deepest_overlap_json(const planning::Replay& replay, const scenario::World&
   return {{"depth_m", deepest.overlap.depth},
           {"step", deepest.step},
           {"time_s", static_cast<double>(deepest.step) * world.planner.step_size},
-          {"bodies", {body_name(world, deepest.overlap.a), body_name(world, deepest.overlap.b)}}};
+          {"bodies", {physics::body_name(world, deepest.overlap.a), physics::body_name(world, deepest.overlap.b)}}};
 }
 
 // What the replay found of the plan.
@@ -49,6 +39,7 @@ json validation_json(const planning::Replay& replay, const scenario::World& worl
       {"peak_speed", replay.peak_speed},
       {"unsolved_steps", replay.unsolved_steps.size()},
       {"deepest_overlap", deepest_overlap_json(replay, world)},
+      {"max_overlap_m", world.planner.max_overlap},
       {"failure", replay.failure.empty() ? json(nullptr) : json(replay.failure)},
   };
 }

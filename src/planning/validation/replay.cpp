@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <utility>
 
 namespace physltl::planning {
@@ -134,6 +135,11 @@ class Replayer {
   // (restoring a state is exact), with kappa inferred there as at every step. Returns the next control.
   size_t take_prefix(const ReplayedPrefix& prefix) {
     if (prefix.controls == 0) return 0;
+    if (plan_.states.size() < prefix.controls) {
+      throw std::invalid_argument(fmt::format("a replay after a prefix of {} controls starts from the state where the last "
+                                              "of them ends, and the plan has {} states",
+                                              prefix.controls, plan_.states.size()));
+    }
     const Replay& done = prefix.replay;
     size_t steps = 0;
     for (size_t c = 0; c < prefix.controls; ++c) steps += static_cast<size_t>(plan_.controls[c].steps);
@@ -225,6 +231,11 @@ class Replayer {
 
   // What the step broke, naming the body and, for a push from a side it may not be pushed from, the face.
   std::string violation_words(const knowledge::Validity& validity, const scenario::EnvironmentState& state) const {
+    if (validity.violation == knowledge::Violation::kBodiesOverlap) {
+      const physics::Overlap& overlap = simulation_.physics().last_overlap();
+      return fmt::format("'{}' sinks {:.1f} mm into '{}' (max_overlap {:.1f} mm)", physics::body_name(world_, overlap.a),
+                         overlap.depth * 1e3, physics::body_name(world_, overlap.b), world_.planner.max_overlap * 1e3);
+    }
     if (validity.violation != knowledge::Violation::kPushesFromForbiddenSide || validity.body_index < 0) {
       return knowledge::violation_name(validity.violation);
     }

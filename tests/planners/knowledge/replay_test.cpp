@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace physltl::planning {
 namespace {
@@ -115,22 +116,26 @@ TEST(Replay, StartingAfterAReplayedPrefixGivesTheWholeReplay) {
   }
 }
 
-// ODE's solver stops short on some steps of rooms_n's plan (a box pressed between the robot and a wall):
-// the replay names them, after a replayed prefix as from the start (docs/physics.md, "Steps the solver
-// fails on").
+// The robot holding a box against a wall for seconds (wall_and_box.lua, north into B1 and on): ODE's
+// solver stops short on step after step; the replay names them, after a replayed prefix as from the start
+// (docs/physics.md, "Steps the solver fails on").
 TEST(Replay, NamesTheStepsThePhysicsSolverDidNotSolveFromTheStartAndAfterAPrefix) {
-  const TestProblem p("rooms_n.lua");
-  const PlanResult result = p.solve(1);
-  ASSERT_TRUE(result.solved) << result.stop_reason;
-  const Replay whole = p.check(result.plan);
-  ASSERT_TRUE(whole.validated()) << whole.failure;
+  const TestProblem p("../tests/data/wall_and_box.lua");
+  Plan plan;
+  plan.controls = {{Vec2(0.0, 1.0), 30}, {Vec2(0.0, 1.0), 30}, {Vec2(0.0, 1.0), 30}, {Vec2(0.0, 1.0), 30}};
+  // A prefix is taken up from the states the whole replay recorded where each control ends.
+  const Replay whole = replay(p.world, plan, p.original, p.knowledge, {.record_control_states = true});
+  ASSERT_TRUE(whole.valid) << (whole.violation_messages.empty() ? "" : whole.violation_messages.front());
   EXPECT_FALSE(whole.unsolved_steps.empty());
   for (std::size_t step : whole.unsolved_steps) {
     EXPECT_GT(step, 0u);
     EXPECT_LT(step, whole.states.size());
   }
-  const ReplayedPrefix prefix{whole, result.plan.controls.size() / 2};
-  const Replay r = replay(p.world, result.plan, p.original, p.knowledge, {.prefix = &prefix});
+  const ReplayedPrefix prefix{whole, 2};
+  // A hand-made plan has no states to take a prefix up from: refused, not read past its end.
+  EXPECT_THROW(replay(p.world, plan, p.original, p.knowledge, {.prefix = &prefix}), std::invalid_argument);
+  plan.states = whole.control_states;
+  const Replay r = replay(p.world, plan, p.original, p.knowledge, {.prefix = &prefix});
   EXPECT_EQ(r.unsolved_steps, whole.unsolved_steps);
   // So are the steps that overlapped two bodies deeper than any before (docs/physics.md).
   ASSERT_FALSE(whole.deepening_overlaps.empty());

@@ -29,6 +29,8 @@ class CheckedSimulation {
   void restore(const physics::PhysicsState& state);
   // One physics step with the drive tracking `setpoint`; the rule it broke and the body at fault, kNone
   // for a valid step (after an invalid one the world stands in the invalid state, kappa inferred there).
+  // Besides the knowledge layer's rules, two bodies overlapping deeper than the planner's max_overlap
+  // where the step ended make it invalid (physics().last_overlap() names them).
   knowledge::Validity step(const scenario::Vec2& setpoint);
   void save(physics::PhysicsState& out) const { simulation_.save(out); }
 
@@ -42,6 +44,7 @@ class CheckedSimulation {
  private:
   const knowledge::AbstractKnowledge& knowledge_;
   const knowledge::ValidityMode mode_;
+  const double max_overlap_;  // m: a step whose bodies overlap deeper is invalid
   physics::Simulation simulation_;
   // Scratch space reused by every step, so the hot loop does not allocate.
   scenario::EnvironmentState environment_;

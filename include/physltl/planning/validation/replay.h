@@ -56,8 +56,8 @@ struct Replay {
   // solve (physics::Simulation::last_step_solved): reported, not refused (docs/physics.md).
   std::vector<std::size_t> unsolved_steps;
   // The steps that overlapped two bodies deeper than any before, in order (physics::Simulation::
-  // last_overlap): the last is the plan's deepest overlap. Reported, not refused yet (docs/physics.md,
-  // "How deep bodies overlap").
+  // last_overlap): the last is the plan's deepest overlap. A step deeper than the planner's max_overlap
+  // makes the plan invalid (docs/physics.md, "No body sinks into another").
   std::vector<StepOverlap> deepening_overlaps;
   // The plan's deepest overlap of two bodies, in m: 0 when none ever overlapped.
   double deepest_overlap_m() const { return deepening_overlaps.empty() ? 0.0 : deepening_overlaps.back().overlap.depth; }
