@@ -131,16 +131,17 @@ TEST(Execute, BrakesBeforeAnOffsetFromThePlanCarriesTheRobotIntoAWall) {
   // A box pushed along lanes 5 cm wider than the robot on each side, then round a corner. A start moved
   // up to 2 cm carries on as an offset from the plan; a tolerance shrunk to the plan's clearance at the
   // current step saw it only as the robot touched a wall (14 of 20 worlds); the offset carried along the
-  // plan's next half second is seen before. No world touches a wall; 16 of 20 succeed (the other four
-  // leave the box where a replanning of 50,000 propagations finds no way on: 17 with the default budget).
+  // plan's next half second is seen before. No world touches a wall; 14 of 20 succeed (the other six
+  // leave the box where a replanning of 20,000 propagations finds no way on: 16 with 50,000, 17 with the
+  // default budget).
   const fs::path out = fresh_out_dir();
   const fs::path scenario = fs::path(kSource) / "tests" / "data" / "regression" / "grid_corner_turn.lua";
   const Result r = run("execute " + scenario.string() +
-                       " --worlds 20 --uncertainty mass=0.2,friction=0.2,start=0.02 --budget 50000 --seed 1 --quiet --out " +
+                       " --worlds 20 --uncertainty mass=0.2,friction=0.2,start=0.02 --budget 20000 --seed 1 --quiet --out " +
                        out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(slurp(out / "grid_corner_turn" / "execution.json"));
-  EXPECT_GE(j["succeeded"].get<int>(), 16);
+  EXPECT_GE(j["succeeded"].get<int>(), 14);
   for (const auto& world : j["per_world"]) {
     for (const auto& failure : world["failures"]) EXPECT_NE(failure, "touched_fixed_body") << "world " << world["index"];
   }

@@ -43,10 +43,11 @@ struct TestProblem : PreparedScenario {
     return planner_named(planner).plan(Problem{world, search_task, original, knowledge, decomposition, world.planner.time_limit}, prepared, options);
   }
 
-  PlanResult solve(std::uint64_t seed, const std::string& planner = "knowledge") const {
+  // `planner`'s search of problem() with `seed`, cut after `seconds`.
+  PlanResult solve(std::uint64_t seed, const std::string& planner = "knowledge", double seconds = 20) const {
     PlannerOptions options;
     options.seed = seed;
-    options.deadline = base::Deadline::in(20);
+    options.deadline = base::Deadline::in(seconds);
     return planner_named(planner).plan(problem(), preparation(planner), options);
   }
 

@@ -461,23 +461,23 @@ TEST(LookAhead, APuzzleIsSolvedFollowingTheOrderAndTheReplayAgrees) {
   EXPECT_EQ(replay.moved_bodies.size(), 3u);
 }
 
-// tight_store, seed 26: following the order, the physics leaves the boxes in a stage the order cannot be
-// finished from (54 of seeds 1-60 solve in 1,100 to 50,000 propagations; this one stalls). The widened
+// tight_store, seed 6: following the order, the physics leaves the boxes in a stage the order cannot be
+// finished from (57 of seeds 1-60 solve in 1,100 to 50,000 propagations; this one stalls). The widened
 // expansions start where the baseline's would (the object lead's nodes of the frontier stage), so the
 // search gets out; growing them from the order's best node instead, a seed that stalled so (seed 3 before
 // contacts became speculative: docs/physics.md) had not in 60 s.
 TEST(LookAhead, ASearchTheOrderLeadsIntoADeadEndGetsOutThroughItsEscape) {
   const TestProblem p(kPuzzles + "tight_store.lua");
   PlannerOptions options;
-  options.seed = 26;
+  options.seed = 6;
   options.deadline = base::Deadline::in(600);  // the budget stops it, never the clock
   options.threads = 1;
-  options.max_propagations = 300'000;  // it needs 177,187
+  options.max_propagations = 200'000;  // it needs 94,946
   options.parameters[push_primitives_parameter().name] = "off";  // the primitives carry the order out at once
   const PlanResult result = p.plan_task(p.task, options);
   ASSERT_TRUE(result.solved) << result.stop_reason;
   // Else this seed no longer stalls on the order, and the test no longer reaches the escape.
-  EXPECT_GT(result.stats.propagations, 100'000);
+  EXPECT_GT(result.stats.propagations, 60'000);
   const Replay replay = p.check(result.plan);
   EXPECT_TRUE(replay.validated()) << replay.failure;
 }
@@ -591,17 +591,17 @@ TEST(PushPrimitive, ASearchStoppedShortNamesThePushOfTheOrderItDidNotCarryOut) {
   EXPECT_EQ(order_push.at("push"), describe(planned, names));
 }
 
-// The puzzles of docs/benchmarks.md ("Push puzzles"): each solved on one of seeds 1..3 within the tests'
-// 20 s and validated by replay. (A search can stall in a stage the physics left unfinishable: three_rooms'
-// seed 1 pushes M3 into its door with 5 cm to spare either side of the robot and does not get out in 20 s.)
+// The puzzles of docs/benchmarks.md ("Push puzzles"): each solved on one of seeds 1..3 within 5 s and
+// validated by replay. (A search can stall in a stage the physics left unfinishable: three_rooms' seed 1
+// pushes M3 into its door with 5 cm to spare either side of the robot and does not get out in 20 s.)
 TEST(LookAhead, EveryPuzzleOfOursIsSolvedAndItsReplayAgrees) {
   const std::vector<std::string> files = files_in("puzzles");
   ASSERT_GE(files.size(), 20u);
   for (const std::string& file : files) {
     const TestProblem p(kPuzzles + file);
     EXPECT_TRUE(ahead_of(p).plan.found) << file << ": " << ahead_of(p).plan.outcome;
-    PlanResult result = p.solve(1);
-    for (std::uint64_t seed = 2; seed <= 3 && !result.solved; ++seed) result = p.solve(seed);
+    PlanResult result = p.solve(1, "knowledge", 5);
+    for (std::uint64_t seed = 2; seed <= 3 && !result.solved; ++seed) result = p.solve(seed, "knowledge", 5);
     ASSERT_TRUE(result.solved) << file << ": " << result.stop_reason;
     const Replay replay = p.check(result.plan);
     EXPECT_TRUE(replay.validated()) << file << ": " << replay.failure;
