@@ -120,9 +120,9 @@ class Simulation {
   void step(const Vec2& setpoint, std::vector<scenario::RobotContact>& contacts);
   // What the drive applied during the last step (zero before the first).
   const DriveEffort& last_drive() const;
-  // Whether ODE's constraint solver solved the last step. When Dantzig's LCP stops short ("LCP internal
+  // Whether ODE's exact solver (Dantzig's LCP) solved the last step. When it stops short ("LCP internal
   // error"), the step is taken again from where it began in 2, then 4 sub-steps; false when those failed
-  // too, and the step stands as the last try left it (docs/physics.md, "Steps the solver fails on").
+  // too, and the iterative solver took the step (docs/physics.md, "Steps the solver fails on").
   bool last_step_solved() const;
   // The deepest overlap where the last step ended.
   const Overlap& last_overlap() const;

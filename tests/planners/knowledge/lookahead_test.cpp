@@ -461,23 +461,23 @@ TEST(LookAhead, APuzzleIsSolvedFollowingTheOrderAndTheReplayAgrees) {
   EXPECT_EQ(replay.moved_bodies.size(), 3u);
 }
 
-// tight_store, seed 6: following the order, the physics leaves the boxes in a stage the order cannot be
-// finished from (57 of seeds 1-60 solve in 1,100 to 50,000 propagations; this one stalls). The widened
+// tight_store, seed 1: following the order, the physics leaves the boxes in a stage the order cannot be
+// finished from (58 of seeds 1-60 solve in 1,100 to 42,000 propagations; this one and seed 43 stall). The widened
 // expansions start where the baseline's would (the object lead's nodes of the frontier stage), so the
 // search gets out; growing them from the order's best node instead, a seed that stalled so (seed 3 before
 // contacts became speculative: docs/physics.md) had not in 60 s.
 TEST(LookAhead, ASearchTheOrderLeadsIntoADeadEndGetsOutThroughItsEscape) {
   const TestProblem p(kPuzzles + "tight_store.lua");
   PlannerOptions options;
-  options.seed = 6;
+  options.seed = 1;
   options.deadline = base::Deadline::in(600);  // the budget stops it, never the clock
   options.threads = 1;
-  options.max_propagations = 200'000;  // it needs 94,946
+  options.max_propagations = 200'000;  // it needs 68,481
   options.parameters[push_primitives_parameter().name] = "off";  // the primitives carry the order out at once
   const PlanResult result = p.plan_task(p.task, options);
   ASSERT_TRUE(result.solved) << result.stop_reason;
   // Else this seed no longer stalls on the order, and the test no longer reaches the escape.
-  EXPECT_GT(result.stats.propagations, 60'000);
+  EXPECT_GT(result.stats.propagations, 50'000);
   const Replay replay = p.check(result.plan);
   EXPECT_TRUE(replay.validated()) << replay.failure;
 }
@@ -592,8 +592,9 @@ TEST(PushPrimitive, ASearchStoppedShortNamesThePushOfTheOrderItDidNotCarryOut) {
 }
 
 // The puzzles of docs/benchmarks.md ("Push puzzles"): each solved on one of seeds 1..3 within 5 s and
-// validated by replay. (A search can stall in a stage the physics left unfinishable: three_rooms' seed 1
-// pushes M3 into its door with 5 cm to spare either side of the robot and does not get out in 20 s.)
+// validated by replay. (A search can stall in a stage the physics left unfinishable: a box pushed into a
+// one-cell door leaves the robot 5 cm either side, and three_rooms' seed 1 did not get out in 20 s before
+// failed steps went to the iterative solver; it now takes 0.04 s, its seed 3 3.7 s.)
 TEST(LookAhead, EveryPuzzleOfOursIsSolvedAndItsReplayAgrees) {
   const std::vector<std::string> files = files_in("puzzles");
   ASSERT_GE(files.size(), 20u);
