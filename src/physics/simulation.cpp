@@ -278,26 +278,31 @@ struct Simulation::Impl {
     if ((nearest - centre).squaredNorm() > 0.0) separating_axes.push_back((nearest - centre).normalized());
   }
 
+  // A corner `c` of a part's outline where its geom stands at position `p` with rotation `r` (3 x 4, row by row).
+  static Vec2 placed(const dReal* p, const dReal* r, const Vec2& c) {
+    return {p[0] + r[0] * c.x() + r[1] * c.y(), p[1] + r[4] * c.x() + r[5] * c.y()};
+  }
+
   // The corners of a part's own outline where its geom stands (none for a circle).
   static void world_corners(dGeomID part, std::vector<Vec2>& corners) {
     corners.clear();
     const auto* outline = static_cast<const PartOutline*>(dGeomGetData(part));
     const dReal* p = dGeomGetPosition(part);
-    const dReal* r = dGeomGetRotation(part);  // 3 x 4, row by row
-    for (const Vec2& c : outline->corners) corners.emplace_back(p[0] + r[0] * c.x() + r[1] * c.y(), p[1] + r[4] * c.x() + r[5] * c.y());
+    const dReal* r = dGeomGetRotation(part);
+    for (const Vec2& c : outline->corners) corners.push_back(placed(p, r, c));
   }
 
   static std::pair<double, double> projection(dGeomID part, const Vec2& direction) {
     const auto* outline = static_cast<const PartOutline*>(dGeomGetData(part));
     const dReal* p = dGeomGetPosition(part);
-    const dReal* r = dGeomGetRotation(part);  // 3 x 4, row by row
+    const dReal* r = dGeomGetRotation(part);
     if (outline->corners.empty()) {
       const double centre = p[0] * direction.x() + p[1] * direction.y();
       return {centre - outline->radius, centre + outline->radius};
     }
     double low = std::numeric_limits<double>::infinity(), high = -low;
     for (const Vec2& c : outline->corners) {
-      const Vec2 corner(p[0] + r[0] * c.x() + r[1] * c.y(), p[1] + r[4] * c.x() + r[5] * c.y());
+      const Vec2 corner = placed(p, r, c);
       low = std::min(low, corner.dot(direction));
       high = std::max(high, corner.dot(direction));
     }
@@ -775,11 +780,19 @@ struct Simulation::Impl {
       gather_pair_contacts(a, b);
       const bool inflated = a.inflation + b.inflation > 0.0;
       const dContactGeom* deepest = nullptr;
+      const dContactGeom* measured = nullptr;  // the last contact whose two parts exact_depth measured
       double depth = -std::numeric_limits<double>::infinity(), exact = 0.0;
       for (const dContactGeom& found : pair_contacts) {
         const double d = inflated ? true_depth(found) : found.depth;
         if (d > depth) depth = d, deepest = &found;
-        if (d > 0.0) exact = std::max(exact, inflated ? exact_depth(found.g1, found.g2) : d);
+        if (d <= 0.0) continue;
+        if (!inflated) {
+          exact = std::max(exact, d);
+        } else if (measured == nullptr || measured->g1 != found.g1 || measured->g2 != found.g2) {
+          // A pair of parts' contacts come one after another: their exact depth is measured once.
+          exact = std::max(exact, exact_depth(found.g1, found.g2));
+          measured = &found;
+        }
       }
       if (deepest == nullptr) return;
       if (exact > overlap.depth) overlap = {exact, body_id(a), body_id(b)};
