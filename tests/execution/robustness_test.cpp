@@ -139,7 +139,7 @@ TEST_F(ARobustPlan, IsDeterministicForASeedAndCountsEveryFailedWorld) {
 
 // Improvement's shortcuts graze walls and clip regions: valid in the model, missed in a world a few
 // centimetres off it. A margin keeps what the first plan kept, and the improved plans of rooms.lua
-// succeed in more perturbed worlds (seeds 1..3: 38 of 60 against 6; docs/robustness.md).
+// succeed in more perturbed worlds (seeds 1..3: 22 of 60 against 6; docs/robustness.md).
 TEST(ImprovementMargin, MakesImprovedPlansSucceedInMorePerturbedWorlds) {
   TestProblem p("rooms.lua");
   scenario::Uncertainty u;
