@@ -39,7 +39,10 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   if (entry.sweep) settings_of_case.push_back(entry.sweep->key + "=" + value);
   c->world = setup::load_with_settings(entry.path, settings_of_case);
   c->settings = setup::run_settings(c->world, settings.flags);
-  c->problem = std::make_unique<planning::PlanningProblem>(c->world, c->settings.time_limit_s);
+  // Before any unit and outside their time limits; Ctrl-C stops it.
+  const base::Deadline interruptible(base::Deadline::Clock::time_point::max(), &common::stop_flag());
+  c->problem = std::make_unique<planning::PlanningProblem>(c->world, c->settings.time_limit_s, interruptible);
+  interruptible.check();  // a reasoning cut short by Ctrl-C concludes nothing
   if (!c->problem->feasible()) {
     throw common::InfeasibleTask(fmt::format("{}{}: {}", entry.path, entry.sweep ? " with " + entry.sweep->key + "=" + value : "",
                                      c->problem->reasoning().task.infeasibility()));
@@ -56,8 +59,6 @@ std::unique_ptr<BenchCase> load_case(const ScenarioEntry& entry, size_t index, c
   results.robustness = settings.robustness;
   results.parameter_notes = setup::parameter_notes(settings.flags.parameters);
   results.started_at = local_time_now();
-  // Before any unit and outside their time limits; Ctrl-C stops it.
-  const base::Deadline interruptible(base::Deadline::Clock::time_point::max(), &common::stop_flag());
   results.shortest_free_path_m = planning::shortest_free_path_length(c->world, c->problem->as_written(), interruptible);
   results.shortest_push_free_path_m =
       planning::shortest_push_free_path_length(c->world, c->problem->as_written(), interruptible);

@@ -1,5 +1,6 @@
 #include "physltl/geometry/disc_field.h"
 
+#include "physltl/geometry/free_space.h"
 #include "physltl/geometry/shortest_paths.h"
 
 #include <algorithm>
@@ -10,17 +11,21 @@ namespace physltl::geometry {
 namespace {
 
 constexpr double kSqrt2 = 1.4142135623730951;
+constexpr int kCellsBetweenChecks = 4096;  // of the deadline: a fraction of a millisecond of work
 
 }  // namespace
 
-DiscField::DiscField(const Rect& bounds, double cell, double radius, std::span<const Footprint> obstacles)
+DiscField::DiscField(const Rect& bounds, double cell, double radius, std::span<const Footprint> obstacles,
+                     const base::Deadline& deadline)
     : grid_(UniformGrid::covering(bounds, cell)), free_(grid_.size(), true), distance_(free_.size(), kUnreachable) {
   const double clearance = radius - cell * kSqrt2 / 2;  // less half a diagonal: see the header
   const Rect inner{bounds.min + Vec2::Constant(clearance), bounds.max - Vec2::Constant(clearance)};
   for (int iy = 0; iy < grid_.rows(); ++iy) {
+    if (iy % 64 == 0) deadline.check();
     for (int ix = 0; ix < grid_.columns(); ++ix) free_[grid_.index(ix, iy)] = clearance <= 0 || inner.contains(grid_.centre(ix, iy));
   }
   for (const Footprint& obstacle : obstacles) {
+    deadline.check();
     // Only the cells near the obstacle can be within reach of it.
     const Vec2& at = obstacle.pose.position;
     const double reach = obstacle.shape.bound_radius() + std::max(clearance, 0.0);
@@ -35,15 +40,32 @@ DiscField::DiscField(const Rect& bounds, double cell, double radius, std::span<c
   }
 }
 
-void DiscField::compute_distances(const std::function<bool(const Vec2& centre, double half_edge)>& is_target) {
-  ShortestPaths ways(free_.size());
-  for (int iy = 0; iy < grid_.rows(); ++iy) {
-    for (int ix = 0; ix < grid_.columns(); ++ix) {
-      const std::size_t i = grid_.index(ix, iy);
-      if (free_[i] && is_target(grid_.centre(ix, iy), grid_.cell() / 2)) ways.seed(static_cast<int>(i), 0.0);
+std::vector<bool> DiscField::cells_near(std::span<const Polygon* const> regions, double within) const {
+  std::vector<bool> near(free_.size(), false);
+  for (const Polygon* region : regions) {
+    const Rect box = region->bounds();
+    const int x0 = grid_.column(box.min.x() - within), x1 = grid_.column(box.max.x() + within);
+    const int y0 = grid_.row(box.min.y() - within), y1 = grid_.row(box.max.y() + within);
+    for (int iy = y0; iy <= y1; ++iy) {
+      for (int ix = x0; ix <= x1; ++ix) {
+        const std::size_t i = grid_.index(ix, iy);
+        if (near[i]) continue;
+        const Vec2 centre = grid_.centre(ix, iy);
+        near[i] = within > 0.0 ? geometry::distance(centre, *region) <= within : region->contains(centre);
+      }
     }
   }
+  return near;
+}
+
+void DiscField::compute_distances(const std::vector<bool>& targets, const base::Deadline& deadline) {
+  ShortestPaths ways(free_.size());
+  for (std::size_t i = 0; i < free_.size(); ++i) {
+    if (free_[i] && targets[i]) ways.seed(static_cast<int>(i), 0.0);
+  }
+  int settled = 0;
   ways.run([&](int i, double d) {
+    if (++settled % kCellsBetweenChecks == 0) deadline.check();
     const int ix = grid_.column_of(static_cast<std::size_t>(i)), iy = grid_.row_of(static_cast<std::size_t>(i));
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {

@@ -197,7 +197,7 @@ class Explainer {
 // (a group of twenty boxes asks for one).
 class ObjectJudge {
  public:
-  explicit ObjectJudge(const AbstractKnowledge& k) : k_(k) {}
+  ObjectJudge(const AbstractKnowledge& k, const base::Deadline& deadline) : k_(k), deadline_(deadline) {}
 
   // The verdict, and in `why` the kind of unreachability when it is unreachable.
   ObjectVerdict judge(const ObjectProposition& object, Unreachability& why) {
@@ -216,7 +216,7 @@ class ObjectJudge {
         verdict.reason = fmt::format("{}: {} is {}", object.name, body.name, body.class_reason);
       } else if (const double inscribed = body.footprint.shape.centre_clearance();
                  // A centre outside its body (a concave one's) says nothing of where the body fits.
-                 inscribed > 0.0 && !field(inscribed, object.regions).reaches_target(body.footprint.pose.position)) {
+                 inscribed > 0.0 && !can_get_in(inscribed, object.regions, body.footprint.pose.position)) {
         verdict.reachable = false, why = Unreachability::kBodyCannotGetThere;
         const std::string unpushable = unpushable_names(k_);
         verdict.reason = fmt::format("{}: no way for the centre of {} into {}: every way in is narrower than {} ({:.2f} m "
@@ -241,6 +241,17 @@ class ObjectJudge {
     });
   }
 
+  // Whether a disc of radius `inscribed` at `from` can get into one of `regions`; true, concluding nothing,
+  // once the deadline has come (the run it belongs to then ends at its next check).
+  bool can_get_in(double inscribed, const std::vector<int>& regions, const Vec2& from) {
+    if (deadline_.reached()) return true;
+    try {
+      return field(inscribed, regions).reaches_target(from);
+    } catch (const base::DeadlineReached&) {
+      return true;
+    }
+  }
+
   // The field of a disc of radius `inscribed` towards `regions`, among what cannot move (the bodies too
   // heavy to push included: none of them is a body being judged, which can move).
   const geometry::DiscField& field(double inscribed, const std::vector<int>& regions) {
@@ -254,16 +265,17 @@ class ObjectJudge {
     // Fine enough that the margin the soundness costs (half a cell diagonal) is a few centimetres; a
     // million cells at most.
     const double cell = std::max(std::clamp(inscribed / 10.0, 0.01, 0.05), std::sqrt(size.x() * size.y() / 1e6));
-    known = std::make_unique<geometry::DiscField>(k_.workspace, std::min(cell, inscribed), inscribed, obstacles);
-    known->compute_distances([&](const Vec2& centre, double half_edge) {
-      return std::any_of(regions.begin(), regions.end(), [&](int r) {
-        return geometry::distance(centre, k_.propositions[static_cast<size_t>(r)].region) <= half_edge * std::sqrt(2.0);
-      });
-    });
+    auto made = std::make_unique<geometry::DiscField>(k_.workspace, std::min(cell, inscribed), inscribed, obstacles, deadline_);
+    std::vector<const geometry::Polygon*> polygons;
+    for (int r : regions) polygons.push_back(&k_.propositions[static_cast<size_t>(r)].region);
+    // A cell whose square touches a region is a target: within half its diagonal of it.
+    made->compute_distances(made->cells_near(polygons, made->cell() * std::sqrt(2.0) / 2), deadline_);
+    known = std::move(made);  // only once whole: a field cut short by the deadline is not kept
     return *known;
   }
 
   const AbstractKnowledge& k_;
+  const base::Deadline& deadline_;
   std::map<std::pair<double, std::vector<int>>, std::unique_ptr<geometry::DiscField>> fields_;
 };
 
@@ -298,7 +310,8 @@ double grid_cell_size(const AbstractKnowledge& knowledge) {
   return std::max(preferred, needed_for_cap);
 }
 
-Feasibility evaluate_feasibility(const AbstractKnowledge& knowledge, std::span<const ObjectProposition> objects) {
+Feasibility evaluate_feasibility(const AbstractKnowledge& knowledge, std::span<const ObjectProposition> objects,
+                                 const base::Deadline& deadline) {
   Feasibility result;
   result.cell_size = grid_cell_size(knowledge);
   const Grid grid = Grid::covering(knowledge.workspace, result.cell_size);
@@ -307,7 +320,7 @@ Feasibility evaluate_feasibility(const AbstractKnowledge& knowledge, std::span<c
   for (const Proposition& p : knowledge.propositions) {
     if (!reaches(grid, robot_space, p.region)) result.invalid.push_back(explainer.explain(p));
   }
-  ObjectJudge judge(knowledge);
+  ObjectJudge judge(knowledge, deadline);
   for (const ObjectProposition& object : objects) {
     Unreachability why = Unreachability::kBodyCannotGetThere;
     result.objects.push_back(judge.judge(object, why));

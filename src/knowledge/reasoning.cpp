@@ -48,11 +48,11 @@ std::optional<ltl::Formula> Reasoning::simplified_formula() const {
   return task.semantic ? task.semantic->formula : task.normal_form;
 }
 
-Reasoning reason_about(const scenario::World& world) {
+Reasoning reason_about(const scenario::World& world, const base::Deadline& deadline) {
   AbstractKnowledge k = formulate(world);
   scenario::EnvironmentState state = scenario::EnvironmentState::initial(world);
   Kappa kappa = infer(k, state);
-  Feasibility feasibility = evaluate_feasibility(k, object_propositions(world));
+  Feasibility feasibility = evaluate_feasibility(k, object_propositions(world), deadline);
   ltl::Analysis task = [&] {
     try {
       return ltl::analyse(world.task.parsed, feasibility.invalid_names(), feasibility.always_true_names());

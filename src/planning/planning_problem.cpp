@@ -9,10 +9,11 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-PlanningProblem::PlanningProblem(const scenario::World& world, double time_limit_s, std::chrono::steady_clock::time_point started)
+PlanningProblem::PlanningProblem(const scenario::World& world, double time_limit_s, const base::Deadline& deadline,
+                                 std::chrono::steady_clock::time_point started)
     : world_(world),
       time_limit_s_(time_limit_s),
-      reasoning_(knowledge::reason_about(world)),
+      reasoning_(knowledge::reason_about(world, deadline)),
       prepared_(prepare(world, reasoning_)),
       preparation_s_(seconds_since(started)) {}
 

@@ -7,10 +7,10 @@
 // place the real disc can reach lies in a free cell, and any continuous way it can take runs through
 // 8-connected free cells. Distances are along those cells (8-connected, diagonal steps sqrt(2) cells).
 
+#include "physltl/base/deadline.h"
 #include "physltl/geometry/shape.h"
 #include "physltl/geometry/uniform_grid.h"
 
-#include <functional>
 #include <limits>
 #include <span>
 #include <vector>
@@ -21,12 +21,17 @@ class DiscField {
  public:
   static constexpr double kUnreachable = std::numeric_limits<double>::infinity();
 
-  // `cell`: the grid's cell edge, in metres.
-  DiscField(const Rect& bounds, double cell, double radius, std::span<const Footprint> obstacles);
+  // `cell`: the grid's cell edge, in metres. A field has up to millions of cells: the constructor and
+  // compute_distances check `deadline` as they go and throw DeadlineReached.
+  DiscField(const Rect& bounds, double cell, double radius, std::span<const Footprint> obstacles, const base::Deadline& deadline = {});
 
-  // Distances to the free cells for which `is_target` holds of their square (given as its centre and half
-  // edge), by Dijkstra over the free cells.
-  void compute_distances(const std::function<bool(const Vec2& centre, double half_edge)>& is_target);
+  // One flag a cell: whether its centre lies within `within` metres of one of `regions` (inside one, when
+  // 0). Each region's cells are found from its bounding box, so the cost grows with the regions' area, not
+  // with cells times regions (a level of 250 goals has 250 regions).
+  std::vector<bool> cells_near(std::span<const Polygon* const> regions, double within) const;
+  // Distances to the free cells `targets` marks (one flag a cell, as cells_near gives), by Dijkstra over
+  // the free cells.
+  void compute_distances(const std::vector<bool>& targets, const base::Deadline& deadline = {});
   // Distance from the cell of `p` to the nearest target (0 in a target cell); kUnreachable when the cell
   // is not free or no target is connected to it.
   double distance(const Vec2& p) const;

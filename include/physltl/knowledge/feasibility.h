@@ -3,6 +3,7 @@
 // flood fill over a grid in the robot's configuration space (workspace minus fixed bodies and bodies too
 // heavy to push, each grown by the robot's radius). Movable bodies never block: the robot pushes them.
 
+#include "physltl/base/deadline.h"
 #include "physltl/knowledge/abstract_knowledge.h"
 
 #include <span>
@@ -65,6 +66,10 @@ double grid_cell_size(const AbstractKnowledge& knowledge);
 // a disc of its inscribed radius among the fixed bodies, the bodies too heavy to push and the workspace's
 // edge (geometry::DiscField), makes its proposition unreachable. A proposition about a group holds only
 // when each of its bodies is in one of its regions: one body that can be in none makes it unreachable.
-Feasibility evaluate_feasibility(const AbstractKnowledge& knowledge, std::span<const ObjectProposition> objects = {});
+// The fields are large (up to a million cells each): once `deadline` comes, the object propositions not yet
+// judged are left reachable (nothing is concluded without its field), and the run that gave the deadline
+// ends at its next check.
+Feasibility evaluate_feasibility(const AbstractKnowledge& knowledge, std::span<const ObjectProposition> objects = {},
+                                 const base::Deadline& deadline = {});
 
 }  // namespace physltl::knowledge

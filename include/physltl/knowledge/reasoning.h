@@ -30,8 +30,9 @@ struct Reasoning {
   std::optional<ltl::Formula> simplified_formula() const;
 };
 
-// Pure and deterministic. Expects a World that passed scenario validation (its formula parses and names
-// only its regions); otherwise throws ltl::ParseError.
-Reasoning reason_about(const scenario::World& world);
+// Pure and deterministic until `deadline` comes; after it, the object propositions not yet judged stay
+// reachable (evaluate_feasibility). Expects a World that passed scenario validation (its formula parses and
+// names only its regions); otherwise throws ltl::ParseError.
+Reasoning reason_about(const scenario::World& world, const base::Deadline& deadline = {});
 
 }  // namespace physltl::knowledge

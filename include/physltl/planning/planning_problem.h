@@ -22,9 +22,10 @@ namespace physltl::planning {
 class PlanningProblem {
  public:
   // Reasons about `world`, which must outlive this object; a feasible task is also prepared for the
-  // planners, for runs of `time_limit_s` (Problem::time_limit_s). `started`: when the run began, for
-  // preparation_s().
-  PlanningProblem(const scenario::World& world, double time_limit_s,
+  // planners, for runs of `time_limit_s` (Problem::time_limit_s). The reasoning stops judging at
+  // `deadline` (knowledge::reason_about): give the run's, whose preparation then ends at once. `started`:
+  // when the run began, for preparation_s().
+  PlanningProblem(const scenario::World& world, double time_limit_s, const base::Deadline& deadline = {},
                   std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now());
   // For runs of the time limit the World's planner { } gives.
   explicit PlanningProblem(const scenario::World& world) : PlanningProblem(world, world.planner.time_limit) {}

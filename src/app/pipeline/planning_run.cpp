@@ -14,7 +14,7 @@ namespace physltl::app {
 PlanningRun::PlanningRun(const scenario::World& world, const setup::RunSettings& settings, const planning::PlannerEntry& planner)
     : settings_(settings),
       deadline_(base::Deadline::in(settings.time_limit_s, &common::stop_flag())),
-      problem_(world, settings.time_limit_s),
+      problem_(world, settings.time_limit_s, deadline_),
       planner_(planner) {}
 
 planning::ValidatedPlan PlanningRun::solve() const {

@@ -66,13 +66,15 @@ const geometry::DiscField& ObjectLead::way(const physltl::knowledge::Labelling::
   const double cell = std::max({0.5 * inscribed, 0.05, std::sqrt(size.x() * size.y() / kMaxWayCells)});
   // A centre outside its (concave) body: the centre's own way, on the grid of the workspace's size.
   way = std::make_unique<geometry::DiscField>(knowledge_.workspace, inscribed > 0.0 ? std::min(cell, inscribed) : cell, inscribed, obstacles);
-  const auto in = [&](const std::vector<int>& regions, const Vec2& centre) {
-    return std::any_of(regions.begin(), regions.end(), [&](int r) { return world_.regions[static_cast<std::size_t>(r)].polygon.contains(centre); });
-  };
-  way->compute_distances([&](const Vec2& centre, double) {
-    if (place > 0) return in(part.region_sets[static_cast<std::size_t>(place - 1)], centre);
-    return std::none_of(part.region_sets.begin(), part.region_sets.end(), [&](const std::vector<int>& set) { return in(set, centre); });
-  });
+  // Place 0 is outside every region of the part's sets; place k inside one of set k.
+  std::vector<const geometry::Polygon*> regions;
+  for (std::size_t set = 0; set < part.region_sets.size(); ++set) {
+    if (place > 0 && set != static_cast<std::size_t>(place - 1)) continue;
+    for (int r : part.region_sets[set]) regions.push_back(&world_.regions[static_cast<std::size_t>(r)].polygon);
+  }
+  std::vector<bool> targets = way->cells_near(regions, 0.0);
+  if (place == 0) targets.flip();
+  way->compute_distances(targets);
   return *way;
 }
 

@@ -263,6 +263,15 @@ int covering(const lookahead::PushLattice& lattice, const std::vector<int>& cell
   return found;
 }
 
+// A lattice of a large workspace has hundreds of thousands of places to test: a deadline that has come
+// stops it being built.
+TEST(LookAhead, ADeadlineThatHasComeStopsTheLatticeBeingBuilt) {
+  const TestProblem p(kShapes + files_in("shapes").front());
+  std::string why_not;
+  EXPECT_THROW(lookahead::PushLattice::build(p.world, p.knowledge, p.task.labelling, base::Deadline::in(0.0), why_not),
+               base::DeadlineReached);
+}
+
 // Each puzzle of tests/data/shapes replays its reference solution on its grid lattice, one move
 // at a time (a walk between places no body covers, a push moving one body one place into places none
 // covers), its pushes as many as its comment says, and ends with every named body where the task wants
@@ -274,7 +283,7 @@ TEST(LookAhead, EveryMixedSizePuzzlesReferenceSolutionReplaysOnItsGrid) {
   for (const std::string& file : files) {
     const TestProblem p(kShapes + file);
     std::string why_not;
-    const auto lattice = lookahead::PushLattice::build(p.world, p.knowledge, p.task.labelling, why_not);
+    const auto lattice = lookahead::PushLattice::build(p.world, p.knowledge, p.task.labelling, {}, why_not);
     ASSERT_TRUE(lattice.has_value()) << file << ": " << why_not;
     EXPECT_FALSE(lattice->unit_bodies()) << file;
     const auto [moves, claimed] = reference_of(std::string(PHYSLTL_SOURCE_DIR) + "/tests/data/shapes/" + file);

@@ -34,7 +34,7 @@ constexpr double kWayCell = 0.05;  // m: the grid of that check
 // Why the look-ahead applies for World body `b`: it cannot get to `regions` with room for the robot beside
 // it; nothing when it can (or cannot move at all).
 std::optional<std::string> narrow_way_of(const scenario::World& world, const physltl::knowledge::AbstractKnowledge& knowledge, int b,
-                                         const std::vector<int>& regions) {
+                                         const std::vector<int>& regions, const base::Deadline& deadline) {
   const auto& body = knowledge.movable_bodies[static_cast<std::size_t>(b)];
   if (body.body_class == physltl::knowledge::BodyClass::kFixed) return std::nullopt;
   std::vector<geometry::Footprint> obstacles;
@@ -48,10 +48,10 @@ std::optional<std::string> narrow_way_of(const scenario::World& world, const phy
   const double side = shape.parts().size() > 1 ? geometry::bounds(shape, {}).size().minCoeff() : 2 * shape.centre_clearance();
   const double width = side + kRobotDiametersBeside * 2 * knowledge.robot.radius;
   const double cell = std::max(kWayCell, std::sqrt(knowledge.workspace.size().prod() / 250'000.0));
-  geometry::DiscField wide(knowledge.workspace, cell, width / 2, obstacles);
-  wide.compute_distances([&](const geometry::Vec2& centre, double) {
-    return std::any_of(regions.begin(), regions.end(), [&](int r) { return world.regions[static_cast<std::size_t>(r)].polygon.contains(centre); });
-  });
+  geometry::DiscField wide(knowledge.workspace, cell, width / 2, obstacles, deadline);
+  std::vector<const geometry::Polygon*> polygons;
+  for (int r : regions) polygons.push_back(&world.regions[static_cast<std::size_t>(r)].polygon);
+  wide.compute_distances(wide.cells_near(polygons, 0.0), deadline);
   if (wide.reaches_target(body.footprint.pose.position)) return std::nullopt;
   return fmt::format("{}'s way to its regions is narrower than {:.2f} m (its width {:.2f} m and two robot diameters) "
                      "among the walls and the other bodies",
@@ -62,12 +62,12 @@ std::optional<std::string> narrow_way_of(const scenario::World& world, const phy
 // among the walls and the other bodies where they stand (boxes side by side need an order as much as a
 // corridor does). Nothing when every named body can.
 std::optional<std::string> narrow_way(const scenario::World& world, const physltl::knowledge::AbstractKnowledge& knowledge,
-                                      const physltl::knowledge::Labelling& labelling) {
+                                      const physltl::knowledge::Labelling& labelling, const base::Deadline& deadline) {
   for (const physltl::knowledge::Labelling::NamedPart& named : labelling.named_parts()) {
     std::vector<int> regions;
     for (const std::vector<int>& set : named.region_sets) regions.insert(regions.end(), set.begin(), set.end());
     for (int b : named.bodies) {
-      if (auto why = narrow_way_of(world, knowledge, b, regions)) return why;
+      if (auto why = narrow_way_of(world, knowledge, b, regions, deadline)) return why;
     }
   }
   return std::nullopt;
@@ -103,14 +103,14 @@ Lookahead look_ahead(const scenario::World& world, const physltl::knowledge::Abs
     plan.outcome = "not searched";
     return result;
   }
-  const std::optional<std::string> narrow = narrow_way(world, knowledge, task.labelling);
+  const std::optional<std::string> narrow = narrow_way(world, knowledge, task.labelling, deadline);
   if (!narrow) {
     plan.rule.reason = "every named body has room for the robot beside it all the way to its regions, among the walls and the other bodies";
     plan.outcome = "not searched";
     return result;
   }
   std::string why_not;
-  result.lattice = PushLattice::build(world, knowledge, task.labelling, why_not);
+  result.lattice = PushLattice::build(world, knowledge, task.labelling, deadline, why_not);
   if (!result.lattice) {
     plan.rule.reason = *narrow + ", but " + why_not;
     plan.outcome = "not searched";

@@ -17,6 +17,7 @@ constexpr double kAlongAxis = 0.9;  // cosine: a face's push counts as a lattice
 // this far past none of them.
 constexpr double kWholeCells = 0.02;
 constexpr double kCoverTolerance = 1e-6;  // m
+constexpr int kPlacesBetweenChecks = 4096;  // of the deadline: a fraction of a millisecond of work
 
 bool square(double yaw) {
   const double quarter = std::numbers::pi / 2;
@@ -26,7 +27,8 @@ bool square(double yaw) {
 }  // namespace
 
 std::optional<PushLattice> PushLattice::build(const scenario::World& world, const physltl::knowledge::AbstractKnowledge& knowledge,
-                                              const physltl::knowledge::Labelling& labelling, std::string& why_not) {
+                                              const physltl::knowledge::Labelling& labelling, const base::Deadline& deadline,
+                                              std::string& why_not) {
   PushLattice lattice;
   if (labelling.named_parts().empty()) {
     why_not = "the task names no body";
@@ -56,7 +58,12 @@ std::optional<PushLattice> PushLattice::build(const scenario::World& world, cons
       lattice.unit_bodies_ ? anchor_body.pose.position
                            : geometry::bounds(anchor_body.shape, anchor_body.pose).min + geometry::Vec2::Constant((lattice.step_ - kLatticeGap) / 2);
   lattice.anchor_at(first_place, knowledge.workspace);
-  lattice.mark_robot_places(walls, knowledge.workspace, knowledge.robot.radius);
+  std::vector<geometry::Rect> wall_bounds;
+  for (const geometry::Footprint& w : walls) wall_bounds.push_back(geometry::bounds(w.shape, w.pose));
+  double reach = knowledge.robot.radius;
+  for (int b : lattice.bodies_) reach = std::max(reach, knowledge.movable_bodies[static_cast<std::size_t>(b)].footprint.shape.bound_radius());
+  const Walls bucketed{std::move(walls), geometry::RectGrid(wall_bounds, reach + kTouch)};
+  lattice.mark_robot_places(bucketed, knowledge.workspace, knowledge.robot.radius, deadline);
   // The region of each place, the same for every unit body (a larger body's centre is off its place).
   const physltl::knowledge::RegionMap regions(world);
   std::vector<int> region_of(lattice.unit_bodies_ ? static_cast<std::size_t>(lattice.cells()) : 0);
@@ -66,7 +73,7 @@ std::optional<PushLattice> PushLattice::build(const scenario::World& world, cons
       why_not = knowledge.movable_bodies[static_cast<std::size_t>(lattice.bodies_[k])].name + " does not cover whole places of the grid";
       return std::nullopt;
     }
-    if (!lattice.add_body(k, regions, region_of, knowledge, labelling, walls, why_not)) return std::nullopt;
+    if (!lattice.add_body(k, regions, region_of, knowledge, labelling, bucketed, deadline, why_not)) return std::nullopt;
   }
   return lattice;
 }
@@ -222,17 +229,24 @@ void PushLattice::anchor_at(const geometry::Vec2& a, const geometry::Rect& ws) {
   }
 }
 
-void PushLattice::mark_robot_places(const std::vector<geometry::Footprint>& walls, const geometry::Rect& ws, double r) {
+void PushLattice::mark_robot_places(const Walls& walls, const geometry::Rect& ws, double r, const base::Deadline& deadline) {
   const auto disc_free = [&](const geometry::Vec2& p) {
     if (p.x() - r < ws.min.x() || p.y() - r < ws.min.y() || p.x() + r > ws.max.x() || p.y() + r > ws.max.y()) return false;
-    return std::none_of(walls.begin(), walls.end(),
-                        [&](const geometry::Footprint& w) { return geometry::overlap(w.shape, w.pose, p, r, kTouch); });
+    const std::span<const int> near = walls.near.near(p);
+    return std::none_of(near.begin(), near.end(), [&](int i) {
+      const geometry::Footprint& w = walls.footprints[static_cast<std::size_t>(i)];
+      return geometry::overlap(w.shape, w.pose, p, r, kTouch);
+    });
   };
   const int n = cells();
   robot_free_.resize(static_cast<std::size_t>(n));
-  for (int c = 0; c < n; ++c) robot_free_[static_cast<std::size_t>(c)] = disc_free(centre(c));
+  for (int c = 0; c < n; ++c) {
+    if (c % kPlacesBetweenChecks == 0) deadline.check();
+    robot_free_[static_cast<std::size_t>(c)] = disc_free(centre(c));
+  }
   robot_passes_.assign(static_cast<std::size_t>(n) * kDirections, false);
   for (int c = 0; c < n; ++c) {
+    if (c % kPlacesBetweenChecks == 0) deadline.check();
     for (int d = 0; d < kDirections; ++d) {
       const int next = neighbour(c, d);
       robot_passes_[static_cast<std::size_t>(c) * kDirections + static_cast<std::size_t>(d)] =
@@ -243,7 +257,7 @@ void PushLattice::mark_robot_places(const std::vector<geometry::Footprint>& wall
 
 bool PushLattice::add_body(std::size_t k, const physltl::knowledge::RegionMap& regions, const std::vector<int>& region_of,
                            const physltl::knowledge::AbstractKnowledge& knowledge,
-                           const physltl::knowledge::Labelling& labelling, const std::vector<geometry::Footprint>& walls,
+                           const physltl::knowledge::Labelling& labelling, const Walls& walls, const base::Deadline& deadline,
                            std::string& why_not) {
   const int b = bodies_[k];
   const auto& body = knowledge.movable_bodies[static_cast<std::size_t>(b)];
@@ -256,12 +270,15 @@ bool PushLattice::add_body(std::size_t k, const physltl::knowledge::RegionMap& r
   std::vector<bool> fits(static_cast<std::size_t>(n));
   const std::size_t cover = cover_[k].size();
   for (int c = 0; c < n; ++c) {
+    if (c % kPlacesBetweenChecks == 0) deadline.check();
     const geometry::Pose2 pose{body_centre(static_cast<int>(k), c), body.footprint.pose.yaw};
     std::size_t covered = 0;
     for_each_cover(static_cast<int>(k), c, [&](int) { ++covered; });
+    const std::span<const int> near = walls.near.near(pose.position);
     fits[static_cast<std::size_t>(c)] =
         covered == cover && geometry::inside(body.footprint.shape, pose, knowledge.workspace, kTouch) &&
-        std::none_of(walls.begin(), walls.end(), [&](const geometry::Footprint& w) {
+        std::none_of(near.begin(), near.end(), [&](int i) {
+          const geometry::Footprint& w = walls.footprints[static_cast<std::size_t>(i)];
           return geometry::overlap(body.footprint.shape, pose, w.shape, w.pose, kTouch);
         });
   }

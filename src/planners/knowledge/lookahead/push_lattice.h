@@ -12,6 +12,8 @@
 //   anchor); a push moves it one place, the robot behind the face it pushes, nearest the body's centre.
 //   Bodies of one size on the walls' grid make the first way (Sokoban's levels).
 
+#include "physltl/base/deadline.h"
+#include "physltl/geometry/rect_grid.h"
 #include "physltl/geometry/uniform_grid.h"
 #include "physltl/knowledge/abstract_knowledge.h"
 #include "physltl/knowledge/labelling.h"
@@ -39,9 +41,11 @@ inline constexpr int perpendicular(int d) { return d ^ 2; }  // a direction alon
 
 class PushLattice {
  public:
-  // Nothing, with `why_not` said, when the World's pushable bodies do not stand on one lattice.
+  // Nothing, with `why_not` said, when the World's pushable bodies do not stand on one lattice. A large
+  // workspace has hundreds of thousands of places: checks `deadline` as it goes (DeadlineReached).
   static std::optional<PushLattice> build(const scenario::World& world, const physltl::knowledge::AbstractKnowledge& knowledge,
-                                          const physltl::knowledge::Labelling& labelling, std::string& why_not);
+                                          const physltl::knowledge::Labelling& labelling, const base::Deadline& deadline,
+                                          std::string& why_not);
 
   double step() const { return step_; }
   // Whether every body covers one place (the first way above): the search's deadlock rules, tunnels, goal
@@ -123,13 +127,19 @@ class PushLattice {
   bool take_bodies(const physltl::knowledge::AbstractKnowledge& knowledge, std::vector<geometry::Footprint>& walls, std::string& why_not);
   // The places: one at `anchor`, the others a step apart from it across the workspace.
   void anchor_at(const geometry::Vec2& anchor, const geometry::Rect& workspace);
-  void mark_robot_places(const std::vector<geometry::Footprint>& walls, const geometry::Rect& workspace, double robot_radius);
+  // The walls (fixed bodies and those too heavy to push), bucketed: a place asks only the walls near it.
+  struct Walls {
+    std::vector<geometry::Footprint> footprints;
+    geometry::RectGrid near;  // within reach of the robot and of every lattice body about its centre
+  };
+  void mark_robot_places(const Walls& walls, const geometry::Rect& workspace, double robot_radius, const base::Deadline& deadline);
   // Where lattice body k fits, how it may be pushed, its places for the task (`region_of`: each place's
   // World region, -1 for none, where a unit body's centre is; `regions` for a larger body's centre);
   // false, with why_not, when it stands between places.
   bool add_body(std::size_t k, const physltl::knowledge::RegionMap& regions, const std::vector<int>& region_of,
                 const physltl::knowledge::AbstractKnowledge& knowledge,
-                const physltl::knowledge::Labelling& labelling, const std::vector<geometry::Footprint>& walls, std::string& why_not);
+                const physltl::knowledge::Labelling& labelling, const Walls& walls, const base::Deadline& deadline,
+                std::string& why_not);
 
   double step_ = 0.0;
   geometry::Vec2 origin_ = geometry::Vec2::Zero();  // the centre of place 0

@@ -122,7 +122,7 @@ std::vector<int> PushSearcher::pushes_to_cells(int k, const std::vector<int>& ta
   return left;
 }
 
-PushSearcher::Goals PushSearcher::goals_from(int stage) const {
+PushSearcher::Goals PushSearcher::goals_from(int stage, const base::Deadline& deadline) const {
   const int bodies = static_cast<int>(lattice_.bodies().size());
   // The places of the named bodies in each fact set that would end the pushing from `stage`.
   std::set<std::vector<int>> endings;
@@ -157,11 +157,11 @@ PushSearcher::Goals PushSearcher::goals_from(int stage) const {
       if (place > 0) tables[static_cast<std::size_t>(place)] = pushes_to(k, {place});
     }
   }
-  add_matchings(goals);
+  add_matchings(goals, deadline);
   return goals;
 }
 
-void PushSearcher::add_matchings(Goals& goals) const {
+void PushSearcher::add_matchings(Goals& goals, const base::Deadline& deadline) const {
   const int bodies = static_cast<int>(lattice_.bodies().size());
   goals.matched.assign(static_cast<std::size_t>(bodies), false);
   std::set<std::pair<int, int>> wanted;  // (part, place) of the groups some ending wants in a region set
@@ -192,6 +192,7 @@ void PushSearcher::add_matchings(Goals& goals) const {
       auto& table = matching.pushes.emplace_back(static_cast<std::size_t>(lattice_.cells()) * targets, kNever);
       for (std::size_t j = 0; j < targets; ++j) {
         if (!lattice_.body_fits(k, matching.targets[j])) continue;
+        deadline.check();
         const std::vector<int> to_target = pushes_to_cells(k, {matching.targets[j]});
         for (std::size_t c = 0; c < to_target.size(); ++c) table[c * targets + j] = to_target[c];
       }
@@ -933,7 +934,7 @@ class ArrangementSearch {
 PushSearch PushSearcher::search(int stage, const std::vector<int>& cells, int robot_cell, const base::Deadline& deadline,
                                 SearchBudget budget, double weight) const {
   PushSearch result;
-  const Goals goals = goals_from(stage);
+  const Goals goals = goals_from(stage, deadline);
   result.outcome = "no order of pushes";
   for (std::size_t k = 0; k < cells.size(); ++k) {
     if (goals.left(static_cast<int>(k), cells[k]) == kNever) return result;

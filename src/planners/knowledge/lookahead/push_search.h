@@ -144,10 +144,12 @@ class PushSearcher {
   };
   // Per place, the fewest pushes of lattice body k alone to one of `targets`.
   std::vector<int> pushes_to_cells(int k, const std::vector<int>& targets) const;
-  void add_matchings(Goals& goals) const;
+  // A group's tables: each body's pushes to each target place, a walk of the lattice per pair (a group
+  // of 250 boxes makes 62,500 of them), so it checks `deadline` (DeadlineReached).
+  void add_matchings(Goals& goals, const base::Deadline& deadline) const;
   // Per place, the fewest pushes of lattice body k alone to a place whose labelling place is in `places`.
   std::vector<int> pushes_to(int k, const std::set<int>& places) const;
-  Goals goals_from(int stage) const;
+  Goals goals_from(int stage, const base::Deadline& deadline = {}) const;
   // The stage needs no more body moves: the robot's part of the task, or acceptance.
   bool ends_pushing(int stage) const;
   int facts_of(int stage, const std::vector<int>& cells) const;
