@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <map>
 #include <mutex>
 #include <set>
 
@@ -64,10 +65,6 @@ bool is_unfinished_write(const std::filesystem::path& file) {
   return file.filename().string().find(".tmp-") != std::string::npos;
 }
 
-namespace {
-
-// What writing `file` replaces: the file a chain of symbolic links ends at (written through, the links
-// kept), or `file` itself.
 std::filesystem::path link_target(const std::filesystem::path& file) {
   std::filesystem::path target = file;
   std::error_code error;
@@ -79,6 +76,8 @@ std::filesystem::path link_target(const std::filesystem::path& file) {
   }
   return target;
 }
+
+namespace {
 
 bool write_all(int fd, std::string_view text) {
   std::size_t written = 0;
@@ -132,6 +131,35 @@ void write_into_stream(const std::filesystem::path& file, std::string_view text)
   if (::close(fd) != 0 || !ok) throw BadInput("cannot write " + file.string());
 }
 
+// What killed runs left in a folder: `NAME.tmp-PID` and `NAME.old-PID` whose process has ended, by NAME.
+std::multimap<std::string, std::filesystem::path> leftovers_in(const std::filesystem::path& folder) {
+  std::multimap<std::string, std::filesystem::path> found;
+  std::error_code error;
+  for (const std::filesystem::directory_entry& entry : std::filesystem::directory_iterator(folder, error)) {
+    const std::string name = entry.path().filename().string();
+    for (const std::string tag : {".tmp-", ".old-"}) {
+      const std::size_t at = name.rfind(tag);
+      if (at == std::string::npos || at == 0 || at + tag.size() == name.size()) continue;
+      const std::string digits = name.substr(at + tag.size());
+      if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
+      const pid_t pid = static_cast<pid_t>(std::stol(digits));
+      if (pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH) found.emplace(name.substr(0, at), entry.path());
+    }
+  }
+  return found;
+}
+
+// Each folder is listed once per process, when it is first written into: a folder of 20,000 imported
+// levels would otherwise be listed once per file written, and the import take time growing as its square.
+std::mutex& leftovers_mutex() {
+  static auto* mutex = new std::mutex;
+  return *mutex;
+}
+std::map<std::filesystem::path, std::multimap<std::string, std::filesystem::path>>& leftovers_by_folder() {
+  static auto* folders = new std::map<std::filesystem::path, std::multimap<std::string, std::filesystem::path>>;
+  return *folders;
+}
+
 }  // namespace
 
 void remove_unfinished_writes() {
@@ -142,18 +170,13 @@ void remove_unfinished_writes() {
 
 void remove_leftovers_of_ended_runs(const std::filesystem::path& final_path) {
   const std::filesystem::path parent = final_path.has_parent_path() ? final_path.parent_path() : std::filesystem::path(".");
+  const std::lock_guard lock(leftovers_mutex());
+  auto [listed, first_time] = leftovers_by_folder().try_emplace(parent);
+  if (first_time) listed->second = leftovers_in(parent);
+  const auto [first, last] = listed->second.equal_range(final_path.filename().string());
   std::error_code error;
-  for (const std::filesystem::directory_entry& entry : std::filesystem::directory_iterator(parent, error)) {
-    const std::string name = entry.path().filename().string();
-    for (const std::string tag : {".tmp-", ".old-"}) {
-      const std::string prefix = final_path.filename().string() + tag;
-      if (name.rfind(prefix, 0) != 0 || name.size() == prefix.size()) continue;
-      const std::string digits = name.substr(prefix.size());
-      if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
-      const pid_t pid = static_cast<pid_t>(std::stol(digits));
-      if (pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH) std::filesystem::remove_all(entry.path(), error);
-    }
-  }
+  for (auto it = first; it != last; ++it) std::filesystem::remove_all(it->second, error);
+  listed->second.erase(first, last);
 }
 
 void write_text_file(const std::filesystem::path& file, std::string_view text, Durability durability) {

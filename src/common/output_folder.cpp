@@ -88,7 +88,7 @@ void OutputFolder::commit() {
 void OutputFolder::commit_entries() {
   if (!fs::exists(final_)) return commit();
   for (const fs::directory_entry& entry : fs::directory_iterator(temp_)) {
-    replace(entry.path(), final_ / entry.path().filename());
+    replace(entry.path(), link_target(final_ / entry.path().filename()));
   }
   fs::remove(temp_);
   committed_ = true;

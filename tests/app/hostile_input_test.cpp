@@ -80,6 +80,41 @@ TEST(Crash, AnImportWritesTheLevelsCheckWouldTakeAndRefusesTheOthersNamingThem) 
   EXPECT_NE(r.err.find("levels.txt:5: level 2 not imported: 10500 boxes, more than the 10000 movable bodies"), std::string::npos) << r.err;
   EXPECT_TRUE(fs::exists(out / "levels_1.lua"));
   EXPECT_FALSE(fs::exists(out / "levels_2.lua"));
+  // Each level is read back as check reads it: with cells of 100 m, a corridor of 120 cells is a
+  // workspace of 12 km, more than a scenario may span.
+  std::ofstream(dir / "wide.txt") << "#####\n#@$.#\n#####\n\n" << std::string(120, '#') << "\n#@$" << std::string(115, ' ')
+                                   << ".#\n" << std::string(120, '#') << "\n";
+  const fs::path wide_out = fresh_out_dir();
+  const Result wide = run("import sokoban " + (dir / "wide.txt").string() + " --cell 100 --box 50 --robot-radius 20 --out " +
+                          wide_out.string());
+  EXPECT_EQ(wide.exit_code, 2) << wide.err;
+  EXPECT_NE(wide.err.find("wide.txt:5: level 2 not imported: workspace: 'bounds' reach beyond 10000 m"), std::string::npos) << wide.err;
+  EXPECT_TRUE(fs::exists(wide_out / "wide_1.lua"));
+  EXPECT_FALSE(fs::exists(wide_out / "wide_2.lua"));
+}
+
+// An import writes its levels into a temporary folder and moves them into --out at the end: one stopped
+// half-way leaves --out as it was. 20,000 levels take seconds (each file written used to list the folder
+// again: 60 s did not see them written), so Ctrl-C comes while they are written.
+TEST(Hang, AnImportOfTwentyThousandLevelsStoppedByCtrlCLeavesNothingNew) {
+  const fs::path dir = test_dir();
+  {
+    std::ofstream levels(dir / "many.txt");
+    for (int level = 0; level < 20000; ++level) levels << "#####\n#@$.#\n#####\n\n";
+  }
+  const fs::path out = fresh_out_dir();
+  fs::create_directories(out);
+  std::ofstream(out / "mine.lua") << "-- the user's\n";
+  const Interruption stopped = interrupt({"import", "sokoban", (dir / "many.txt").string(), "--out", out.string()},
+                                         std::chrono::milliseconds(1000));
+  EXPECT_EQ(stopped.exit_code, 130);
+  EXPECT_LT(stopped.seconds_to_end, 1.0);
+  std::vector<fs::path> left;
+  for (const auto& entry : fs::directory_iterator(out)) left.push_back(entry.path().filename());
+  EXPECT_EQ(left, std::vector<fs::path>{"mine.lua"});
+  for (const auto& entry : fs::directory_iterator(out.parent_path())) {
+    EXPECT_EQ(entry.path().filename().string().find(out.filename().string() + ".tmp-"), std::string::npos) << entry.path();
+  }
 }
 
 TEST(Hang, AnImportOfADeviceIsRefusedAtOnce) {
@@ -539,6 +574,30 @@ TEST(Nonsense, ACorruptGoldenIsNamedAndRewrittenByUpdateAndAGoldensFolderThatIsA
               std::string::npos)
         << r.err;
   }
+}
+
+// A link in --out where a level goes is written through (docs/outputs.md), unless it leads to the file
+// of levels being read: that one was overwritten.
+TEST(DestroyedFile, AnImportThroughALinkOntoItsOwnLevelsIsRefusedAndOtherLinksAreWrittenThrough) {
+  const fs::path dir = test_dir();
+  const std::string levels = "#####\n#@$.#\n#####\n";
+  std::ofstream(dir / "level.txt") << levels;
+  const fs::path out = fresh_out_dir();
+  fs::create_directories(out);
+  fs::create_symlink(dir / "level.txt", out / "level_1.lua");
+  const Result onto_input = run("import sokoban " + (dir / "level.txt").string() + " --out " + out.string());
+  EXPECT_EQ(onto_input.exit_code, 2) << onto_input.err;
+  EXPECT_NE(onto_input.err.find("level_1.lua: it leads to " + (dir / "level.txt").string() + ", which the import reads"),
+            std::string::npos)
+      << onto_input.err;
+  EXPECT_EQ(slurp(dir / "level.txt"), levels);
+
+  fs::remove(out / "level_1.lua");
+  std::ofstream(dir / "elsewhere.lua") << "-- to be replaced\n";
+  fs::create_symlink(dir / "elsewhere.lua", out / "level_1.lua");
+  ASSERT_EQ(run("import sokoban " + (dir / "level.txt").string() + " --out " + out.string()).exit_code, 0);
+  EXPECT_TRUE(fs::is_symlink(out / "level_1.lua"));
+  EXPECT_NE(slurp(dir / "elsewhere.lua").find("workspace {"), std::string::npos);
 }
 
 TEST(Leftover, AWriteBlockedByAFolderOrALoopOfLinksSaysSoAndLeavesNothing) {

@@ -146,6 +146,12 @@ TEST(ImportSokoban, ALevelWithItsAuthorTitleAndCommentBlockImportsAndItsSolution
 
 // A solution that does not fit its level says which move fails and why, and nothing is written: the
 // import and the solution disagree, so one of them is not what the user thinks.
+std::string repeated(const std::string& text, int times) {
+  std::string all;
+  for (int i = 0; i < times; ++i) all += text;
+  return all;
+}
+
 TEST(ImportSokoban, ASolutionThatDoesNotReplayOrCannotBeReadIsRefusedNamingTheMoveOrTheLine) {
   const fs::path dir = test_dir("levels");
   std::ofstream(dir / "walk.sok") << "#######\n#@  $.#\n#######\n";
@@ -165,6 +171,9 @@ TEST(ImportSokoban, ASolutionThatDoesNotReplayOrCannotBeReadIsRefusedNamingTheMo
       {"", "walk.sol: no moves in it"},
       {"9999999(9999999(9999999(r)))", "walk.sol:1: more than 10000000 moves"},
       {"99999999999r", "walk.sol:1: a count over 10000000 moves"},
+      // 90 kB of repeated empty groups ran for minutes; nesting past any solution's is refused too.
+      {"rr" + repeated("9999999(", 10000) + repeated(")", 10000), "walk.sol:1: groups nested deeper than 64"},
+      {"rr" + repeated("9999999()", 10000), "walk.sol:1: a group with no moves in it"},
   };
   for (const Case& c : cases) {
     std::ofstream(dir / "walk.sol") << c.solution;

@@ -32,8 +32,13 @@ inline constexpr int kMaxJsonDepth = 64;
 // before anything copies it.
 nlohmann::json parse_json(std::string_view text);
 
-// Removes the `NAME.tmp-PID` and `NAME.old-PID` siblings of `final_path` whose process has ended: what a
-// run killed before it could clean up left. Every writer calls it before writing.
+// What writing `file` replaces: the file a chain of symbolic links ends at (written through, the links
+// kept), or `file` itself. Throws BadInput on a loop of links.
+std::filesystem::path link_target(const std::filesystem::path& file);
+
+// Removes the `NAME.tmp-PID` and `NAME.old-PID` siblings of `final_path` whose process had ended when this
+// process first wrote into their folder: what a run killed before it could clean up left. Every writer
+// calls it before writing.
 void remove_leftovers_of_ended_runs(const std::filesystem::path& final_path);
 
 // Removes the temporary files of writes under way in this process: for a process that must end at once.

@@ -31,9 +31,10 @@ class OutputFolder {
   // The final folder becomes exactly what was written: a previous one is renamed away, the new one renamed
   // into place, then the old one deleted. Only the instant between the two renames has no final folder.
   void commit();
-  // Each entry written replaces its namesake in the final folder by one rename, and entries already there
-  // that were not written stay (e.g. `check` refreshing preview.png beside a plan's outputs). Creates the
-  // final folder by renaming the temporary one when there is none yet.
+  // Each entry written replaces its namesake in the final folder by one rename (a symbolic link's target:
+  // written through, the link kept), and entries already there that were not written stay (e.g. `check`
+  // refreshing preview.png beside a plan's outputs). Creates the final folder by renaming the temporary one
+  // when there is none yet.
   void commit_entries();
 
  private:

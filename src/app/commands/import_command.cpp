@@ -1,15 +1,23 @@
 #include "cli/command.h"
 #include "cli/number_args.h"
+#include "physltl/common/bad_input.h"
 #include "physltl/common/files.h"
+#include "physltl/common/output_folder.h"
 #include "physltl/common/output_paths.h"
+#include "physltl/common/stop_signal.h"
+#include "physltl/scenario/load.h"
 #include "import/sokoban_level.h"
 #include "import/sokoban_scenario.h"
 #include "import/sokoban_solution.h"
 
-#include <limits>
+#include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace physltl::app {
 namespace {
@@ -35,6 +43,20 @@ import::ReferenceSolution replayed_solution(const ImportArgs& args, const std::v
   return {file.filename().string(), replay};
 }
 
+// What `check` would say of the scenario `file` written for a level (a grid wider than a scenario's 10 km,
+// more region corners than it may hold), or nothing when it loads.
+std::optional<std::string> refusal_on_reading_back(const std::filesystem::path& file) {
+  try {
+    scenario::load_scenario(file.string());
+    return std::nullopt;
+  } catch (const scenario::ScenarioError& e) {
+    if (common::stop_received()) throw common::Interrupted();
+    std::string why;
+    for (const scenario::Diagnostic& d : e.diagnostics()) why += (why.empty() ? "" : "; ") + d.message;
+    return why;
+  }
+}
+
 int run_import(const ImportArgs& args) {
   if (args.format != "sokoban") throw common::BadInput("import knows the format 'sokoban', not '" + args.format + "'");
   common::checked_output_folder("--out", args.out_dir, {args.file});
@@ -51,23 +73,44 @@ int run_import(const ImportArgs& args) {
   }
   std::optional<import::ReferenceSolution> reference;
   if (args.solution) reference = replayed_solution(args, levels);
-  const std::filesystem::path out(args.out_dir);
-  std::filesystem::create_directories(out);
+  // The levels are written into a temporary folder beside --out, each read back as `check` reads a
+  // scenario, and moved into --out at the end: Ctrl-C or a failure leaves nothing new there.
+  common::OutputFolder staging(args.out_dir);
   const std::string stem = std::filesystem::path(args.file).stem().string();
-  // A level `check` would refuse is not written; the others are, and the import then exits 2.
-  int refused = 0;
+  const std::string source = std::filesystem::path(args.file).filename().string();
+  std::vector<std::pair<std::string, std::size_t>> written;  // file names and their boxes
   for (const import::SokobanLevel& level : levels) {
+    if (common::stop_received()) throw common::Interrupted();
+    const auto refuse = [&](const std::string& why) {
+      std::cerr << args.file << ":" << level.line << ": level " << level.number << " not imported: " << why << "\n";
+    };
     if (const auto why = import::beyond_limits(level)) {
-      std::cerr << args.file << ":" << level.line << ": level " << level.number << " not imported: " << *why << "\n";
-      ++refused;
+      refuse(*why);  // before its scenario is made: a level of 10,500 boxes is a large file
       continue;
     }
-    const std::filesystem::path file = out / (stem + "_" + std::to_string(level.number) + ".lua");
-    common::write_text_file(file, import::sokoban_scenario(level, std::filesystem::path(args.file).filename().string(), args.sizes, reference));
-    const std::size_t boxes = level.boxes.size();
-    std::cout << "wrote      " << file.string() << " (" << boxes << (boxes == 1 ? " box" : " boxes") << ")\n";
+    const std::string name = stem + "_" + std::to_string(level.number) + ".lua";
+    const std::filesystem::path destination = std::filesystem::path(args.out_dir) / name;
+    if (std::filesystem::is_directory(destination)) throw common::BadInput("cannot write " + destination.string() + ": it is a folder");
+    // A link in --out is written through, but never onto what the import reads.
+    for (const std::optional<std::string>& input : {std::optional<std::string>(args.file), args.solution}) {
+      if (input && common::same_path(common::link_target(destination), *input)) {
+        throw common::BadInput("cannot write " + destination.string() + ": it leads to " + *input + ", which the import reads");
+      }
+    }
+    const std::filesystem::path file = staging.path() / name;
+    common::write_text_file(file, import::sokoban_scenario(level, source, args.sizes, reference));
+    if (const auto why = refusal_on_reading_back(file)) {
+      refuse(*why);
+      std::filesystem::remove(file);
+      continue;
+    }
+    written.emplace_back(name, level.boxes.size());
   }
-  return refused > 0 ? common::kExitBadInput : common::kExitOk;
+  staging.commit_entries();
+  for (const auto& [name, boxes] : written) {
+    std::cout << "wrote      " << (std::filesystem::path(args.out_dir) / name).string() << " (" << boxes << (boxes == 1 ? " box" : " boxes") << ")\n";
+  }
+  return written.size() < levels.size() ? common::kExitBadInput : common::kExitOk;
 }
 
 }  // namespace

@@ -15,6 +15,8 @@ namespace physltl::app::import {
 namespace {
 
 constexpr std::size_t kMaxSolutionFileBytes = std::size_t{16} << 20;
+// Groups inside groups: solutions as collections ship them nest two or three deep.
+constexpr std::size_t kMaxSolutionNesting = 64;
 constexpr std::string_view kMoves = "udlrUDLR";
 
 // The moves of one parenthesised group (the whole solution at the bottom of the stack) and the count
@@ -38,6 +40,7 @@ class SolutionReader {
         count_ = count_.value_or(0) * 10 + (c - '0');
         if (*count_ > kMaxSolutionMoves) refuse(fmt::format("a count over {} moves", kMaxSolutionMoves));
       } else if (c == '(') {
+        if (stack_.size() > kMaxSolutionNesting) refuse(fmt::format("groups nested deeper than {}", kMaxSolutionNesting));
         stack_.push_back({"", take_count(), line_});
       } else if (c == ')') {
         close_group();
@@ -65,6 +68,8 @@ class SolutionReader {
     if (stack_.size() == 1) refuse("a ')' with no '(' before it");
     if (count_) refuse("a count with no move after it");
     Group group = std::move(stack_.back());
+    // Repeating nothing costs its count in time and means nothing: "9999999()" nested was minutes of it.
+    if (group.moves.empty()) refuse("a group with no moves in it");
     stack_.pop_back();
     held_ -= static_cast<long long>(group.moves.size());
     append(group.moves, group.count);
