@@ -6,7 +6,7 @@
 
 #include "physltl/common/bad_input.h"
 #include "physltl/common/json_fields.h"
-#include "physltl/setup/cost_args.h"
+#include "physltl/scenario/plan_cost.h"
 #include "physltl/setup/planner_names.h"
 
 #include <fmt/format.h>
@@ -87,12 +87,18 @@ CampaignResults skeleton(const common::JsonFields& campaign, const common::JsonF
     r.preparation_s = fact.number("preparation_s", 0.0, 1e9);
     r.shortest_free_path_m = number_or_infinity(fact, "shortest_free_path_m");
     r.shortest_push_free_path_m = number_or_infinity(fact, "shortest_push_free_path_m");
-    r.cost = setup::cost_from_flag(description.text("cost"));
+    try {
+      r.cost = scenario::parse_plan_cost(description.text("cost"));
+    } catch (const scenario::PlanCostError& e) {
+      description.refuse("cost", std::string("is not a cost: ") + e.what());
+    }
     r.improve_margin = description.number("improve_margin", 0.0, 1.0);
     r.cost_bound = number_or_infinity(fact, "cost_bound");
     for (const auto& p : description.array("planners")) {
       const common::JsonFields planner(p, description.source() + " planners");
-      r.planners.push_back({&setup::parse_planner(planner.text("name")), static_cast<int>(planner.whole("threads", 1, 64)), {}, {}});
+      const planning::PlannerEntry* named = setup::registry().find(planner.text("name"));
+      if (named == nullptr) planner.refuse("name", "is no planner of this build; its planners are " + setup::planner_names());
+      r.planners.push_back({named, static_cast<int>(planner.whole("threads", 1, 64)), {}, {}});
     }
     results.cases.push_back(std::move(result));
   }

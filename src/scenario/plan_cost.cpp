@@ -9,6 +9,10 @@
 namespace physltl::scenario {
 namespace {
 
+// Weights are relative: a million to one says "only this term" already. Bounded, every cost a plan can
+// have is finite and within what campaigns read back (unit_record.cpp: 10^15).
+constexpr double kMaxWeight = 1e6;
+
 struct Measure {
   const char* name;
   double PlanCost::*weight;
@@ -75,8 +79,8 @@ PlanCost parse_plan_cost(std::string_view text) {
     std::string_view token = tokens.next();
     if (!token.empty() && !std::isalpha(static_cast<unsigned char>(token[0]))) {
       const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), weight);
-      if (error != std::errc{} || end != token.data() + token.size() || !std::isfinite(weight) || weight < 0.0) {
-        fail(token, "a weight must be a finite number of at least 0");
+      if (error != std::errc{} || end != token.data() + token.size() || !(weight >= 0.0 && weight <= kMaxWeight)) {
+        fail(token, "a weight must be a number from 0 to 1000000");
       }
       if (tokens.peek() == "*") tokens.next();
       token = tokens.next();

@@ -379,6 +379,11 @@ TEST(Nonsense, BenchMergeRefusesNumbersNoRunMakesNamingTheFileAndTheKey) {
       {shard / "units" / "0.json", edited(unit, "\"refused\": [", "\"refused\": [7, "), "'refused' must hold 9 counts, one per rule (fixed_contact"},
       {shard / "manifest.json", edited(manifest, "\"shards\": 1", "\"shards\": 2000000000"), "'shards' must be a whole number from 1 to 10000"},
       {shard / "manifest.json", edited(manifest, "\"runs\": 1", "\"runs\": 1e12"), "'runs' must be a whole number from 1 to 100000"},
+      // Text the campaign wrote from flags, blamed on the file and the key, not on a flag never given.
+      {shard / "manifest.json", edited(manifest, "\"cost\": \"time\"", "\"cost\": \"tme\""),
+       "manifest.json campaign cases: 'cost' is not a cost: expected time, length, pushes or moved at 'tme'"},
+      {shard / "manifest.json", edited(manifest, "\"name\": \"knowledge\"", "\"name\": \"knowlege\""),
+       "manifest.json campaign cases planners: 'name' is no planner of this build"},
   };
   for (const auto& c : cases) {
     std::ofstream(c.file) << c.text;

@@ -46,8 +46,12 @@ TEST(PlanCost, AMistakeIsRefusedNamingTheToken) {
   expect_refused("time + psuhes", "at 'psuhes'");
   expect_refused("time pushes", "expected '+' between terms at 'pushes'");
   expect_refused("time +", "at the end");
-  expect_refused("-1 time", "at least 0 at '-1'");
+  expect_refused("-1 time", "a weight must be a number from 0 to 1000000 at '-1'");
   expect_refused("nan time", "at 'nan'");
+  // Weights whose costs would be infinite, or past what a campaign reads back.
+  expect_refused("1e308 time + 1e308 length", "a weight must be a number from 0 to 1000000 at '1e308'");
+  expect_refused("1e20 time", "at '1e20'");
+  EXPECT_EQ(parse_plan_cost("1000000 pushes"), (PlanCost{0, 0, 1e6, 0}));
   expect_refused("time + time", "time is named twice");
   expect_refused("0 time", "every weight is 0");
   expect_refused("", "no cost given");
