@@ -64,7 +64,8 @@ std::vector<std::filesystem::path> log_paths(const std::optional<std::string>& f
                                              const std::vector<std::unique_ptr<BenchCase>>& cases) {
   std::vector<std::filesystem::path> logs;
   if (!file) return logs;
-  const std::vector<std::filesystem::path> inputs = entry_files(entries);
+  std::vector<std::filesystem::path> inputs = entry_files(entries);  // and the modules and meshes they read
+  for (const auto& c : cases) inputs.insert(inputs.end(), c->world.inputs.begin(), c->world.inputs.end());
   const std::filesystem::path path = common::checked_output_file("--log", *file, inputs);
   // The logs are written last, after minutes of runs: a folder that is not there fails now.
   const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : ".";
@@ -80,6 +81,21 @@ std::vector<std::filesystem::path> log_paths(const std::optional<std::string>& f
     logs.push_back(part.empty() ? path : common::checked_output_file("--log", (path.parent_path() / file_name).string(), inputs));
   }
   return logs;
+}
+
+// The folders this campaign replaces, checked before any run (docs/outputs.md): a shard's own folder
+// (written into by --resume), or each case's folder of a whole run. None may hold what the campaign reads.
+void check_replaced_folders(const CampaignRequest& request, const std::optional<ShardSpec>& shard,
+                            const std::vector<ScenarioEntry>& entries, const std::vector<std::unique_ptr<BenchCase>>& cases) {
+  std::vector<std::filesystem::path> inputs = entry_files(entries);
+  for (const auto& c : cases) inputs.insert(inputs.end(), c->world.inputs.begin(), c->world.inputs.end());
+  if (shard) {
+    if (!request.resume) common::check_replaceable(shard_folder_path(request.out_dir, *request.name, *shard), inputs);
+    return;
+  }
+  for (const auto& c : cases) {
+    common::check_replaceable(request.out_dir / folder_name(c->results.scenario, c->results.settings), inputs);
+  }
 }
 
 std::vector<size_t> all_of(const std::vector<Unit>& units) {
@@ -113,6 +129,7 @@ Campaign::Campaign(const CampaignRequest& request) : loaded_(std::make_unique<Lo
   if (request.log_file) common::checked_output_file("--log", *request.log_file, entry_files(l.entries));
   l.cases = load_cases(l.entries, request.run);
   l.logs = log_paths(request.log_file, l.entries, l.cases);
+  check_replaced_folders(request, l.shard, l.entries, l.cases);
   const std::vector<CaseUnits> described = case_units(l.cases);
   l.units = campaign_units(described, request.run.runs);
   l.mine = l.shard ? shard_units(l.units, described, *request.name, *l.shard) : all_of(l.units);

@@ -90,7 +90,8 @@ OwnProcessRun read_report(const std::filesystem::path& report) {
 std::optional<OwnProcessRun> run_in_own_process(const OwnProcessRequest& request) {
   static int runs = 0;  // this process's, for a folder of each run's own
   // Never committed: removed when done, and by the stop signal's watchdog if the process must end at once.
-  const common::OutputFolder out(std::filesystem::temp_directory_path() / fmt::format("physltl-run-{}-{}", getpid(), ++runs));
+  const common::OutputFolder out(std::filesystem::temp_directory_path() / fmt::format("physltl-run-{}-{}", getpid(), ++runs),
+                                 common::OutputFolder::Commit::kWhole);
   const std::filesystem::path errors = out.path() / "stderr.txt";
   try {
     const int status = run_child(main_job_arguments(request, out.path()), errors);

@@ -2,6 +2,7 @@
 
 #include "physltl/common/bad_input.h"
 #include "physltl/common/files.h"
+#include "physltl/common/output_paths.h"
 #include "manifest.h"
 
 #include <fmt/format.h>
@@ -75,6 +76,7 @@ ShardFolder::ShardFolder(fs::path folder, const nlohmann::ordered_json& manifest
     fs::remove_all(folder_);
   }
   fs::create_directories(folder_ / "units");
+  common::mark_made_here(folder_);
   common::write_json_file(folder_ / "manifest.json", manifest, common::Durability::kSynced);
 }
 

@@ -1,6 +1,7 @@
 #include "physltl/common/output_folder.h"
 
 #include "physltl/common/files.h"
+#include "physltl/common/output_paths.h"
 
 #include <signal.h>
 #include <unistd.h>
@@ -60,14 +61,28 @@ void remove_unfinished_outputs() {
   open_folders().clear();
 }
 
-OutputFolder::OutputFolder(const fs::path& final_path)
-    : final_(without_trailing_slash(final_path)), temp_(sibling(final_, ".tmp-")) {
-  if (final_.has_parent_path()) fs::create_directories(final_.parent_path());
-  remove_leftovers_of_ended_runs(final_);
-  fs::remove_all(temp_);
-  fs::create_directory(temp_);
-  const std::lock_guard lock(open_folders_mutex());
-  open_folders().insert(temp_);
+OutputFolder::OutputFolder(const fs::path& final_path, Commit how, const std::vector<fs::path>& inputs)
+    : final_(without_trailing_slash(final_path)), temp_(sibling(final_, ".tmp-")), how_(how) {
+  if (how_ == Commit::kWhole) {
+    check_replaceable(final_, inputs);
+  } else {
+    check_folder_name(final_);
+  }
+  try {
+    if (final_.has_parent_path()) fs::create_directories(final_.parent_path());
+    remove_leftovers_of_ended_runs(final_);
+    fs::remove_all(temp_);
+    fs::create_directory(temp_);
+  } catch (const fs::filesystem_error& e) {
+    // Said of the folder the user knows, not of its temporary sibling.
+    if (e.path1() == temp_) throw fs::filesystem_error(e.what(), final_, e.code());
+    throw;
+  }
+  {
+    const std::lock_guard lock(open_folders_mutex());
+    open_folders().insert(temp_);
+  }
+  if (how_ == Commit::kWhole) mark_made_here(temp_);
 }
 
 OutputFolder::~OutputFolder() {
@@ -81,16 +96,14 @@ OutputFolder::~OutputFolder() {
 }
 
 void OutputFolder::commit() {
-  replace(temp_, final_);
-  committed_ = true;
-}
-
-void OutputFolder::commit_entries() {
-  if (!fs::exists(final_)) return commit();
-  for (const fs::directory_entry& entry : fs::directory_iterator(temp_)) {
-    replace(entry.path(), link_target(final_ / entry.path().filename()));
+  if (how_ == Commit::kWhole || !fs::exists(final_)) {
+    replace(temp_, final_);
+  } else {
+    for (const fs::directory_entry& entry : fs::directory_iterator(temp_)) {
+      replace(entry.path(), link_target(final_ / entry.path().filename()));
+    }
+    fs::remove(temp_);
   }
-  fs::remove(temp_);
   committed_ = true;
 }
 

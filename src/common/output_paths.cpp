@@ -1,8 +1,11 @@
 #include "physltl/common/output_paths.h"
 
 #include "physltl/common/bad_input.h"
+#include "physltl/common/files.h"
 
 #include <algorithm>
+#include <array>
+#include <string_view>
 
 namespace physltl::common {
 namespace {
@@ -30,7 +33,70 @@ void refuse_file_on_the_way(const std::string& option, const fs::path& path) {
   }
 }
 
+// What the commands write into a folder they replace (docs/outputs.md's table), and the endings of test's
+// mismatch pictures: a folder that holds only these was written by an earlier version of this program.
+constexpr std::array<std::string_view, 18> kOutputNames = {
+    "report.json", "plan.json", "tree.png", "frames", "plan.mp4", "failed", "preview.png", "execution.json", "execution",
+    "execution.mp4", "bench.json", "bench.png", "sweep.json", "sweep.png", "manifest.json", "units", "stderr.txt", "plan.actual.json"};
+constexpr std::array<std::string_view, 2> kOutputEndings = {".actual.png", ".diff.png"};
+
+bool output_name(const std::string& name) {
+  if (name == kMadeHereMarker) return true;
+  if (std::find(kOutputNames.begin(), kOutputNames.end(), name) != kOutputNames.end()) return true;
+  return std::any_of(kOutputEndings.begin(), kOutputEndings.end(), [&](std::string_view ending) {
+    return name.size() > ending.size() && name.compare(name.size() - ending.size(), ending.size(), ending) == 0;
+  });
+}
+
+// Whether `inner` is `outer` or lies inside it, both normal.
+bool within(const fs::path& inner, const fs::path& outer) {
+  const auto [mismatch, unused] = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
+  return mismatch == outer.end();
+}
+
 }  // namespace
+
+void check_folder_name(const fs::path& folder) {
+  const std::string name = folder.filename().string();
+  // 240 bytes leave room for the temporary sibling's ".tmp-<pid>" within the 255 a name may have.
+  if (name.empty() || name == "." || name == ".." || name.size() > 240) {
+    throw BadInput("will not write " + folder.string() + ": '" + name +
+                   "' is no folder name here (empty, '.', '..' or over 240 bytes; a scenario named so?)");
+  }
+  const fs::path out = normal(folder);
+  for (const char* system : {"/proc", "/sys"}) {
+    if (within(out, system)) throw BadInput("will not write " + folder.string() + ": it lies in " + system);
+  }
+}
+
+void check_replaceable(const fs::path& folder, const std::vector<fs::path>& inputs) {
+  check_folder_name(folder);
+  const fs::path out = normal(folder);
+  for (const fs::path& input : inputs) {
+    const fs::path in = normal(input);
+    if (within(in, out)) {
+      throw BadInput("will not replace " + folder.string() + ": " + (in == out ? "it is " : "it holds ") + input.string() +
+                     ", an input of this command; give another --out");
+    }
+  }
+  std::error_code error;
+  if (!fs::is_directory(folder, error) || fs::exists(folder / kMadeHereMarker, error)) return;
+  std::vector<std::string> foreign;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder, error)) {
+    if (!output_name(entry.path().filename().string())) foreign.push_back(entry.path().filename().string());
+  }
+  if (foreign.empty()) return;
+  std::sort(foreign.begin(), foreign.end());
+  std::string listed;
+  for (std::size_t i = 0; i < std::min<std::size_t>(foreign.size(), 3); ++i) listed += (i ? ", " : "") + foreign[i];
+  if (foreign.size() > 3) listed += " and " + std::to_string(foreign.size() - 3) + " more";
+  throw BadInput("will not replace " + folder.string() + ": physltl-studio did not make it, and it holds " + listed +
+                 "; give another --out, or empty the folder");
+}
+
+void mark_made_here(const fs::path& folder) {
+  write_text_file(folder / kMadeHereMarker, "made by physltl-studio, which may replace this folder (docs/outputs.md)\n");
+}
 
 bool same_path(const fs::path& a, const fs::path& b) {
   std::error_code error;

@@ -11,6 +11,7 @@
 #include <cctype>
 #include <chrono>
 #include <fstream>
+#include <map>
 #include <string>
 #include <thread>
 #include <vector>
@@ -229,6 +230,62 @@ TEST(DestroyedFile, AnOutputPathThatIsAnInputAFolderOrEmptyIsRefusedBeforeAnyWor
   for (const auto& entry : fs::directory_iterator(dir)) {
     EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
   }
+}
+
+// The output rule (docs/outputs.md, "Folders a command replaces"): no command replaces or empties a
+// folder that holds what it reads, or one it did not make that holds other files; every such command line
+// below deleted the user's files with exit 0. Each is refused with exit 2 before any work, and every file
+// stays.
+TEST(DestroyedFile, NoCommandReplacesAFolderHoldingItsInputsOrOneItDidNotMake) {
+  const fs::path dir = test_dir() / "proj";
+  fs::remove_all(dir);
+  const auto place = [&](const fs::path& folder) {
+    fs::create_directories(dir / folder);
+    fs::copy_file(kSource + "/scenarios/avoid.lua", dir / folder / "avoid.lua");
+    std::ofstream(dir / folder / "notes.txt") << "the user's\n";
+    return (dir / folder / "avoid.lua").string();
+  };
+  const std::string beside = place("avoid"), under_test = place("test/avoid"), in_shard = place("c/shard-1-of-1");
+  fs::create_directories(dir / "office");
+  for (const std::string file : {"office.lua", "cabinet.obj"}) fs::copy_file(kSource + "/scenarios/" + file, dir / "office" / file);
+  fs::create_directories(dir / "mine" / "avoid");
+  std::ofstream(dir / "mine" / "avoid" / "thesis.tex") << "not an output\n";
+  fs::copy_file(kSource + "/scenarios/avoid.lua", dir / "...lua");  // a scenario named ".."
+  fs::copy_file(kSource + "/scenarios/avoid.lua", dir / (std::string(250, 'a') + ".lua"));
+  const std::string p = dir.string(), office = (dir / "office" / "office.lua").string();
+  const std::vector<Refusal> cases = {
+      {beside + " --quiet --out " + p, "will not replace " + p + "/avoid: it holds " + beside + ", an input of this command"},
+      {"bench " + beside + " --runs 1 --quiet --out " + p, "it holds " + beside + ", an input of this command"},
+      {"test " + under_test + " --out " + p, "will not replace " + p + "/test/avoid: it holds " + under_test},
+      {"bench " + in_shard + " --runs 1 --campaign c --shard 1/1 --quiet --out " + p, "will not replace " + p + "/c/shard-1-of-1: it holds"},
+      {kSource + "/scenarios/avoid.lua --quiet --out " + (dir / "mine").string(),
+       "physltl-studio did not make it, and it holds thesis.tex"},
+      {"test " + (dir / "...lua").string() + " --out " + p + "/o", "'..' is no folder name"},
+      {"check " + (dir / "...lua").string() + " --out " + p + "/o", "'..' is no folder name"},
+      // Its temporary sibling, 250 bytes and ".tmp-<pid>", could not be made: said, before, of that sibling.
+      {(dir / (std::string(250, 'a') + ".lua")).string() + " --quiet --out " + p + "/o", "' is no folder name here"},
+      {"bench " + office + " --runs 1 --log " + (dir / "office" / "cabinet.obj").string(), "cabinet.obj, an input of this command"},
+  };
+  const auto snapshot = [&] {
+    std::map<std::string, std::string> files;
+    for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+      if (entry.is_regular_file()) files[entry.path().string()] = slurp(entry.path());
+    }
+    return files;
+  };
+  const auto before = snapshot();
+  for (const Refusal& c : cases) {
+    const Result r = run(c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
+  }
+  EXPECT_EQ(snapshot(), before);
+  // A folder this program made is replaced as before.
+  ASSERT_EQ(run(kSource + "/scenarios/avoid.lua --quiet --out " + (dir / "made").string()).exit_code, 0);
+  EXPECT_TRUE(fs::exists(dir / "made" / "avoid" / ".physltl-studio"));
+  std::ofstream(dir / "made" / "avoid" / "stale.txt") << "left by hand\n";
+  ASSERT_EQ(run(kSource + "/scenarios/avoid.lua --quiet --out " + (dir / "made").string()).exit_code, 0);
+  EXPECT_FALSE(fs::exists(dir / "made" / "avoid" / "stale.txt"));
 }
 
 TEST(DestroyedFile, BenchMergeRefusesToWriteIntoAShardItReads) {

@@ -4,6 +4,7 @@
 // they were.
 
 #include <filesystem>
+#include <vector>
 
 namespace physltl::common {
 
@@ -14,10 +15,26 @@ void remove_unfinished_outputs();
 
 class OutputFolder {
  public:
+  // How commit() puts the outputs in place.
+  enum class Commit {
+    // The final folder becomes exactly what was written: a previous one is renamed away, the new one
+    // renamed into place, then the old one deleted (only the instant between the two renames has no final
+    // folder). The folder must be one the rule lets the command replace (check_replaceable, with the
+    // command's `inputs`: checked here, before any work), and the new one holds the marker that says this
+    // program made it.
+    kWhole,
+    // Each entry written replaces its namesake in the final folder by one rename (a symbolic link's target:
+    // written through, the link kept), and entries already there that were not written stay (`check`
+    // refreshing preview.png beside a plan's outputs, `import` adding levels to a folder). Creates the
+    // final folder by renaming the temporary one when there is none yet.
+    kEntries,
+  };
+
   // Creates the empty folder `<final_path>.tmp-<pid>` (and the parents of `final_path`). Leftovers of runs
   // that were killed (`.tmp-` and `.old-` siblings whose process has ended, or of this pid) are removed
-  // first. Throws std::filesystem::filesystem_error.
-  explicit OutputFolder(const std::filesystem::path& final_path);
+  // first. Throws BadInput when the rule refuses the folder, std::filesystem::filesystem_error when it
+  // cannot be made.
+  OutputFolder(const std::filesystem::path& final_path, Commit how, const std::vector<std::filesystem::path>& inputs = {});
   // Removes the temporary folder unless committed.
   ~OutputFolder();
   OutputFolder(const OutputFolder&) = delete;
@@ -27,19 +44,13 @@ class OutputFolder {
   const std::filesystem::path& path() const { return temp_; }
   const std::filesystem::path& final_path() const { return final_; }
 
-  // Call one of the two commits, once.
-  // The final folder becomes exactly what was written: a previous one is renamed away, the new one renamed
-  // into place, then the old one deleted. Only the instant between the two renames has no final folder.
+  // Puts the outputs in place as chosen; once.
   void commit();
-  // Each entry written replaces its namesake in the final folder by one rename (a symbolic link's target:
-  // written through, the link kept), and entries already there that were not written stay (e.g. `check`
-  // refreshing preview.png beside a plan's outputs). Creates the final folder by renaming the temporary one
-  // when there is none yet.
-  void commit_entries();
 
  private:
   std::filesystem::path final_;
   std::filesystem::path temp_;
+  Commit how_;
   bool committed_ = false;
 };
 

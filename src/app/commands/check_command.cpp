@@ -25,9 +25,9 @@ namespace {
 std::filesystem::path write_preview(const scenario::World& world, const knowledge::Reasoning& reasoning,
                                     const std::filesystem::path& out_dir) {
   try {
-    common::OutputFolder folder(out_dir / world.name);
+    common::OutputFolder folder(out_dir / world.name, common::OutputFolder::Commit::kEntries);
     render::render_preview(world, reasoning.initial_state, preview_overlay(world, reasoning), folder.path() / "preview.png");
-    folder.commit_entries();
+    folder.commit();
     return folder.final_path() / "preview.png";
   } catch (const std::exception& e) {
     throw common::BadInput(std::string("cannot write preview.png: ") + e.what());

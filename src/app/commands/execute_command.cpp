@@ -96,7 +96,7 @@ int execute(const ExecuteArgs& args) {
   const PlanningRun run(world, settings, planner);
   // It replans with a budget of propagations, so that an execution is the same on any machine.
   run.require_plannable({.propagation_budget = true});
-  common::OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
+  common::OutputFolder out(std::filesystem::path(args.out_dir) / world.name, common::OutputFolder::Commit::kEntries);
   const planning::ValidatedPlan solution = run.solve();
   if (const auto failure = run.failure(solution, std::nullopt, false)) {
     std::cerr << "physltl-studio: " << failure->line << "; nothing written\n";
@@ -125,7 +125,7 @@ int execute(const ExecuteArgs& args) {
     render_execution(run, nominal, shown != report.worlds.end() ? *shown : report.worlds.front(), out.path(), say);
   }
   common::write_json_file(out.path() / "execution.json", execution_json(report));
-  out.commit_entries();
+  out.commit();
   say("outputs    " + (out.final_path() / "execution.json").string());
   return common::kExitOk;
 }

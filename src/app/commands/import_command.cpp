@@ -75,7 +75,7 @@ int run_import(const ImportArgs& args) {
   if (args.solution) reference = replayed_solution(args, levels);
   // The levels are written into a temporary folder beside --out, each read back as `check` reads a
   // scenario, and moved into --out at the end: Ctrl-C or a failure leaves nothing new there.
-  common::OutputFolder staging(args.out_dir);
+  common::OutputFolder staging(args.out_dir, common::OutputFolder::Commit::kEntries);
   const std::string stem = std::filesystem::path(args.file).stem().string();
   const std::string source = std::filesystem::path(args.file).filename().string();
   std::vector<std::pair<std::string, std::size_t>> written;  // file names and their boxes
@@ -106,7 +106,7 @@ int run_import(const ImportArgs& args) {
     }
     written.emplace_back(name, level.boxes.size());
   }
-  staging.commit_entries();
+  staging.commit();
   for (const auto& [name, boxes] : written) {
     std::cout << "wrote      " << (std::filesystem::path(args.out_dir) / name).string() << " (" << boxes << (boxes == 1 ? " box" : " boxes") << ")\n";
   }

@@ -170,6 +170,9 @@ int run(const RunArgs& args) {
   common::checked_output_folder("--out", args.out_dir, {args.scenario.path});
   const planning::PlannerEntry& planner = chosen_planner(args);
   const scenario::World world = args.scenario.load();
+  const std::filesystem::path folder = std::filesystem::path(args.out_dir) / world.name;
+  const std::vector<std::filesystem::path> inputs(world.inputs.begin(), world.inputs.end());
+  common::check_replaceable(folder, inputs);  // before any work; the folder is made below, once the task is known plannable
   setup::RunFlags flags = args.flags;
   flags.parameters = args.parameters.values();
   const setup::RunSettings settings = setup::run_settings(world, flags);
@@ -181,7 +184,7 @@ int run(const RunArgs& args) {
   run.require_plannable();
   // Made before planning so that an unwritable --out fails at once, not after minutes of search; it is
   // removed again unless the run succeeds.
-  common::OutputFolder out(std::filesystem::path(args.out_dir) / world.name);
+  common::OutputFolder out(folder, common::OutputFolder::Commit::kWhole, inputs);
   say_task(run, say);
 
   ProgressLine progress(args.quiet);

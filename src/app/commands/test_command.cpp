@@ -46,6 +46,17 @@ void refuse_shared_goldens(const std::vector<TestEntry>& entries, const TestSett
   }
 }
 
+// `inputs` and the files inside the folders among them (the goldens): a file named by --junit must be none.
+std::vector<std::filesystem::path> with_golden_files(std::vector<std::filesystem::path> inputs) {
+  const std::size_t named = inputs.size();
+  for (std::size_t i = 0; i < named; ++i) {
+    std::error_code error;
+    if (!std::filesystem::is_directory(inputs[i], error)) continue;
+    for (const auto& entry : std::filesystem::directory_iterator(inputs[i], error)) inputs.push_back(entry.path());
+  }
+  return inputs;
+}
+
 int run_tests(const TestArgs& args) {
   const auto started = std::chrono::steady_clock::now();
   common::checked_output_folder("--out", args.out_dir, {});
@@ -61,16 +72,21 @@ int run_tests(const TestArgs& args) {
     common::checked_output_folder(args.goldens ? "--goldens" : "goldens folder", goldens_folder(entry, settings).string(), {});
   }
   const std::filesystem::path times = settings.out_dir / "times.json";
-  std::optional<std::filesystem::path> junit;
-  if (args.junit) {
-    std::vector<std::filesystem::path> inputs{times};
-    for (const TestEntry& entry : entries) inputs.push_back(entry.file);
-    junit = common::checked_output_file("--junit", *args.junit, inputs);
-  }
   // Every scenario is loaded before any is run: a bad one (an unknown expectation key) stops the command
   // with its file:line before anything is planned or written.
   std::vector<scenario::World> worlds;
   for (const TestEntry& entry : entries) worlds.push_back(setup::load_with_settings(entry.file.string(), entry.settings));
+  // What the command reads: the scenarios, their modules and meshes, and the goldens. No output may
+  // replace one, and no folder of mismatch pictures may hold one (`--goldens o/test --out o`).
+  std::vector<std::filesystem::path> inputs{times};
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    inputs.push_back(entries[i].file);
+    inputs.insert(inputs.end(), worlds[i].inputs.begin(), worlds[i].inputs.end());
+    inputs.push_back(goldens_folder(entries[i], settings));
+  }
+  for (const TestEntry& entry : entries) common::check_replaceable(settings.out_dir / entry.output_name, inputs);
+  std::optional<std::filesystem::path> junit;
+  if (args.junit) junit = common::checked_output_file("--junit", *args.junit, with_golden_files(inputs));
 
   std::vector<ScenarioResult> results(entries.size());
   const std::vector<std::size_t> order = longest_first(entries, worlds, times);

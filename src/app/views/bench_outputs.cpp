@@ -85,7 +85,8 @@ std::vector<std::string> write_campaign_outputs(const campaign::CampaignResults&
   for (const auto& c : campaign.cases) {
     text << bench_table(c.results);
     auto& out = folders.emplace_back(
-        std::make_unique<common::OutputFolder>(out_dir / campaign::folder_name(c.results.scenario, c.results.settings)));
+        std::make_unique<common::OutputFolder>(out_dir / campaign::folder_name(c.results.scenario, c.results.settings),
+                                                       common::OutputFolder::Commit::kWhole));
     common::write_json_file(out->path() / "bench.json", bench_json(c.results));
     render::write_png(bench_chart(c.results), out->path() / "bench.png");
     written.push_back(out->final_path().string() + "/bench.json");
@@ -102,7 +103,7 @@ std::vector<std::string> write_campaign_outputs(const campaign::CampaignResults&
     std::vector<std::string> folder_settings = entry.settings;
     folder_settings.push_back("sweep=" + sweep.key);
     auto& out = folders.emplace_back(std::make_unique<common::OutputFolder>(
-        out_dir / campaign::folder_name(sweep.points.front().results.scenario, folder_settings)));
+        out_dir / campaign::folder_name(sweep.points.front().results.scenario, folder_settings), common::OutputFolder::Commit::kWhole));
     common::write_json_file(out->path() / "sweep.json", sweep_json(sweep));
     render::write_png(sweep_chart(sweep), out->path() / "sweep.png");
     written.push_back(out->final_path().string() + "/sweep.json");

@@ -18,7 +18,7 @@ bool search_was_cut_short(const planning::PlanResult& result) {
 
 void write_failed_search(const RunSummary& run, const decomposition::Decomposition& decomposition,
                          const std::filesystem::path& folder, bool render) {
-  common::OutputFolder out(folder);
+  common::OutputFolder out(folder, common::OutputFolder::Commit::kWhole);
   common::write_json_file(out.path() / "report.json", failed_report_json(run));
   if (render) {
     const PlannedMoves moves = planned_moves(account_of(run.planner, run.result.own.get(), run.world));
