@@ -4,7 +4,7 @@
 
 #include "physltl/common/build_version.h"
 #include "physltl/common/files.h"
-#include "fingerprint.h"
+#include "physltl/common/fingerprint.h"
 #include "physltl/campaign/campaign.h"
 #include "physltl/scenario/load.h"
 
@@ -36,7 +36,7 @@ json entry_inputs(const std::vector<std::unique_ptr<BenchCase>>& cases, size_t e
   json inputs = json::array();
   for (const auto& file : files) {
     const std::string name = file.rfind(lua_dir, 0) == 0 ? "lua/" + file.substr(lua_dir.size()) : file;
-    inputs.push_back({{"file", name}, {"hash", file_fingerprint(file)}});
+    inputs.push_back({{"file", name}, {"hash", common::file_fingerprint(file)}});
   }
   return inputs;
 }

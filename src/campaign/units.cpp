@@ -1,7 +1,7 @@
 #include "units.h"
 
 #include "physltl/common/bad_input.h"
-#include "fingerprint.h"
+#include "physltl/common/fingerprint.h"
 #include "physltl/planning/random.h"
 
 #include <fmt/format.h>
@@ -125,7 +125,7 @@ std::vector<size_t> shard_units(const std::vector<Unit>& units, const std::vecto
   }
   // The planner's generator: fixed by its definition, unlike std::shuffle's distributions, so shards are
   // dealt alike by every standard library.
-  planning::Random generator(fnv1a64(campaign));
+  planning::Random generator(common::fnv1a64(campaign));
   std::vector<size_t> mine;
   size_t dealt = 0;
   for (auto& [group, members] : groups) {

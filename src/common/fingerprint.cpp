@@ -1,11 +1,11 @@
-#include "fingerprint.h"
+#include "physltl/common/fingerprint.h"
 
 #include "physltl/common/bad_input.h"
 #include "physltl/common/files.h"
 
 #include <fmt/format.h>
 
-namespace physltl::campaign {
+namespace physltl::common {
 namespace {
 
 // A scenario and what it reads (modules, meshes): far below this.
@@ -23,7 +23,7 @@ std::uint64_t fnv1a64(std::string_view bytes) {
 }
 
 std::string file_fingerprint(const std::string& path) {
-  return fmt::format("fnv1a64:{:016x}", fnv1a64(common::read_input_file(path, kMaxInputBytes)));
+  return fmt::format("fnv1a64:{:016x}", fnv1a64(read_input_file(path, kMaxInputBytes)));
 }
 
-}  // namespace physltl::campaign
+}  // namespace physltl::common
