@@ -627,6 +627,18 @@ TEST(Nonsense, ACorruptGoldenIsNamedAndRewrittenByUpdateAndAGoldensFolderThatIsA
   ASSERT_EQ(run("test " + scenario + " --update --out " + out.string()).exit_code, 0);
   EXPECT_EQ(run("test " + scenario + " --out " + out.string()).exit_code, 0);
 
+  // A golden that cannot be replaced (a folder where preview.png goes) fails its case and leaves no
+  // temporary picture beside it (it left preview.png.tmp.png).
+  fs::remove(dir / "goldens" / "enclosed" / "preview.png");
+  fs::create_directories(dir / "goldens" / "enclosed" / "preview.png");
+  const Result blocked = run("test " + scenario + " --update --out " + out.string());
+  EXPECT_NE(blocked.exit_code, 0) << blocked.out;
+  EXPECT_NE((blocked.out + blocked.err).find("preview.png: it is a folder"), std::string::npos) << blocked.out << blocked.err;
+  for (const auto& entry : fs::directory_iterator(dir / "goldens" / "enclosed")) {
+    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+  }
+  fs::remove_all(dir / "goldens" / "enclosed" / "preview.png");
+
   std::ofstream(dir / "a-file") << "x";
   for (const std::string update : {"", " --update"}) {
     const Result r = run("test " + scenario + " --goldens " + (dir / "a-file").string() + update + " --out " + out.string());

@@ -7,23 +7,24 @@
 
 #include <fmt/format.h>
 
+#include <cstdint>
 #include <fstream>
 #include <sstream>
+#include <string_view>
+#include <vector>
 
 namespace physltl::app::scenario_test {
 namespace {
 
 // Whole or not at all: a golden interrupted half-way would fail every later run.
-void write_text(const std::filesystem::path& file, const std::string& text) {
+void write_text(const std::filesystem::path& file, std::string_view text) {
   std::filesystem::create_directories(file.parent_path());
   common::write_text_file(file, text);
 }
 
 void write_picture(const render::Image& image, const std::filesystem::path& file) {
-  std::filesystem::create_directories(file.parent_path());
-  const std::filesystem::path temp = file.string() + ".tmp.png";
-  render::write_png(image, temp);
-  std::filesystem::rename(temp, file);
+  const std::vector<std::uint8_t> bytes = render::encode_png(image);
+  write_text(file, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 // A golden plan holds the plan's states at each control's end: far below this.
