@@ -54,6 +54,18 @@ bool within(const fs::path& inner, const fs::path& outer) {
   return mismatch == outer.end();
 }
 
+// Nothing is written into /proc or /sys, and no name is longer than a file system takes: said before any
+// work, not after every test ran. By the path as written: /dev/stdout, a link into /proc, stays allowed.
+void refuse_unwritable_path(const std::string& option, const fs::path& path) {
+  const fs::path lexical = fs::absolute(path).lexically_normal();
+  for (const char* system : {"/proc", "/sys"}) {
+    if (within(lexical, system)) throw BadInput(option + " " + path.string() + ": lies in " + system + ", where nothing is written");
+  }
+  for (const fs::path& part : lexical) {
+    if (part.string().size() > 255) throw BadInput(option + " " + path.string() + ": holds a name over 255 bytes");
+  }
+}
+
 }  // namespace
 
 void check_folder_name(const fs::path& folder) {
@@ -108,6 +120,7 @@ fs::path checked_output_file(const std::string& option, const std::string& file,
   if (file.empty()) throw BadInput(option + ": an empty path; give a file name");
   std::error_code error;
   if (fs::is_directory(file, error)) throw BadInput(option + " " + file + ": is a folder; give a file name");
+  refuse_unwritable_path(option, file);
   for (const fs::path& input : inputs) {
     if (same_path(file, input)) {
       throw BadInput(option + " " + file + ": is " + input.string() + ", an input of this command; give another file");
@@ -119,6 +132,7 @@ fs::path checked_output_file(const std::string& option, const std::string& file,
 
 fs::path checked_output_folder(const std::string& option, const std::string& folder, const std::vector<fs::path>& inputs) {
   if (folder.empty()) throw BadInput(option + ": an empty path; give a folder");
+  refuse_unwritable_path(option, folder);
   refuse_file_on_the_way(option, folder);
   std::error_code error;
   if (fs::exists(folder, error) && !fs::is_directory(folder, error)) {

@@ -222,8 +222,14 @@ TEST(DestroyedFile, AnOutputPathThatIsAnInputAFolderOrEmptyIsRefusedBeforeAnyWor
       {"test " + s + " --junit " + (dir / "folder").string(), "folder: is a folder; give a file name"},
       {"test " + s + " --junit " + (scenario / "report.xml").string(), "enclosed.lua is a file, not a folder"},
       {"bench " + s + " --runs 1 --log " + s, "--log " + s + ": is " + s + ", an input of this command"},
+      // Refused before the tests run, not after (they failed only once every test had run).
+      {"test " + s + " --junit /proc/self/status", "--junit /proc/self/status: lies in /proc, where nothing is written"},
+      {"test " + s + " --junit " + (dir / (std::string(300, 'j') + ".xml")).string(), ": holds a name over 255 bytes"},
   };
   expect_each_refused(cases, out);
+  const Result in_proc = run("test " + s + " --out /proc/self");
+  EXPECT_EQ(in_proc.exit_code, 2) << in_proc.err;
+  EXPECT_NE(in_proc.err.find("--out /proc/self: lies in /proc"), std::string::npos) << in_proc.err;
   EXPECT_EQ(slurp(scenario), original);
   EXPECT_TRUE(fs::is_symlink(dir / "link.lua"));
   EXPECT_TRUE(fs::is_empty(dir / "folder"));
