@@ -14,8 +14,9 @@
 -- in it only when the body covers them). A letter without a goal is an obstacle the task does not name.
 -- Where a body starts on cells of its own goal, `goals = { rows }` gives the goal letters apart.
 --   require "grid" { "#######", "#@AA aa#", "#######" }
--- A grid without a robot or with two, rows that are not strings, or a box not smaller than its cell is
--- refused, naming the scenario's line that requires the grid.
+-- A grid without a robot or with two, rows that are not strings, a box not smaller than its cell, more
+-- boxes than goals or nothing to push (without a task in the parameters) is refused, naming the scenario's
+-- line that requires the grid.
 local P = require "physltl"
 
 local function fail(message) error(message, 4) end
@@ -183,6 +184,13 @@ local function check_arguments(rows, cell, box)
   if not robot_row then refuse("no robot: put '@' (or '+' on a goal) in a row") end
 end
 
+-- The task the grid makes: every box on its goal, unless the scenario's parameters give one.
+local function check_task(boxes, goals, terms)
+  if params.task then return end
+  if boxes > goals then refuse("%d boxes but %d goals: each box ('$') needs a goal ('.')", boxes, goals) end
+  if #terms == 0 then refuse("nothing to push: no box ('$', '*') and no lettered body with a goal") end
+end
+
 return function(rows, cell, box)
   cell, box = cell or 0.6, box or 0.5
   check_arguments(rows, cell, box)
@@ -222,6 +230,7 @@ return function(rows, cell, box)
   end
   for k = 1, boxes do terms[#terms + 1] = string.format("M%d@goal%d", k, k) end
   letter_bodies(rows, rows.goals or rows, height, cell, box, terms)
+  check_task(boxes, goals, terms)
   task { formula = params.task or ("F G(" .. table.concat(terms, " & ") .. ")") }
   planner { time_limit = 60, step_size = 0.05, min_steps = 2, max_steps = 30, seed = 1 }
 end

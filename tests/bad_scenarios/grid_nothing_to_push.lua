@@ -1,0 +1,6 @@
+-- expect: 2: grid: nothing to push: no box ('$', '*') and no lettered body with a goal
+require "grid" {
+  "#####",
+  "#@ .#",
+  "#####",
+}
