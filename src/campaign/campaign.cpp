@@ -90,7 +90,9 @@ void check_replaced_folders(const CampaignRequest& request, const std::optional<
   std::vector<std::filesystem::path> inputs = entry_files(entries);
   for (const auto& c : cases) inputs.insert(inputs.end(), c->world.inputs.begin(), c->world.inputs.end());
   if (shard) {
-    if (!request.resume) common::check_replaceable(shard_folder_path(request.out_dir, *request.name, *shard), inputs);
+    const std::filesystem::path folder = shard_folder_path(request.out_dir, *request.name, *shard);
+    // --resume keeps a shard's folder, but one without a manifest is started afresh: removed first.
+    if (!request.resume || !std::filesystem::exists(folder / "manifest.json")) common::check_replaceable(folder, inputs);
     return;
   }
   for (const auto& c : cases) {

@@ -131,9 +131,16 @@ void write_into_stream(const std::filesystem::path& file, std::string_view text)
   if (::close(fd) != 0 || !ok) throw BadInput("cannot write " + file.string());
 }
 
+bool ended(pid_t pid) { return pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH; }
+
+struct Leftover {
+  std::filesystem::path path;
+  pid_t pid;  // of the process that left it
+};
+
 // What killed runs left in a folder: `NAME.tmp-PID` and `NAME.old-PID` whose process has ended, by NAME.
-std::multimap<std::string, std::filesystem::path> leftovers_in(const std::filesystem::path& folder) {
-  std::multimap<std::string, std::filesystem::path> found;
+std::multimap<std::string, Leftover> leftovers_in(const std::filesystem::path& folder) {
+  std::multimap<std::string, Leftover> found;
   std::error_code error;
   for (const std::filesystem::directory_entry& entry : std::filesystem::directory_iterator(folder, error)) {
     const std::string name = entry.path().filename().string();
@@ -143,7 +150,7 @@ std::multimap<std::string, std::filesystem::path> leftovers_in(const std::filesy
       const std::string digits = name.substr(at + tag.size());
       if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
       const pid_t pid = static_cast<pid_t>(std::stol(digits));
-      if (pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH) found.emplace(name.substr(0, at), entry.path());
+      if (ended(pid)) found.emplace(name.substr(0, at), Leftover{entry.path(), pid});
     }
   }
   return found;
@@ -155,8 +162,8 @@ std::mutex& leftovers_mutex() {
   static auto* mutex = new std::mutex;
   return *mutex;
 }
-std::map<std::filesystem::path, std::multimap<std::string, std::filesystem::path>>& leftovers_by_folder() {
-  static auto* folders = new std::map<std::filesystem::path, std::multimap<std::string, std::filesystem::path>>;
+std::map<std::filesystem::path, std::multimap<std::string, Leftover>>& leftovers_by_folder() {
+  static auto* folders = new std::map<std::filesystem::path, std::multimap<std::string, Leftover>>;
   return *folders;
 }
 
@@ -175,7 +182,10 @@ void remove_leftovers_of_ended_runs(const std::filesystem::path& final_path) {
   if (first_time) listed->second = leftovers_in(parent);
   const auto [first, last] = listed->second.equal_range(final_path.filename().string());
   std::error_code error;
-  for (auto it = first; it != last; ++it) std::filesystem::remove_all(it->second, error);
+  for (auto it = first; it != last; ++it) {
+    // Asked again: the listing may be hours old, and a new process may have the pid now.
+    if (ended(it->second.pid)) std::filesystem::remove_all(it->second.path, error);
+  }
   listed->second.erase(first, last);
 }
 

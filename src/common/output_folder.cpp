@@ -63,11 +63,7 @@ void remove_unfinished_outputs() {
 
 OutputFolder::OutputFolder(const fs::path& final_path, Commit how, const std::vector<fs::path>& inputs)
     : final_(without_trailing_slash(final_path)), temp_(sibling(final_, ".tmp-")), how_(how) {
-  if (how_ == Commit::kWhole) {
-    check_replaceable(final_, inputs);
-  } else {
-    check_folder_name(final_);
-  }
+  if (how_ == Commit::kWhole) check_replaceable(final_, inputs);
   try {
     if (final_.has_parent_path()) fs::create_directories(final_.parent_path());
     remove_leftovers_of_ended_runs(final_);

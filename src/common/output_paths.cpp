@@ -38,9 +38,22 @@ void refuse_file_on_the_way(const std::string& option, const fs::path& path) {
 constexpr std::array<std::string_view, 18> kOutputNames = {
     "report.json", "plan.json", "tree.png", "frames", "plan.mp4", "failed", "preview.png", "execution.json", "execution",
     "execution.mp4", "bench.json", "bench.png", "sweep.json", "sweep.png", "manifest.json", "units", "stderr.txt", "plan.actual.json"};
-constexpr std::array<std::string_view, 2> kOutputEndings = {".actual.png", ".diff.png"};
+constexpr std::array<std::string_view, 3> kOutputEndings = {".actual.png", ".diff.png", ".log"};
 
-bool output_name(const std::string& name) {
+// `name` less a ".tmp-<pid>" or ".old-<pid>" a killed writer left on it.
+std::string without_leftover_tag(const std::string& name) {
+  for (const std::string_view tag : {".tmp-", ".old-"}) {
+    const std::size_t at = name.rfind(tag);
+    if (at != std::string::npos && at > 0 && at + tag.size() < name.size() &&
+        name.find_first_not_of("0123456789", at + tag.size()) == std::string::npos) {
+      return name.substr(0, at);
+    }
+  }
+  return name;
+}
+
+bool output_name(const std::string& written) {
+  const std::string name = without_leftover_tag(written);
   if (name == kMadeHereMarker) return true;
   if (std::find(kOutputNames.begin(), kOutputNames.end(), name) != kOutputNames.end()) return true;
   return std::any_of(kOutputEndings.begin(), kOutputEndings.end(), [&](std::string_view ending) {
@@ -54,15 +67,19 @@ bool within(const fs::path& inner, const fs::path& outer) {
   return mismatch == outer.end();
 }
 
-// Nothing is written into /proc or /sys, and no name is longer than a file system takes: said before any
-// work, not after every test ran. By the path as written: /dev/stdout, a link into /proc, stays allowed.
+// A name of at most 255 bytes (what file systems take) less room for the ".tmp-<pid>" of the temporary
+// sibling every output is written as first.
+constexpr std::size_t kMaxNameBytes = 240;
+
+// Nothing is written into /proc or /sys, and no name is longer than kMaxNameBytes: said before any work,
+// not after every test ran. By the path as written: /dev/stdout, a link into /proc, stays allowed.
 void refuse_unwritable_path(const std::string& option, const fs::path& path) {
   const fs::path lexical = fs::absolute(path).lexically_normal();
   for (const char* system : {"/proc", "/sys"}) {
     if (within(lexical, system)) throw BadInput(option + " " + path.string() + ": lies in " + system + ", where nothing is written");
   }
   for (const fs::path& part : lexical) {
-    if (part.string().size() > 255) throw BadInput(option + " " + path.string() + ": holds a name over 255 bytes");
+    if (part.string().size() > kMaxNameBytes) throw BadInput(option + " " + path.string() + ": holds a name over 240 bytes");
   }
 }
 
@@ -70,15 +87,11 @@ void refuse_unwritable_path(const std::string& option, const fs::path& path) {
 
 void check_folder_name(const fs::path& folder) {
   const std::string name = folder.filename().string();
-  // 240 bytes leave room for the temporary sibling's ".tmp-<pid>" within the 255 a name may have.
-  if (name.empty() || name == "." || name == ".." || name.size() > 240) {
+  if (name.empty() || name == "." || name == ".." || name.size() > kMaxNameBytes) {
     throw BadInput("will not write " + folder.string() + ": '" + name +
                    "' is no folder name here (empty, '.', '..' or over 240 bytes; a scenario named so?)");
   }
-  const fs::path out = normal(folder);
-  for (const char* system : {"/proc", "/sys"}) {
-    if (within(out, system)) throw BadInput("will not write " + folder.string() + ": it lies in " + system);
-  }
+  refuse_unwritable_path("will not write", folder);
 }
 
 void check_replaceable(const fs::path& folder, const std::vector<fs::path>& inputs) {
@@ -92,6 +105,9 @@ void check_replaceable(const fs::path& folder, const std::vector<fs::path>& inpu
     }
   }
   std::error_code error;
+  if (fs::exists(folder, error) && !fs::is_directory(folder, error)) {
+    throw BadInput("will not replace " + folder.string() + ": it is a file, not a folder of outputs");
+  }
   if (!fs::is_directory(folder, error) || fs::exists(folder / kMadeHereMarker, error)) return;
   std::vector<std::string> foreign;
   for (const fs::directory_entry& entry : fs::directory_iterator(folder, error)) {

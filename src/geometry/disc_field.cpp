@@ -40,9 +40,10 @@ DiscField::DiscField(const Rect& bounds, double cell, double radius, std::span<c
   }
 }
 
-std::vector<bool> DiscField::cells_near(std::span<const Polygon* const> regions, double within) const {
+std::vector<bool> DiscField::cells_near(std::span<const Polygon* const> regions, double within, const base::Deadline& deadline) const {
   std::vector<bool> near(free_.size(), false);
   for (const Polygon* region : regions) {
+    deadline.check();
     const Rect box = region->bounds();
     const int x0 = grid_.column(box.min.x() - within), x1 = grid_.column(box.max.x() + within);
     const int y0 = grid_.row(box.min.y() - within), y1 = grid_.row(box.max.y() + within);

@@ -269,7 +269,7 @@ class ObjectJudge {
     std::vector<const geometry::Polygon*> polygons;
     for (int r : regions) polygons.push_back(&k_.propositions[static_cast<size_t>(r)].region);
     // A cell whose square touches a region is a target: within half its diagonal of it.
-    made->compute_distances(made->cells_near(polygons, made->cell() * std::sqrt(2.0) / 2), deadline_);
+    made->compute_distances(made->cells_near(polygons, made->cell() * std::sqrt(2.0) / 2, deadline_), deadline_);
     known = std::move(made);  // only once whole: a field cut short by the deadline is not kept
     return *known;
   }

@@ -224,7 +224,7 @@ TEST(DestroyedFile, AnOutputPathThatIsAnInputAFolderOrEmptyIsRefusedBeforeAnyWor
       {"bench " + s + " --runs 1 --log " + s, "--log " + s + ": is " + s + ", an input of this command"},
       // Refused before the tests run, not after (they failed only once every test had run).
       {"test " + s + " --junit /proc/self/status", "--junit /proc/self/status: lies in /proc, where nothing is written"},
-      {"test " + s + " --junit " + (dir / (std::string(300, 'j') + ".xml")).string(), ": holds a name over 255 bytes"},
+      {"test " + s + " --junit " + (dir / (std::string(300, 'j') + ".xml")).string(), ": holds a name over 240 bytes"},
   };
   expect_each_refused(cases, out);
   const Result in_proc = run("test " + s + " --out /proc/self");

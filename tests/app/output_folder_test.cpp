@@ -135,8 +135,10 @@ TEST_F(OutputFolderTest, AFolderReplacedWholeMustBeOneThisProgramMadeAndHoldNoIn
   write(final_ / "report.json", "an earlier version's report");
   EXPECT_NO_THROW(OutputFolder(final_, OutputFolder::Commit::kWhole));  // output names only
   for (const std::string name : {".", ".."}) {
-    EXPECT_THROW(OutputFolder(parent_ / "out" / name, OutputFolder::Commit::kEntries), BadInput) << name;
+    EXPECT_THROW(OutputFolder(parent_ / "out" / name, OutputFolder::Commit::kWhole), BadInput) << name;
+    EXPECT_THROW(check_folder_name(parent_ / "out" / name), BadInput) << name;
   }
+  EXPECT_NO_THROW(OutputFolder(".", OutputFolder::Commit::kEntries));  // import --out . adds files to the working folder
   EXPECT_THROW(OutputFolder("/proc/self/rooms", OutputFolder::Commit::kWhole), BadInput);
 }
 

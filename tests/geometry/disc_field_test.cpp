@@ -58,6 +58,7 @@ TEST(DiscField, ADeadlineThatHasComeStopsTheFieldAndItsDistances) {
   DiscField field(kBounds, 0.01, 0.2, wall);
   const Polygon goal = Polygon::from_rect({Vec2(8, 2), Vec2(9, 3)});
   const std::vector<const Polygon*> goals{&goal};
+  EXPECT_THROW(field.cells_near(goals, 0.0, passed), base::DeadlineReached);
   const std::vector<bool> targets = field.cells_near(goals, 0.0);
   EXPECT_THROW(field.compute_distances(targets, passed), base::DeadlineReached);
   field.compute_distances(targets);  // without one: the way round the wall

@@ -26,7 +26,8 @@ class OutputFolder {
     // Each entry written replaces its namesake in the final folder by one rename (a symbolic link's target:
     // written through, the link kept), and entries already there that were not written stay (`check`
     // refreshing preview.png beside a plan's outputs, `import` adding levels to a folder). Creates the
-    // final folder by renaming the temporary one when there is none yet.
+    // final folder by renaming the temporary one when there is none yet. The caller checks the folder's
+    // name (check_folder_name) where a scenario's name makes it.
     kEntries,
   };
 

@@ -28,7 +28,7 @@ class DiscField {
   // One flag a cell: whether its centre lies within `within` metres of one of `regions` (inside one, when
   // 0). Each region's cells are found from its bounding box, so the cost grows with the regions' area, not
   // with cells times regions (a level of 250 goals has 250 regions).
-  std::vector<bool> cells_near(std::span<const Polygon* const> regions, double within) const;
+  std::vector<bool> cells_near(std::span<const Polygon* const> regions, double within, const base::Deadline& deadline = {}) const;
   // Distances to the free cells `targets` marks (one flag a cell, as cells_near gives), by Dijkstra over
   // the free cells.
   void compute_distances(const std::vector<bool>& targets, const base::Deadline& deadline = {});

@@ -23,7 +23,8 @@ class PlanningProblem {
  public:
   // Reasons about `world`, which must outlive this object; a feasible task is also prepared for the
   // planners, for runs of `time_limit_s` (Problem::time_limit_s). The reasoning stops judging at
-  // `deadline` (knowledge::reason_about): give the run's, whose preparation then ends at once. `started`:
+  // `deadline` (knowledge::reason_about): give the run's, so that a reasoning past it concludes nothing
+  // more and the planner's preparation, which asks the deadline first, ends the run. `started`:
   // when the run began, for preparation_s().
   PlanningProblem(const scenario::World& world, double time_limit_s, const base::Deadline& deadline = {},
                   std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now());

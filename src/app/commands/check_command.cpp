@@ -24,6 +24,7 @@ namespace {
 // delete.
 std::filesystem::path write_preview(const scenario::World& world, const knowledge::Reasoning& reasoning,
                                     const std::filesystem::path& out_dir) {
+  common::check_folder_name(out_dir / world.name);  // a scenario named "...lua" would write beside --out
   try {
     common::OutputFolder folder(out_dir / world.name, common::OutputFolder::Commit::kEntries);
     render::render_preview(world, reasoning.initial_state, preview_overlay(world, reasoning), folder.path() / "preview.png");

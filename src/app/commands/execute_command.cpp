@@ -96,6 +96,7 @@ int execute(const ExecuteArgs& args) {
   const PlanningRun run(world, settings, planner);
   // It replans with a budget of propagations, so that an execution is the same on any machine.
   run.require_plannable({.propagation_budget = true});
+  common::check_folder_name(std::filesystem::path(args.out_dir) / world.name);  // "...lua" would write beside --out
   common::OutputFolder out(std::filesystem::path(args.out_dir) / world.name, common::OutputFolder::Commit::kEntries);
   const planning::ValidatedPlan solution = run.solve();
   if (const auto failure = run.failure(solution, std::nullopt, false)) {

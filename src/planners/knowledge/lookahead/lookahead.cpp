@@ -51,7 +51,7 @@ std::optional<std::string> narrow_way_of(const scenario::World& world, const phy
   geometry::DiscField wide(knowledge.workspace, cell, width / 2, obstacles, deadline);
   std::vector<const geometry::Polygon*> polygons;
   for (int r : regions) polygons.push_back(&world.regions[static_cast<std::size_t>(r)].polygon);
-  wide.compute_distances(wide.cells_near(polygons, 0.0), deadline);
+  wide.compute_distances(wide.cells_near(polygons, 0.0, deadline), deadline);
   if (wide.reaches_target(body.footprint.pose.position)) return std::nullopt;
   return fmt::format("{}'s way to its regions is narrower than {:.2f} m (its width {:.2f} m and two robot diameters) "
                      "among the walls and the other bodies",
