@@ -98,6 +98,14 @@ void check_replaced_folders(const CampaignRequest& request, const std::optional<
   for (const auto& c : cases) {
     common::check_replaceable(request.out_dir / folder_name(c->results.scenario, c->results.settings), inputs);
   }
+  // A swept entry's folder of sweep.json, named after its first value's scenario (bench_outputs.cpp).
+  for (std::size_t e = 0; e < entries.size(); ++e) {
+    const auto first = std::find_if(cases.begin(), cases.end(), [&](const auto& c) { return c->entry == e; });
+    if (!entries[e].sweep || first == cases.end()) continue;
+    std::vector<std::string> settings = entries[e].settings;
+    settings.push_back("sweep=" + entries[e].sweep->key);
+    common::check_replaceable(request.out_dir / folder_name((*first)->results.scenario, settings), inputs);
+  }
 }
 
 std::vector<size_t> all_of(const std::vector<Unit>& units) {

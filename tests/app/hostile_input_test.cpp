@@ -256,6 +256,8 @@ TEST(DestroyedFile, NoCommandReplacesAFolderHoldingItsInputsOrOneItDidNotMake) {
   for (const std::string file : {"office.lua", "cabinet.obj"}) fs::copy_file(kSource + "/scenarios/" + file, dir / "office" / file);
   fs::create_directories(dir / "mine" / "avoid");
   std::ofstream(dir / "mine" / "avoid" / "thesis.tex") << "not an output\n";
+  fs::create_directories(dir / "rooms_n-sweep-rooms");  // where bench --sweep rooms=... writes sweep.json
+  std::ofstream(dir / "rooms_n-sweep-rooms" / "thesis.tex") << "not an output\n";
   fs::copy_file(kSource + "/scenarios/avoid.lua", dir / "...lua");  // a scenario named ".."
   fs::copy_file(kSource + "/scenarios/avoid.lua", dir / (std::string(250, 'a') + ".lua"));
   const std::string p = dir.string(), office = (dir / "office" / "office.lua").string();
@@ -266,6 +268,8 @@ TEST(DestroyedFile, NoCommandReplacesAFolderHoldingItsInputsOrOneItDidNotMake) {
       {"bench " + in_shard + " --runs 1 --campaign c --shard 1/1 --quiet --out " + p, "will not replace " + p + "/c/shard-1-of-1: it holds"},
       {kSource + "/scenarios/avoid.lua --quiet --out " + (dir / "mine").string(),
        "physltl-studio did not make it, and it holds thesis.tex"},
+      {"bench " + kSource + "/scenarios/rooms_n.lua --sweep rooms=2,4 --runs 1 --quiet --out " + p,
+       "will not replace " + p + "/rooms_n-sweep-rooms: physltl-studio did not make it, and it holds thesis.tex"},
       {"test " + (dir / "...lua").string() + " --out " + p + "/o", "'..' is no folder name"},
       {"check " + (dir / "...lua").string() + " --out " + p + "/o", "'..' is no folder name"},
       // Its temporary sibling, 250 bytes and ".tmp-<pid>", could not be made: said, before, of that sibling.
