@@ -76,3 +76,6 @@ physltl_build() {
 # The options of the shared build/ folder: the same for the launcher and tests/run, so neither reconfigures
 # what the other made.
 physltl_shared_build_options=(-DPHYSLTL_BUILD_TESTS=ON)
+# PHYSLTL_WERROR=1 (CI sets it): warnings are errors, for the launcher and tests/run alike, so that neither
+# reconfigures the tree the other made.
+if [ "${PHYSLTL_WERROR:-}" = 1 ]; then physltl_shared_build_options+=(-DPHYSLTL_WERROR=ON); fi
